@@ -1,0 +1,53 @@
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "cosim/com/transport.hpp"
+
+// MPI transport for one MPMD launch:
+//   mpirun -np 1 cosim run job.yaml ... : -np 1 <solver> ... : -np 1 <solver> ...
+// The coupler is world rank 0 (the first application). MPI_COMM_WORLD is
+// split by MPMD application number so each participant owns a communicator
+// for its own parallel work; coupling messages travel on a duplicate of
+// MPI_COMM_WORLD so they never mix with a solver's traffic.
+namespace cosim::com {
+
+// True when this process was started by mpirun (Open MPI's environment).
+bool launched_by_mpirun();
+
+class MpiHub final : public Transport {
+ public:
+  MpiHub();
+  ~MpiHub() override;
+  MpiHub(const MpiHub&) = delete;
+  MpiHub& operator=(const MpiHub&) = delete;
+
+  int world_size() const;
+  void send(const std::string& peer, const Message& message) override;
+  std::optional<Received> receive(std::chrono::milliseconds timeout) override;
+  std::string describe() const override;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+class MpiClient final : public Transport {
+ public:
+  explicit MpiClient(const std::string& participant_name);
+  ~MpiClient() override;
+  MpiClient(const MpiClient&) = delete;
+  MpiClient& operator=(const MpiClient&) = delete;
+
+  void send(const std::string& peer, const Message& message) override;
+  std::optional<Received> receive(std::chrono::milliseconds timeout) override;
+  std::string describe() const override;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace cosim::com

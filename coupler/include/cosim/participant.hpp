@@ -1,0 +1,131 @@
+#pragma once
+
+#include <chrono>
+#include <map>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cosim/field.hpp"
+#include "cosim/mesh.hpp"
+
+namespace CLI {
+class App;
+}
+
+// The participant API every solver links (in the spirit of preCICE's
+// Participant). A solver's main loop reads:
+//
+//   cosim::Participant p("soil", endpoint);        // endpoint from the command line
+//   p.declare_mesh(grid);
+//   p.declare_write({.name = "solid_velocity", .mesh = "mpm_grid", .components = 2, ...});
+//   p.declare_read({.name = "pore_pressure", .mesh = "mpm_grid", ...});
+//   p.initialize(config.start_time, config.end_time);
+//   while (p.is_coupling_ongoing()) {
+//     p.read("pore_pressure", pressure);
+//     double dt = std::min(my_stable_step(), p.max_time_step());
+//     solve(dt);
+//     p.write("solid_velocity", velocity);
+//     p.advance(dt);                                 // exchanges when the window is complete
+//   }
+//   p.finalize();
+//
+// Without an endpoint the same code runs standalone: nothing is exchanged,
+// reads return the declared defaults and the solver's own end time applies.
+namespace cosim {
+
+// Where to reach the coupler; given to a participant on its command line by
+// `cosim run` (see add_coupling_options). An empty uri means standalone.
+struct CouplingEndpoint {
+  std::string uri;          // ipc://..., tcp://127.0.0.1:port, or mpi://
+  std::string job_id;       // the job this participant was started for
+  std::string config_hash;  // hash of the job config it was started for
+  double connect_timeout_s = 60.0;
+
+  bool is_standalone() const { return uri.empty(); }
+};
+
+// Adds --cosim-endpoint, --cosim-job, --cosim-config-hash and
+// --cosim-connect-timeout to a solver's command line.
+void add_coupling_options(CLI::App& app, CouplingEndpoint& endpoint);
+
+// Wall time a participant spent in the coupling, by phase [s].
+struct CouplingTimings {
+  double waiting = 0.0;    // blocked until the coupler's answer arrived
+  double transport = 0.0;  // encoding and sending
+  std::size_t windows = 0;
+};
+
+class Participant {
+ public:
+  Participant(std::string name, CouplingEndpoint endpoint);
+  ~Participant();
+  Participant(const Participant&) = delete;
+  Participant& operator=(const Participant&) = delete;
+
+  const std::string& name() const;
+  bool is_coupled() const;
+
+  // Declarations (before initialize).
+  void declare_mesh(Mesh mesh);
+  void declare_write(FieldSpec field);
+  // `default_value` fills the field until the first exchange, and always
+  // when standalone.
+  void declare_read(FieldSpec field, double default_value = 0.0);
+
+  // Connects to the coupler (handshake: protocol version, job id, config
+  // hash), exchanges the initial data (fields written before initialize),
+  // and starts the first window. Coupled, the job's start and end time and
+  // window apply; standalone, the arguments do and the whole run is one
+  // window unless set_standalone_window() says otherwise.
+  void initialize(double start_time, double end_time);
+  void set_standalone_window(double window);
+
+  double time() const;
+  double window_size() const;
+  std::size_t window_index() const;  // 1 for the first window
+  double end_time() const;
+  // The longest step that stays inside the current window.
+  double max_time_step() const;
+  bool is_coupling_ongoing() const;
+
+  // A moving mesh (point cloud) gives its new geometry before the window's
+  // last advance; the coupler rebuilds the mappings that involve it.
+  void update_mesh(const Mesh& mesh);
+
+  // State fields: the last values written in a window are sent at its end.
+  // Integral fields: write the rate before every advance(dt); the window's
+  // time integral is sent.
+  void write(std::string_view field, std::span<const double> values);
+
+  // Ends a step of length dt (<= max_time_step()). When it completes the
+  // window, sends the written fields and waits for the partner's.
+  void advance(double dt);
+
+  // State fields: the latest received values (linearly extrapolated inside
+  // the window when the job asks for it). Integral fields: the whole
+  // integral received for the current window.
+  void read(std::string_view field, std::span<double> values) const;
+  std::vector<double> read(std::string_view field) const;
+  // Integral fields: the share of the window's integral for a step of dt;
+  // over a window the shares add up exactly to the integral received.
+  void read_increment(std::string_view field, double dt, std::span<double> values);
+
+  // Size of a field's value array (mesh elements x components).
+  std::size_t field_size(std::string_view field) const;
+  const CouplingTimings& timings() const;
+
+  // Tells the coupler the run ended (normally or not) and releases the
+  // transport. Called by the destructor if not before.
+  void finalize();
+  // Tells the coupler this participant failed, with a reason, then releases.
+  void abort(std::string_view reason);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace cosim

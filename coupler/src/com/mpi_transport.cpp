@@ -1,0 +1,251 @@
+#include "cosim/com/mpi_transport.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <cstdlib>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "cosim/error.hpp"
+
+#ifdef COSIM_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace cosim::com {
+
+bool launched_by_mpirun() {
+  return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("PMI_RANK") != nullptr;
+}
+
+#ifdef COSIM_HAVE_MPI
+
+namespace {
+
+constexpr int header_tag = 7001;
+constexpr int payload_tag = 7002;
+constexpr std::size_t max_chunk = std::size_t{1} << 30;
+constexpr int coupler_rank = 0;
+
+// MPI is initialised once per process and finalised when the last transport
+// goes away.
+class MpiEnvironment {
+ public:
+  static MpiEnvironment& instance() {
+    static MpiEnvironment env;
+    return env;
+  }
+  void acquire() {
+    if (users_++ > 0) return;
+    int initialized = 0;
+    MPI_Initialized(&initialized);
+    if (!initialized) {
+      int provided = 0;
+      MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+      owns_ = true;
+    }
+    MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
+    int* appnum = nullptr;
+    int flag = 0;
+    MPI_Comm_get_attr(MPI_COMM_WORLD, MPI_APPNUM, &appnum, &flag);
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_split(MPI_COMM_WORLD, flag ? *appnum : 0, rank, &local_);
+    MPI_Comm_dup(MPI_COMM_WORLD, &coupling_);
+  }
+  void release() {
+    if (--users_ > 0) return;
+    MPI_Comm_free(&coupling_);
+    MPI_Comm_free(&local_);
+    if (owns_) {
+      int finalized = 0;
+      MPI_Finalized(&finalized);
+      if (!finalized) MPI_Finalize();
+    }
+  }
+  MPI_Comm coupling() const { return coupling_; }
+
+ private:
+  int users_ = 0;
+  bool owns_ = false;
+  MPI_Comm local_ = MPI_COMM_NULL;
+  MPI_Comm coupling_ = MPI_COMM_NULL;
+};
+
+void check(int rc, const std::string& peer, const char* what) {
+  if (rc == MPI_SUCCESS) return;
+  char text[MPI_MAX_ERROR_STRING];
+  int len = 0;
+  MPI_Error_string(rc, text, &len);
+  throw ProtocolError(peer, fmt::format("MPI {} failed: {}", what, std::string(text, len)));
+}
+
+void send_to(MPI_Comm comm, int rank, const std::string& peer, const Message& message) {
+  const std::vector<std::byte> header = encode_header(message.header);
+  check(MPI_Send(header.data(), static_cast<int>(header.size()), MPI_BYTE, rank, header_tag, comm),
+        peer, "send of a header");
+  auto bytes = message.payload.bytes();
+  // Payloads go in chunks of at most 1 GiB, and always at least one message.
+  std::size_t offset = 0;
+  do {
+    const std::size_t n = std::min(max_chunk, bytes.size() - offset);
+    check(MPI_Send(bytes.data() + offset, static_cast<int>(n), MPI_BYTE, rank, payload_tag, comm),
+          peer, "send of a payload");
+    offset += n;
+  } while (offset < bytes.size());
+}
+
+// Polls for a header from `source` (or any) until the timeout, yielding the
+// core between probes so oversubscribed runs make progress.
+std::optional<int> probe_header(MPI_Comm comm, int source, std::chrono::milliseconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  int spins = 0;
+  for (;;) {
+    int flag = 0;
+    MPI_Status status;
+    MPI_Iprobe(source, header_tag, comm, &flag, &status);
+    if (flag) return status.MPI_SOURCE;
+    if (std::chrono::steady_clock::now() >= deadline) return std::nullopt;
+    if (++spins > 200) std::this_thread::sleep_for(std::chrono::microseconds(50));
+  }
+}
+
+Received receive_from(MPI_Comm comm, int source, const std::string& peer_hint) {
+  MPI_Status status;
+  MPI_Probe(source, header_tag, comm, &status);
+  int size = 0;
+  MPI_Get_count(&status, MPI_BYTE, &size);
+  std::vector<std::byte> header(static_cast<std::size_t>(size));
+  check(MPI_Recv(header.data(), size, MPI_BYTE, source, header_tag, comm, MPI_STATUS_IGNORE),
+        peer_hint, "receive of a header");
+  Received r;
+  r.message.header = decode_header(header, peer_hint);
+  r.peer = peer_hint;
+  std::size_t total = 0;
+  if (r.message.header.element == ElementType::float64)
+    total = r.message.header.count * r.message.header.components * sizeof(double);
+  else if (r.message.header.element == ElementType::text)
+    total = r.message.header.count;
+  auto storage = std::make_shared<std::vector<std::byte>>();
+  std::size_t offset = 0;
+  do {
+    MPI_Probe(source, payload_tag, comm, &status);
+    int n = 0;
+    MPI_Get_count(&status, MPI_BYTE, &n);
+    if (storage->size() < offset + static_cast<std::size_t>(n)) storage->resize(offset + n);
+    check(MPI_Recv(storage->data() + offset, n, MPI_BYTE, source, payload_tag, comm,
+                   MPI_STATUS_IGNORE),
+          peer_hint, "receive of a payload");
+    offset += static_cast<std::size_t>(n);
+  } while (offset < total && offset % max_chunk == 0 && offset > 0);
+  const auto* data = storage->data();
+  r.message.payload = Payload::adopt(std::move(storage), data, offset);
+  return r;
+}
+
+}  // namespace
+
+struct MpiHub::Impl {
+  std::map<std::string, int> rank_of;
+  std::map<int, std::string> name_of;
+  int world_size = 0;
+};
+
+MpiHub::MpiHub() : impl_(std::make_unique<Impl>()) {
+  MpiEnvironment::instance().acquire();
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &impl_->world_size);
+  if (rank != coupler_rank)
+    throw InputError(fmt::format("cosim must be the first application of the mpirun line (world "
+                                 "rank 0), it is rank {}",
+                                 rank));
+}
+
+MpiHub::~MpiHub() { MpiEnvironment::instance().release(); }
+
+int MpiHub::world_size() const { return impl_->world_size; }
+
+std::string MpiHub::describe() const {
+  return fmt::format("MPI hub (world rank 0 of {})", impl_->world_size);
+}
+
+void MpiHub::send(const std::string& peer, const Message& message) {
+  auto it = impl_->rank_of.find(peer);
+  if (it == impl_->rank_of.end()) throw ProtocolError(peer, "has not said hello (cannot send)");
+  send_to(MpiEnvironment::instance().coupling(), it->second, peer, message);
+}
+
+std::optional<Received> MpiHub::receive(std::chrono::milliseconds timeout) {
+  MPI_Comm comm = MpiEnvironment::instance().coupling();
+  auto source = probe_header(comm, MPI_ANY_SOURCE, timeout);
+  if (!source) return std::nullopt;
+  auto known = impl_->name_of.find(*source);
+  const std::string hint =
+      known != impl_->name_of.end() ? known->second : fmt::format("world rank {}", *source);
+  Received r = receive_from(comm, *source, hint);
+  if (known == impl_->name_of.end()) {
+    if (r.message.header.type != MessageType::hello)
+      throw ProtocolError(hint, "spoke before saying hello");
+    const std::string& name = r.message.header.sender;
+    if (impl_->rank_of.count(name))
+      throw ProtocolError(hint, fmt::format("claims the name '{}' already taken by rank {}", name,
+                                            impl_->rank_of[name]));
+    impl_->rank_of[name] = *source;
+    impl_->name_of[*source] = name;
+  }
+  r.peer = impl_->name_of[*source];
+  return r;
+}
+
+struct MpiClient::Impl {
+  std::string name;
+};
+
+MpiClient::MpiClient(const std::string& participant_name) : impl_(std::make_unique<Impl>()) {
+  impl_->name = participant_name;
+  MpiEnvironment::instance().acquire();
+}
+
+MpiClient::~MpiClient() { MpiEnvironment::instance().release(); }
+
+std::string MpiClient::describe() const { return "MPI client of world rank 0"; }
+
+void MpiClient::send(const std::string& peer, const Message& message) {
+  if (peer != coupler_peer)
+    throw std::logic_error("a participant sends only to the coupler, not to '" + peer + "'");
+  send_to(MpiEnvironment::instance().coupling(), coupler_rank, peer, message);
+}
+
+std::optional<Received> MpiClient::receive(std::chrono::milliseconds timeout) {
+  MPI_Comm comm = MpiEnvironment::instance().coupling();
+  if (!probe_header(comm, coupler_rank, timeout)) return std::nullopt;
+  return receive_from(comm, coupler_rank, coupler_peer);
+}
+
+#else  // COSIM_HAVE_MPI
+
+namespace {
+[[noreturn]] void no_mpi() {
+  throw InputError("this build of cosim has no MPI transport (configure with -DCOSIM_WITH_MPI=ON)");
+}
+}  // namespace
+
+struct MpiHub::Impl {};
+MpiHub::MpiHub() { no_mpi(); }
+MpiHub::~MpiHub() = default;
+int MpiHub::world_size() const { return 0; }
+void MpiHub::send(const std::string&, const Message&) { no_mpi(); }
+std::optional<Received> MpiHub::receive(std::chrono::milliseconds) { no_mpi(); }
+std::string MpiHub::describe() const { return "MPI (not built)"; }
+struct MpiClient::Impl {};
+MpiClient::MpiClient(const std::string&) { no_mpi(); }
+MpiClient::~MpiClient() = default;
+void MpiClient::send(const std::string&, const Message&) { no_mpi(); }
+std::optional<Received> MpiClient::receive(std::chrono::milliseconds) { no_mpi(); }
+std::string MpiClient::describe() const { return "MPI (not built)"; }
+
+#endif  // COSIM_HAVE_MPI
+
+}  // namespace cosim::com

@@ -1,0 +1,200 @@
+#include "cosim/com/zmq_transport.hpp"
+
+#include <sys/stat.h>
+
+#include <array>
+#include <cstdlib>
+#include <system_error>
+#include <zmq.hpp>
+
+#include <fmt/format.h>
+
+#include "cosim/error.hpp"
+
+namespace cosim::com {
+
+namespace {
+
+constexpr int linger_ms = 5000;  // let queued messages leave before a socket closes
+
+zmq::message_t to_zmq(const Payload& payload) {
+  if (payload.size() == 0) return zmq::message_t();
+  // Zero copy: the zmq message keeps the payload's owner alive until sent.
+  auto* keep_alive = new std::shared_ptr<const void>(payload.owner());
+  return zmq::message_t(
+      const_cast<std::byte*>(payload.bytes().data()), payload.size(),
+      [](void*, void* hint) { delete static_cast<std::shared_ptr<const void>*>(hint); },
+      keep_alive);
+}
+
+Payload from_zmq(zmq::message_t&& part) {
+  auto owner = std::make_shared<zmq::message_t>(std::move(part));
+  const auto* data = static_cast<const std::byte*>(owner->data());
+  const std::size_t size = owner->size();
+  return Payload::adopt(std::move(owner), data, size);
+}
+
+void send_parts(zmq::socket_t& socket, const std::string* routing_id, const Message& message) {
+  const std::vector<std::byte> header = encode_header(message.header);
+  if (routing_id) socket.send(zmq::buffer(*routing_id), zmq::send_flags::sndmore);
+  socket.send(zmq::buffer(header.data(), header.size()), zmq::send_flags::sndmore);
+  socket.send(to_zmq(message.payload), zmq::send_flags::none);
+}
+
+// Reads the remaining parts of a multipart message; returns false (and drains)
+// when the shape is not [header][payload].
+bool receive_header_and_payload(zmq::socket_t& socket, zmq::message_t& header,
+                                zmq::message_t& payload) {
+  std::array<zmq::message_t*, 2> parts{&header, &payload};
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (!socket.get(zmq::sockopt::rcvmore)) return false;
+    (void)socket.recv(*parts[i], zmq::recv_flags::none);
+  }
+  if (socket.get(zmq::sockopt::rcvmore)) {
+    zmq::message_t extra;
+    while (socket.get(zmq::sockopt::rcvmore)) (void)socket.recv(extra, zmq::recv_flags::none);
+    return false;
+  }
+  return true;
+}
+
+bool is_loopback(const std::string& host) {
+  return host == "127.0.0.1" || host == "localhost" || host == "::1" ||
+         host.rfind("127.", 0) == 0;
+}
+
+std::filesystem::path make_private_directory() {
+  const char* base = std::getenv("TMPDIR");
+  std::string root = (base && std::string(base).size() < 60) ? base : "/tmp";
+  std::string pattern = root + "/cosim-XXXXXX";
+  // mkdtemp creates the directory with mode 0700.
+  if (::mkdtemp(pattern.data()) == nullptr)
+    throw Error(ExitCode::bad_input, fmt::format("cannot create a private directory for ipc "
+                                                 "endpoints under {}: {}",
+                                                 root, std::strerror(errno)));
+  return pattern;
+}
+
+}  // namespace
+
+struct ZmqHub::Impl {
+  zmq::context_t context{1};
+  zmq::socket_t socket{context, zmq::socket_type::router};
+  std::filesystem::path directory;
+  std::string endpoint;
+};
+
+ZmqHub::ZmqHub(const ZmqHubOptions& options) : impl_(std::make_unique<Impl>()) {
+  auto& s = impl_->socket;
+  s.set(zmq::sockopt::router_mandatory, 1);
+  s.set(zmq::sockopt::linger, linger_ms);
+  s.set(zmq::sockopt::sndhwm, 0);
+  s.set(zmq::sockopt::rcvhwm, 0);
+  if (options.scheme == ZmqScheme::ipc) {
+    impl_->directory = make_private_directory();
+    impl_->endpoint = "ipc://" + (impl_->directory / "coupler.sock").string();
+    s.bind(impl_->endpoint);
+  } else {
+    if (!is_loopback(options.tcp_host) && !options.allow_non_loopback)
+      throw InputError(fmt::format("transport: binding tcp on '{}' (not loopback) needs "
+                                   "'zmq.allow_non_loopback: true' in the job",
+                                   options.tcp_host));
+    s.bind(fmt::format("tcp://{}:*", options.tcp_host));
+    impl_->endpoint = s.get(zmq::sockopt::last_endpoint);
+  }
+}
+
+ZmqHub::~ZmqHub() {
+  impl_->socket.close();
+  impl_->context.close();
+  if (!impl_->directory.empty()) {
+    std::error_code ignored;
+    std::filesystem::remove_all(impl_->directory, ignored);
+  }
+}
+
+const std::string& ZmqHub::endpoint() const { return impl_->endpoint; }
+const std::filesystem::path& ZmqHub::private_directory() const { return impl_->directory; }
+std::string ZmqHub::describe() const { return "zeromq hub at " + impl_->endpoint; }
+
+void ZmqHub::send(const std::string& peer, const Message& message) {
+  try {
+    send_parts(impl_->socket, &peer, message);
+  } catch (const zmq::error_t& e) {
+    if (e.num() == EHOSTUNREACH) throw ProtocolError(peer, "is not connected (cannot send to it)");
+    throw;
+  }
+}
+
+std::optional<Received> ZmqHub::receive(std::chrono::milliseconds timeout) {
+  auto& s = impl_->socket;
+  std::array<zmq::pollitem_t, 1> items{{{s.handle(), 0, ZMQ_POLLIN, 0}}};
+  if (zmq::poll(items.data(), items.size(), timeout) == 0) return std::nullopt;
+  zmq::message_t identity, header, payload;
+  (void)s.recv(identity, zmq::recv_flags::none);
+  std::string peer = identity.to_string();
+  if (!receive_header_and_payload(s, header, payload))
+    throw ProtocolError(peer, "sent a message that is not [header][payload]");
+  Received r;
+  r.peer = std::move(peer);
+  r.message.header = decode_header(
+      std::span(static_cast<const std::byte*>(header.data()), header.size()), r.peer);
+  r.message.payload = from_zmq(std::move(payload));
+  return r;
+}
+
+struct ZmqClient::Impl {
+  zmq::context_t context{1};
+  zmq::socket_t socket{context, zmq::socket_type::dealer};
+  std::string endpoint;
+};
+
+ZmqClient::ZmqClient(const std::string& endpoint, const std::string& participant_name)
+    : impl_(std::make_unique<Impl>()) {
+  if (endpoint.rfind("ipc://", 0) != 0 && endpoint.rfind("tcp://", 0) != 0)
+    throw InputError(fmt::format("coupling endpoint '{}' is not an ipc:// or tcp:// address",
+                                 endpoint));
+  impl_->endpoint = endpoint;
+  auto& s = impl_->socket;
+  s.set(zmq::sockopt::routing_id, participant_name);
+  s.set(zmq::sockopt::linger, linger_ms);
+  s.set(zmq::sockopt::sndhwm, 0);
+  s.set(zmq::sockopt::rcvhwm, 0);
+  s.connect(endpoint);
+}
+
+ZmqClient::~ZmqClient() {
+  impl_->socket.close();
+  impl_->context.close();
+}
+
+std::string ZmqClient::describe() const { return "zeromq client of " + impl_->endpoint; }
+
+void ZmqClient::send(const std::string& peer, const Message& message) {
+  if (peer != coupler_peer)
+    throw std::logic_error("a participant sends only to the coupler, not to '" + peer + "'");
+  send_parts(impl_->socket, nullptr, message);
+}
+
+std::optional<Received> ZmqClient::receive(std::chrono::milliseconds timeout) {
+  auto& s = impl_->socket;
+  std::array<zmq::pollitem_t, 1> items{{{s.handle(), 0, ZMQ_POLLIN, 0}}};
+  if (zmq::poll(items.data(), items.size(), timeout) == 0) return std::nullopt;
+  zmq::message_t header, payload;
+  (void)s.recv(header, zmq::recv_flags::none);
+  if (!s.get(zmq::sockopt::rcvmore))
+    throw ProtocolError(coupler_peer, "sent a message without a payload part");
+  (void)s.recv(payload, zmq::recv_flags::none);
+  while (s.get(zmq::sockopt::rcvmore)) {
+    zmq::message_t extra;
+    (void)s.recv(extra, zmq::recv_flags::none);
+  }
+  Received r;
+  r.peer = coupler_peer;
+  r.message.header = decode_header(
+      std::span(static_cast<const std::byte*>(header.data()), header.size()), r.peer);
+  r.message.payload = from_zmq(std::move(payload));
+  return r;
+}
+
+}  // namespace cosim::com
