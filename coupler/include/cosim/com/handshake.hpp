@@ -1,0 +1,52 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cosim/com/message.hpp"
+#include "cosim/field.hpp"
+#include "cosim/mesh.hpp"
+
+// What a participant and the coupler say to each other before the first
+// window, and how meshes travel (JSON for declarations, float64 for
+// geometry).
+namespace cosim::com {
+
+struct MeshDeclaration {
+  std::string name;
+  MeshKind kind = MeshKind::uniform_grid;
+  int dim = 1;
+};
+
+struct Hello {
+  std::string participant;
+  std::string config_hash;
+  std::string program;
+  long pid = 0;
+  std::vector<MeshDeclaration> meshes;
+  std::vector<FieldSpec> writes;
+  std::vector<FieldSpec> reads;
+};
+
+enum class Extrapolation { constant, linear };
+
+struct Welcome {
+  double start_time = 0.0;
+  double end_time = 0.0;
+  double window = 0.0;
+  Extrapolation extrapolation = Extrapolation::constant;
+  double timeout_s = 600.0;  // longest wait for the coupler within a window
+};
+
+std::string to_json(const Hello& hello);
+std::string to_json(const Welcome& welcome);
+// Parse and check; a malformed text is a ProtocolError naming `peer`.
+Hello parse_hello(const std::string& text, const std::string& peer);
+Welcome parse_welcome(const std::string& text, const std::string& peer);
+
+Message make_mesh_message(const std::string& job_id, const std::string& sender,
+                          std::uint64_t window, double time, const Mesh& mesh);
+// Rebuilds and validates the mesh; errors are ProtocolErrors naming `peer`.
+Mesh decode_mesh_message(const Message& message, const std::string& peer);
+
+}  // namespace cosim::com

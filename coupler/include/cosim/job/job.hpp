@@ -1,0 +1,86 @@
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cosim/com/handshake.hpp"
+#include "cosim/config/schema.hpp"
+#include "cosim/error.hpp"
+#include "cosim/mapping/constraint.hpp"
+#include "cosim/mesh.hpp"
+
+// A coupled run as its YAML `kind: job` file describes it, validated in full
+// before anything starts.
+namespace cosim::job {
+
+struct MeshSpec {
+  MeshKind kind = MeshKind::uniform_grid;
+  int dim = 1;
+  SourceLocation where;
+};
+
+struct ParticipantSpec {
+  std::string name;
+  std::string executable;  // as written: a name looked up next to cosim, then on PATH, or a path
+  std::optional<std::filesystem::path> config;  // resolved from the job file's directory
+  std::vector<std::string> args;
+  std::map<std::string, MeshSpec> meshes;
+  std::map<std::string, std::string> writes;  // field -> mesh
+  std::map<std::string, std::string> reads;   // field -> mesh
+  SourceLocation where;
+};
+
+struct MappingSpec {
+  mapping::Constraint constraint = mapping::Constraint::consistent;
+  mapping::Kernel kernel = mapping::Kernel::linear;
+  std::optional<std::pair<double, double>> bounds;  // bounded fractions
+};
+
+struct ExchangeSpec {
+  std::string field;
+  std::string from;
+  std::string to;
+  MappingSpec mapping;
+  SourceLocation where;
+  std::string key_path;
+};
+
+enum class TransportKind { zmq, mpi };
+
+struct ZmqSpec {
+  std::string scheme = "ipc";  // ipc | tcp
+  std::string host = "127.0.0.1";
+  bool allow_non_loopback = false;
+};
+
+struct Job {
+  std::filesystem::path file;
+  std::string name;
+  std::string config_hash;  // of the job file and every participant config it names
+  double start_time = 0.0;
+  double end_time = 0.0;
+  double window = 0.0;
+  TransportKind transport = TransportKind::zmq;
+  ZmqSpec zmq;
+  com::Extrapolation extrapolation = com::Extrapolation::constant;
+  double window_timeout_s = 600.0;
+  double output_every = 0.0;  // 0: no snapshots of the exchanged fields
+  std::vector<ParticipantSpec> participants;  // in file order
+  std::vector<ExchangeSpec> exchanges;
+
+  const ParticipantSpec* participant(const std::string& name) const;
+  std::size_t windows() const;  // number of coupling windows
+};
+
+// The schema of `kind: job` files; also produces `cosim run --help-config`.
+const config::Schema& job_schema();
+
+// Loads, validates (schema, then cross-references: unknown participants,
+// fields read that nobody writes, mismatched mesh dimensions, ...) and
+// returns the job. Throws InputError with file, line, column and key path.
+Job load_job(const std::filesystem::path& file);
+
+}  // namespace cosim::job

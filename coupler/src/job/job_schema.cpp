@@ -1,0 +1,110 @@
+#include "cosim/job/job.hpp"
+
+namespace cosim::job {
+
+using config::Schema;
+
+namespace {
+
+Schema mesh_schema() {
+  Schema s = Schema::object("A mesh the participant declares, so the job can be checked before it "
+                            "starts.");
+  s.required("kind",
+             Schema::one_of({"uniform_grid", "nonuniform_line", "point_cloud", "cell_cloud"}),
+             "Mesh kind (DESIGN.md §5).")
+      .required("dim", Schema::integer().range(1, 3), "Spatial dimension.");
+  return s;
+}
+
+Schema participant_schema() {
+  Schema s = Schema::object("One solver process.");
+  s.required("executable", Schema::string().non_empty(),
+             "Program to start: a name found next to `cosim` (build/bin) or on PATH, or a path.")
+      .optional("config", Schema::path().must_exist(),
+                "The solver's own config file, passed as --config (relative to this file).")
+      .optional("args", Schema::sequence(Schema::string()).default_value("[]"),
+                "Extra command-line arguments.")
+      .optional("meshes", Schema::map_of(mesh_schema()).default_value("{}"),
+                "Meshes the participant declares: name -> {kind, dim}.")
+      .optional("writes", Schema::map_of(Schema::string().non_empty()).default_value("{}"),
+                "Fields it writes: field name -> mesh name.")
+      .optional("reads", Schema::map_of(Schema::string().non_empty()).default_value("{}"),
+                "Fields it reads: field name -> mesh name.");
+  return s;
+}
+
+Schema mapping_schema() {
+  Schema detailed = Schema::object("Mapping with options.");
+  detailed.required("constraint", Schema::one_of({"conservative", "consistent"}),
+                    "conservative (extensive fields: totals kept) or consistent (intensive "
+                    "fields: averages).")
+      .optional("kernel", Schema::one_of({"linear", "quadratic_bspline"}).default_value("linear"),
+                "Kernel between point/cell clouds and grids.")
+      .optional("bounds", Schema::vector(2, 2),
+                "[lo, hi]: keep the mapped fraction within bounds, redistributing any excess "
+                "to neighbours so the total is kept.");
+  return Schema::any_of({Schema::one_of({"conservative", "consistent"}), detailed});
+}
+
+Schema exchange_schema() {
+  Schema s = Schema::object("One field sent from one participant to another.");
+  s.required("field", Schema::string().non_empty(), "Field name (the same on both sides).")
+      .required("from", Schema::string().non_empty(), "Participant that writes it.")
+      .required("to", Schema::string().non_empty(), "Participant that reads it.")
+      .required("mapping", mapping_schema(), "How values move between the two meshes.");
+  return s;
+}
+
+Schema zmq_schema() {
+  Schema s = Schema::object("ZeroMQ transport options.");
+  s.optional("scheme", Schema::one_of({"ipc", "tcp"}).default_value("ipc"),
+             "ipc: sockets in a private 0700 directory; tcp: a loopback port.")
+      .optional("host", Schema::string().non_empty().default_value("127.0.0.1"),
+                "tcp interface to bind.")
+      .optional("allow_non_loopback", Schema::boolean().default_value("false"),
+                "Allow binding a host other than loopback.");
+  return s;
+}
+
+Schema output_schema() {
+  Schema s = Schema::object("What the coupler writes besides log.txt and summary.json.");
+  s.optional("every", Schema::number().non_negative().unit("s").default_value("0"),
+             "Interval of snapshots of the exchanged fields (0: none).");
+  return s;
+}
+
+Schema make_job_schema() {
+  Schema s = Schema::file("job", "A coupled run: participants, the fields they exchange, and "
+                                 "the coupling windows.");
+  s.required("name", Schema::string().non_empty(), "Name of the job (used in logs and reports).")
+      .optional("start_time", Schema::number().non_negative().unit("s").default_value("0"),
+                "Simulated start time.")
+      .required("end_time", Schema::number().positive().unit("s"), "Simulated end time.")
+      .required("window", Schema::number().positive().unit("s"),
+                "Coupling window; participants sub-cycle their own steps inside it.")
+      .optional("transport", Schema::one_of({"zmq", "mpi"}).default_value("zmq"),
+                "How fields travel between processes.")
+      .optional("zmq", zmq_schema(), "ZeroMQ options.")
+      .optional("extrapolation", Schema::one_of({"constant", "linear"}).default_value("constant"),
+                "How a participant sees its partner's fields inside a window.")
+      .optional("window_timeout", Schema::number().positive().unit("s").default_value("600"),
+                "Longest wall time a window may take before a participant is declared hung.")
+      .required("participants", Schema::map_of(participant_schema()).length(1, 64),
+                "The solver processes, by name.")
+      .optional("exchange", Schema::sequence(exchange_schema()).default_value("[]"),
+                "The fields exchanged each window.")
+      .optional("momentum_exchange", Schema::any(),
+                "Implicit drag exchange between a fluid and a porous solid (`none`, or a "
+                "mapping; see the ice_fluid and mpm_solver pairing issues).")
+      .optional("output", output_schema(), "Coupler output.");
+  return s;
+}
+
+}  // namespace
+
+const config::Schema& job_schema() {
+  static const Schema schema = make_job_schema();
+  return schema;
+}
+
+}  // namespace cosim::job

@@ -1,0 +1,200 @@
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "cosim/com/transport.hpp"
+#include "cosim/config/document.hpp"
+#include "cosim/io/content_hash.hpp"
+#include "cosim/job/job.hpp"
+
+namespace cosim::job {
+
+namespace {
+
+std::string names_of(const std::map<std::string, std::string>& fields) {
+  std::string out;
+  for (const auto& [name, mesh] : fields) out += (out.empty() ? "" : ", ") + name;
+  return out.empty() ? "none" : out;
+}
+
+MeshKind mesh_kind_from(const config::Node& node) {
+  const auto s = node.as<std::string>();
+  for (auto k : {MeshKind::uniform_grid, MeshKind::nonuniform_line, MeshKind::point_cloud,
+                 MeshKind::cell_cloud})
+    if (s == to_string(k)) return k;
+  node.fail("unknown mesh kind '" + s + "'");
+}
+
+std::map<std::string, std::string> field_map(const config::Node& p, const char* key,
+                                             const std::map<std::string, MeshSpec>& meshes) {
+  std::map<std::string, std::string> out;
+  auto node = p.find(key);
+  if (!node) return out;
+  for (const auto& [field, mesh] : node->entries()) {
+    const auto mesh_name = mesh.as<std::string>();
+    if (!meshes.count(mesh_name))
+      mesh.fail(fmt::format("mesh '{}' is not among this participant's meshes", mesh_name));
+    out[field] = mesh_name;
+  }
+  return out;
+}
+
+ParticipantSpec read_participant(const std::string& name, const config::Node& p) {
+  ParticipantSpec spec;
+  spec.name = name;
+  spec.where = p.key_location();
+  spec.executable = p["executable"].as<std::string>();
+  if (auto c = p.find("config")) spec.config = c->as_path();
+  if (auto a = p.find("args")) spec.args = a->as<std::vector<std::string>>();
+  if (auto meshes = p.find("meshes"))
+    for (const auto& [mesh_name, m] : meshes->entries())
+      spec.meshes[mesh_name] = {mesh_kind_from(m["kind"]), m["dim"].as<int>(), m.key_location()};
+  spec.writes = field_map(p, "writes", spec.meshes);
+  spec.reads = field_map(p, "reads", spec.meshes);
+  for (const auto& [field, mesh] : spec.reads)
+    if (spec.writes.count(field))
+      p["reads"][field].fail(fmt::format("participant '{}' both writes and reads '{}'", name,
+                                         field));
+  return spec;
+}
+
+MappingSpec read_mapping(const config::Node& m) {
+  MappingSpec spec;
+  if (m.is_scalar()) {
+    spec.constraint = mapping::constraint_from_string(m.as<std::string>());
+    return spec;
+  }
+  spec.constraint = mapping::constraint_from_string(m["constraint"].as<std::string>());
+  if (auto k = m.find("kernel")) spec.kernel = mapping::kernel_from_string(k->as<std::string>());
+  if (auto b = m.find("bounds")) {
+    const auto v = b->as<std::vector<double>>();
+    if (!(v[0] < v[1])) b->fail("bounds must be [lo, hi] with lo < hi");
+    if (spec.constraint != mapping::Constraint::conservative)
+      b->fail("bounds apply to conservative transfers (a consistent map cannot overshoot)");
+    spec.bounds = std::make_pair(v[0], v[1]);
+  }
+  return spec;
+}
+
+// Cross-references the schema cannot see.
+void check_exchanges(Job& job, const config::Node& root) {
+  auto list = root.find("exchange");
+  if (!list) return;
+  std::map<std::pair<std::string, std::string>, std::string> seen;  // (to, field) -> key path
+  const auto items = list->items();
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const config::Node& e = items[i];
+    ExchangeSpec x;
+    x.field = e["field"].as<std::string>();
+    x.from = e["from"].as<std::string>();
+    x.to = e["to"].as<std::string>();
+    x.mapping = read_mapping(e["mapping"]);
+    x.where = e.location();
+    x.key_path = e.key_path();
+    const ParticipantSpec* from = job.participant(x.from);
+    const ParticipantSpec* to = job.participant(x.to);
+    if (!from) e["from"].fail(fmt::format("no participant named '{}'", x.from));
+    if (!to) e["to"].fail(fmt::format("no participant named '{}'", x.to));
+    if (x.from == x.to) e["to"].fail("a participant cannot send a field to itself");
+    auto w = from->writes.find(x.field);
+    if (w == from->writes.end())
+      e["field"].fail(fmt::format("participant '{}' does not write '{}' (its writes: {})", x.from,
+                                  x.field, names_of(from->writes)));
+    auto r = to->reads.find(x.field);
+    if (r == to->reads.end())
+      e["field"].fail(fmt::format("participant '{}' does not read '{}' (its reads: {})", x.to,
+                                  x.field, names_of(to->reads)));
+    const MeshSpec& source = from->meshes.at(w->second);
+    const MeshSpec& target = to->meshes.at(r->second);
+    if (source.dim != target.dim)
+      e.fail(fmt::format("field '{}' goes from {}D mesh '{}.{}' to {}D mesh '{}.{}'; mapping needs "
+                         "meshes of the same dimension",
+                         x.field, source.dim, x.from, w->second, target.dim, x.to, r->second));
+    auto [it, fresh] = seen.emplace(std::make_pair(x.to, x.field), e.key_path());
+    if (!fresh)
+      e.fail(fmt::format("'{}' of participant '{}' is already provided by {}", x.field, x.to,
+                         it->second));
+    job.exchanges.push_back(std::move(x));
+  }
+}
+
+void check_reads_provided(const Job& job, const config::Node& root) {
+  for (const auto& p : job.participants)
+    for (const auto& [field, mesh] : p.reads) {
+      const bool provided = std::any_of(job.exchanges.begin(), job.exchanges.end(), [&](auto& x) {
+        return x.to == p.name && x.field == field;
+      });
+      if (!provided)
+        root["participants"][p.name]["reads"][field].fail(fmt::format(
+            "participant '{}' reads '{}', but no exchange entry sends it", p.name, field));
+    }
+}
+
+std::string hash_inputs(const config::Document& doc, const Job& job) {
+  ContentHash h;
+  h.update(doc.text());
+  for (const auto& p : job.participants)
+    if (p.config) h.update(to_hex16(hash_file(*p.config)));
+  return h.hex();
+}
+
+}  // namespace
+
+const ParticipantSpec* Job::participant(const std::string& n) const {
+  auto it = std::find_if(participants.begin(), participants.end(),
+                         [&](const ParticipantSpec& p) { return p.name == n; });
+  return it == participants.end() ? nullptr : &*it;
+}
+
+std::size_t Job::windows() const {
+  return static_cast<std::size_t>(std::ceil((end_time - start_time) / window - 1e-9));
+}
+
+Job load_job(const std::filesystem::path& file) {
+  const config::Document doc = config::Document::load_file(file);
+  const config::Node root = doc.root();
+  job_schema().validate(root);
+
+  Job job;
+  job.file = file;
+  job.name = root["name"].as<std::string>();
+  job.start_time = root.get<double>("start_time", 0.0);
+  job.end_time = root["end_time"].as<double>();
+  job.window = root["window"].as<double>();
+  if (!(job.end_time > job.start_time))
+    root["end_time"].fail(fmt::format("end time {} s is not after the start time {} s",
+                                      job.end_time, job.start_time));
+  if (job.window > job.end_time - job.start_time)
+    root["window"].fail(fmt::format("window {} s is longer than the run ({} s)", job.window,
+                                    job.end_time - job.start_time));
+  if ((job.end_time - job.start_time) / job.window > 1e9)
+    root["window"].fail("more than 1e9 coupling windows");
+  job.transport = root.get<std::string>("transport", "zmq") == "mpi" ? TransportKind::mpi
+                                                                     : TransportKind::zmq;
+  if (auto z = root.find("zmq")) {
+    job.zmq.scheme = z->get<std::string>("scheme", "ipc");
+    job.zmq.host = z->get<std::string>("host", "127.0.0.1");
+    job.zmq.allow_non_loopback = z->get<bool>("allow_non_loopback", false);
+  }
+  job.extrapolation = root.get<std::string>("extrapolation", "constant") == "linear"
+                          ? com::Extrapolation::linear
+                          : com::Extrapolation::constant;
+  job.window_timeout_s = root.get<double>("window_timeout", 600.0);
+  if (auto o = root.find("output")) job.output_every = o->get<double>("every", 0.0);
+
+  for (const auto& [name, p] : root["participants"].entries()) {
+    if (name == com::coupler_peer)
+      p.fail_at_key("'coupler' is reserved for the coupler itself");
+    job.participants.push_back(read_participant(name, p));
+  }
+  check_exchanges(job, root);
+  check_reads_provided(job, root);
+  if (auto m = root.find("momentum_exchange"); m && !(m->is_scalar() && m->as<std::string>() == "none"))
+    m->fail("the implicit momentum exchange between processes is wired with the first porous "
+            "pairing (ice_fluid issue); use 'none' for now");
+  job.config_hash = hash_inputs(doc, job);
+  return job;
+}
+
+}  // namespace cosim::job

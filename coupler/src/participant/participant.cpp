@@ -1,0 +1,458 @@
+#include "cosim/participant.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "cosim/com/handshake.hpp"
+#include "cosim/com/mpi_transport.hpp"
+#include "cosim/com/zmq_transport.hpp"
+#include "cosim/error.hpp"
+
+namespace cosim {
+
+using com::MessageType;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+// Steps that end within this fraction of a window from its end complete it.
+constexpr double window_end_tolerance = 1e-9;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+[[noreturn]] void usage_error(const std::string& participant, const std::string& what) {
+  throw Error(ExitCode::bad_input, fmt::format("participant '{}': {}", participant, what));
+}
+
+}  // namespace
+
+void add_coupling_options(CLI::App& app, CouplingEndpoint& endpoint) {
+  auto* group = app.add_option_group("coupling", "Set by `cosim run`; absent when standalone");
+  group->add_option("--cosim-endpoint", endpoint.uri,
+                    "coupler address (ipc://..., tcp://127.0.0.1:port, mpi://)");
+  group->add_option("--cosim-job", endpoint.job_id, "id of the job this process belongs to");
+  group->add_option("--cosim-config-hash", endpoint.config_hash, "hash of the job's config");
+  group->add_option("--cosim-connect-timeout", endpoint.connect_timeout_s,
+                    "seconds to wait for the coupler's welcome")
+      ->check(CLI::PositiveNumber);
+}
+
+struct WriteBuffer {
+  FieldSpec spec;
+  std::vector<double> values;  // state: last written; integral: the rate last written
+  std::vector<double> integral;
+  bool written = false;
+};
+
+struct ReadBuffer {
+  FieldSpec spec;
+  std::vector<double> current;
+  std::vector<double> previous;  // for linear extrapolation
+  double received_at = 0.0;
+  double previous_at = 0.0;
+  bool has_previous = false;
+  std::vector<double> delivered;  // integral fields: shares handed out this window
+};
+
+struct MeshEntry {
+  Mesh mesh;
+  bool changed = true;
+};
+
+struct Participant::Impl {
+  std::string name;
+  CouplingEndpoint endpoint;
+  std::unique_ptr<com::Transport> transport;
+  std::map<std::string, MeshEntry, std::less<>> meshes;
+  std::map<std::string, WriteBuffer, std::less<>> writes;
+  std::map<std::string, ReadBuffer, std::less<>> reads;
+  com::Welcome schedule;
+  bool initialized = false;
+  bool finished = false;  // the coupler said the run is over
+  bool finalized = false;
+  double time = 0.0;
+  double window_start = 0.0;
+  std::size_t window = 0;
+  double standalone_window = 0.0;
+  CouplingTimings timings;
+
+  std::size_t size_of(const FieldSpec& f) const {
+    return meshes.at(f.mesh).mesh.size() * static_cast<std::size_t>(f.components);
+  }
+
+  double window_end() const {
+    return std::min(schedule.end_time, window_start + schedule.window);
+  }
+
+  void send(com::Message message) {
+    const auto start = Clock::now();
+    transport->send(com::coupler_peer, message);
+    timings.transport += seconds_since(start);
+  }
+
+  com::Message header_only(MessageType type) const {
+    com::Message m;
+    m.header.type = type;
+    m.header.job_id = endpoint.job_id;
+    m.header.sender = name;
+    m.header.window = window;
+    m.header.time = time;
+    return m;
+  }
+
+  // Waits for the coupler's next message; a silent coupler is an error after
+  // the timeout, an abort from it ends this participant.
+  com::Message receive(double timeout_s) {
+    const auto start = Clock::now();
+    auto received =
+        transport->receive(std::chrono::milliseconds(static_cast<long>(timeout_s * 1000.0)));
+    timings.waiting += seconds_since(start);
+    if (!received)
+      throw ProtocolError(com::coupler_peer,
+                          fmt::format("no answer within {} s (participant '{}', window {})",
+                                      timeout_s, name, window));
+    com::Message& m = received->message;
+    if (m.header.job_id != endpoint.job_id)
+      throw ProtocolError(com::coupler_peer, fmt::format("message for job '{}', this is job '{}'",
+                                                         m.header.job_id, endpoint.job_id));
+    if (m.header.type == MessageType::abort)
+      throw Error(ExitCode::participant_failed,
+                  fmt::format("the coupler aborted the run: {}", m.payload.text()));
+    if (m.header.type == MessageType::refuse)
+      throw Error(ExitCode::bad_input,
+                  fmt::format("the coupler refused participant '{}': {}", name, m.payload.text()));
+    return std::move(m);
+  }
+
+  void send_window_data() {
+    for (auto& [mesh_name, entry] : meshes) {
+      if (!entry.changed) continue;
+      send(com::make_mesh_message(endpoint.job_id, name, window, time, entry.mesh));
+      entry.changed = false;
+    }
+    for (auto& [field_name, w] : writes) {
+      const auto& values = w.spec.time == TimeTreatment::integral ? w.integral : w.values;
+      send(com::make_field_message(endpoint.job_id, name, window, time, field_name, w.spec.mesh,
+                                   values, static_cast<std::uint32_t>(w.spec.components)));
+      if (w.spec.time == TimeTreatment::integral) std::fill(w.integral.begin(), w.integral.end(), 0.0);
+    }
+    send(header_only(MessageType::window_end));
+  }
+
+  // Receives the mapped fields for the next window, then window_begin or
+  // finish.
+  void receive_window_data() {
+    for (;;) {
+      com::Message m = receive(schedule.timeout_s);
+      switch (m.header.type) {
+        case MessageType::field: store_field(m); break;
+        case MessageType::window_begin:
+          if (m.header.window != window + 1)
+            throw ProtocolError(com::coupler_peer, fmt::format("began window {} after window {}",
+                                                               m.header.window, window));
+          return;
+        case MessageType::finish: finished = true; return;
+        default:
+          throw ProtocolError(com::coupler_peer,
+                              fmt::format("unexpected '{}' message while waiting for window data",
+                                          com::to_string(m.header.type)));
+      }
+    }
+  }
+
+  void store_field(const com::Message& m) {
+    auto it = reads.find(m.header.field);
+    if (it == reads.end())
+      throw ProtocolError(com::coupler_peer,
+                          fmt::format("sent field '{}', which participant '{}' does not read",
+                                      m.header.field, name));
+    ReadBuffer& r = it->second;
+    if (m.header.mesh != r.spec.mesh ||
+        m.header.components != static_cast<std::uint32_t>(r.spec.components) ||
+        m.header.count * m.header.components != r.current.size())
+      throw ProtocolError(com::coupler_peer,
+                          fmt::format("field '{}' arrived as {} x {} on mesh '{}', expected {} "
+                                      "values on mesh '{}'",
+                                      m.header.field, m.header.count, m.header.components,
+                                      m.header.mesh, r.current.size(), r.spec.mesh));
+    com::validate_payload(m, com::coupler_peer, r.spec.allow_nonfinite);
+    r.previous.swap(r.current);
+    r.previous_at = r.received_at;
+    r.has_previous = r.spec.time == TimeTreatment::state && r.received_at < m.header.time;
+    m.payload.copy_doubles_to(r.current);
+    r.received_at = m.header.time;
+    std::fill(r.delivered.begin(), r.delivered.end(), 0.0);
+  }
+
+  void check_declaration(const FieldSpec& f) const {
+    if (f.name.empty()) usage_error(name, "a field has an empty name");
+    if (!meshes.count(f.mesh))
+      usage_error(name, fmt::format("field '{}' is on mesh '{}', which is not declared", f.name,
+                                    f.mesh));
+    if (writes.count(f.name) || reads.count(f.name))
+      usage_error(name, fmt::format("field '{}' is declared twice", f.name));
+    if (f.components < 1 || f.components > 9)
+      usage_error(name, fmt::format("field '{}' has {} components", f.name, f.components));
+    if (initialized) usage_error(name, "fields are declared before initialize()");
+  }
+
+  const ReadBuffer& read_buffer(std::string_view field) const {
+    auto it = reads.find(field);
+    if (it == reads.end()) usage_error(name, fmt::format("reads undeclared field '{}'", field));
+    return it->second;
+  }
+};
+
+Participant::Participant(std::string name, CouplingEndpoint endpoint)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->name = std::move(name);
+  impl_->endpoint = std::move(endpoint);
+  if (impl_->name.empty()) throw Error(ExitCode::bad_input, "a participant needs a name");
+}
+
+Participant::~Participant() {
+  try {
+    if (std::uncaught_exceptions() > 0) abort("the solver stopped with an error");
+    else finalize();
+  } catch (...) {
+  }
+}
+
+const std::string& Participant::name() const { return impl_->name; }
+bool Participant::is_coupled() const { return !impl_->endpoint.is_standalone(); }
+
+void Participant::declare_mesh(Mesh mesh) {
+  if (impl_->initialized) usage_error(impl_->name, "meshes are declared before initialize()");
+  validate(mesh);
+  if (impl_->meshes.count(mesh.name))
+    usage_error(impl_->name, fmt::format("mesh '{}' is declared twice", mesh.name));
+  std::string key = mesh.name;
+  impl_->meshes.emplace(std::move(key), MeshEntry{std::move(mesh), true});
+}
+
+void Participant::declare_write(FieldSpec field) {
+  impl_->check_declaration(field);
+  const std::size_t n = impl_->size_of(field);
+  WriteBuffer w{field, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), false};
+  impl_->writes.emplace(field.name, std::move(w));
+}
+
+void Participant::declare_read(FieldSpec field, double default_value) {
+  impl_->check_declaration(field);
+  const std::size_t n = impl_->size_of(field);
+  ReadBuffer r;
+  r.spec = field;
+  r.current.assign(n, field.time == TimeTreatment::integral ? 0.0 : default_value);
+  r.previous = r.current;
+  r.delivered.assign(n, 0.0);
+  impl_->reads.emplace(field.name, std::move(r));
+}
+
+void Participant::set_standalone_window(double window) {
+  if (!(window > 0.0)) usage_error(impl_->name, "the standalone window must be positive");
+  impl_->standalone_window = window;
+}
+
+void Participant::initialize(double start_time, double end_time) {
+  Impl& s = *impl_;
+  if (s.initialized) usage_error(s.name, "initialize() called twice");
+  if (!(end_time >= start_time))
+    usage_error(s.name, fmt::format("end time {} is before start time {}", end_time, start_time));
+  s.initialized = true;
+  s.window = 1;
+  if (!is_coupled()) {
+    s.schedule.start_time = start_time;
+    s.schedule.end_time = end_time;
+    s.schedule.window = s.standalone_window > 0.0 ? s.standalone_window
+                                                  : std::max(end_time - start_time, 1e-300);
+    s.time = s.window_start = start_time;
+    return;
+  }
+
+  const std::string& uri = s.endpoint.uri;
+  if (uri.rfind("mpi://", 0) == 0) s.transport = std::make_unique<com::MpiClient>(s.name);
+  else s.transport = std::make_unique<com::ZmqClient>(uri, s.name);
+
+  com::Hello hello;
+  hello.participant = s.name;
+  hello.config_hash = s.endpoint.config_hash;
+  hello.pid = static_cast<long>(::getpid());
+  hello.program = "cosim participant " COSIM_VERSION;
+  for (const auto& [mesh_name, entry] : s.meshes)
+    hello.meshes.push_back({mesh_name, entry.mesh.kind(), entry.mesh.dimension()});
+  for (const auto& [field_name, w] : s.writes) hello.writes.push_back(w.spec);
+  for (const auto& [field_name, r] : s.reads) hello.reads.push_back(r.spec);
+  s.window = 0;
+  s.send(com::make_text_message(MessageType::hello, s.endpoint.job_id, s.name, 0, start_time,
+                                com::to_json(hello)));
+  com::Message reply = s.receive(s.endpoint.connect_timeout_s);
+  if (reply.header.type != MessageType::welcome)
+    throw ProtocolError(com::coupler_peer, fmt::format("answered hello with '{}'",
+                                                       com::to_string(reply.header.type)));
+  s.schedule = com::parse_welcome(reply.payload.text(), com::coupler_peer);
+  if (std::abs(s.schedule.end_time - end_time) > 0.0 || s.schedule.start_time != start_time)
+    spdlog::info("participant '{}': the job's schedule [{}, {}] s replaces the solver's own [{}, "
+                 "{}] s",
+                 s.name, s.schedule.start_time, s.schedule.end_time, start_time, end_time);
+  s.time = s.window_start = s.schedule.start_time;
+  for (auto& [field_name, r] : s.reads) r.received_at = r.previous_at = s.time;
+
+  // Window 0 carries the initial data both ways.
+  s.send_window_data();
+  s.receive_window_data();
+  s.window = 1;
+  s.timings.windows = 0;
+}
+
+double Participant::time() const { return impl_->time; }
+double Participant::window_size() const { return impl_->schedule.window; }
+std::size_t Participant::window_index() const { return impl_->window; }
+double Participant::end_time() const { return impl_->schedule.end_time; }
+
+double Participant::max_time_step() const { return impl_->window_end() - impl_->time; }
+
+bool Participant::is_coupling_ongoing() const {
+  const Impl& s = *impl_;
+  if (!s.initialized || s.finished || s.finalized) return false;
+  return s.time < s.schedule.end_time - window_end_tolerance * s.schedule.window;
+}
+
+void Participant::update_mesh(const Mesh& mesh) {
+  auto it = impl_->meshes.find(mesh.name);
+  if (it == impl_->meshes.end())
+    usage_error(impl_->name, fmt::format("updates undeclared mesh '{}'", mesh.name));
+  if (mesh.kind() != it->second.mesh.kind() || mesh.size() != it->second.mesh.size())
+    usage_error(impl_->name, fmt::format("mesh '{}' may move but not change kind or size",
+                                         mesh.name));
+  validate(mesh);
+  it->second.mesh = mesh;
+  it->second.changed = true;
+}
+
+void Participant::write(std::string_view field, std::span<const double> values) {
+  auto it = impl_->writes.find(field);
+  if (it == impl_->writes.end())
+    usage_error(impl_->name, fmt::format("writes undeclared field '{}'", field));
+  WriteBuffer& w = it->second;
+  if (values.size() != w.values.size())
+    usage_error(impl_->name, fmt::format("wrote {} values to field '{}', which has {}",
+                                         values.size(), field, w.values.size()));
+  std::copy(values.begin(), values.end(), w.values.begin());
+  w.written = true;
+}
+
+void Participant::advance(double dt) {
+  Impl& s = *impl_;
+  if (!s.initialized) usage_error(s.name, "advance() before initialize()");
+  if (!is_coupling_ongoing()) usage_error(s.name, "advance() after the end of the coupling");
+  const double remaining = s.window_end() - s.time;
+  const double tolerance = window_end_tolerance * s.schedule.window;
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw NumericalError(fmt::format("participant '{}': time step {} is not positive", s.name, dt));
+  if (dt > remaining + tolerance)
+    usage_error(s.name, fmt::format("step {} s overshoots the window end by {} s (use "
+                                    "max_time_step())",
+                                    dt, dt - remaining));
+  for (auto& [field_name, w] : s.writes)
+    if (w.spec.time == TimeTreatment::integral)
+      for (std::size_t i = 0; i < w.values.size(); ++i) w.integral[i] += w.values[i] * dt;
+
+  const bool completes_window = dt >= remaining - tolerance;
+  s.time = completes_window ? s.window_end() : s.time + dt;
+  if (!completes_window) return;
+
+  ++s.timings.windows;
+  if (is_coupled()) {
+    s.send_window_data();
+    s.receive_window_data();
+  }
+  s.window_start = s.time;
+  ++s.window;
+  for (auto& [field_name, r] : s.reads) std::fill(r.delivered.begin(), r.delivered.end(), 0.0);
+}
+
+void Participant::read(std::string_view field, std::span<double> values) const {
+  const Impl& s = *impl_;
+  const ReadBuffer& r = s.read_buffer(field);
+  if (values.size() != r.current.size())
+    usage_error(s.name, fmt::format("reads {} values of field '{}', which has {}", values.size(),
+                                    field, r.current.size()));
+  const bool extrapolate = s.schedule.extrapolation == com::Extrapolation::linear &&
+                           r.has_previous && r.received_at > r.previous_at;
+  if (!extrapolate) {
+    std::copy(r.current.begin(), r.current.end(), values.begin());
+    return;
+  }
+  const double slope_factor = (s.time - r.received_at) / (r.received_at - r.previous_at);
+  for (std::size_t i = 0; i < values.size(); ++i)
+    values[i] = r.current[i] + slope_factor * (r.current[i] - r.previous[i]);
+}
+
+std::vector<double> Participant::read(std::string_view field) const {
+  std::vector<double> values(impl_->read_buffer(field).current.size());
+  read(field, values);
+  return values;
+}
+
+void Participant::read_increment(std::string_view field, double dt, std::span<double> values) {
+  Impl& s = *impl_;
+  auto it = s.reads.find(field);
+  if (it == s.reads.end() || it->second.spec.time != TimeTreatment::integral)
+    usage_error(s.name, fmt::format("read_increment() needs a declared integral field, not '{}'",
+                                    field));
+  ReadBuffer& r = it->second;
+  if (values.size() != r.current.size())
+    usage_error(s.name, fmt::format("reads {} values of field '{}', which has {}", values.size(),
+                                    field, r.current.size()));
+  const double remaining = s.window_end() - s.time;
+  const bool last_step = dt >= remaining - window_end_tolerance * s.schedule.window;
+  const double share = std::min(1.0, dt / s.schedule.window);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    values[i] = last_step ? r.current[i] - r.delivered[i] : r.current[i] * share;
+    r.delivered[i] += values[i];
+  }
+}
+
+std::size_t Participant::field_size(std::string_view field) const {
+  if (auto w = impl_->writes.find(field); w != impl_->writes.end()) return w->second.values.size();
+  return impl_->read_buffer(field).current.size();
+}
+
+const CouplingTimings& Participant::timings() const { return impl_->timings; }
+
+void Participant::finalize() {
+  Impl& s = *impl_;
+  if (s.finalized) return;
+  s.finalized = true;
+  if (s.transport && !s.finished) {
+    // Leaving before the coupler said the run is over: tell it why.
+    s.send(com::make_text_message(MessageType::abort, s.endpoint.job_id, s.name, s.window, s.time,
+                                  "participant finalized before the end of the coupling"));
+  }
+  s.transport.reset();
+}
+
+void Participant::abort(std::string_view reason) {
+  Impl& s = *impl_;
+  if (s.finalized) return;
+  s.finalized = true;
+  if (s.transport) {
+    try {
+      s.send(com::make_text_message(MessageType::abort, s.endpoint.job_id, s.name, s.window,
+                                    s.time, reason));
+    } catch (...) {
+    }
+  }
+  s.transport.reset();
+}
+
+}  // namespace cosim
