@@ -1,0 +1,14 @@
+#pragma once
+
+#include "cosim/mapping/constraint.hpp"
+#include "cosim/mapping/operator.hpp"
+#include "cosim/mesh.hpp"
+
+namespace cosim::mapping::detail {
+
+// Uniform grids and non-uniform lines ↔ each other, from exact overlap
+// volumes of their control volumes (see build_operator.hpp). Both meshes are
+// structured with the same dimension.
+Operator build_overlap_operator(const Mesh& from, const Mesh& to, Constraint constraint);
+
+}  // namespace cosim::mapping::detail
