@@ -40,14 +40,17 @@ namespace cosim {
 // `cosim run` (see add_coupling_options). An empty uri means standalone.
 struct CouplingEndpoint {
   std::string uri;          // ipc://..., tcp://127.0.0.1:port, or mpi://
+  std::string name;         // the participant's name in the job
   std::string job_id;       // the job this participant was started for
   std::string config_hash;  // hash of the job config it was started for
   double connect_timeout_s = 60.0;
 
   bool is_standalone() const { return uri.empty(); }
+  // The job's name for this participant, or the solver's own when standalone.
+  std::string name_or(std::string fallback) const { return name.empty() ? fallback : name; }
 };
 
-// Adds --cosim-endpoint, --cosim-job, --cosim-config-hash and
+// Adds --cosim-endpoint, --cosim-name, --cosim-job, --cosim-config-hash and
 // --cosim-connect-timeout to a solver's command line.
 void add_coupling_options(CLI::App& app, CouplingEndpoint& endpoint);
 

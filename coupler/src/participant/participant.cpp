@@ -39,6 +39,7 @@ void add_coupling_options(CLI::App& app, CouplingEndpoint& endpoint) {
   auto* group = app.add_option_group("coupling", "Set by `cosim run`; absent when standalone");
   group->add_option("--cosim-endpoint", endpoint.uri,
                     "coupler address (ipc://..., tcp://127.0.0.1:port, mpi://)");
+  group->add_option("--cosim-name", endpoint.name, "this participant's name in the job");
   group->add_option("--cosim-job", endpoint.job_id, "id of the job this process belongs to");
   group->add_option("--cosim-config-hash", endpoint.config_hash, "hash of the job's config");
   group->add_option("--cosim-connect-timeout", endpoint.connect_timeout_s,

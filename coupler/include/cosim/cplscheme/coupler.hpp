@@ -1,0 +1,46 @@
+#pragma once
+
+#include <atomic>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "cosim/com/transport.hpp"
+#include "cosim/io/run_summary.hpp"
+#include "cosim/job/job.hpp"
+#include "cosim/runtime/supervisor.hpp"
+
+// The coupler's side of a coupled run: admits the participants (handshake),
+// then, window after window, collects what each wrote, maps every exchange
+// onto the receiving mesh and sends it on (DESIGN.md §3).
+namespace cosim::cplscheme {
+
+struct CouplerOptions {
+  std::filesystem::path output_dir;
+  std::string job_id;
+  double connect_timeout_s = 120.0;  // for every participant's hello
+  bool progress_on_terminal = false;
+  // Set by a signal handler to stop the run between messages.
+  const std::atomic<bool>* interrupted = nullptr;
+};
+
+class Coupler {
+ public:
+  // `supervisor` watches the participants' processes; null under mpirun,
+  // which does that itself.
+  Coupler(const job::Job& job, com::Transport& transport, runtime::Supervisor* supervisor,
+          RunSummary& summary, CouplerOptions options);
+  ~Coupler();
+  Coupler(const Coupler&) = delete;
+  Coupler& operator=(const Coupler&) = delete;
+
+  // Runs to the job's end time. Throws cosim::Error (with its exit code) on
+  // failure, after telling every connected participant to abort.
+  void run();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace cosim::cplscheme

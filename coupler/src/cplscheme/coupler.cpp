@@ -1,0 +1,435 @@
+#include "cosim/cplscheme/coupler.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
+
+#include "admission.hpp"
+#include "cosim/com/handshake.hpp"
+#include "cosim/error.hpp"
+#include "cosim/io/snapshot_writer.hpp"
+#include "cosim/io/tail_lines.hpp"
+#include "cosim/mapping/bounded_redistribution.hpp"
+#include "cosim/mapping/build_operator.hpp"
+#include "progress.hpp"
+
+namespace cosim::cplscheme {
+
+using com::MessageType;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+constexpr auto poll_slice = std::chrono::milliseconds(50);
+// Window ends reported by participants agree with the coupler's to this
+// fraction of a window.
+constexpr double time_tolerance = 1e-9;
+
+struct Peer {
+  const job::ParticipantSpec* spec = nullptr;
+  bool connected = false;
+  com::Hello hello;
+  std::map<std::string, Mesh> meshes;
+  std::map<std::string, std::size_t> mesh_version;
+  std::map<std::string, std::vector<double>> written;
+  bool window_done = false;
+};
+
+struct CachedOperator {
+  mapping::Operator op;
+  std::size_t source_version = 0;
+  std::size_t target_version = 0;
+  bool built = false;
+};
+
+double sum(std::span<const double> v) { return std::accumulate(v.begin(), v.end(), 0.0); }
+
+double abs_sum(std::span<const double> v) {
+  double s = 0.0;
+  for (double x : v) s += std::abs(x);
+  return s;
+}
+
+}  // namespace
+
+struct Coupler::Impl {
+  const job::Job& job;
+  com::Transport& transport;
+  runtime::Supervisor* supervisor;
+  RunSummary& summary;
+  CouplerOptions options;
+  std::map<std::string, Peer> peers;
+  std::vector<CachedOperator> operators;  // one per exchange
+  std::map<std::string, std::unique_ptr<SnapshotWriter>> snapshot_writers;
+  std::size_t window = 0;
+  double max_conservation_error = 0.0;
+  double next_output_time = 0.0;
+
+  Impl(const job::Job& j, com::Transport& t, runtime::Supervisor* s, RunSummary& sum,
+       CouplerOptions o)
+      : job(j), transport(t), supervisor(s), summary(sum), options(std::move(o)) {
+    for (const auto& p : job.participants) peers[p.name].spec = &p;
+    operators.resize(job.exchanges.size());
+  }
+
+  double window_time(std::size_t w) const {
+    return std::min(job.end_time, job.start_time + static_cast<double>(w) * job.window);
+  }
+
+  // Fails the run when a participant process ended before the coupler said
+  // the run is over.
+  void check_processes() {
+    if (options.interrupted && options.interrupted->load())
+      throw Error(ExitCode::participant_failed, "interrupted by a signal; participants stopped");
+    if (!supervisor) return;
+    for (const runtime::ChildExit& e : supervisor->reap())
+      throw Error(ExitCode::participant_failed,
+                  fmt::format("participant '{}' (pid {}) {} during window {}{}", e.name, e.pid,
+                              e.describe(), window, last_lines_of(e.name)));
+  }
+
+  std::string last_lines_of(const std::string& name) const {
+    if (!supervisor) return {};
+    const auto lines = tail_lines(supervisor->log_file(name), 15);
+    if (lines.empty()) return {};
+    std::string out = fmt::format("\n--- last lines of {} ---", supervisor->log_file(name).string());
+    for (const auto& l : lines) out += "\n  " + l;
+    return out;
+  }
+
+  void send(const std::string& peer, const com::Message& m) {
+    auto scope = summary.phases().measure("transport");
+    transport.send(peer, m);
+  }
+
+  com::Message message(MessageType type, double time) const {
+    com::Message m;
+    m.header.type = type;
+    m.header.job_id = options.job_id;
+    m.header.sender = com::coupler_peer;
+    m.header.window = window;
+    m.header.time = time;
+    return m;
+  }
+
+  // One message, or nothing within a poll slice; participants' deaths and
+  // the deadline are checked between slices.
+  std::optional<com::Received> receive(Clock::time_point deadline, const std::string& waiting_for) {
+    for (;;) {
+      check_processes();
+      std::optional<com::Received> r;
+      {
+        auto scope = summary.phases().measure("waiting");
+        r = transport.receive(poll_slice);
+      }
+      if (r) return r;
+      if (Clock::now() >= deadline)
+        throw Error(ExitCode::participant_failed,
+                    fmt::format("timed out waiting for {} (hung participant?)", waiting_for));
+    }
+  }
+
+  void refuse(const std::string& peer, const std::string& reason) {
+    spdlog::warn("refused '{}': {}", peer, reason);
+    try {
+      send(peer, com::make_text_message(MessageType::refuse, options.job_id, com::coupler_peer, 0,
+                                        0.0, reason));
+    } catch (const std::exception&) {
+    }
+  }
+
+  void admit_participants() {
+    const auto deadline =
+        Clock::now() + std::chrono::milliseconds(static_cast<long>(options.connect_timeout_s * 1e3));
+    std::size_t connected = 0;
+    while (connected < peers.size()) {
+      std::optional<com::Received> r;
+      try {
+        r = receive(deadline, fmt::format("participants to connect ({} of {} did)", connected,
+                                          peers.size()));
+      } catch (const ProtocolError& e) {
+        // A peer speaking another protocol version or garbage: refuse it and
+        // keep waiting for the real participants.
+        refuse(e.peer(), e.what());
+        continue;
+      }
+      const com::Header& h = r->message.header;
+      if (h.type != MessageType::hello) {
+        refuse(r->peer, fmt::format("sent '{}' before hello", com::to_string(h.type)));
+        continue;
+      }
+      com::validate_payload(r->message, r->peer, false);
+      const com::Hello hello = com::parse_hello(r->message.payload.text(), r->peer);
+      if (auto reason = admission_refusal(job, options.job_id, h, hello)) {
+        refuse(r->peer, *reason);
+        continue;
+      }
+      Peer& peer = peers.at(r->peer);
+      if (peer.connected) {
+        refuse(r->peer, fmt::format("participant '{}' is already connected", r->peer));
+        continue;
+      }
+      peer.connected = true;
+      peer.hello = hello;
+      ++connected;
+      spdlog::info("participant '{}' connected ({}, pid {})", r->peer, hello.program, hello.pid);
+    }
+    check_exchange_declarations();
+    com::Welcome welcome;
+    welcome.start_time = job.start_time;
+    welcome.end_time = job.end_time;
+    welcome.window = job.window;
+    welcome.extrapolation = job.extrapolation;
+    welcome.timeout_s = job.window_timeout_s;
+    for (const auto& [name, peer] : peers)
+      send(name, com::make_text_message(MessageType::welcome, options.job_id, com::coupler_peer, 0,
+                                        job.start_time, com::to_json(welcome)));
+  }
+
+  static const FieldSpec& declared(const std::vector<FieldSpec>& fields, const std::string& name) {
+    return *std::find_if(fields.begin(), fields.end(), [&](auto& f) { return f.name == name; });
+  }
+
+  void check_exchange_declarations() {
+    for (const job::ExchangeSpec& x : job.exchanges) {
+      const FieldSpec& w = declared(peers.at(x.from).hello.writes, x.field);
+      const FieldSpec& r = declared(peers.at(x.to).hello.reads, x.field);
+      if (auto mismatch = exchange_mismatch(x, w, r))
+        throw InputError(SourceLocation{job.file.string(), x.where.line, x.where.column},
+                         x.key_path, *mismatch);
+    }
+  }
+
+  void handle_window_message(const std::string& name, const com::Message& m) {
+    Peer& peer = peers.at(name);
+    const com::Header& h = m.header;
+    if (h.type == MessageType::abort)
+      throw Error(ExitCode::participant_failed,
+                  fmt::format("participant '{}' aborted in window {}: {}{}", name, window,
+                              m.payload.text(), last_lines_of(name)));
+    if (h.window != window)
+      throw ProtocolError(name, fmt::format("sent a '{}' message for window {} during window {}",
+                                            com::to_string(h.type), h.window, window));
+    switch (h.type) {
+      case MessageType::mesh: {
+        Mesh mesh = com::decode_mesh_message(m, name);
+        auto declared_mesh = std::find_if(peer.hello.meshes.begin(), peer.hello.meshes.end(),
+                                          [&](auto& d) { return d.name == mesh.name; });
+        if (declared_mesh == peer.hello.meshes.end() || declared_mesh->kind != mesh.kind() ||
+            declared_mesh->dim != mesh.dimension())
+          throw ProtocolError(name, fmt::format("sent mesh '{}' ({}D {}) that it did not declare",
+                                                mesh.name, mesh.dimension(),
+                                                to_string(mesh.kind())));
+        auto old = peer.meshes.find(mesh.name);
+        if (old != peer.meshes.end() && old->second.size() != mesh.size())
+          throw ProtocolError(name, fmt::format("mesh '{}' changed size from {} to {}", mesh.name,
+                                                old->second.size(), mesh.size()));
+        peer.meshes[mesh.name] = std::move(mesh);
+        ++peer.mesh_version[h.mesh];
+        return;
+      }
+      case MessageType::field: {
+        auto spec = std::find_if(peer.hello.writes.begin(), peer.hello.writes.end(),
+                                 [&](auto& f) { return f.name == h.field; });
+        if (spec == peer.hello.writes.end())
+          throw ProtocolError(name, fmt::format("sent field '{}' that it did not declare", h.field));
+        auto mesh = peer.meshes.find(spec->mesh);
+        if (h.mesh != spec->mesh || mesh == peer.meshes.end())
+          throw ProtocolError(name, fmt::format("sent field '{}' on mesh '{}' before that mesh",
+                                                h.field, h.mesh));
+        if (h.count != mesh->second.size() ||
+            h.components != static_cast<std::uint32_t>(spec->components))
+          throw ProtocolError(name, fmt::format("field '{}' has {} x {} values, mesh '{}' needs "
+                                                "{} x {}",
+                                                h.field, h.count, h.components, h.mesh,
+                                                mesh->second.size(), spec->components));
+        com::validate_payload(m, name, spec->allow_nonfinite);
+        peer.written[h.field] = m.payload.doubles();
+        return;
+      }
+      case MessageType::window_end: {
+        const double expected = window_time(window);
+        if (std::abs(h.time - expected) > time_tolerance * job.window)
+          throw ProtocolError(name, fmt::format("ended window {} at t = {:.17g} s, the coupler's "
+                                                "window ends at t = {:.17g} s",
+                                                window, h.time, expected));
+        for (const FieldSpec& f : peer.hello.writes)
+          if (!peer.written.count(f.name))
+            throw ProtocolError(name, fmt::format("ended window {} without sending '{}'", window,
+                                                  f.name));
+        peer.window_done = true;
+        return;
+      }
+      default:
+        throw ProtocolError(name, fmt::format("unexpected '{}' message during window {}",
+                                              com::to_string(h.type), window));
+    }
+  }
+
+  void collect_window() {
+    for (auto& [name, peer] : peers) peer.window_done = false;
+    const auto deadline =
+        Clock::now() + std::chrono::milliseconds(static_cast<long>(job.window_timeout_s * 1e3));
+    auto pending = [&] {
+      std::string names;
+      for (const auto& [name, peer] : peers)
+        if (!peer.window_done) names += (names.empty() ? "'" : ", '") + name + "'";
+      return names;
+    };
+    std::size_t done = 0;
+    while (done < peers.size()) {
+      auto r = receive(deadline, fmt::format("window {} from {} (window_timeout {} s)", window,
+                                             pending(), job.window_timeout_s));
+      if (!peers.count(r->peer)) {
+        refuse(r->peer, "the run has started; late or unknown participants are refused");
+        continue;
+      }
+      const bool was_done = peers.at(r->peer).window_done;
+      handle_window_message(r->peer, r->message);
+      if (!was_done && peers.at(r->peer).window_done) ++done;
+    }
+  }
+
+  const mapping::Operator& operator_for(std::size_t index) {
+    const job::ExchangeSpec& x = job.exchanges[index];
+    Peer& from = peers.at(x.from);
+    Peer& to = peers.at(x.to);
+    const std::string& source_mesh = from.spec->writes.at(x.field);
+    const std::string& target_mesh = to.spec->reads.at(x.field);
+    CachedOperator& c = operators[index];
+    const std::size_t sv = from.mesh_version[source_mesh];
+    const std::size_t tv = to.mesh_version[target_mesh];
+    if (!c.built || c.source_version != sv || c.target_version != tv) {
+      mapping::Options map_options;
+      map_options.kernel = x.mapping.kernel;
+      c.op = mapping::build_operator(from.meshes.at(source_mesh), to.meshes.at(target_mesh),
+                                     x.mapping.constraint, map_options);
+      c.source_version = sv;
+      c.target_version = tv;
+      c.built = true;
+    }
+    return c.op;
+  }
+
+  void map_and_send() {
+    const double t = window_time(window);
+    std::map<std::string, std::map<std::string, std::vector<double>>> received;  // peer -> field
+    {
+      auto scope = summary.phases().measure("mapping");
+      for (std::size_t i = 0; i < job.exchanges.size(); ++i) {
+        const job::ExchangeSpec& x = job.exchanges[i];
+        const Peer& to = peers.at(x.to);
+        const FieldSpec& spec = declared(to.hello.reads, x.field);
+        const std::vector<double>& source = peers.at(x.from).written.at(x.field);
+        const mapping::Operator& op = operator_for(i);
+        std::vector<double> target = op.apply(source, spec.components);
+        const Mesh& target_mesh = to.meshes.at(spec.mesh);
+        if (x.mapping.bounds) {
+          std::vector<double> fraction(target.size());
+          for (std::size_t e = 0; e < target.size(); ++e)
+            fraction[e] = target[e] / target_mesh.control_volume(e / spec.components);
+          mapping::redistribute_to_bounds(target_mesh, fraction, x.mapping.bounds->first,
+                                          x.mapping.bounds->second);
+          for (std::size_t e = 0; e < target.size(); ++e)
+            target[e] = fraction[e] * target_mesh.control_volume(e / spec.components);
+        }
+        if (x.mapping.constraint == mapping::Constraint::conservative) {
+          const double scale = std::max(abs_sum(source), 1e-300);
+          max_conservation_error =
+              std::max(max_conservation_error, std::abs(sum(target) - sum(source)) / scale);
+        }
+        received[x.to][x.field] = std::move(target);
+      }
+    }
+    for (const job::ExchangeSpec& x : job.exchanges) {
+      const Peer& to = peers.at(x.to);
+      const FieldSpec& spec = declared(to.hello.reads, x.field);
+      send(x.to, com::make_field_message(options.job_id, com::coupler_peer, window, t, x.field,
+                                         spec.mesh, received[x.to][x.field],
+                                         static_cast<std::uint32_t>(spec.components)));
+    }
+    write_snapshots(t, received);
+    const bool last = window >= job.windows();
+    for (const auto& [name, peer] : peers) {
+      com::Message m = message(last ? MessageType::finish : MessageType::window_begin, t);
+      m.header.window = window + 1;
+      send(name, m);
+    }
+  }
+
+  void write_snapshots(double t,
+                       const std::map<std::string, std::map<std::string, std::vector<double>>>& data) {
+    if (job.output_every <= 0.0 || t + time_tolerance * job.window < next_output_time) return;
+    auto scope = summary.phases().measure("output");
+    next_output_time = t + job.output_every;
+    for (const auto& [peer_name, fields] : data) {
+      const Peer& peer = peers.at(peer_name);
+      std::map<std::string, SnapshotFields> per_mesh;
+      for (const auto& [field, values] : fields) {
+        const FieldSpec& spec = declared(peer.hello.reads, field);
+        per_mesh[spec.mesh][field] = FieldView{values, spec.components, spec.unit};
+      }
+      for (const auto& [mesh_name, snapshot] : per_mesh) {
+        const std::string key = peer_name + "_" + mesh_name;
+        auto& writer = snapshot_writers[key];
+        const Mesh& mesh = peer.meshes.at(mesh_name);
+        if (!writer)
+          writer = std::make_unique<SnapshotWriter>(options.output_dir / "exchanged", key, mesh);
+        if (mesh.kind() == MeshKind::point_cloud) writer->write(t, mesh, snapshot);
+        else writer->write(t, snapshot);
+      }
+    }
+  }
+
+  void abort_all(const std::string& reason) {
+    for (const auto& [name, peer] : peers) {
+      if (!peer.connected) continue;
+      try {
+        transport.send(name, com::make_text_message(MessageType::abort, options.job_id,
+                                                    com::coupler_peer, window, 0.0, reason));
+      } catch (const std::exception&) {
+      }
+    }
+  }
+};
+
+Coupler::Coupler(const job::Job& job, com::Transport& transport, runtime::Supervisor* supervisor,
+                 RunSummary& summary, CouplerOptions options)
+    : impl_(std::make_unique<Impl>(job, transport, supervisor, summary, std::move(options))) {}
+
+Coupler::~Coupler() = default;
+
+void Coupler::run() {
+  Impl& s = *impl_;
+  const std::size_t windows = s.job.windows();
+  Progress progress(s.job.start_time, s.job.end_time, windows, s.options.progress_on_terminal);
+  try {
+    s.admit_participants();
+    spdlog::info("all {} participants connected; {} windows of {} s from t = {} s to {} s",
+                 s.peers.size(), windows, s.job.window, s.job.start_time, s.job.end_time);
+    s.next_output_time = s.job.start_time;
+    for (s.window = 0; s.window <= windows; ++s.window) {
+      s.collect_window();
+      s.map_and_send();
+      s.summary.set_windows(static_cast<std::int64_t>(s.window));
+      s.summary.set_metric("max_conservative_mapping_error", s.max_conservation_error, "1");
+      progress.update(s.window, s.window_time(s.window));
+      if (s.window % 100 == 0) s.summary.write();
+    }
+    progress.finish();
+  } catch (const std::exception& e) {
+    progress.finish();
+    s.abort_all(e.what());
+    throw;
+  }
+  nlohmann::json participants = nlohmann::json::object();
+  for (const auto& [name, peer] : s.peers)
+    participants[name] = {{"program", peer.hello.program}, {"pid", peer.hello.pid}};
+  s.summary.set_section("participants", participants);
+}
+
+}  // namespace cosim::cplscheme

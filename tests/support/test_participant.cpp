@@ -1,0 +1,273 @@
+// cosim_test_participant: a participant for end-to-end tests of the coupler.
+//
+// It declares one mesh, writes analytic fields, sub-cycles its own time step
+// inside every window, checks the fields it reads against the analytic
+// functions its partner writes, and logs every total it sends and receives
+// to <output>/<field>_<direction>.csv so tests can check conservation. Fault
+// injection (--crash-at-window, --hang-at-window) exercises the coupler's
+// supervision.
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <numeric>
+#include <thread>
+
+#include "cosim/config/document.hpp"
+#include "cosim/config/schema.hpp"
+#include "cosim/error.hpp"
+#include "cosim/io/files.hpp"
+#include "cosim/io/time_series_writer.hpp"
+#include "cosim/participant.hpp"
+
+namespace {
+
+using cosim::config::Node;
+using cosim::config::Schema;
+
+// f(x, t) = c0 + c1 x + c2 y + c3 z + c4 t
+struct LinearFunction {
+  std::vector<double> c{0, 0, 0, 0, 0};
+  double operator()(const cosim::Vec3& x, double t) const {
+    return c[0] + c[1] * x[0] + c[2] * x[1] + c[3] * x[2] + c[4] * t;
+  }
+};
+
+struct FieldConfig {
+  cosim::FieldSpec spec;
+  LinearFunction function;  // writes: the value (state) or rate per unit volume (integral)
+  double tolerance = 0.0;   // reads of state fields: max |read - f| allowed
+  bool check = false;
+};
+
+struct Config {
+  double dt = 1e-3;
+  double end_time = 1.0;
+  cosim::Mesh mesh;
+  std::vector<FieldConfig> writes;
+  std::vector<FieldConfig> reads;
+};
+
+Schema config_schema() {
+  Schema mesh = Schema::object("Uniform grid of the participant.");
+  mesh.required("dim", Schema::integer().range(1, 3), "Dimension.")
+      .required("origin", Schema::vector(1, 3), "Lower corner [m].")
+      .required("spacing", Schema::vector(1, 3), "Cell size [m].")
+      .required("cells", Schema::vector(1, 3), "Cells per direction.")
+      .optional("location", Schema::one_of({"cell", "node"}).default_value("cell"),
+                "Where values live.");
+  Schema field = Schema::object("A field.");
+  field.required("name", Schema::string().non_empty(), "Field name.")
+      .optional("quantity", Schema::one_of({"intensive", "extensive"}).default_value("intensive"),
+                "intensive | extensive.")
+      .optional("time", Schema::one_of({"state", "integral"}).default_value("state"),
+                "state | integral.")
+      .optional("unit", Schema::string().default_value("1"), "SI unit.")
+      .optional("function", Schema::vector(5, 5).default_value("[0,0,0,0,0]"),
+                "c0 + c1 x + c2 y + c3 z + c4 t.")
+      .optional("tolerance", Schema::number().non_negative(),
+                "Check reads against `function` to this tolerance.");
+  Schema s = Schema::file("test_participant", "Test participant for the coupler's tests.");
+  s.required("dt", Schema::number().positive().unit("s"), "Own time step.")
+      .optional("end_time", Schema::number().positive().unit("s").default_value("1"),
+                "End time when standalone.")
+      .required("mesh", mesh, "Its mesh.")
+      .optional("writes", Schema::sequence(field), "Fields written.")
+      .optional("reads", Schema::sequence(field), "Fields read.");
+  return s;
+}
+
+FieldConfig read_field(const Node& f) {
+  FieldConfig c;
+  c.spec.name = f["name"].as<std::string>();
+  c.spec.mesh = "grid";
+  c.spec.unit = f.get<std::string>("unit", "1");
+  c.spec.quantity = f.get<std::string>("quantity", "intensive") == "extensive"
+                        ? cosim::Quantity::extensive
+                        : cosim::Quantity::intensive;
+  c.spec.time = f.get<std::string>("time", "state") == "integral" ? cosim::TimeTreatment::integral
+                                                                  : cosim::TimeTreatment::state;
+  c.function.c = f.get<std::vector<double>>("function", {0, 0, 0, 0, 0});
+  if (auto t = f.find("tolerance")) {
+    c.tolerance = t->as<double>();
+    c.check = true;
+  }
+  return c;
+}
+
+Config load_config(const std::string& file) {
+  const auto doc = cosim::config::Document::load_file(file);
+  const Node root = doc.root();
+  config_schema().validate(root);
+  Config c;
+  c.dt = root["dt"].as<double>();
+  c.end_time = root.get<double>("end_time", 1.0);
+  const Node m = root["mesh"];
+  cosim::UniformGrid g;
+  g.dim = m["dim"].as<int>();
+  const auto origin = m["origin"].as<std::vector<double>>();
+  const auto spacing = m["spacing"].as<std::vector<double>>();
+  const auto cells = m["cells"].as<std::vector<double>>();
+  if (origin.size() != static_cast<std::size_t>(g.dim) ||
+      spacing.size() != static_cast<std::size_t>(g.dim) ||
+      cells.size() != static_cast<std::size_t>(g.dim))
+    m.fail("origin, spacing and cells need one value per dimension");
+  for (int d = 0; d < g.dim; ++d) {
+    g.origin[d] = origin[d];
+    g.spacing[d] = spacing[d];
+    g.cells[d] = static_cast<std::int64_t>(cells[d]);
+  }
+  g.location = m.get<std::string>("location", "cell") == "node" ? cosim::GridLocation::node
+                                                                : cosim::GridLocation::cell;
+  c.mesh = cosim::Mesh{"grid", g};
+  cosim::validate(c.mesh);
+  if (auto w = root.find("writes"))
+    for (const Node& f : w->items()) c.writes.push_back(read_field(f));
+  if (auto r = root.find("reads"))
+    for (const Node& f : r->items()) c.reads.push_back(read_field(f));
+  return c;
+}
+
+double total(const std::vector<double>& v) {
+  return std::accumulate(v.begin(), v.end(), 0.0);
+}
+
+int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std::string& output,
+        long crash_at_window, long hang_at_window) {
+  cosim::create_output_directory(output);
+  std::ofstream(std::filesystem::path(output) / "pid") << ::getpid() << "\n";
+  // One CSV per field and direction: <output>/<field>_<sent|applied|read>.csv
+  std::map<std::string, cosim::TimeSeriesWriter> logs;
+  auto log = [&](const std::string& field, const std::string& direction, double window, double t,
+                 double sum, double max_error) {
+    const std::string key = field + "_" + direction;
+    auto it = logs.find(key);
+    if (it == logs.end())
+      it = logs.emplace(key, cosim::TimeSeriesWriter(std::filesystem::path(output) / (key + ".csv"),
+                                                     {"window", "time [s]", "total", "max_error"}))
+               .first;
+    it->second.append({window, t, sum, max_error});
+  };
+
+  cosim::Participant participant(endpoint.name_or("test_participant"), endpoint);
+  participant.declare_mesh(config.mesh);
+  for (const auto& w : config.writes) participant.declare_write(w.spec);
+  for (const auto& r : config.reads) participant.declare_read(r.spec);
+
+  const cosim::Mesh& mesh = config.mesh;
+  auto values_of = [&](const FieldConfig& f, double t) {
+    std::vector<double> v(mesh.size());
+    for (std::size_t e = 0; e < mesh.size(); ++e) {
+      v[e] = f.function(mesh.position(e), t);
+      if (f.spec.time == cosim::TimeTreatment::integral) v[e] *= mesh.control_volume(e);
+    }
+    return v;
+  };
+  // Initial data: state fields at the start time.
+  for (const auto& w : config.writes) participant.write(w.spec.name, values_of(w, 0.0));
+
+  participant.initialize(0.0, config.end_time);
+  std::map<std::string, std::vector<double>> sent_integral;
+  for (const auto& w : config.writes) sent_integral[w.spec.name].assign(mesh.size(), 0.0);
+
+  auto check_reads = [&]() {
+    for (const auto& r : config.reads) {
+      if (r.spec.time == cosim::TimeTreatment::integral) continue;
+      const auto v = participant.read(r.spec.name);
+      double max_error = 0.0;
+      if (r.check) {
+        // The partner wrote these values at the end of the previous window,
+        // which is the start of this one.
+        const double t_written = participant.time();
+        for (std::size_t e = 0; e < mesh.size(); ++e)
+          max_error = std::max(max_error, std::abs(v[e] - r.function(mesh.position(e), t_written)));
+        if (max_error > r.tolerance)
+          throw cosim::NumericalError(
+              fmt::format("read '{}' at t = {} s: error {:.3e} exceeds {:.3e}", r.spec.name,
+                          t_written, max_error, r.tolerance));
+      }
+      log(r.spec.name, "read", static_cast<double>(participant.window_index()), participant.time(),
+          total(v), max_error);
+    }
+  };
+
+  std::map<std::string, std::vector<double>> received_integral;
+  for (const auto& r : config.reads) received_integral[r.spec.name].assign(mesh.size(), 0.0);
+  try {
+    check_reads();
+    while (participant.is_coupling_ongoing()) {
+      const std::size_t window = participant.window_index();
+      if (crash_at_window > 0 && static_cast<long>(window) == crash_at_window)
+        throw cosim::NumericalError(fmt::format("crash requested at window {}", window));
+      if (hang_at_window > 0 && static_cast<long>(window) == hang_at_window)
+        for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
+
+      const double dt = std::min(config.dt, participant.max_time_step());
+      const double t = participant.time();
+      for (const auto& r : config.reads) {
+        if (r.spec.time != cosim::TimeTreatment::integral) continue;
+        std::vector<double> share(participant.field_size(r.spec.name));
+        participant.read_increment(r.spec.name, dt, share);
+        auto& acc = received_integral[r.spec.name];
+        for (std::size_t e = 0; e < share.size(); ++e) acc[e] += share[e];
+      }
+      for (const auto& w : config.writes) {
+        const auto v = values_of(w, w.spec.time == cosim::TimeTreatment::integral ? t : t + dt);
+        participant.write(w.spec.name, v);
+        if (w.spec.time == cosim::TimeTreatment::integral)
+          for (std::size_t e = 0; e < v.size(); ++e) sent_integral[w.spec.name][e] += v[e] * dt;
+      }
+      participant.advance(dt);
+      if (participant.window_index() != window) {  // the window completed
+        for (const auto& w : config.writes) {
+          if (w.spec.time != cosim::TimeTreatment::integral) continue;
+          log(w.spec.name, "sent", static_cast<double>(window), participant.time(),
+              total(sent_integral[w.spec.name]), 0.0);
+          sent_integral[w.spec.name].assign(mesh.size(), 0.0);
+        }
+        for (const auto& r : config.reads) {
+          if (r.spec.time != cosim::TimeTreatment::integral) continue;
+          log(r.spec.name, "applied", static_cast<double>(window), participant.time(),
+              total(received_integral[r.spec.name]), 0.0);
+          received_integral[r.spec.name].assign(mesh.size(), 0.0);
+        }
+        if (participant.is_coupling_ongoing()) check_reads();
+      }
+    }
+  } catch (const std::exception& e) {
+    participant.abort(e.what());  // the coupler learns why before it stops the run
+    throw;
+  }
+  participant.finalize();
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"cosim_test_participant: analytic fields for the coupler's tests"};
+  std::string config_file, output;
+  long crash_at_window = 0, hang_at_window = 0;
+  cosim::CouplingEndpoint endpoint;
+  app.add_option("--config", config_file, "test_participant YAML")->required();
+  app.add_option("--output", output, "output directory")->required();
+  app.add_option("--crash-at-window", crash_at_window, "fail at the start of this window");
+  app.add_option("--hang-at-window", hang_at_window, "stop answering at this window");
+  cosim::add_coupling_options(app, endpoint);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : cosim::to_int(cosim::ExitCode::bad_input);
+  }
+  try {
+    return run(load_config(config_file), endpoint, output, crash_at_window, hang_at_window);
+  } catch (const cosim::Error& e) {
+    std::cerr << "cosim_test_participant: error: " << e.what() << "\n";
+    return cosim::to_int(e.code());
+  }
+}
