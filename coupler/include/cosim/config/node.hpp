@@ -23,6 +23,10 @@ struct SourceFile {
   std::filesystem::path directory;
 };
 
+// A yaml-cpp position (0-based, -1 when unknown) as a 1-based SourceLocation
+// in `source` (line 0 when unknown).
+SourceLocation location_in(const SourceFile& source, const YAML::Mark& mark);
+
 // A YAML node that knows where it came from: its file, its position and its
 // key path (`participants.soil.config`, `exchange[1].field`). Every accessor
 // that cannot give what was asked for throws an InputError located at the
@@ -48,7 +52,9 @@ class Node {
   // std::vector<int>, std::vector<std::string>. Numbers must be finite;
   // std::size_t refuses negatives.
   template <class T>
-  T as() const;
+  T as() const {
+    static_assert(sizeof(T) == 0, "Node::as<T>: T is not one of the supported types");
+  }
 
   // `as<T>()` of the key when present, `fallback` when absent.
   template <class T>

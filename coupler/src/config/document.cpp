@@ -1,0 +1,113 @@
+#include "cosim/config/document.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <system_error>
+
+namespace cosim::config {
+
+namespace {
+
+std::string joined(const std::string& parent, const std::string& key) {
+  return parent.empty() ? key : parent + "." + key;
+}
+
+// yaml-cpp keeps the last of two equal keys without a word; a config that
+// says the same thing twice is a mistake the user must see.
+void refuse_duplicate_keys(const YAML::Node& node, const SourceFile& source,
+                           const std::string& key_path) {
+  if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      refuse_duplicate_keys(node[i], source, fmt::format("{}[{}]", key_path, i));
+    }
+    return;
+  }
+  if (!node.IsMap()) return;
+  std::map<std::string, YAML::Mark> seen;
+  for (const auto& entry : node) {
+    const YAML::Node key = entry.first;
+    if (!key.IsScalar()) {
+      throw InputError(location_in(source, key.Mark()), key_path,
+                       "a mapping key must be a plain name, not a list or mapping");
+    }
+    const std::string path = joined(key_path, key.Scalar());
+    auto [first, inserted] = seen.emplace(key.Scalar(), key.Mark());
+    if (!inserted) {
+      throw InputError(location_in(source, key.Mark()), path,
+                       fmt::format("duplicate key; first given at line {}",
+                                   location_in(source, first->second).line));
+    }
+    refuse_duplicate_keys(entry.second, source, path);
+  }
+}
+
+// yaml-cpp reports a tab in the indentation as whatever it could not parse
+// next; name the tab, the usual cause, when one precedes the error.
+std::string tab_hint(const std::string& text, int error_line) {
+  std::istringstream lines(text);
+  std::string line;
+  for (int number = 1; number <= error_line && std::getline(lines, line); ++number) {
+    const auto indent_end = line.find_first_not_of(" \t");
+    if (line.substr(0, indent_end).find('\t') != std::string::npos) {
+      return fmt::format(" (line {} is indented with a tab; YAML indents with spaces)", number);
+    }
+  }
+  return {};
+}
+
+YAML::Node parse(const std::string& text, const SourceFile& source) {
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::Exception& error) {
+    const SourceLocation where = location_in(source, error.mark);
+    throw InputError(where, "", "YAML syntax error: " + error.msg + tab_hint(text, where.line));
+  }
+  if (documents.empty() || documents.front().IsNull()) {
+    throw InputError(SourceLocation{source.name.string(), 0, 0}, "", "the file is empty");
+  }
+  if (documents.size() > 1) {
+    throw InputError(location_in(source, documents[1].Mark()), "",
+                     "a second YAML document ('---') follows the first; a cosim file holds one");
+  }
+  refuse_duplicate_keys(documents.front(), source, "");
+  return documents.front();
+}
+
+}  // namespace
+
+Document::Document(std::string text, std::shared_ptr<const SourceFile> source, YAML::Node root)
+    : text_(std::move(text)), source_(std::move(source)), root_(std::move(root)) {}
+
+Document Document::load_string(std::string_view text, const std::filesystem::path& name) {
+  const std::filesystem::path directory =
+      name.empty() ? std::filesystem::current_path()
+                   : std::filesystem::absolute(name).parent_path().lexically_normal();
+  auto source = std::make_shared<const SourceFile>(SourceFile{name, directory});
+  std::string owned(text);
+  YAML::Node root = parse(owned, *source);
+  return Document(std::move(owned), std::move(source), std::move(root));
+}
+
+Document Document::load_file(const std::filesystem::path& file) {
+  const SourceLocation whole_file{file.string(), 0, 0};
+  std::error_code status;
+  if (!std::filesystem::exists(file, status)) throw InputError(whole_file, "", "file not found");
+  if (std::filesystem::is_directory(file, status)) {
+    throw InputError(whole_file, "", "is a directory, not a YAML file");
+  }
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw InputError(whole_file, "", "cannot read the file");
+  return load_string(text.str(), file);
+}
+
+Node Document::root() const {
+  return Node(root_, source_, "", YAML::Mark::null_mark());
+}
+
+}  // namespace cosim::config
