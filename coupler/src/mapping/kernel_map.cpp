@@ -1,10 +1,12 @@
 #include "kernel_map.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <deque>
 #include <limits>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "bspline_kernel.hpp"
@@ -71,63 +73,85 @@ CloudStencils stencils_of(const CloudView& cloud, const GridPoints& grid, std::s
   return s;
 }
 
+// Calls f(grid point, weight) for the tensor-product stencil of one cloud
+// element, grid points in increasing order.
+template <class F>
+void for_each_weight(const CloudStencils& s, const GridPoints& grid, F&& f) {
+  const std::int64_t nx = grid.extent[0];
+  const std::int64_t nxy = nx * grid.extent[1];
+  const Stencil& sx = s.direction[0];
+  const Stencil& sy = s.direction[1];
+  const Stencil& sz = s.direction[2];
+  for (int c = 0; c < sz.count; ++c) {
+    const double wz = sz.weight[static_cast<std::size_t>(c)];
+    const std::int64_t oz = (sz.first + c) * nxy;
+    for (int b = 0; b < sy.count; ++b) {
+      const double wyz = sy.weight[static_cast<std::size_t>(b)] * wz;
+      const std::int64_t oyz = oz + (sy.first + b) * nx;
+      for (int a = 0; a < sx.count; ++a)
+        f(static_cast<std::size_t>(oyz + sx.first + a),
+          sx.weight[static_cast<std::size_t>(a)] * wyz);
+    }
+  }
+}
+
 // Interpolation weights N_I(x_p) / Σ_J N_J(x_p): cloud rows × grid columns,
 // built directly in compressed form in two passes (count, fill): O(n).
-Weights interpolation_weights(const CloudView& cloud, const GridPoints& grid, Kernel kernel,
-                              std::size_t& fallback_elements) {
+Weights interpolation_weights(const CloudView& cloud, const GridPoints& grid, Kernel kernel) {
   const std::size_t n = cloud.size();
-  std::vector<Weights::StorageIndex> row_start(n + 1, 0);
+  std::size_t nonzeros = 0;
+  for (std::size_t p = 0; p < n; ++p) nonzeros += stencils_of(cloud, grid, p, kernel).count();
+  Weights w = allocate_weights(n, grid.size(), nonzeros);
+  auto* outer = w.outerIndexPtr();
+  auto* column = w.innerIndexPtr();
+  double* value = w.valuePtr();
+  Weights::StorageIndex e = 0;
+  outer[0] = 0;
+  for (std::size_t p = 0; p < n; ++p) {
+    for_each_weight(stencils_of(cloud, grid, p, kernel), grid,
+                    [&](std::size_t point, double weight) {
+                      column[e] = static_cast<Weights::StorageIndex>(point);
+                      value[e] = weight;
+                      ++e;
+                    });
+    outer[p + 1] = e;
+  }
+  return w;
+}
+
+// The same weights laid out with grid rows (the transpose), each cloud
+// element's column scaled by scale[p] (or 1), built directly by a counting
+// sort on the grid point: no intermediate matrix. Counts the elements beyond
+// every kernel (given to the nearest grid point).
+Weights spreading_weights(const CloudView& cloud, const GridPoints& grid, Kernel kernel,
+                          std::span<const double> scale, std::size_t& fallback_elements) {
+  const std::size_t n = cloud.size();
+  const std::size_t points = grid.size();
+  std::vector<Weights::StorageIndex> next(points + 1, 0);
   std::size_t nonzeros = 0;
   fallback_elements = 0;
   for (std::size_t p = 0; p < n; ++p) {
     const CloudStencils s = stencils_of(cloud, grid, p, kernel);
     nonzeros += s.count();
     if (s.fallback) ++fallback_elements;
+    for_each_weight(s, grid, [&](std::size_t point, double) { ++next[point + 1]; });
   }
-  Weights w = allocate_weights(n, grid.size(), nonzeros);
+  Weights w = allocate_weights(points, n, nonzeros);
   auto* outer = w.outerIndexPtr();
   auto* column = w.innerIndexPtr();
   double* value = w.valuePtr();
-  const std::int64_t nx = grid.extent[0];
-  const std::int64_t nxy = nx * grid.extent[1];
-  Weights::StorageIndex e = 0;
-  outer[0] = 0;
+  for (std::size_t i = 0; i < points; ++i) next[i + 1] += next[i];
+  std::copy(next.begin(), next.end(), outer);
   for (std::size_t p = 0; p < n; ++p) {
-    const CloudStencils s = stencils_of(cloud, grid, p, kernel);
-    const Stencil& sx = s.direction[0];
-    const Stencil& sy = s.direction[1];
-    const Stencil& sz = s.direction[2];
-    for (int c = 0; c < sz.count; ++c) {
-      const double wz = sz.weight[static_cast<std::size_t>(c)];
-      const std::int64_t oz = (sz.first + c) * nxy;
-      for (int b = 0; b < sy.count; ++b) {
-        const double wyz = sy.weight[static_cast<std::size_t>(b)] * wz;
-        const std::int64_t oyz = oz + (sy.first + b) * nx;
-        for (int a = 0; a < sx.count; ++a) {
-          column[e] = static_cast<Weights::StorageIndex>(oyz + sx.first + a);
-          value[e] = sx.weight[static_cast<std::size_t>(a)] * wyz;
-          ++e;
-        }
-      }
-    }
-    outer[p + 1] = e;
+    const double factor = scale.empty() ? 1.0 : scale[p];
+    for_each_weight(stencils_of(cloud, grid, p, kernel), grid,
+                    [&](std::size_t point, double weight) {
+                      const auto e = next[point]++;
+                      column[e] = static_cast<Weights::StorageIndex>(p);
+                      value[e] = weight * factor;
+                    });
   }
   return w;
-}
-
-// Kernel- and volume-weighted average onto the grid (grid rows):
-// W_Ip = V_p N_Ip / Σ_q V_q N_Iq, with N the renormalised interpolation weights.
-Weights averaging_weights(const Weights& interpolation, const CloudView& cloud,
-                          std::vector<std::size_t>& empty_grid_points) {
-  Weights by_volume = interpolation;
-  const auto* outer = by_volume.outerIndexPtr();
-  double* value = by_volume.valuePtr();
-  for (Eigen::Index p = 0; p < by_volume.rows(); ++p)
-    for (auto e = outer[p]; e < outer[p + 1]; ++e)
-      value[e] *= cloud.volumes[static_cast<std::size_t>(p)];
-  Weights average = transposed(by_volume);
-  empty_grid_points = normalise_rows(average);
-  return average;
 }
 
 // For each grid point, a cloud element near it: every element marks the grid
@@ -218,16 +242,19 @@ Operator build_kernel_operator(const Mesh& from, const Mesh& to, Constraint cons
       from.kind() == MeshKind::point_cloud || from.kind() == MeshKind::cell_cloud;
   const CloudView cloud = cloud_view(cloud_to_grid ? from : to);
   const GridPoints grid(std::get<UniformGrid>((cloud_to_grid ? to : from).geometry));
-  std::size_t outside = 0;
-  Weights interpolation = interpolation_weights(cloud, grid, kernel, outside);
 
   if (!cloud_to_grid && constraint == Constraint::consistent)
-    return Operator(constraint, std::move(interpolation), from.name, to.name);
-  if (cloud_to_grid && constraint == Constraint::conservative)
-    return Operator(constraint, transposed(interpolation), from.name, to.name, {}, outside);
+    return Operator(constraint, interpolation_weights(cloud, grid, kernel), from.name, to.name);
+  std::size_t outside = 0;
+  if (cloud_to_grid && constraint == Constraint::conservative) {
+    Weights spread = spreading_weights(cloud, grid, kernel, {}, outside);
+    return Operator(constraint, std::move(spread), from.name, to.name, {}, outside);
+  }
 
-  std::vector<std::size_t> empty;
-  Weights average = averaging_weights(interpolation, cloud, empty);
+  // kernel- and volume-weighted average onto the grid:
+  // W_Ip = V_p N_Ip / Σ_q V_q N_Iq, with N the renormalised interpolation weights
+  Weights average = spreading_weights(cloud, grid, kernel, cloud.volumes, outside);
+  std::vector<std::size_t> empty = normalise_rows(average);
   if (cloud_to_grid)
     return Operator(constraint, std::move(average), from.name, to.name, std::move(empty));
 
@@ -236,8 +263,8 @@ Operator build_kernel_operator(const Mesh& from, const Mesh& to, Constraint cons
     throw InputError("conservative mapping from '" + from.name + "' to the empty cloud '" +
                      to.name + "' cannot keep the total");
   const std::vector<std::int64_t> nearest = nearest_cloud_elements(cloud, grid);
-  Weights spread = transposed(with_nearest_for_empty_rows(average, empty, nearest));
-  return Operator(constraint, std::move(spread), from.name, to.name, {}, empty.size());
+  return Operator(constraint, transposed(with_nearest_for_empty_rows(average, empty, nearest)),
+                  from.name, to.name, {}, empty.size());
 }
 
 }  // namespace cosim::mapping::detail

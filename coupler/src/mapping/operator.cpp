@@ -8,16 +8,35 @@
 
 namespace cosim::mapping {
 
-Operator::Operator(Constraint constraint, Weights weights, std::string source_mesh,
+Operator::Operator(Constraint constraint, Weights&& weights, std::string source_mesh,
                    std::string target_mesh, std::vector<std::size_t> empty_targets,
                    std::size_t fallback_sources)
     : constraint_(constraint),
-      weights_(std::move(weights)),
       source_mesh_(std::move(source_mesh)),
       target_mesh_(std::move(target_mesh)),
       empty_targets_(std::move(empty_targets)),
       fallback_sources_(fallback_sources) {
+  weights_.swap(weights);
   weights_.makeCompressed();
+}
+
+Operator::Operator(Operator&& other) noexcept
+    : constraint_(other.constraint_),
+      source_mesh_(std::move(other.source_mesh_)),
+      target_mesh_(std::move(other.target_mesh_)),
+      empty_targets_(std::move(other.empty_targets_)),
+      fallback_sources_(other.fallback_sources_) {
+  weights_.swap(other.weights_);
+}
+
+Operator& Operator::operator=(Operator&& other) noexcept {
+  constraint_ = other.constraint_;
+  weights_.swap(other.weights_);
+  source_mesh_ = std::move(other.source_mesh_);
+  target_mesh_ = std::move(other.target_mesh_);
+  empty_targets_ = std::move(other.empty_targets_);
+  fallback_sources_ = other.fallback_sources_;
+  return *this;
 }
 
 void Operator::apply(std::span<const double> source, std::span<double> target,

@@ -20,8 +20,16 @@ class Operator {
   // `empty_targets`: consistent maps, target elements whose row is empty.
   // `fallback_sources`: conservative maps, source elements that overlapped no
   // target element and were given whole to the nearest one.
-  Operator(Constraint constraint, Weights weights, std::string source_mesh, std::string target_mesh,
-           std::vector<std::size_t> empty_targets = {}, std::size_t fallback_sources = 0);
+  // Takes over `weights` (left empty).
+  Operator(Constraint constraint, Weights&& weights, std::string source_mesh,
+           std::string target_mesh, std::vector<std::size_t> empty_targets = {},
+           std::size_t fallback_sources = 0);
+  // Eigen 3.4 sparse matrices have no move constructor: these swap instead of copying.
+  Operator(Operator&& other) noexcept;
+  Operator& operator=(Operator&& other) noexcept;
+  Operator(const Operator&) = default;
+  Operator& operator=(const Operator&) = default;
+  ~Operator() = default;
 
   Constraint constraint() const { return constraint_; }
   std::size_t source_size() const { return static_cast<std::size_t>(weights_.cols()); }
