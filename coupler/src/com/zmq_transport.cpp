@@ -87,6 +87,9 @@ struct ZmqHub::Impl {
 ZmqHub::ZmqHub(const ZmqHubOptions& options) : impl_(std::make_unique<Impl>()) {
   auto& s = impl_->socket;
   s.set(zmq::sockopt::router_mandatory, 1);
+  // A participant that reconnects under its name (after a refused attempt)
+  // takes the name over.
+  s.set(zmq::sockopt::router_handover, 1);
   s.set(zmq::sockopt::linger, linger_ms);
   s.set(zmq::sockopt::sndhwm, 0);
   s.set(zmq::sockopt::rcvhwm, 0);

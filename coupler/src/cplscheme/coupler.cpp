@@ -158,6 +158,7 @@ struct Coupler::Impl {
         continue;
       }
       const com::Header& h = r->message.header;
+      if (h.type == MessageType::abort) continue;  // a refused peer saying goodbye
       if (h.type != MessageType::hello) {
         refuse(r->peer, fmt::format("sent '{}' before hello", com::to_string(h.type)));
         continue;
@@ -184,7 +185,9 @@ struct Coupler::Impl {
     welcome.end_time = job.end_time;
     welcome.window = job.window;
     welcome.extrapolation = job.extrapolation;
-    welcome.timeout_s = job.window_timeout_s;
+    // The coupler judges which participant hangs; the others wait longer
+    // than it does so that they do not time out first and take the blame.
+    welcome.timeout_s = 2.0 * job.window_timeout_s + 10.0;
     for (const auto& [name, peer] : peers)
       send(name, com::make_text_message(MessageType::welcome, options.job_id, com::coupler_peer, 0,
                                         job.start_time, com::to_json(welcome)));

@@ -78,6 +78,7 @@ struct Participant::Impl {
   std::map<std::string, ReadBuffer, std::less<>> reads;
   com::Welcome schedule;
   bool initialized = false;
+  bool admitted = false;  // the coupler welcomed this participant
   bool finished = false;  // the coupler said the run is over
   bool finalized = false;
   double time = 0.0;
@@ -122,15 +123,16 @@ struct Participant::Impl {
                           fmt::format("no answer within {} s (participant '{}', window {})",
                                       timeout_s, name, window));
     com::Message& m = received->message;
+    // A refusal carries the coupler's job id, which may be the very reason.
+    if (m.header.type == MessageType::refuse)
+      throw Error(ExitCode::bad_input,
+                  fmt::format("the coupler refused participant '{}': {}", name, m.payload.text()));
     if (m.header.job_id != endpoint.job_id)
       throw ProtocolError(com::coupler_peer, fmt::format("message for job '{}', this is job '{}'",
                                                          m.header.job_id, endpoint.job_id));
     if (m.header.type == MessageType::abort)
       throw Error(ExitCode::participant_failed,
                   fmt::format("the coupler aborted the run: {}", m.payload.text()));
-    if (m.header.type == MessageType::refuse)
-      throw Error(ExitCode::bad_input,
-                  fmt::format("the coupler refused participant '{}': {}", name, m.payload.text()));
     return std::move(m);
   }
 
@@ -300,6 +302,7 @@ void Participant::initialize(double start_time, double end_time) {
     throw ProtocolError(com::coupler_peer, fmt::format("answered hello with '{}'",
                                                        com::to_string(reply.header.type)));
   s.schedule = com::parse_welcome(reply.payload.text(), com::coupler_peer);
+  s.admitted = true;
   if (std::abs(s.schedule.end_time - end_time) > 0.0 || s.schedule.start_time != start_time)
     spdlog::info("participant '{}': the job's schedule [{}, {}] s replaces the solver's own [{}, "
                  "{}] s",
@@ -434,7 +437,7 @@ void Participant::finalize() {
   Impl& s = *impl_;
   if (s.finalized) return;
   s.finalized = true;
-  if (s.transport && !s.finished) {
+  if (s.transport && s.admitted && !s.finished) {
     // Leaving before the coupler said the run is over: tell it why.
     s.send(com::make_text_message(MessageType::abort, s.endpoint.job_id, s.name, s.window, s.time,
                                   "participant finalized before the end of the coupling"));
@@ -446,7 +449,7 @@ void Participant::abort(std::string_view reason) {
   Impl& s = *impl_;
   if (s.finalized) return;
   s.finalized = true;
-  if (s.transport) {
+  if (s.transport && s.admitted && !s.finished) {
     try {
       s.send(com::make_text_message(MessageType::abort, s.endpoint.job_id, s.name, s.window,
                                     s.time, reason));

@@ -35,7 +35,7 @@ struct Welcome {
   double end_time = 0.0;
   double window = 0.0;
   Extrapolation extrapolation = Extrapolation::constant;
-  double timeout_s = 600.0;  // longest wait for the coupler within a window
+  double timeout_s = 600.0;  // longest wait for the coupler (beyond its own window timeout)
 };
 
 std::string to_json(const Hello& hello);

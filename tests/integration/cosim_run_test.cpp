@@ -1,0 +1,208 @@
+// End to end: `cosim run` with two test participants whose time steps (1e-3 s
+// and 7e-4 s) do not divide the 2.5e-3 s window, on different grids.
+
+#include <fmt/format.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "run_process.hpp"
+
+namespace cosim::testing {
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+struct JobOptions {
+  std::string transport = "zmq";
+  std::string scheme = "ipc";
+  double end_time = 0.05;
+  double window_timeout = 60.0;
+  std::string left_args = "[]";
+  std::string right_args = "[]";
+};
+
+// Writes the demo job with the given options, and its participants'
+// configs, into `dir`; returns the job file.
+fs::path write_job(const fs::path& dir, const JobOptions& o) {
+  const fs::path demo = fs::path(COSIM_SOURCE_DIR) / "configs" / "demo";
+  fs::copy_file(demo / "left.yaml", dir / "left.yaml", fs::copy_options::overwrite_existing);
+  fs::copy_file(demo / "right.yaml", dir / "right.yaml", fs::copy_options::overwrite_existing);
+  const std::string job =
+      fmt::format(R"(kind: job
+name: e2e
+end_time: {}
+window: 2.5e-3
+transport: {}
+zmq: {{scheme: {}}}
+window_timeout: {}
+participants:
+  left:
+    executable: cosim_test_participant
+    config: left.yaml
+    args: {}
+    meshes: {{grid: {{kind: uniform_grid, dim: 2}}}}
+    writes: {{temperature: grid, heat: grid}}
+    reads: {{pressure: grid}}
+  right:
+    executable: cosim_test_participant
+    config: right.yaml
+    args: {}
+    meshes: {{grid: {{kind: uniform_grid, dim: 2}}}}
+    writes: {{pressure: grid}}
+    reads: {{temperature: grid, heat: grid}}
+exchange:
+  - {{field: temperature, from: left, to: right, mapping: consistent}}
+  - {{field: heat, from: left, to: right, mapping: conservative}}
+  - {{field: pressure, from: right, to: left, mapping: consistent}}
+)",
+                  o.end_time, o.transport, o.scheme, o.window_timeout, o.left_args, o.right_args);
+  write_text(dir / "job.yaml", job);
+  return dir / "job.yaml";
+}
+
+ProcessResult cosim_run(const fs::path& job, const fs::path& output, int timeout_s = 120) {
+  return run({binary("cosim").string(), "run", job.string(), "--output", output.string()},
+             std::chrono::seconds(timeout_s));
+}
+
+// What the writer integrated over window k is what the reader applied, over
+// its own sub-steps, in window k + 1.
+void expect_window_integrals_conserved(const fs::path& run_dir, std::size_t windows) {
+  const auto sent = read_csv(run_dir / "left" / "heat_sent.csv");
+  const auto applied = read_csv(run_dir / "right" / "heat_applied.csv");
+  ASSERT_EQ(sent.size(), windows);
+  ASSERT_EQ(applied.size(), windows);
+  EXPECT_EQ(applied[0][2], 0.0);  // nothing had been sent before the first window
+  double worst = 0.0;
+  for (std::size_t k = 0; k + 1 < windows; ++k) {
+    EXPECT_DOUBLE_EQ(sent[k][1], applied[k][1]) << "window end times differ at window " << k + 1;
+    const double error = std::abs(applied[k + 1][2] - sent[k][2]) / std::abs(sent[k][2]);
+    worst = std::max(worst, error);
+  }
+  std::printf("window integral: max relative difference sent vs applied = %.3e\n", worst);
+  EXPECT_LE(worst, 1e-12);
+}
+
+TEST(CosimRun, DemoJobOverZmqIpcMapsAndConserves) {
+  const fs::path dir = fresh_directory("e2e_ipc");
+  const auto r = cosim_run(write_job(dir, {}), dir / "run");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  expect_window_integrals_conserved(dir / "run", 20);
+  // The reader checks the consistent map of the linear temperature itself
+  // (and would have failed the run); its log shows the error it measured.
+  const auto reads = read_csv(dir / "run" / "right" / "temperature_read.csv");
+  ASSERT_EQ(reads.size(), 20u);
+  for (const auto& row : reads) EXPECT_LE(row[3], 0.26);
+  const auto summary = nlohmann::json::parse(read_text(dir / "run" / "summary.json"));
+  EXPECT_EQ(summary["status"]["exit_code"], 0);
+  EXPECT_EQ(summary["windows"], 20);
+  EXPECT_LE(summary["metrics"]["max_conservative_mapping_error"]["value"].get<double>(), 1e-12);
+  EXPECT_TRUE(summary["wall_time_s"]["phases"].contains("mapping"));
+  EXPECT_TRUE(fs::exists(dir / "run" / "log.txt"));
+}
+
+TEST(CosimRun, DemoJobOverZmqTcpLoopback) {
+  const fs::path dir = fresh_directory("e2e_tcp");
+  JobOptions o;
+  o.scheme = "tcp";
+  const auto r = cosim_run(write_job(dir, o), dir / "run");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  expect_window_integrals_conserved(dir / "run", 20);
+  EXPECT_THAT(read_text(dir / "run" / "log.txt"), HasSubstr("tcp://127.0.0.1:"));
+}
+
+TEST(CosimRun, DemoJobOverMpiUnderOneMpmdLaunch) {
+  const fs::path dir = fresh_directory("e2e_mpi");
+  JobOptions o;
+  o.transport = "mpi";
+  const auto job = write_job(dir, o);
+  const auto printed = run({binary("cosim").string(), "run", job.string(), "--output",
+                            (dir / "run").string(), "--print-mpi-command"},
+                           std::chrono::seconds(30));
+  ASSERT_EQ(printed.exit_code, 0) << printed.output;
+  EXPECT_THAT(printed.output, HasSubstr("mpirun"));
+  EXPECT_THAT(printed.output, HasSubstr(" : -np 1 "));
+  EXPECT_THAT(printed.output, HasSubstr("--cosim-endpoint mpi://"));
+
+  const auto r = cosim_run(job, dir / "run", 300);
+  ASSERT_EQ(r.exit_code, 0) << r.output << read_text(dir / "run" / "mpirun.log");
+  expect_window_integrals_conserved(dir / "run", 20);
+  const auto summary = nlohmann::json::parse(read_text(dir / "run" / "summary.json"));
+  EXPECT_EQ(summary["job"]["transport"], "mpi");
+}
+
+TEST(CosimRun, KilledParticipantEndsTheRunWithExit3AndNoOrphans) {
+  const fs::path dir = fresh_directory("e2e_kill");
+  JobOptions o;
+  o.end_time = 1000.0;  // would run for a long time
+  const auto job = write_job(dir, o);
+  const auto log = dir / "cosim.log";
+  const pid_t cosim = spawn(
+      {binary("cosim").string(), "run", job.string(), "--output", (dir / "run").string()}, log);
+  const pid_t left = wait_for_pid_file(dir / "run" / "left" / "pid", std::chrono::seconds(30));
+  const pid_t right = wait_for_pid_file(dir / "run" / "right" / "pid", std::chrono::seconds(30));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // mid-run
+  ASSERT_EQ(::kill(right, SIGKILL), 0);
+  const auto r = wait_for(cosim, log, std::chrono::seconds(60));
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("participant 'right'"));
+  EXPECT_THAT(r.output, HasSubstr("killed by signal 9"));
+  EXPECT_FALSE(process_exists(left)) << "participant 'left' outlived the coupler";
+  EXPECT_FALSE(process_exists(right));
+  const auto summary = nlohmann::json::parse(read_text(dir / "run" / "summary.json"));
+  EXPECT_EQ(summary["status"]["exit_code"], 3);
+}
+
+TEST(CosimRun, KilledCouplerTakesItsParticipantsWithIt) {
+  const fs::path dir = fresh_directory("e2e_kill_coupler");
+  JobOptions o;
+  o.end_time = 1000.0;
+  const auto job = write_job(dir, o);
+  const auto log = dir / "cosim.log";
+  const pid_t cosim = spawn(
+      {binary("cosim").string(), "run", job.string(), "--output", (dir / "run").string()}, log);
+  const pid_t left = wait_for_pid_file(dir / "run" / "left" / "pid", std::chrono::seconds(30));
+  const pid_t right = wait_for_pid_file(dir / "run" / "right" / "pid", std::chrono::seconds(30));
+  ASSERT_EQ(::kill(cosim, SIGKILL), 0);
+  wait_for(cosim, log, std::chrono::seconds(10));
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while ((process_exists(left) || process_exists(right)) &&
+         std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_FALSE(process_exists(left));
+  EXPECT_FALSE(process_exists(right));
+}
+
+TEST(CosimRun, FailingParticipantIsNamedWithItsReason) {
+  const fs::path dir = fresh_directory("e2e_crash");
+  JobOptions o;
+  o.left_args = "[--crash-at-window, '3']";
+  const auto r = cosim_run(write_job(dir, o), dir / "run");
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("participant 'left'"));
+  EXPECT_THAT(r.output, HasSubstr("crash requested at window 3"));
+}
+
+TEST(CosimRun, HungParticipantTimesOutWithExit3) {
+  const fs::path dir = fresh_directory("e2e_hang");
+  JobOptions o;
+  o.window_timeout = 2.0;
+  o.right_args = "[--hang-at-window, '2']";
+  const auto start = std::chrono::steady_clock::now();
+  const auto r = cosim_run(write_job(dir, o), dir / "run");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("window 2 from 'right'"));
+  EXPECT_LT(seconds, 30.0);
+  const pid_t right = wait_for_pid_file(dir / "run" / "right" / "pid", std::chrono::seconds(1));
+  EXPECT_FALSE(process_exists(right));
+}
+
+}  // namespace
+}  // namespace cosim::testing

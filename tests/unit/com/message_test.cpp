@@ -1,0 +1,169 @@
+#include "cosim/com/message.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "cosim/com/handshake.hpp"
+#include "cosim/error.hpp"
+
+namespace cosim::com {
+namespace {
+
+using ::testing::HasSubstr;
+
+Header sample_header() {
+  Header h;
+  h.type = MessageType::field;
+  h.element = ElementType::float64;
+  h.job_id = "job-1";
+  h.sender = "soil";
+  h.window = 42;
+  h.time = 0.125;
+  h.field = "solid_velocity";
+  h.mesh = "mpm_grid";
+  h.count = 3;
+  h.components = 2;
+  return h;
+}
+
+TEST(MessageHeader, RoundTripsEveryField) {
+  const Header h = sample_header();
+  const Header d = decode_header(encode_header(h), "peer");
+  EXPECT_EQ(d.version, protocol_version);
+  EXPECT_EQ(d.type, h.type);
+  EXPECT_EQ(d.element, h.element);
+  EXPECT_EQ(d.job_id, h.job_id);
+  EXPECT_EQ(d.sender, h.sender);
+  EXPECT_EQ(d.window, h.window);
+  EXPECT_EQ(d.time, h.time);
+  EXPECT_EQ(d.field, h.field);
+  EXPECT_EQ(d.mesh, h.mesh);
+  EXPECT_EQ(d.count, h.count);
+  EXPECT_EQ(d.components, h.components);
+}
+
+TEST(MessageHeader, IsLittleEndianOnTheWire) {
+  Header h = sample_header();
+  h.window = 0x0102030405060708ULL;
+  const auto bytes = encode_header(h);
+  // magic(4) version(2) type(1) element(1) then the window, low byte first.
+  EXPECT_EQ(bytes[8], std::byte{0x08});
+  EXPECT_EQ(bytes[15], std::byte{0x01});
+}
+
+TEST(MessageHeader, RejectsTruncatedForeignAndOtherVersionHeadersNamingThePeer) {
+  auto bytes = encode_header(sample_header());
+  for (std::size_t cut : {std::size_t{0}, std::size_t{3}, std::size_t{10}, bytes.size() - 1}) {
+    try {
+      decode_header(std::span(bytes).first(cut), "water");
+      FAIL() << "accepted a header cut at " << cut;
+    } catch (const ProtocolError& e) {
+      EXPECT_EQ(e.peer(), "water");
+      EXPECT_THAT(e.what(), HasSubstr("from 'water'"));
+    }
+  }
+  auto foreign = bytes;
+  foreign[0] = std::byte{'X'};
+  EXPECT_THROW(decode_header(foreign, "water"), ProtocolError);
+  Header other = sample_header();
+  other.version = protocol_version + 1;
+  try {
+    decode_header(encode_header(other), "water");
+    FAIL();
+  } catch (const ProtocolError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("speaks cosim protocol version 2, this side speaks 1"));
+  }
+  auto trailing = bytes;
+  trailing.push_back(std::byte{0});
+  EXPECT_THROW(decode_header(trailing, "water"), ProtocolError);
+  auto bad_type = bytes;
+  bad_type[6] = std::byte{200};
+  EXPECT_THROW(decode_header(bad_type, "water"), ProtocolError);
+}
+
+TEST(MessagePayload, SizeMustMatchTheHeader) {
+  const std::vector<double> values{1, 2, 3, 4, 5, 6};
+  Message m = make_field_message("job-1", "soil", 1, 0.0, "u", "grid", values, 2);
+  EXPECT_EQ(m.header.count, 3u);
+  EXPECT_NO_THROW(validate_payload(m, "soil", false));
+  m.header.count = 4;
+  EXPECT_THROW(validate_payload(m, "soil", false), ProtocolError);
+  m.header.count = 3;
+  m.header.components = 0;
+  EXPECT_THROW(validate_payload(m, "soil", false), ProtocolError);
+}
+
+TEST(MessagePayload, NonFiniteValuesAreRejectedUnlessTheFieldAllowsThem) {
+  std::vector<double> values{1.0, std::numeric_limits<double>::quiet_NaN(), 3.0};
+  const Message m = make_field_message("job-1", "water", 1, 0.0, "p", "grid", values, 1);
+  try {
+    validate_payload(m, "water", false);
+    FAIL();
+  } catch (const ProtocolError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("non-finite value at element 1"));
+  }
+  EXPECT_NO_THROW(validate_payload(m, "water", true));
+  EXPECT_TRUE(std::isnan(m.payload.doubles()[1]));
+}
+
+TEST(MeshMessage, RoundTripsEveryMeshKind) {
+  const std::vector<Mesh> meshes{
+      {"grid", UniformGrid{3, {0.5, -1, 2}, {0.1, 0.2, 0.3}, {4, 5, 6}, GridLocation::node}},
+      {"line", NonUniformLine{{0.0, 0.1, 0.25, 0.7}}},
+      {"particles", PointCloud{2, {0.1, 0.2, 0.3, 0.4}, {0.01, 0.02}}},
+      {"cells", CellCloud{3, {1, 2, 3}, {0.5}}}};
+  for (const Mesh& mesh : meshes) {
+    const Mesh back = decode_mesh_message(make_mesh_message("j", "p", 0, 0.0, mesh), "p");
+    EXPECT_EQ(back.name, mesh.name);
+    EXPECT_EQ(back.kind(), mesh.kind());
+    EXPECT_EQ(back.dimension(), mesh.dimension());
+    ASSERT_EQ(back.size(), mesh.size());
+    for (std::size_t e = 0; e < mesh.size(); ++e) {
+      EXPECT_EQ(back.position(e), mesh.position(e));
+      EXPECT_EQ(back.control_volume(e), mesh.control_volume(e));
+    }
+  }
+}
+
+TEST(MeshMessage, RejectsGeometryThatIsNotAMesh) {
+  Mesh bad{"line", NonUniformLine{{0.0, 0.2, 0.1}}};
+  EXPECT_THROW(decode_mesh_message(make_mesh_message("j", "p", 0, 0.0, bad), "p"), ProtocolError);
+}
+
+TEST(Handshake, HelloAndWelcomeRoundTrip) {
+  Hello h;
+  h.participant = "soil";
+  h.config_hash = "00ff";
+  h.program = "mpm_solver";
+  h.pid = 77;
+  h.meshes = {{"mpm_grid", MeshKind::uniform_grid, 2}};
+  FieldSpec f;
+  f.name = "solid_fraction";
+  f.mesh = "mpm_grid";
+  f.unit = "1";
+  f.quantity = Quantity::extensive;
+  f.lower_bound = 0.0;
+  f.upper_bound = 0.64;
+  h.writes = {f};
+  const Hello back = parse_hello(to_json(h), "soil");
+  EXPECT_EQ(back.participant, "soil");
+  ASSERT_EQ(back.writes.size(), 1u);
+  EXPECT_EQ(back.writes[0].upper_bound, 0.64);
+  EXPECT_EQ(back.writes[0].quantity, Quantity::extensive);
+  EXPECT_THROW(parse_hello("{\"participant\": 3}", "soil"), ProtocolError);
+  Welcome w{0.0, 1.0, 0.01, Extrapolation::linear, 30.0};
+  const Welcome wb = parse_welcome(to_json(w), "coupler");
+  EXPECT_EQ(wb.window, 0.01);
+  EXPECT_EQ(wb.extrapolation, Extrapolation::linear);
+  EXPECT_THROW(
+      parse_welcome(
+          R"({"start_time":0,"end_time":1,"window":-1,"extrapolation":"constant","timeout_s":1})",
+          "c"),
+      ProtocolError);
+}
+
+}  // namespace
+}  // namespace cosim::com

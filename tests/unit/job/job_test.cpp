@@ -1,0 +1,131 @@
+// Job files are checked in full before anything starts: every mistake is an
+// InputError (exit code 2) naming the file, line, column and key path.
+
+#include "cosim/job/job.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <fstream>
+
+#include "cosim/error.hpp"
+
+namespace cosim::job {
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+constexpr const char* valid_job = R"(kind: job
+name: demo
+end_time: 1.0
+window: 0.01
+participants:
+  soil:
+    executable: mpm_solver
+    meshes: {mpm_grid: {kind: uniform_grid, dim: 2}}
+    writes: {solid_fraction: mpm_grid}
+    reads: {pore_pressure: mpm_grid}
+  water:
+    executable: ice_fluid
+    meshes: {ice_grid: {kind: uniform_grid, dim: 2}}
+    writes: {pore_pressure: ice_grid}
+    reads: {solid_fraction: ice_grid}
+exchange:
+  - {field: solid_fraction, from: soil, to: water, mapping: {constraint: conservative, bounds: [0, 0.64]}}
+  - {field: pore_pressure, from: water, to: soil, mapping: consistent}
+)";
+
+class JobFile : public ::testing::Test {
+ protected:
+  fs::path write(const std::string& text) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("cosim_job_test_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path file = dir / "job.yaml";
+    std::ofstream(file) << text;
+    return file;
+  }
+  // Replaces the first occurrence of `from` in the valid job by `to`.
+  std::string variant(const std::string& from, const std::string& to) {
+    std::string s = valid_job;
+    const auto at = s.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return s.replace(at, from.size(), to);
+  }
+  std::string error_of(const std::string& text) {
+    try {
+      load_job(write(text));
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.code(), ExitCode::bad_input);
+      return e.what();
+    }
+    ADD_FAILURE() << "accepted:\n" << text;
+    return {};
+  }
+};
+
+TEST_F(JobFile, ValidJobLoads) {
+  const Job job = load_job(write(valid_job));
+  EXPECT_EQ(job.name, "demo");
+  EXPECT_EQ(job.windows(), 100u);
+  ASSERT_EQ(job.exchanges.size(), 2u);
+  ASSERT_TRUE(job.exchanges[0].mapping.bounds);
+  EXPECT_EQ(job.exchanges[0].mapping.bounds->second, 0.64);
+  EXPECT_EQ(job.config_hash.size(), 16u);
+  EXPECT_EQ(job.transport, TransportKind::zmq);
+}
+
+TEST_F(JobFile, UnknownKeyIsLocatedWithASuggestion) {
+  const std::string e = error_of(variant("end_time: 1.0", "end_tme: 1.0"));
+  EXPECT_THAT(e, HasSubstr("job.yaml:3:1"));
+  EXPECT_THAT(e, HasSubstr("end_time"));
+}
+
+TEST_F(JobFile, NegativeWindowIsRefusedAtItsLine) {
+  const std::string e = error_of(variant("window: 0.01", "window: -0.01"));
+  EXPECT_THAT(e, HasSubstr("job.yaml:4:"));
+  EXPECT_THAT(e, HasSubstr("window"));
+}
+
+TEST_F(JobFile, EndTimeBeforeStartIsRefused) {
+  const std::string e = error_of(variant("end_time: 1.0", "start_time: 2.0\nend_time: 1.0"));
+  EXPECT_THAT(e, HasSubstr("end_time"));
+  EXPECT_THAT(e, HasSubstr("not after the start time"));
+}
+
+TEST_F(JobFile, FieldReadThatNobodyWritesIsRefused) {
+  const std::string e = error_of(variant("reads: {pore_pressure: mpm_grid}",
+                                         "reads: {pore_pressure: mpm_grid, drag: mpm_grid}"));
+  EXPECT_THAT(e, HasSubstr("participants.soil.reads.drag"));
+  EXPECT_THAT(e, HasSubstr("no exchange entry sends it"));
+}
+
+TEST_F(JobFile, MeshDimensionMismatchIsRefused) {
+  const std::string e = error_of(
+      variant("ice_grid: {kind: uniform_grid, dim: 2}", "ice_grid: {kind: uniform_grid, dim: 3}"));
+  EXPECT_THAT(e, HasSubstr("exchange[0]"));
+  EXPECT_THAT(e, HasSubstr("from 2D mesh 'soil.mpm_grid' to 3D mesh 'water.ice_grid'"));
+}
+
+TEST_F(JobFile, UnknownParticipantAndWrongTypesAreRefused) {
+  EXPECT_THAT(error_of(variant("from: water", "from: air")),
+              HasSubstr("no participant named 'air'"));
+  EXPECT_THAT(error_of(variant("end_time: 1.0", "end_time: soon")), HasSubstr("end_time"));
+  EXPECT_THAT(error_of(variant("name: demo", "name: demo\ntransport: pigeon")),
+              HasSubstr("transport"));
+  EXPECT_THAT(error_of(variant("kind: job", "kind: mpm_case")), HasSubstr("job"));
+}
+
+TEST_F(JobFile, ConsistentMappingCannotHaveBounds) {
+  EXPECT_THAT(error_of(variant("constraint: conservative", "constraint: consistent")),
+              HasSubstr("bounds apply to conservative transfers"));
+}
+
+TEST_F(JobFile, YamlSyntaxErrorsAreLocated) {
+  EXPECT_THAT(error_of("kind: job\nname: [unclosed\n"), HasSubstr("job.yaml:"));
+}
+
+}  // namespace
+}  // namespace cosim::job
