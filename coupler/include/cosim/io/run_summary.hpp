@@ -1,0 +1,85 @@
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "cosim/exit_codes.hpp"
+#include "cosim/io/phase_timer.hpp"
+
+namespace cosim {
+
+// The record every run leaves in `<dir>/summary.json` (DESIGN.md §6): what
+// ran, on which config, how far it got, where the wall time went, how well
+// the conserved totals held and the run's own metrics. `write()` replaces the
+// file atomically and may be called as often as wanted (e.g. every N
+// windows), so a run that dies still leaves a valid summary of its progress
+// with status "running"; `finish()` records the exit status and writes.
+//
+// Layout (keys stable; tests and `cosim bench` read them):
+//   program, version, config {path, hash}, status {state, exit_code, message},
+//   started_at, updated_at, finished_at (ISO 8601 UTC; finished_at null until
+//   finish), steps, windows, wall_time_s {total, phases {name: s}},
+//   conserved {name: {unit, start, end, relative_change}},
+//   metrics {name: {value, unit}}, plus any sections added with set_section.
+class RunSummary {
+ public:
+  RunSummary(std::filesystem::path output_dir, std::string program);
+
+  void set_config(const std::filesystem::path& config_path, std::uint64_t config_hash);
+  void set_steps(std::int64_t steps) { steps_ = steps; }
+  void set_windows(std::int64_t windows) { windows_ = windows; }
+  void set_conserved_start(const std::string& name, double value, const std::string& unit);
+  void set_conserved_end(const std::string& name, double value, const std::string& unit);
+  void set_metric(const std::string& name, double value, const std::string& unit);
+  // A free-form top-level section (e.g. "participants"); the reserved keys
+  // listed above are refused with InputError.
+  void set_section(const std::string& key, nlohmann::json value);
+
+  // Wall time per phase; reported under wall_time_s.phases.
+  PhaseTimer& phases() { return phases_; }
+  const PhaseTimer& phases() const { return phases_; }
+
+  nlohmann::json to_json() const;
+  void write() const;
+  void finish(ExitCode code, const std::string& message);
+
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  struct Conserved {
+    std::string unit;
+    std::optional<double> start;
+    std::optional<double> end;
+  };
+  struct Metric {
+    double value;
+    std::string unit;
+  };
+
+  std::filesystem::path path_;
+  std::string program_;
+  std::string config_path_;
+  std::optional<std::uint64_t> config_hash_;
+  std::chrono::system_clock::time_point started_at_;
+  std::chrono::steady_clock::time_point started_steady_;
+  std::optional<std::chrono::system_clock::time_point> finished_at_;
+  std::optional<std::chrono::steady_clock::time_point> finished_steady_;
+  std::optional<ExitCode> exit_code_;
+  std::string message_;
+  std::int64_t steps_ = 0;
+  std::int64_t windows_ = 0;
+  std::map<std::string, Conserved> conserved_;
+  std::map<std::string, Metric> metrics_;
+  std::map<std::string, nlohmann::json> sections_;
+  PhaseTimer phases_;
+};
+
+// ISO 8601 UTC with milliseconds, e.g. "2024-05-01T12:34:56.789Z".
+std::string iso8601_utc(std::chrono::system_clock::time_point time);
+
+}  // namespace cosim
