@@ -15,7 +15,7 @@ using testing::yaml_text;
 
 namespace fs = std::filesystem;
 
-class ScratchDir : public ::testing::Test {
+class ConfigDocumentFile : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
@@ -35,7 +35,7 @@ class ScratchDir : public ::testing::Test {
   fs::path dir_;
 };
 
-TEST_F(ScratchDir, LoadsAFileAndKeepsItsPathAndText) {
+TEST_F(ConfigDocumentFile, LoadsAFileAndKeepsItsPathAndText) {
   const std::string text = "kind: job\nend_time: 5.0\n";
   const fs::path file = write("jobs/job.yaml", text);
   const Document document = Document::load_file(file);
@@ -45,7 +45,7 @@ TEST_F(ScratchDir, LoadsAFileAndKeepsItsPathAndText) {
   EXPECT_DOUBLE_EQ(document.root()["end_time"].as<double>(), 5.0);
 }
 
-TEST_F(ScratchDir, RelativePathsResolveFromTheFilesOwnDirectory) {
+TEST_F(ConfigDocumentFile, RelativePathsResolveFromTheFilesOwnDirectory) {
   const fs::path file =
       write("jobs/job.yaml", yaml_text({"kind: job", "soil: mpm/clay.yaml", "up: ../meshes/a.msh",
                                         "absolute: /opt/data/b.yaml"}));
@@ -55,7 +55,7 @@ TEST_F(ScratchDir, RelativePathsResolveFromTheFilesOwnDirectory) {
   EXPECT_EQ(root["absolute"].as_path(), fs::path("/opt/data/b.yaml"));
 }
 
-TEST_F(ScratchDir, RelativePathsOfAFileGivenRelativelyStillResolveFromIt) {
+TEST_F(ConfigDocumentFile, RelativePathsOfAFileGivenRelativelyStillResolveFromIt) {
   write("jobs/job.yaml", "config: mpm/clay.yaml\n");
   const fs::path before = fs::current_path();
   fs::current_path(dir_);
@@ -64,7 +64,7 @@ TEST_F(ScratchDir, RelativePathsOfAFileGivenRelativelyStillResolveFromIt) {
   EXPECT_EQ(document.root()["config"].as_path(), dir_ / "jobs" / "mpm" / "clay.yaml");
 }
 
-TEST_F(ScratchDir, MissingFileNamesTheFile) {
+TEST_F(ConfigDocumentFile, MissingFileNamesTheFile) {
   const fs::path file = dir_ / "jobs" / "absent.yaml";
   const InputError error = input_error_from([&] { Document::load_file(file); });
   EXPECT_EQ(error.where().file, file.string());
@@ -73,12 +73,12 @@ TEST_F(ScratchDir, MissingFileNamesTheFile) {
   EXPECT_EQ(error.code(), ExitCode::bad_input);
 }
 
-TEST_F(ScratchDir, DirectoryIsRefused) {
+TEST_F(ConfigDocumentFile, DirectoryIsRefused) {
   const InputError error = input_error_from([&] { Document::load_file(dir_ / "jobs"); });
   EXPECT_NE(std::string(error.what()).find("is a directory"), std::string::npos);
 }
 
-TEST(Document, UnclosedFlowSequenceIsASyntaxErrorWithLineAndColumn) {
+TEST(ConfigDocument, UnclosedFlowSequenceIsASyntaxErrorWithLineAndColumn) {
   const InputError error = input_error_from([] {
     Document::load_string(yaml_text({"kind: job", "gravity: [0, -9.81", "window: 1"}), "job.yaml");
   });
@@ -89,7 +89,7 @@ TEST(Document, UnclosedFlowSequenceIsASyntaxErrorWithLineAndColumn) {
   EXPECT_NE(std::string(error.what()).find("job.yaml:3:"), std::string::npos);
 }
 
-TEST(Document, TabIndentationIsASyntaxErrorThatNamesTheTab) {
+TEST(ConfigDocument, TabIndentationIsASyntaxErrorThatNamesTheTab) {
   const InputError error = input_error_from([] {
     Document::load_string(yaml_text({"kind: job", "output:", "\tevery: 0.05"}), "job.yaml");
   });
@@ -98,7 +98,7 @@ TEST(Document, TabIndentationIsASyntaxErrorThatNamesTheTab) {
   EXPECT_NE(std::string(error.what()).find("line 3 is indented with a tab"), std::string::npos);
 }
 
-TEST(Document, BadIndentationIsASyntaxError) {
+TEST(ConfigDocument, BadIndentationIsASyntaxError) {
   const InputError error = input_error_from([] {
     Document::load_string(
         yaml_text({"participants:", "  soil:", "    config: a.yaml", "   executable: mpm_solver"}),
@@ -108,7 +108,7 @@ TEST(Document, BadIndentationIsASyntaxError) {
   EXPECT_NE(std::string(error.what()).find("YAML syntax error"), std::string::npos);
 }
 
-TEST(Document, DuplicateKeyIsLocatedAtItsSecondOccurrence) {
+TEST(ConfigDocument, DuplicateKeyIsLocatedAtItsSecondOccurrence) {
   const InputError error = input_error_from([] {
     Document::load_string(yaml_text({"kind: job", "participants:", "  soil: {config: a.yaml}",
                                      "  soil: {config: b.yaml}"}),
@@ -120,7 +120,7 @@ TEST(Document, DuplicateKeyIsLocatedAtItsSecondOccurrence) {
   EXPECT_NE(std::string(error.what()).find("first given at line 3"), std::string::npos);
 }
 
-TEST(Document, DuplicateKeyInsideAListItemNamesTheItem) {
+TEST(ConfigDocument, DuplicateKeyInsideAListItemNamesTheItem) {
   const InputError error = input_error_from([] {
     Document::load_string(yaml_text({"exchange:", "  - {from: a, to: b, from: c}"}), "job.yaml");
   });
@@ -129,14 +129,14 @@ TEST(Document, DuplicateKeyInsideAListItemNamesTheItem) {
   EXPECT_EQ(error.where().column, 22);
 }
 
-TEST(Document, EmptyFileIsRefused) {
+TEST(ConfigDocument, EmptyFileIsRefused) {
   for (const char* text : {"", "# only a comment\n", "~\n"}) {
     const InputError error = input_error_from([&] { Document::load_string(text, "empty.yaml"); });
     EXPECT_NE(std::string(error.what()).find("empty.yaml: the file is empty"), std::string::npos);
   }
 }
 
-TEST(Document, SecondYamlDocumentIsRefused) {
+TEST(ConfigDocument, SecondYamlDocumentIsRefused) {
   const InputError error = input_error_from([] {
     Document::load_string(yaml_text({"kind: job", "---", "kind: job"}), "two.yaml");
   });
@@ -144,7 +144,7 @@ TEST(Document, SecondYamlDocumentIsRefused) {
   EXPECT_NE(std::string(error.what()).find("second YAML document"), std::string::npos);
 }
 
-TEST(Document, ComplexKeyIsRefused) {
+TEST(ConfigDocument, ComplexKeyIsRefused) {
   const InputError error =
       input_error_from([] { Document::load_string("? [a, b]\n: 1\n", "job.yaml"); });
   EXPECT_EQ(error.where().line, 1);

@@ -14,11 +14,11 @@ Node root_of(const std::string& text) {
   return Document::load_string(text, "case.yaml").root();
 }
 
-TEST(ExpectKind, AcceptsTheExpectedKind) {
+TEST(ConfigExpectKind, AcceptsTheExpectedKind) {
   EXPECT_NO_THROW(expect_kind(root_of("kind: job\nname: a\n"), "job"));
 }
 
-TEST(ExpectKind, WrongKindSaysWhatTheFileIsAndWhatWasExpected) {
+TEST(ConfigExpectKind, WrongKindSaysWhatTheFileIsAndWhatWasExpected) {
   const InputError error =
       input_error_from([] { expect_kind(root_of("name: a\nkind: mpm_case\n"), "job"); });
   EXPECT_STREQ(error.what(),
@@ -26,7 +26,7 @@ TEST(ExpectKind, WrongKindSaysWhatTheFileIsAndWhatWasExpected) {
                "expected here");
 }
 
-TEST(ExpectKind, MissingKindIsLocatedAtTheTopMapping) {
+TEST(ConfigExpectKind, MissingKindIsLocatedAtTheTopMapping) {
   const InputError error = input_error_from([] { expect_kind(root_of("name: a\n"), "job"); });
   EXPECT_EQ(error.where().line, 1);
   EXPECT_EQ(error.where().column, 1);
@@ -34,13 +34,13 @@ TEST(ExpectKind, MissingKindIsLocatedAtTheTopMapping) {
   EXPECT_NE(std::string(error.what()).find("missing 'kind: job'"), std::string::npos);
 }
 
-TEST(ExpectKind, NonMappingFileIsRefused) {
+TEST(ConfigExpectKind, NonMappingFileIsRefused) {
   const InputError error = input_error_from([] { expect_kind(root_of("- a\n- b\n"), "job"); });
   EXPECT_NE(std::string(error.what()).find("expected a mapping that starts with 'kind: job'"),
             std::string::npos);
 }
 
-TEST(ExpectKind, KindMustBeAName) {
+TEST(ConfigExpectKind, KindMustBeAName) {
   const InputError error = input_error_from([] { expect_kind(root_of("kind: [job]\n"), "job"); });
   EXPECT_EQ(error.where().column, 7);
 }

@@ -32,7 +32,7 @@ Node job_root() {
   return Document::load_string(yaml_text(job_lines), "job.yaml").root();
 }
 
-TEST(Node, ConvertsScalarsAndLists) {
+TEST(ConfigNode, ConvertsScalarsAndLists) {
   const Node root = job_root();
   EXPECT_DOUBLE_EQ(root["end_time"].as<double>(), 5.0);
   EXPECT_EQ(root["steps"].as<std::int64_t>(), 1000000);
@@ -43,7 +43,7 @@ TEST(Node, ConvertsScalarsAndLists) {
   EXPECT_EQ(root["participants"]["soil"]["executable"].as<std::string>(), "mpm_solver");
 }
 
-TEST(Node, KeyPathsNameMapKeysAndListIndices) {
+TEST(ConfigNode, KeyPathsNameMapKeysAndListIndices) {
   const Node root = job_root();
   EXPECT_EQ(root.key_path(), "");
   EXPECT_EQ(root["participants"]["soil"]["config"].key_path(), "participants.soil.config");
@@ -53,7 +53,7 @@ TEST(Node, KeyPathsNameMapKeysAndListIndices) {
   EXPECT_EQ(exchange[1]["field"].as<std::string>(), "bed_traction");
 }
 
-TEST(Node, EntriesKeepFileOrder) {
+TEST(ConfigNode, EntriesKeepFileOrder) {
   std::vector<std::string> names;
   for (const auto& [name, participant] : job_root()["participants"].entries()) {
     names.push_back(name);
@@ -62,7 +62,7 @@ TEST(Node, EntriesKeepFileOrder) {
   EXPECT_EQ(names, (std::vector<std::string>{"soil", "water"}));
 }
 
-TEST(Node, LocationsAreOneBasedLineAndColumn) {
+TEST(ConfigNode, LocationsAreOneBasedLineAndColumn) {
   const Node root = job_root();
   const SourceLocation value = root["end_time"].location();
   EXPECT_EQ(value.file, "job.yaml");
@@ -76,7 +76,7 @@ TEST(Node, LocationsAreOneBasedLineAndColumn) {
   EXPECT_EQ(nested.column, column_of(job_lines[7], "swe/tank.yaml"));
 }
 
-TEST(Node, WrongTypeNamesFileLineColumnAndKeyPath) {
+TEST(ConfigNode, WrongTypeNamesFileLineColumnAndKeyPath) {
   const InputError error = input_error_from([] { job_root()["label"].as<double>(); });
   EXPECT_EQ(error.where().line, 13);
   EXPECT_EQ(error.where().column, 8);
@@ -84,7 +84,7 @@ TEST(Node, WrongTypeNamesFileLineColumnAndKeyPath) {
   EXPECT_STREQ(error.what(), "job.yaml:13:8: key 'label': expected a number, got 'fast'");
 }
 
-TEST(Node, WrongTypeInsideAListNamesTheItem) {
+TEST(ConfigNode, WrongTypeInsideAListNamesTheItem) {
   const InputError error =
       input_error_from([] { job_root()["exchange"].items()[0]["to"].as<int>(); });
   EXPECT_EQ(error.key_path(), "exchange[0].to");
@@ -92,7 +92,7 @@ TEST(Node, WrongTypeInsideAListNamesTheItem) {
   EXPECT_EQ(error.where().column, column_of(job_lines[9], "water"));
 }
 
-TEST(Node, WholeNumbersMayBeWrittenAsReals) {
+TEST(ConfigNode, WholeNumbersMayBeWrittenAsReals) {
   EXPECT_EQ(job_root()["end_time"].as<int>(), 5);
   const Node root = Document::load_string("cells: 1.5\n", "case.yaml").root();
   const InputError error = input_error_from([&] { root["cells"].as<int>(); });
@@ -100,27 +100,27 @@ TEST(Node, WholeNumbersMayBeWrittenAsReals) {
             std::string::npos);
 }
 
-TEST(Node, NegativeCountIsRefused) {
+TEST(ConfigNode, NegativeCountIsRefused) {
   const Node root = Document::load_string("particles: -3\n", "case.yaml").root();
   const InputError error = input_error_from([&] { root["particles"].as<std::size_t>(); });
   EXPECT_NE(std::string(error.what()).find("must not be negative"), std::string::npos);
 }
 
-TEST(Node, NonFiniteNumberIsRefused) {
+TEST(ConfigNode, NonFiniteNumberIsRefused) {
   const Node root = Document::load_string("cfl: .nan\nend_time: .inf\n", "case.yaml").root();
   input_error_from([&] { root["cfl"].as<double>(); });
   const InputError error = input_error_from([&] { root["end_time"].as<double>(); });
   EXPECT_NE(std::string(error.what()).find("finite"), std::string::npos);
 }
 
-TEST(Node, EmptyValueIsLocatedAtItsKey) {
+TEST(ConfigNode, EmptyValueIsLocatedAtItsKey) {
   const InputError error = input_error_from([] { job_root()["window"].as<double>(); });
   EXPECT_EQ(error.where().line, 12);
   EXPECT_EQ(error.where().column, 1);
   EXPECT_NE(std::string(error.what()).find("got no value"), std::string::npos);
 }
 
-TEST(Node, MissingKeyIsLocatedAtTheMappingThatLacksIt) {
+TEST(ConfigNode, MissingKeyIsLocatedAtTheMappingThatLacksIt) {
   const InputError error =
       input_error_from([] { job_root()["participants"]["soil"]["drag"].as<std::string>(); });
   EXPECT_EQ(error.key_path(), "participants.soil.drag");
@@ -129,23 +129,25 @@ TEST(Node, MissingKeyIsLocatedAtTheMappingThatLacksIt) {
   EXPECT_NE(std::string(error.what()).find("missing required key 'drag'"), std::string::npos);
 }
 
-TEST(Node, ListAccessOnAScalarIsRefused) {
+TEST(ConfigNode, ListAccessOnAScalarIsRefused) {
   const InputError error = input_error_from([] { job_root()["end_time"].items(); });
   EXPECT_NE(std::string(error.what()).find("expected a list, got '5.0'"), std::string::npos);
 }
 
-TEST(Node, GetReturnsTheFallbackOnlyWhenTheKeyIsAbsent) {
+TEST(ConfigNode, GetReturnsTheFallbackOnlyWhenTheKeyIsAbsent) {
   const Node root = job_root();
   EXPECT_DOUBLE_EQ(root.get("end_time", 1.0), 5.0);
   EXPECT_DOUBLE_EQ(root.get("output_every", 0.05), 0.05);
   EXPECT_EQ(root.get<std::string>("transport", "zmq"), "zmq");
+  EXPECT_EQ(root.get("transport", "mpi"), "mpi");
+  EXPECT_EQ(root.get("label", "slow"), "fast");
   EXPECT_TRUE(root.has("exchange"));
   EXPECT_FALSE(root.has("transport"));
   EXPECT_FALSE(root.find("transport").has_value());
   input_error_from([&] { root.get("label", 1.0); });
 }
 
-TEST(Node, FailThrowsAtTheNodeAndFailAtKeyAtItsKey) {
+TEST(ConfigNode, FailThrowsAtTheNodeAndFailAtKeyAtItsKey) {
   const Node config = job_root()["participants"]["soil"]["config"];
   const InputError at_value = input_error_from([&] { config.fail("no such solver case"); });
   EXPECT_STREQ(at_value.what(),

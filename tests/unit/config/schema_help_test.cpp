@@ -25,7 +25,7 @@ std::pair<std::string, std::string> entry_of(const std::string& listing, const s
   return {};
 }
 
-TEST(SchemaHelp, ListsEveryKeyPathWithItsTypeRequirementAndDoc) {
+TEST(ConfigSchemaHelp, ListsEveryKeyPathWithItsTypeRequirementAndDoc) {
   const std::string listing = example_job_schema().help("job file");
   std::cout << listing;
   struct Row {
@@ -69,12 +69,12 @@ TEST(SchemaHelp, ListsEveryKeyPathWithItsTypeRequirementAndDoc) {
   }
 }
 
-TEST(SchemaHelp, StartsWithTitleAndTheFilesDoc) {
+TEST(ConfigSchemaHelp, StartsWithTitleAndTheFilesDoc) {
   const std::string listing = example_job_schema().help("job file");
   EXPECT_EQ(listing.rfind("job file\n========\nA coupled run of several participants.\n", 0), 0U);
 }
 
-TEST(SchemaHelp, EveryDeclaredKeyAppearsExactlyOnce) {
+TEST(ConfigSchemaHelp, EveryDeclaredKeyAppearsExactlyOnce) {
   const std::string listing = example_job_schema().help("job file");
   for (const char* path :
        {"  end_time  (", "  exchange[].to  (", "  participants.<name>.config  ("}) {

@@ -56,39 +56,39 @@ void expect_refused(const std::vector<std::string>& lines, const Expected& expec
   EXPECT_EQ(error.code(), ExitCode::bad_input);
 }
 
-TEST(Schema, ValidJobPasses) {
+TEST(ConfigSchema, ValidJobPasses) {
   EXPECT_NO_THROW(example_job_schema().validate(root_of(valid_job_lines())));
 }
 
-TEST(Schema, OptionalKeysMayBeLeftOut) {
+TEST(ConfigSchema, OptionalKeysMayBeLeftOut) {
   EXPECT_NO_THROW(example_job_schema().validate(
       root_of({"kind: job", "name: a", "end_time: 1", "window: 0.1",
                "participants:", "  soil: {executable: mpm_solver, config: a.yaml}"})));
 }
 
-TEST(Schema, UnknownKeySuggestsTheClosestKnownKey) {
+TEST(ConfigSchema, UnknownKeySuggestsTheClosestKnownKey) {
   expect_refused(job_with_line(3, "end_tme: 5.0"),
                  {3, 1, "end_tme", "unknown key 'end_tme'; did you mean 'end_time'?"});
 }
 
-TEST(Schema, UnknownKeyWithNothingCloseListsTheKnownKeys) {
+TEST(ConfigSchema, UnknownKeyWithNothingCloseListsTheKnownKeys) {
   const std::string line = "  soil:  {executable: mpm_solver, config: a.yaml, threads: 4}";
   expect_refused(job_with_line(8, line),
                  {8, column_of(line, "threads"), "participants.soil.threads",
                   "expected one of: executable, config"});
 }
 
-TEST(Schema, MissingRequiredKeyIsLocatedAtTheParentMapping) {
+TEST(ConfigSchema, MissingRequiredKeyIsLocatedAtTheParentMapping) {
   expect_refused(job_with_line(4, ""), {1, 1, "window", "missing required key 'window'"});
 }
 
-TEST(Schema, MissingNestedKeyIsLocatedAtItsMapping) {
+TEST(ConfigSchema, MissingNestedKeyIsLocatedAtItsMapping) {
   const std::string line = "  water: {executable: swe_fluid}";
   expect_refused(job_with_line(9, line), {9, column_of(line, "{"), "participants.water.config",
                                           "missing required key 'config' (path)"});
 }
 
-TEST(Schema, WrongTypeIsLocatedAtTheValue) {
+TEST(ConfigSchema, WrongTypeIsLocatedAtTheValue) {
   expect_refused(job_with_line(4, "window: fast"),
                  {4, 9, "window", "expected a number, got 'fast'"});
   expect_refused(job_with_line(2, "name: [a, b]"), {2, 7, "name", "expected a string, got a list"});
@@ -98,23 +98,23 @@ TEST(Schema, WrongTypeIsLocatedAtTheValue) {
   expect_refused(lines, {7, 15, "participants", "expected a mapping, got a list"});
 }
 
-TEST(Schema, EmptyValueIsLocatedAtItsKey) {
+TEST(ConfigSchema, EmptyValueIsLocatedAtItsKey) {
   expect_refused(job_with_line(4, "window:"), {4, 1, "window", "expected a number, got no value"});
 }
 
-TEST(Schema, NegativeValueIsRefused) {
+TEST(ConfigSchema, NegativeValueIsRefused) {
   expect_refused(job_with_line(3, "end_time: -5.0"),
                  {3, 11, "end_time", "must be > 0, got '-5.0'"});
   expect_refused(job_with_line(3, "end_time: 0"), {3, 11, "end_time", "must be > 0"});
 }
 
-TEST(Schema, OutOfRangeValueIsRefused) {
+TEST(ConfigSchema, OutOfRangeValueIsRefused) {
   auto lines = valid_job_lines();
   lines.push_back("relaxation: 1.5");
   expect_refused(lines, {14, 13, "relaxation", "must be in [0, 1], got '1.5'"});
 }
 
-TEST(Schema, FractionalIntegerIsRefused) {
+TEST(ConfigSchema, FractionalIntegerIsRefused) {
   auto lines = valid_job_lines();
   lines.push_back("max_iterations: 2.5");
   expect_refused(lines, {14, 17, "max_iterations", "expected a whole number"});
@@ -122,20 +122,20 @@ TEST(Schema, FractionalIntegerIsRefused) {
   expect_refused(lines, {14, 17, "max_iterations", "must be > 0"});
 }
 
-TEST(Schema, NonBooleanIsRefused) {
+TEST(ConfigSchema, NonBooleanIsRefused) {
   auto lines = valid_job_lines();
   lines.push_back("restart: maybe");
   expect_refused(lines, {14, 10, "restart", "expected true or false, got 'maybe'"});
 }
 
-TEST(Schema, ValueOutsideTheEnumSuggestsTheClosestChoice) {
+TEST(ConfigSchema, ValueOutsideTheEnumSuggestsTheClosestChoice) {
   expect_refused(job_with_line(5, "transport: zqm"),
                  {5, 12, "transport", "'zqm' is not a valid choice; did you mean 'zmq'?"});
   expect_refused(job_with_line(5, "transport: tcp"),
                  {5, 12, "transport", "expected one of: zmq, mpi"});
 }
 
-TEST(Schema, VectorLengthAndItemsAreChecked) {
+TEST(ConfigSchema, VectorLengthAndItemsAreChecked) {
   expect_refused(job_with_line(6, "gravity: [0, -9.81, 0, 1]"),
                  {6, 10, "gravity", "expected at most 3 numbers, got 4"});
   expect_refused(job_with_line(6, "gravity: []"),
@@ -146,20 +146,20 @@ TEST(Schema, VectorLengthAndItemsAreChecked) {
                  {6, 10, "gravity", "expected a list of numbers, got '-9.81'"});
 }
 
-TEST(Schema, EmptyMapOfIsRefusedWhenEntriesAreRequired) {
+TEST(ConfigSchema, EmptyMapOfIsRefusedWhenEntriesAreRequired) {
   auto lines = job_with_line(8, "");
   lines.erase(lines.begin() + 7);
   lines[6] = "participants: {}";
   expect_refused(lines, {7, 15, "participants", "expected at least 1 entries, got 0"});
 }
 
-TEST(Schema, ErrorsInsideListItemsNameTheItem) {
+TEST(ConfigSchema, ErrorsInsideListItemsNameTheItem) {
   const std::string line = "  - {from: water, to: soil, field: bed_traction}";
   expect_refused(job_with_line(12, line), {12, column_of(line, "{"), "exchange[1].mapping",
                                            "missing required key 'mapping'"});
 }
 
-TEST(Schema, AnyOfReportsTheErrorOfTheAlternativeThatFitsTheShape) {
+TEST(ConfigSchema, AnyOfReportsTheErrorOfTheAlternativeThatFitsTheShape) {
   const std::string scalar =
       "  - {from: water, to: soil, field: bed_traction, mapping: conservatve}";
   expect_refused(job_with_line(12, scalar),
@@ -176,7 +176,7 @@ TEST(Schema, AnyOfReportsTheErrorOfTheAlternativeThatFitsTheShape) {
   EXPECT_NO_THROW(example_job_schema().validate(root_of(job_with_line(12, valid_object))));
 }
 
-TEST(Schema, AnyOfWithNoFittingShapeListsTheAlternatives) {
+TEST(ConfigSchema, AnyOfWithNoFittingShapeListsTheAlternatives) {
   expect_refused(job_with_line(13, "momentum_exchange: [water]"),
                  {13, 20, "momentum_exchange", "expected one of 'none', or mapping, got a list"});
   EXPECT_NO_THROW(
@@ -185,7 +185,7 @@ TEST(Schema, AnyOfWithNoFittingShapeListsTheAlternatives) {
                  {13, 40, "momentum_exchange.drag", "expected one of: kozeny_carman, forchheimer"});
 }
 
-TEST(Schema, AnyOfBetweenScalarsTriesEach) {
+TEST(ConfigSchema, AnyOfBetweenScalarsTriesEach) {
   Schema schema = Schema::object();
   schema.required("every", Schema::any_of({Schema::number().positive(), Schema::one_of({"never"})}),
                   "Output interval or never.");
@@ -197,12 +197,12 @@ TEST(Schema, AnyOfBetweenScalarsTriesEach) {
             std::string::npos);
 }
 
-TEST(Schema, WrongKindIsRefusedFirst) {
+TEST(ConfigSchema, WrongKindIsRefusedFirst) {
   expect_refused(job_with_line(1, "kind: mpm_case"),
                  {1, 7, "kind", "this is a 'mpm_case' file, but a 'job' file is expected here"});
 }
 
-TEST(Schema, MustExistPathIsCheckedRelativeToTheFile) {
+TEST(ConfigSchema, MustExistPathIsCheckedRelativeToTheFile) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / "cosim_config_schema_must_exist";
   fs::create_directories(dir / "mpm");
@@ -221,11 +221,11 @@ TEST(Schema, MustExistPathIsCheckedRelativeToTheFile) {
   fs::remove_all(dir);
 }
 
-TEST(Schema, EmptyStringIsRefusedWhereANameIsRequired) {
+TEST(ConfigSchema, EmptyStringIsRefusedWhereANameIsRequired) {
   expect_refused(job_with_line(2, "name: ''"), {2, 7, "name", "must not be empty"});
 }
 
-TEST(Schema, SequenceLengthIsChecked) {
+TEST(ConfigSchema, SequenceLengthIsChecked) {
   Schema schema = Schema::object();
   schema.required("points", Schema::sequence(Schema::number()).length(2, 2), "Two ends.");
   const InputError error = input_error_from(
@@ -233,7 +233,7 @@ TEST(Schema, SequenceLengthIsChecked) {
   EXPECT_NE(std::string(error.what()).find("expected exactly 2 items, got 3"), std::string::npos);
 }
 
-TEST(Schema, ModifyingACopyLeavesTheOriginalUnchanged) {
+TEST(ConfigSchema, ModifyingACopyLeavesTheOriginalUnchanged) {
   const Schema any_number = Schema::number();
   Schema positive = any_number;
   positive.positive();

@@ -62,6 +62,9 @@ class Node {
     auto child = find(key);
     return child ? child->template as<T>() : fallback;
   }
+  std::string get(std::string_view key, const char* fallback) const {
+    return get<std::string>(key, fallback);
+  }
 
   // A string scalar taken as a path: relative paths resolve from the
   // directory of the file this node was read from.
