@@ -68,6 +68,8 @@ Schema config_schema() {
       .optional("time", Schema::one_of({"state", "integral"}).default_value("state"),
                 "state | integral.")
       .optional("unit", Schema::string().default_value("1"), "SI unit.")
+      .optional("components", Schema::integer().range(1, 3).default_value("1"),
+                "Values per element (each component takes `function`).")
       .optional("function", Schema::vector(5, 5).default_value("[0,0,0,0,0]"),
                 "c0 + c1 x + c2 y + c3 z + c4 t.")
       .optional("tolerance", Schema::number().non_negative(),
@@ -87,6 +89,7 @@ FieldConfig read_field(const Node& f) {
   c.spec.name = f["name"].as<std::string>();
   c.spec.mesh = "grid";
   c.spec.unit = f.get<std::string>("unit", "1");
+  c.spec.components = f.get<int>("components", 1);
   c.spec.quantity = f.get<std::string>("quantity", "intensive") == "extensive"
                         ? cosim::Quantity::extensive
                         : cosim::Quantity::intensive;
@@ -161,10 +164,12 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
 
   const cosim::Mesh& mesh = config.mesh;
   auto values_of = [&](const FieldConfig& f, double t) {
-    std::vector<double> v(mesh.size());
+    const auto components = static_cast<std::size_t>(f.spec.components);
+    std::vector<double> v(mesh.size() * components);
     for (std::size_t e = 0; e < mesh.size(); ++e) {
-      v[e] = f.function(mesh.position(e), t);
-      if (f.spec.time == cosim::TimeTreatment::integral) v[e] *= mesh.control_volume(e);
+      double value = f.function(mesh.position(e), t);
+      if (f.spec.time == cosim::TimeTreatment::integral) value *= mesh.control_volume(e);
+      for (std::size_t c = 0; c < components; ++c) v[e * components + c] = value;
     }
     return v;
   };
@@ -173,7 +178,8 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
 
   participant.initialize(0.0, config.end_time);
   std::map<std::string, std::vector<double>> sent_integral;
-  for (const auto& w : config.writes) sent_integral[w.spec.name].assign(mesh.size(), 0.0);
+  for (const auto& w : config.writes)
+    sent_integral[w.spec.name].assign(participant.field_size(w.spec.name), 0.0);
 
   auto check_reads = [&]() {
     for (const auto& r : config.reads) {
@@ -184,8 +190,10 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
         // The partner wrote these values at the end of the previous window,
         // which is the start of this one.
         const double t_written = participant.time();
-        for (std::size_t e = 0; e < mesh.size(); ++e)
-          max_error = std::max(max_error, std::abs(v[e] - r.function(mesh.position(e), t_written)));
+        const auto components = static_cast<std::size_t>(r.spec.components);
+        for (std::size_t i = 0; i < v.size(); ++i)
+          max_error = std::max(
+              max_error, std::abs(v[i] - r.function(mesh.position(i / components), t_written)));
         if (max_error > r.tolerance)
           throw cosim::NumericalError(
               fmt::format("read '{}' at t = {} s: error {:.3e} exceeds {:.3e}", r.spec.name,
@@ -197,7 +205,8 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
   };
 
   std::map<std::string, std::vector<double>> received_integral;
-  for (const auto& r : config.reads) received_integral[r.spec.name].assign(mesh.size(), 0.0);
+  for (const auto& r : config.reads)
+    received_integral[r.spec.name].assign(participant.field_size(r.spec.name), 0.0);
   try {
     check_reads();
     while (participant.is_coupling_ongoing()) {
@@ -228,13 +237,14 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
           if (w.spec.time != cosim::TimeTreatment::integral) continue;
           log(w.spec.name, "sent", static_cast<double>(window), participant.time(),
               total(sent_integral[w.spec.name]), 0.0);
-          sent_integral[w.spec.name].assign(mesh.size(), 0.0);
+          std::fill(sent_integral[w.spec.name].begin(), sent_integral[w.spec.name].end(), 0.0);
         }
         for (const auto& r : config.reads) {
           if (r.spec.time != cosim::TimeTreatment::integral) continue;
           log(r.spec.name, "applied", static_cast<double>(window), participant.time(),
               total(received_integral[r.spec.name]), 0.0);
-          received_integral[r.spec.name].assign(mesh.size(), 0.0);
+          std::fill(received_integral[r.spec.name].begin(), received_integral[r.spec.name].end(),
+                    0.0);
         }
         if (participant.is_coupling_ongoing()) check_reads();
       }

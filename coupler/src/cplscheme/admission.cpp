@@ -1,8 +1,8 @@
 #include "admission.hpp"
 
-#include <algorithm>
-
 #include <fmt/format.h>
+
+#include <algorithm>
 
 namespace cosim::cplscheme {
 
@@ -36,14 +36,14 @@ std::optional<std::string> admission_refusal(const job::Job& job, const std::str
     return fmt::format("participant '{}' was started for job '{}', this coupler runs job '{}'",
                        header.sender, header.job_id, job_id);
   if (hello.config_hash != job.config_hash)
-    return fmt::format("participant '{}' was started for a job config with hash {}, this job's "
-                       "config hash is {} (was the job or a participant config edited?)",
-                       header.sender, hello.config_hash, job.config_hash);
+    return fmt::format(
+        "participant '{}' was started for a job config with hash {}, this job's "
+        "config hash is {} (was the job or a participant config edited?)",
+        header.sender, hello.config_hash, job.config_hash);
   if (hello.participant != header.sender)
     return fmt::format("hello from '{}' names participant '{}'", header.sender, hello.participant);
   const job::ParticipantSpec* spec = job.participant(header.sender);
-  if (!spec)
-    return fmt::format("job '{}' has no participant named '{}'", job.name, header.sender);
+  if (!spec) return fmt::format("job '{}' has no participant named '{}'", job.name, header.sender);
   for (const auto& [mesh_name, mesh] : spec->meshes) {
     auto it = std::find_if(hello.meshes.begin(), hello.meshes.end(),
                            [&](auto& m) { return m.name == mesh_name; });
@@ -59,17 +59,18 @@ std::optional<std::string> admission_refusal(const job::Job& job, const std::str
   if (auto r = check_fields(spec->reads, hello.reads, "reads", spec->name)) return r;
   for (const FieldSpec& f : hello.reads)
     if (!spec->reads.count(f.name))
-      return fmt::format("participant '{}' reads '{}', which the job does not send it (add it to "
-                         "its `reads` and to `exchange`)",
-                         spec->name, f.name);
+      return fmt::format(
+          "participant '{}' reads '{}', which the job does not send it (add it to "
+          "its `reads` and to `exchange`)",
+          spec->name, f.name);
   return std::nullopt;
 }
 
 std::optional<std::string> exchange_mismatch(const job::ExchangeSpec& x, const FieldSpec& written,
                                              const FieldSpec& read) {
   if (written.components != read.components)
-    return fmt::format("'{}' has {} components as written by '{}' but {} as read by '{}'",
-                       x.field, written.components, x.from, read.components, x.to);
+    return fmt::format("'{}' has {} components as written by '{}' but {} as read by '{}'", x.field,
+                       written.components, x.from, read.components, x.to);
   if (written.unit != read.unit)
     return fmt::format("'{}' is written by '{}' in [{}] but read by '{}' in [{}]", x.field, x.from,
                        written.unit, x.to, read.unit);

@@ -1,12 +1,12 @@
 #include "cosim/cplscheme/coupler.hpp"
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cmath>
-#include <numeric>
-
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
-#include <spdlog/spdlog.h>
+#include <numeric>
 
 #include "admission.hpp"
 #include "cosim/com/handshake.hpp"
@@ -15,6 +15,8 @@
 #include "cosim/io/tail_lines.hpp"
 #include "cosim/mapping/bounded_redistribution.hpp"
 #include "cosim/mapping/build_operator.hpp"
+#include "momentum_exchange_step.hpp"
+#include "operator_cache.hpp"
 #include "progress.hpp"
 
 namespace cosim::cplscheme {
@@ -39,14 +41,9 @@ struct Peer {
   bool window_done = false;
 };
 
-struct CachedOperator {
-  mapping::Operator op;
-  std::size_t source_version = 0;
-  std::size_t target_version = 0;
-  bool built = false;
-};
-
-double sum(std::span<const double> v) { return std::accumulate(v.begin(), v.end(), 0.0); }
+double sum(std::span<const double> v) {
+  return std::accumulate(v.begin(), v.end(), 0.0);
+}
 
 double abs_sum(std::span<const double> v) {
   double s = 0.0;
@@ -63,7 +60,9 @@ struct Coupler::Impl {
   RunSummary& summary;
   CouplerOptions options;
   std::map<std::string, Peer> peers;
-  std::vector<CachedOperator> operators;  // one per exchange
+  OperatorCache operators;
+  std::optional<MomentumExchangeStep> momentum_exchange;
+  double max_momentum_balance_error = 0.0;
   std::map<std::string, std::unique_ptr<SnapshotWriter>> snapshot_writers;
   std::size_t window = 0;
   double max_conservation_error = 0.0;
@@ -73,7 +72,7 @@ struct Coupler::Impl {
        CouplerOptions o)
       : job(j), transport(t), supervisor(s), summary(sum), options(std::move(o)) {
     for (const auto& p : job.participants) peers[p.name].spec = &p;
-    operators.resize(job.exchanges.size());
+    if (job.momentum_exchange) momentum_exchange.emplace(*job.momentum_exchange, job.file.string());
   }
 
   double window_time(std::size_t w) const {
@@ -96,7 +95,8 @@ struct Coupler::Impl {
     if (!supervisor) return {};
     const auto lines = tail_lines(supervisor->log_file(name), 15);
     if (lines.empty()) return {};
-    std::string out = fmt::format("\n--- last lines of {} ---", supervisor->log_file(name).string());
+    std::string out =
+        fmt::format("\n--- last lines of {} ---", supervisor->log_file(name).string());
     for (const auto& l : lines) out += "\n  " + l;
     return out;
   }
@@ -143,14 +143,14 @@ struct Coupler::Impl {
   }
 
   void admit_participants() {
-    const auto deadline =
-        Clock::now() + std::chrono::milliseconds(static_cast<long>(options.connect_timeout_s * 1e3));
+    const auto deadline = Clock::now() + std::chrono::milliseconds(
+                                             static_cast<long>(options.connect_timeout_s * 1e3));
     std::size_t connected = 0;
     while (connected < peers.size()) {
       std::optional<com::Received> r;
       try {
-        r = receive(deadline, fmt::format("participants to connect ({} of {} did)", connected,
-                                          peers.size()));
+        r = receive(deadline,
+                    fmt::format("participants to connect ({} of {} did)", connected, peers.size()));
       } catch (const ProtocolError& e) {
         // A peer speaking another protocol version or garbage: refuse it and
         // keep waiting for the real participants.
@@ -205,6 +205,9 @@ struct Coupler::Impl {
         throw InputError(SourceLocation{job.file.string(), x.where.line, x.where.column},
                          x.key_path, *mismatch);
     }
+    if (momentum_exchange)
+      momentum_exchange->check_declarations(job, peers.at(job.momentum_exchange->fluid).hello,
+                                            peers.at(job.momentum_exchange->solid).hello);
   }
 
   void handle_window_message(const std::string& name, const com::Message& m) {
@@ -224,9 +227,9 @@ struct Coupler::Impl {
                                           [&](auto& d) { return d.name == mesh.name; });
         if (declared_mesh == peer.hello.meshes.end() || declared_mesh->kind != mesh.kind() ||
             declared_mesh->dim != mesh.dimension())
-          throw ProtocolError(name, fmt::format("sent mesh '{}' ({}D {}) that it did not declare",
-                                                mesh.name, mesh.dimension(),
-                                                to_string(mesh.kind())));
+          throw ProtocolError(
+              name, fmt::format("sent mesh '{}' ({}D {}) that it did not declare", mesh.name,
+                                mesh.dimension(), to_string(mesh.kind())));
         auto old = peer.meshes.find(mesh.name);
         if (old != peer.meshes.end() && old->second.size() != mesh.size())
           throw ProtocolError(name, fmt::format("mesh '{}' changed size from {} to {}", mesh.name,
@@ -239,11 +242,12 @@ struct Coupler::Impl {
         auto spec = std::find_if(peer.hello.writes.begin(), peer.hello.writes.end(),
                                  [&](auto& f) { return f.name == h.field; });
         if (spec == peer.hello.writes.end())
-          throw ProtocolError(name, fmt::format("sent field '{}' that it did not declare", h.field));
+          throw ProtocolError(name,
+                              fmt::format("sent field '{}' that it did not declare", h.field));
         auto mesh = peer.meshes.find(spec->mesh);
         if (h.mesh != spec->mesh || mesh == peer.meshes.end())
-          throw ProtocolError(name, fmt::format("sent field '{}' on mesh '{}' before that mesh",
-                                                h.field, h.mesh));
+          throw ProtocolError(
+              name, fmt::format("sent field '{}' on mesh '{}' before that mesh", h.field, h.mesh));
         if (h.count != mesh->second.size() ||
             h.components != static_cast<std::uint32_t>(spec->components))
           throw ProtocolError(name, fmt::format("field '{}' has {} x {} values, mesh '{}' needs "
@@ -262,8 +266,8 @@ struct Coupler::Impl {
                                                 window, h.time, expected));
         for (const FieldSpec& f : peer.hello.writes)
           if (!peer.written.count(f.name))
-            throw ProtocolError(name, fmt::format("ended window {} without sending '{}'", window,
-                                                  f.name));
+            throw ProtocolError(
+                name, fmt::format("ended window {} without sending '{}'", window, f.name));
         peer.window_done = true;
         return;
       }
@@ -303,19 +307,27 @@ struct Coupler::Impl {
     Peer& to = peers.at(x.to);
     const std::string& source_mesh = from.spec->writes.at(x.field);
     const std::string& target_mesh = to.spec->reads.at(x.field);
-    CachedOperator& c = operators[index];
-    const std::size_t sv = from.mesh_version[source_mesh];
-    const std::size_t tv = to.mesh_version[target_mesh];
-    if (!c.built || c.source_version != sv || c.target_version != tv) {
-      mapping::Options map_options;
-      map_options.kernel = x.mapping.kernel;
-      c.op = mapping::build_operator(from.meshes.at(source_mesh), to.meshes.at(target_mesh),
-                                     x.mapping.constraint, map_options);
-      c.source_version = sv;
-      c.target_version = tv;
-      c.built = true;
-    }
-    return c.op;
+    return operators.get(fmt::format("exchange[{}]", index), from.meshes.at(source_mesh),
+                         from.mesh_version[source_mesh], to.meshes.at(target_mesh),
+                         to.mesh_version[target_mesh], x.mapping.constraint, x.mapping.kernel);
+  }
+
+  PhaseSide side_of(const std::string& name) {
+    Peer& p = peers.at(name);
+    return {p.spec, &p.hello, &p.meshes, &p.mesh_version, &p.written};
+  }
+
+  void exchange_momentum(std::map<std::string, std::map<std::string, std::vector<double>>>& out) {
+    if (!momentum_exchange) return;
+    auto scope = summary.phases().measure("exchange");
+    const job::MomentumExchangeSpec& spec = *job.momentum_exchange;
+    // Window 0 carries the initial state: nothing has been integrated yet.
+    const double dt = window == 0 ? 0.0 : job.window;
+    auto impulses = momentum_exchange->run(dt, side_of(spec.fluid), side_of(spec.solid), operators);
+    max_momentum_balance_error =
+        std::max(max_momentum_balance_error, impulses.momentum_balance_error);
+    out[spec.fluid][job::momentum_exchange_fields::impulse] = std::move(impulses.fluid);
+    out[spec.solid][job::momentum_exchange_fields::impulse] = std::move(impulses.solid);
   }
 
   void map_and_send() {
@@ -348,12 +360,15 @@ struct Coupler::Impl {
         received[x.to][x.field] = std::move(target);
       }
     }
-    for (const job::ExchangeSpec& x : job.exchanges) {
-      const Peer& to = peers.at(x.to);
-      const FieldSpec& spec = declared(to.hello.reads, x.field);
-      send(x.to, com::make_field_message(options.job_id, com::coupler_peer, window, t, x.field,
-                                         spec.mesh, received[x.to][x.field],
-                                         static_cast<std::uint32_t>(spec.components)));
+    exchange_momentum(received);
+    for (const auto& [peer_name, fields] : received) {
+      const Peer& to = peers.at(peer_name);
+      for (const auto& [field, values] : fields) {
+        const FieldSpec& spec = declared(to.hello.reads, field);
+        send(peer_name,
+             com::make_field_message(options.job_id, com::coupler_peer, window, t, field, spec.mesh,
+                                     values, static_cast<std::uint32_t>(spec.components)));
+      }
     }
     write_snapshots(t, received);
     const bool last = window >= job.windows();
@@ -364,8 +379,8 @@ struct Coupler::Impl {
     }
   }
 
-  void write_snapshots(double t,
-                       const std::map<std::string, std::map<std::string, std::vector<double>>>& data) {
+  void write_snapshots(
+      double t, const std::map<std::string, std::map<std::string, std::vector<double>>>& data) {
     if (job.output_every <= 0.0 || t + time_tolerance * job.window < next_output_time) return;
     auto scope = summary.phases().measure("output");
     next_output_time = t + job.output_every;
@@ -382,8 +397,10 @@ struct Coupler::Impl {
         const Mesh& mesh = peer.meshes.at(mesh_name);
         if (!writer)
           writer = std::make_unique<SnapshotWriter>(options.output_dir / "exchanged", key, mesh);
-        if (mesh.kind() == MeshKind::point_cloud) writer->write(t, mesh, snapshot);
-        else writer->write(t, snapshot);
+        if (mesh.kind() == MeshKind::point_cloud)
+          writer->write(t, mesh, snapshot);
+        else
+          writer->write(t, snapshot);
       }
     }
   }
@@ -420,6 +437,9 @@ void Coupler::run() {
       s.map_and_send();
       s.summary.set_windows(static_cast<std::int64_t>(s.window));
       s.summary.set_metric("max_conservative_mapping_error", s.max_conservation_error, "1");
+      if (s.momentum_exchange)
+        s.summary.set_metric("max_momentum_exchange_balance_error", s.max_momentum_balance_error,
+                             "1");
       progress.update(s.window, s.window_time(s.window));
       if (s.window % 100 == 0) s.summary.write();
     }

@@ -1,9 +1,9 @@
 #include "progress.hpp"
 
-#include <cstdio>
-
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
+
+#include <cstdio>
 
 namespace cosim::cplscheme {
 
@@ -29,9 +29,9 @@ void Progress::update(std::size_t window, double time) {
   const double wall = std::chrono::duration<double>(now - started_).count();
   const double done = (time - start_time_) / (end_time_ - start_time_);
   const double eta = done > 0.0 ? wall * (1.0 - done) / done : 0.0;
-  const std::string line = fmt::format("t = {:.6g} s ({:5.1f} %)  window {}/{}  wall {}  ETA {}",
-                                       time, 100.0 * done, window, windows_, clock_text(wall),
-                                       clock_text(eta));
+  const std::string line =
+      fmt::format("t = {:.6g} s ({:5.1f} %)  window {}/{}  wall {}  ETA {}", time, 100.0 * done,
+                  window, windows_, clock_text(wall), clock_text(eta));
   if (terminal_) {
     std::fprintf(stderr, "\r%s\033[K", line.c_str());
     std::fflush(stderr);

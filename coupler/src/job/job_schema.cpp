@@ -7,8 +7,9 @@ using config::Schema;
 namespace {
 
 Schema mesh_schema() {
-  Schema s = Schema::object("A mesh the participant declares, so the job can be checked before it "
-                            "starts.");
+  Schema s = Schema::object(
+      "A mesh the participant declares, so the job can be checked before it "
+      "starts.");
   s.required("kind",
              Schema::one_of({"uniform_grid", "nonuniform_line", "point_cloud", "cell_cloud"}),
              "Mesh kind (DESIGN.md §5).")
@@ -35,9 +36,10 @@ Schema participant_schema() {
 
 Schema mapping_schema() {
   Schema detailed = Schema::object("Mapping with options.");
-  detailed.required("constraint", Schema::one_of({"conservative", "consistent"}),
-                    "conservative (extensive fields: totals kept) or consistent (intensive "
-                    "fields: averages).")
+  detailed
+      .required("constraint", Schema::one_of({"conservative", "consistent"}),
+                "conservative (extensive fields: totals kept) or consistent (intensive "
+                "fields: averages).")
       .optional("kernel", Schema::one_of({"linear", "quadratic_bspline"}).default_value("linear"),
                 "Kernel between point/cell clouds and grids.")
       .optional("bounds", Schema::vector(2, 2),
@@ -73,9 +75,23 @@ Schema output_schema() {
   return s;
 }
 
+Schema momentum_exchange_schema() {
+  Schema s = Schema::object("Implicit momentum exchange of a fluid and a porous solid.");
+  s.required("fluid", Schema::string().non_empty(),
+             "Participant writing fluid_velocity and fluid_bulk_density.")
+      .required("solid", Schema::string().non_empty(),
+                "Participant writing solid_fraction, solid_velocity and solid_bulk_density.")
+      .required("mesh", Schema::string().non_empty(),
+                "Exchange mesh, as <participant>.<mesh> (usually the fluid's grid).")
+      .required("drag", Schema::any(),
+                "Drag law: {law: kozeny_carman | forchheimer | beetstra | constant, ...}.");
+  return Schema::any_of({Schema::one_of({"none"}), s});
+}
+
 Schema make_job_schema() {
-  Schema s = Schema::file("job", "A coupled run: participants, the fields they exchange, and "
-                                 "the coupling windows.");
+  Schema s = Schema::file("job",
+                          "A coupled run: participants, the fields they exchange, and "
+                          "the coupling windows.");
   s.required("name", Schema::string().non_empty(), "Name of the job (used in logs and reports).")
       .optional("start_time", Schema::number().non_negative().unit("s").default_value("0"),
                 "Simulated start time.")
@@ -93,9 +109,10 @@ Schema make_job_schema() {
                 "The solver processes, by name.")
       .optional("exchange", Schema::sequence(exchange_schema()).default_value("[]"),
                 "The fields exchanged each window.")
-      .optional("momentum_exchange", Schema::any(),
-                "Implicit drag exchange between a fluid and a porous solid (`none`, or a "
-                "mapping; see the ice_fluid and mpm_solver pairing issues).")
+      .optional("momentum_exchange", momentum_exchange_schema().default_value("none"),
+                "Implicit drag exchange between a fluid and a porous solid, solved by the "
+                "coupler each window; both read the momentum they receive as "
+                "'momentum_exchange_impulse'.")
       .optional("output", output_schema(), "Coupler output.");
   return s;
 }

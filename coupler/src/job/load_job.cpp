@@ -1,10 +1,11 @@
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
-#include <fmt/format.h>
-
 #include "cosim/com/transport.hpp"
 #include "cosim/config/document.hpp"
+#include "cosim/exchange/drag_law.hpp"
 #include "cosim/io/content_hash.hpp"
 #include "cosim/job/job.hpp"
 
@@ -54,8 +55,8 @@ ParticipantSpec read_participant(const std::string& name, const config::Node& p)
   spec.reads = field_map(p, "reads", spec.meshes);
   for (const auto& [field, mesh] : spec.reads)
     if (spec.writes.count(field))
-      p["reads"][field].fail(fmt::format("participant '{}' both writes and reads '{}'", name,
-                                         field));
+      p["reads"][field].fail(
+          fmt::format("participant '{}' both writes and reads '{}'", name, field));
   return spec;
 }
 
@@ -108,9 +109,10 @@ void check_exchanges(Job& job, const config::Node& root) {
     const MeshSpec& source = from->meshes.at(w->second);
     const MeshSpec& target = to->meshes.at(r->second);
     if (source.dim != target.dim)
-      e.fail(fmt::format("field '{}' goes from {}D mesh '{}.{}' to {}D mesh '{}.{}'; mapping needs "
-                         "meshes of the same dimension",
-                         x.field, source.dim, x.from, w->second, target.dim, x.to, r->second));
+      e.fail(
+          fmt::format("field '{}' goes from {}D mesh '{}.{}' to {}D mesh '{}.{}'; mapping needs "
+                      "meshes of the same dimension",
+                      x.field, source.dim, x.from, w->second, target.dim, x.to, r->second));
     auto [it, fresh] = seen.emplace(std::make_pair(x.to, x.field), e.key_path());
     if (!fresh)
       e.fail(fmt::format("'{}' of participant '{}' is already provided by {}", x.field, x.to,
@@ -122,6 +124,7 @@ void check_exchanges(Job& job, const config::Node& root) {
 void check_reads_provided(const Job& job, const config::Node& root) {
   for (const auto& p : job.participants)
     for (const auto& [field, mesh] : p.reads) {
+      if (field == momentum_exchange_fields::impulse && job.momentum_exchange) continue;
       const bool provided = std::any_of(job.exchanges.begin(), job.exchanges.end(), [&](auto& x) {
         return x.to == p.name && x.field == field;
       });
@@ -129,6 +132,58 @@ void check_reads_provided(const Job& job, const config::Node& root) {
         root["participants"][p.name]["reads"][field].fail(fmt::format(
             "participant '{}' reads '{}', but no exchange entry sends it", p.name, field));
     }
+}
+
+MomentumExchangeSpec read_momentum_exchange(const Job& job, const config::Node& m) {
+  namespace f = momentum_exchange_fields;
+  MomentumExchangeSpec spec;
+  spec.where = m.location();
+  spec.fluid = m["fluid"].as<std::string>();
+  spec.solid = m["solid"].as<std::string>();
+  const ParticipantSpec* fluid = job.participant(spec.fluid);
+  const ParticipantSpec* solid = job.participant(spec.solid);
+  if (!fluid) m["fluid"].fail(fmt::format("no participant named '{}'", spec.fluid));
+  if (!solid) m["solid"].fail(fmt::format("no participant named '{}'", spec.solid));
+  if (spec.fluid == spec.solid) m["solid"].fail("the fluid and the solid are the same participant");
+  const auto mesh = m["mesh"].as<std::string>();
+  const auto dot = mesh.find('.');
+  if (dot == std::string::npos)
+    m["mesh"].fail(fmt::format("'{}' is not <participant>.<mesh>", mesh));
+  spec.mesh_owner = mesh.substr(0, dot);
+  spec.mesh = mesh.substr(dot + 1);
+  if (spec.mesh_owner != spec.fluid && spec.mesh_owner != spec.solid)
+    m["mesh"].fail("the exchange mesh belongs to the fluid or the solid participant");
+  const ParticipantSpec* owner = spec.mesh_owner == spec.fluid ? fluid : solid;
+  auto exchange_mesh = owner->meshes.find(spec.mesh);
+  if (exchange_mesh == owner->meshes.end())
+    m["mesh"].fail(fmt::format("participant '{}' has no mesh '{}'", spec.mesh_owner, spec.mesh));
+  const int dim = exchange_mesh->second.dim;
+  spec.drag = m["drag"].yaml();
+  const auto law = exchange::make_drag_law(spec.drag, spec.drag_key_path, job.file.string());
+
+  auto require = [&](const ParticipantSpec& p, const std::map<std::string, std::string>& fields,
+                     const char* field, const char* verb) {
+    auto it = fields.find(field);
+    if (it == fields.end())
+      m.fail(
+          fmt::format("the momentum exchange needs participant '{}' to {} '{}' (add it to "
+                      "participants.{}.{}s)",
+                      p.name, verb, field, p.name, verb));
+    if (p.meshes.at(it->second).dim != dim)
+      m.fail(fmt::format("'{}' of participant '{}' is on a {}D mesh, the exchange mesh is {}D",
+                         field, p.name, p.meshes.at(it->second).dim, dim));
+  };
+  for (const char* field : {f::solid_fraction, f::solid_velocity, f::solid_bulk_density})
+    require(*solid, solid->writes, field, "write");
+  if (law->cell_input() == exchange::CellInput::grain_size)
+    require(*solid, solid->writes, f::grain_size, "write");
+  if (law->cell_input() == exchange::CellInput::permeability)
+    require(*solid, solid->writes, f::permeability, "write");
+  for (const char* field : {f::fluid_velocity, f::fluid_bulk_density})
+    require(*fluid, fluid->writes, field, "write");
+  require(*fluid, fluid->reads, f::impulse, "read");
+  require(*solid, solid->reads, f::impulse, "read");
+  return spec;
 }
 
 std::string hash_inputs(const config::Document& doc, const Job& job) {
@@ -170,8 +225,8 @@ Job load_job(const std::filesystem::path& file) {
                                     job.end_time - job.start_time));
   if ((job.end_time - job.start_time) / job.window > 1e9)
     root["window"].fail("more than 1e9 coupling windows");
-  job.transport = root.get<std::string>("transport", "zmq") == "mpi" ? TransportKind::mpi
-                                                                     : TransportKind::zmq;
+  job.transport =
+      root.get<std::string>("transport", "zmq") == "mpi" ? TransportKind::mpi : TransportKind::zmq;
   if (auto z = root.find("zmq")) {
     job.zmq.scheme = z->get<std::string>("scheme", "ipc");
     job.zmq.host = z->get<std::string>("host", "127.0.0.1");
@@ -184,15 +239,13 @@ Job load_job(const std::filesystem::path& file) {
   if (auto o = root.find("output")) job.output_every = o->get<double>("every", 0.0);
 
   for (const auto& [name, p] : root["participants"].entries()) {
-    if (name == com::coupler_peer)
-      p.fail_at_key("'coupler' is reserved for the coupler itself");
+    if (name == com::coupler_peer) p.fail_at_key("'coupler' is reserved for the coupler itself");
     job.participants.push_back(read_participant(name, p));
   }
   check_exchanges(job, root);
+  if (auto m = root.find("momentum_exchange"); m && m->is_map())
+    job.momentum_exchange = read_momentum_exchange(job, *m);
   check_reads_provided(job, root);
-  if (auto m = root.find("momentum_exchange"); m && !(m->is_scalar() && m->as<std::string>() == "none"))
-    m->fail("the implicit momentum exchange between processes is wired with the first porous "
-            "pairing (ice_fluid issue); use 'none' for now");
   job.config_hash = hash_inputs(doc, job);
   return job;
 }

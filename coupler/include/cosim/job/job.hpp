@@ -56,6 +56,35 @@ struct ZmqSpec {
   bool allow_non_loopback = false;
 };
 
+// The implicit momentum exchange between a fluid and a porous solid, solved
+// by the coupler once per window on the cells of one participant's mesh
+// (DESIGN.md §4). The phases' fields have fixed names (see
+// momentum_exchange_fields).
+struct MomentumExchangeSpec {
+  std::string fluid;
+  std::string solid;
+  std::string mesh_owner;  // participant whose mesh is the exchange mesh
+  std::string mesh;
+  YAML::Node drag;         // the drag law's map, checked by exchange::make_drag_law
+  std::string drag_key_path = "momentum_exchange.drag";
+  SourceLocation where;
+};
+
+namespace momentum_exchange_fields {
+// written by the solid
+inline constexpr const char* solid_fraction = "solid_fraction";          // phi_s [1]
+inline constexpr const char* solid_velocity = "solid_velocity";          // U_s [m/s]
+inline constexpr const char* solid_bulk_density = "solid_bulk_density";  // rho_bar_s [kg/m^3]
+inline constexpr const char* grain_size = "grain_size";                  // [m], laws reading it per cell
+inline constexpr const char* permeability = "permeability";              // [m^2], idem
+// written by the fluid
+inline constexpr const char* fluid_velocity = "fluid_velocity";          // U_f [m/s]
+inline constexpr const char* fluid_bulk_density = "fluid_bulk_density";  // rho_bar_f [kg/m^3]
+// read by both: the momentum each receives over the window [kg m/s]
+// (extensive, window integral, one component per dimension)
+inline constexpr const char* impulse = "momentum_exchange_impulse";
+}  // namespace momentum_exchange_fields
+
 struct Job {
   std::filesystem::path file;
   std::string name;
@@ -70,6 +99,7 @@ struct Job {
   double output_every = 0.0;  // 0: no snapshots of the exchanged fields
   std::vector<ParticipantSpec> participants;  // in file order
   std::vector<ExchangeSpec> exchanges;
+  std::optional<MomentumExchangeSpec> momentum_exchange;
 
   const ParticipantSpec* participant(const std::string& name) const;
   std::size_t windows() const;  // number of coupling windows

@@ -1,0 +1,131 @@
+#include "momentum_exchange_step.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "cosim/error.hpp"
+#include "cosim/exchange/two_phase_exchange.hpp"
+
+namespace cosim::cplscheme {
+
+namespace f = job::momentum_exchange_fields;
+
+namespace {
+
+const FieldSpec* find(const std::vector<FieldSpec>& fields, const std::string& name) {
+  auto it = std::find_if(fields.begin(), fields.end(), [&](auto& x) { return x.name == name; });
+  return it == fields.end() ? nullptr : &*it;
+}
+
+const Mesh& mesh_of(const PhaseSide& side, const std::string& mesh) {
+  return side.meshes->at(mesh);
+}
+
+std::size_t version_of(const PhaseSide& side, const std::string& mesh) {
+  auto it = side.mesh_versions->find(mesh);
+  return it == side.mesh_versions->end() ? 0 : it->second;
+}
+
+}  // namespace
+
+MomentumExchangeStep::MomentumExchangeStep(const job::MomentumExchangeSpec& spec,
+                                           const std::string& job_file)
+    : spec_(spec),
+      job_file_(job_file),
+      law_(exchange::make_drag_law(spec.drag, spec.drag_key_path, job_file)) {}
+
+void MomentumExchangeStep::check_declarations(const job::Job& job, const com::Hello& fluid,
+                                              const com::Hello& solid) const {
+  const int dim = job.participant(spec_.mesh_owner)->meshes.at(spec_.mesh).dim;
+  auto fail = [&](const std::string& what) {
+    throw InputError(SourceLocation{job_file_, spec_.where.line, spec_.where.column},
+                     "momentum_exchange", what);
+  };
+  auto check = [&](const com::Hello& hello, const std::vector<FieldSpec>& fields, const char* name,
+                   int components, Quantity quantity, TimeTreatment time) {
+    const FieldSpec* field = find(fields, name);
+    if (!field)
+      fail(fmt::format("participant '{}' does not declare '{}'", hello.participant, name));
+    if (field->components != components || field->quantity != quantity || field->time != time)
+      fail(
+          fmt::format("participant '{}' declares '{}' as {} {} with {} components; the exchange "
+                      "needs {} {} with {}",
+                      hello.participant, name, to_string(field->quantity), to_string(field->time),
+                      field->components, to_string(quantity), to_string(time), components));
+  };
+  const auto intensive = Quantity::intensive;
+  const auto state = TimeTreatment::state;
+  check(solid, solid.writes, f::solid_fraction, 1, intensive, state);
+  check(solid, solid.writes, f::solid_velocity, dim, intensive, state);
+  check(solid, solid.writes, f::solid_bulk_density, 1, intensive, state);
+  if (law_->cell_input() == exchange::CellInput::grain_size)
+    check(solid, solid.writes, f::grain_size, 1, intensive, state);
+  if (law_->cell_input() == exchange::CellInput::permeability)
+    check(solid, solid.writes, f::permeability, 1, intensive, state);
+  check(fluid, fluid.writes, f::fluid_velocity, dim, intensive, state);
+  check(fluid, fluid.writes, f::fluid_bulk_density, 1, intensive, state);
+  for (const com::Hello* side : {&fluid, &solid})
+    check(*side, side->reads, f::impulse, dim, Quantity::extensive, TimeTreatment::integral);
+}
+
+MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const PhaseSide& fluid,
+                                                         const PhaseSide& solid,
+                                                         OperatorCache& operators) const {
+  const PhaseSide& owner = spec_.mesh_owner == spec_.fluid ? fluid : solid;
+  const Mesh& exchange_mesh = mesh_of(owner, spec_.mesh);
+  const std::size_t exchange_version = version_of(owner, spec_.mesh);
+  const int dim = exchange_mesh.dimension();
+  const std::size_t cells = exchange_mesh.size();
+
+  // A phase's field, mapped consistently onto the exchange mesh.
+  auto on_exchange_mesh = [&](const PhaseSide& side, const char* field, int components) {
+    const std::string& mesh = side.spec->writes.at(field);
+    const auto& op =
+        operators.get(fmt::format("momentum:{}.{}->exchange", side.spec->name, mesh),
+                      mesh_of(side, mesh), version_of(side, mesh), exchange_mesh, exchange_version,
+                      mapping::Constraint::consistent, mapping::Kernel::linear);
+    return op.apply(side.written->at(field), components);
+  };
+  const auto phi_s = on_exchange_mesh(solid, f::solid_fraction, 1);
+  const auto u_s = on_exchange_mesh(solid, f::solid_velocity, dim);
+  const auto rho_s = on_exchange_mesh(solid, f::solid_bulk_density, 1);
+  const auto u_f = on_exchange_mesh(fluid, f::fluid_velocity, dim);
+  const auto rho_f = on_exchange_mesh(fluid, f::fluid_bulk_density, 1);
+  std::vector<double> grain, permeability;
+  if (law_->cell_input() == exchange::CellInput::grain_size)
+    grain = on_exchange_mesh(solid, f::grain_size, 1);
+  if (law_->cell_input() == exchange::CellInput::permeability)
+    permeability = on_exchange_mesh(solid, f::permeability, 1);
+
+  std::vector<double> volume(cells);
+  for (std::size_t c = 0; c < cells; ++c) volume[c] = exchange_mesh.control_volume(c);
+  const std::size_t n = cells * static_cast<std::size_t>(dim);
+  std::vector<double> du_f(n), du_s(n), j_f(n), j_s(n);
+  exchange::exchange_two_phase(*law_, dim, window, volume, {rho_f, u_f}, {rho_s, u_s},
+                               {phi_s, grain, permeability}, {du_f, du_s, j_f, j_s, {}});
+
+  // The momentum each phase receives, mapped conservatively to it.
+  auto to_side = [&](const PhaseSide& side, const std::vector<double>& impulse) {
+    const std::string& mesh = side.spec->reads.at(f::impulse);
+    const auto& op =
+        operators.get(fmt::format("momentum:exchange->{}.{}", side.spec->name, mesh), exchange_mesh,
+                      exchange_version, mesh_of(side, mesh), version_of(side, mesh),
+                      mapping::Constraint::conservative, mapping::Kernel::linear);
+    return op.apply(impulse, dim);
+  };
+  Impulses out;
+  out.fluid = to_side(fluid, j_f);
+  out.solid = to_side(solid, j_s);
+  double net = 0.0, scale = 0.0;
+  for (double j : out.fluid) {
+    net += j;
+    scale += std::abs(j);
+  }
+  for (double j : out.solid) net += j;
+  out.momentum_balance_error = scale > 0.0 ? std::abs(net) / scale : 0.0;
+  return out;
+}
+
+}  // namespace cosim::cplscheme

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cosim/com/handshake.hpp"
+#include "cosim/exchange/drag_law.hpp"
+#include "cosim/job/job.hpp"
+#include "operator_cache.hpp"
+
+namespace cosim::cplscheme {
+
+// What the coupler knows of one participant in a window: its meshes (with
+// versions) and the fields it wrote.
+struct PhaseSide {
+  const job::ParticipantSpec* spec = nullptr;
+  const com::Hello* hello = nullptr;
+  const std::map<std::string, Mesh>* meshes = nullptr;
+  const std::map<std::string, std::size_t>* mesh_versions = nullptr;
+  const std::map<std::string, std::vector<double>>* written = nullptr;
+};
+
+// The coupler's implicit momentum exchange of a fluid and a porous solid
+// (DESIGN.md §4; Tran et al., MPMICE, eq. 131): the phases' fields are
+// mapped consistently onto the exchange mesh, the 2x2 exchange is solved per
+// cell with beta = window K / rho_bar, and the momentum each phase receives
+// is mapped conservatively back to it. Momentum is conserved to round-off.
+class MomentumExchangeStep {
+ public:
+  MomentumExchangeStep(const job::MomentumExchangeSpec& spec, const std::string& job_file);
+
+  // Refuses declarations the exchange cannot use (components, quantity,
+  // time treatment), as an InputError located at the job's key.
+  void check_declarations(const job::Job& job, const com::Hello& fluid,
+                          const com::Hello& solid) const;
+
+  struct Impulses {
+    std::vector<double> fluid;            // on the fluid's impulse mesh, dim per element [kg m/s]
+    std::vector<double> solid;            // on the solid's impulse mesh
+    double momentum_balance_error = 0.0;  // |sum fluid + sum solid| / sum |fluid|
+  };
+  Impulses run(double window, const PhaseSide& fluid, const PhaseSide& solid,
+               OperatorCache& operators) const;
+
+ private:
+  const job::MomentumExchangeSpec& spec_;
+  std::string job_file_;
+  std::unique_ptr<exchange::DragLaw> law_;
+};
+
+}  // namespace cosim::cplscheme
