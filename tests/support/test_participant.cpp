@@ -11,11 +11,13 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <numeric>
+#include <optional>
 #include <thread>
 
 #include "cosim/config/document.hpp"
@@ -45,8 +47,19 @@ struct FieldConfig {
   bool check = false;
 };
 
+// Optional dynamics: a velocity state per element that a body force drives
+// and the received impulse changes, u <- u + J / (rho_bar V) at each window
+// start, then u <- u + f / rho_bar dt every sub-step; `velocity` is written.
+struct Dynamics {
+  std::string velocity;
+  std::string impulse;
+  double bulk_density = 1.0;
+  std::vector<double> body_force;
+};
+
 struct Config {
   double dt = 1e-3;
+  std::optional<Dynamics> dynamics;
   double end_time = 1.0;
   cosim::Mesh mesh;
   std::vector<FieldConfig> writes;
@@ -74,13 +87,19 @@ Schema config_schema() {
                 "c0 + c1 x + c2 y + c3 z + c4 t.")
       .optional("tolerance", Schema::number().non_negative(),
                 "Check reads against `function` to this tolerance.");
+  Schema dynamics = Schema::object("A velocity state driven by a body force and the impulse read.");
+  dynamics.required("velocity", Schema::string().non_empty(), "Written field holding the velocity.")
+      .required("impulse", Schema::string().non_empty(), "Read field of momentum [kg m/s].")
+      .required("bulk_density", Schema::number().positive().unit("kg/m^3"), "rho_bar.")
+      .required("body_force", Schema::vector(1, 3), "Force per unit volume [N/m^3].");
   Schema s = Schema::file("test_participant", "Test participant for the coupler's tests.");
   s.required("dt", Schema::number().positive().unit("s"), "Own time step.")
       .optional("end_time", Schema::number().positive().unit("s").default_value("1"),
                 "End time when standalone.")
       .required("mesh", mesh, "Its mesh.")
       .optional("writes", Schema::sequence(field), "Fields written.")
-      .optional("reads", Schema::sequence(field), "Fields read.");
+      .optional("reads", Schema::sequence(field), "Fields read.")
+      .optional("dynamics", dynamics, "Velocity dynamics (Darcy tests).");
   return s;
 }
 
@@ -133,6 +152,14 @@ Config load_config(const std::string& file) {
     for (const Node& f : w->items()) c.writes.push_back(read_field(f));
   if (auto r = root.find("reads"))
     for (const Node& f : r->items()) c.reads.push_back(read_field(f));
+  if (auto d = root.find("dynamics")) {
+    Dynamics dyn;
+    dyn.velocity = (*d)["velocity"].as<std::string>();
+    dyn.impulse = (*d)["impulse"].as<std::string>();
+    dyn.bulk_density = (*d)["bulk_density"].as<double>();
+    dyn.body_force = (*d)["body_force"].as<std::vector<double>>();
+    c.dynamics = dyn;
+  }
   return c;
 }
 
@@ -177,6 +204,33 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
   for (const auto& w : config.writes) participant.write(w.spec.name, values_of(w, 0.0));
 
   participant.initialize(0.0, config.end_time);
+
+  std::vector<double> velocity;  // dynamics state, element-major
+  int velocity_components = 1;
+  if (config.dynamics) {
+    const auto& w = *std::find_if(config.writes.begin(), config.writes.end(), [&](auto& f) {
+      return f.spec.name == config.dynamics->velocity;
+    });
+    velocity = values_of(w, 0.0);
+    velocity_components = w.spec.components;
+    if (config.dynamics->body_force.size() != static_cast<std::size_t>(velocity_components))
+      throw cosim::InputError("dynamics.body_force needs one value per velocity component");
+  }
+  // At each window start: apply the whole impulse received, and log the
+  // velocity after the exchange (its mean per component).
+  auto apply_impulse = [&]() {
+    if (!config.dynamics) return;
+    const auto impulse = participant.read(config.dynamics->impulse);
+    const auto comps = static_cast<std::size_t>(velocity_components);
+    std::vector<double> mean(3, 0.0);
+    for (std::size_t i = 0; i < velocity.size(); ++i) {
+      velocity[i] += impulse[i] / (config.dynamics->bulk_density * mesh.control_volume(i / comps));
+      mean[i % comps] += velocity[i] / static_cast<double>(mesh.size());
+    }
+    log(config.dynamics->velocity, "after_exchange",
+        static_cast<double>(participant.window_index()), participant.time(), mean[0],
+        comps > 1 ? mean[1] : 0.0);
+  };
   std::map<std::string, std::vector<double>> sent_integral;
   for (const auto& w : config.writes)
     sent_integral[w.spec.name].assign(participant.field_size(w.spec.name), 0.0);
@@ -209,6 +263,7 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
     received_integral[r.spec.name].assign(participant.field_size(r.spec.name), 0.0);
   try {
     check_reads();
+    apply_impulse();
     while (participant.is_coupling_ongoing()) {
       const std::size_t window = participant.window_index();
       if (crash_at_window > 0 && static_cast<long>(window) == crash_at_window)
@@ -225,7 +280,17 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
         auto& acc = received_integral[r.spec.name];
         for (std::size_t e = 0; e < share.size(); ++e) acc[e] += share[e];
       }
+      if (config.dynamics) {
+        const auto comps = static_cast<std::size_t>(velocity_components);
+        for (std::size_t i = 0; i < velocity.size(); ++i)
+          velocity[i] +=
+              config.dynamics->body_force[i % comps] / config.dynamics->bulk_density * dt;
+      }
       for (const auto& w : config.writes) {
+        if (config.dynamics && w.spec.name == config.dynamics->velocity) {
+          participant.write(w.spec.name, velocity);
+          continue;
+        }
         const auto v = values_of(w, w.spec.time == cosim::TimeTreatment::integral ? t : t + dt);
         participant.write(w.spec.name, v);
         if (w.spec.time == cosim::TimeTreatment::integral)
@@ -246,7 +311,10 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
           std::fill(received_integral[r.spec.name].begin(), received_integral[r.spec.name].end(),
                     0.0);
         }
-        if (participant.is_coupling_ongoing()) check_reads();
+        if (participant.is_coupling_ongoing()) {
+          check_reads();
+          apply_impulse();
+        }
       }
     }
   } catch (const std::exception& e) {
