@@ -3,7 +3,7 @@
 #include <span>
 
 // Implicit exchange between N materials sharing a cell (Tran et al., MPMICE,
-// eqs. 23, 131 and their N-material form after eq. 769). For each material i
+// eqs. 23, 131 and the N-material form after eq. 132). For each material i
 // it solves, for the increments Delta x_i of an intensive quantity x,
 //
 //   w_i Delta x_i = dt sum_j C_ij (x*_j + Delta x_j - x*_i - Delta x_i),
