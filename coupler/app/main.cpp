@@ -1,16 +1,15 @@
 // cosim: runs coupled jobs (`cosim run`), checks them (`cosim validate`).
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <atomic>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <random>
-
-#include <CLI/CLI.hpp>
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include "cosim/com/mpi_transport.hpp"
 #include "cosim/com/zmq_transport.hpp"
@@ -27,7 +26,9 @@ namespace {
 
 std::atomic<bool> interrupted{false};
 
-void on_signal(int) { interrupted = true; }
+void on_signal(int) {
+  interrupted = true;
+}
 
 void install_signal_handlers() {
   struct sigaction action {};
@@ -57,21 +58,28 @@ struct RunOptions {
 void run_with_zmq(const cosim::job::Job& job, const RunOptions& o, cosim::RunSummary& summary) {
   namespace fs = std::filesystem;
   cosim::com::ZmqHubOptions hub_options;
-  hub_options.scheme = job.zmq.scheme == "tcp" ? cosim::com::ZmqScheme::tcp : cosim::com::ZmqScheme::ipc;
+  hub_options.scheme =
+      job.zmq.scheme == "tcp" ? cosim::com::ZmqScheme::tcp : cosim::com::ZmqScheme::ipc;
   hub_options.tcp_host = job.zmq.host;
   hub_options.allow_non_loopback = job.zmq.allow_non_loopback;
   cosim::com::ZmqHub hub(hub_options);
   spdlog::info("job '{}' (id {}, config hash {}): {}", job.name, o.job_id, job.config_hash,
                hub.describe());
 
+  // Every executable is found before any process starts.
+  std::vector<fs::path> executables;
+  for (const auto& p : job.participants)
+    executables.push_back(cosim::runtime::resolve_executable(p.executable, job.file.parent_path()));
+
   cosim::runtime::Supervisor supervisor;
   const fs::path output = fs::absolute(o.output);
-  for (const auto& p : job.participants) {
+  for (std::size_t i = 0; i < job.participants.size(); ++i) {
+    const auto& p = job.participants[i];
     cosim::runtime::ChildSpec child;
     child.name = p.name;
-    child.executable = cosim::runtime::resolve_executable(p.executable, job.file.parent_path());
-    child.args = cosim::runtime::participant_arguments(p, output, hub.endpoint(), o.job_id,
-                                                       job.config_hash);
+    child.executable = executables[i];
+    child.args =
+        cosim::runtime::participant_arguments(p, output, hub.endpoint(), o.job_id, job.config_hash);
     cosim::create_output_directory(output / p.name);
     child.log_file = output / p.name / "console.log";
     const pid_t pid = supervisor.start(child);
@@ -93,8 +101,8 @@ void run_with_zmq(const cosim::job::Job& job, const RunOptions& o, cosim::RunSum
     throw;
   }
   // After `finish`, each participant writes its output and exits by itself.
-  for (const auto& e : supervisor.wait_all(std::chrono::milliseconds(
-           static_cast<long>(job.window_timeout_s * 1000.0)))) {
+  for (const auto& e : supervisor.wait_all(
+           std::chrono::milliseconds(static_cast<long>(job.window_timeout_s * 1000.0)))) {
     if (!e.success())
       throw cosim::Error(cosim::ExitCode::participant_failed,
                          fmt::format("participant '{}' {} after the run", e.name, e.describe()));
@@ -112,10 +120,11 @@ void run_under_mpirun(const cosim::job::Job& job, const RunOptions& o, cosim::Ru
   cosim::com::MpiHub hub;
   const int expected = 1 + static_cast<int>(job.participants.size());
   if (hub.world_size() != expected)
-    throw cosim::InputError(fmt::format("the mpirun line has {} processes; job '{}' needs {} (the "
-                                        "coupler and one per participant): use `cosim run {} "
-                                        "--print-mpi-command`",
-                                        hub.world_size(), job.name, expected, o.job_file));
+    throw cosim::InputError(
+        fmt::format("the mpirun line has {} processes; job '{}' needs {} (the "
+                    "coupler and one per participant): use `cosim run {} "
+                    "--print-mpi-command`",
+                    hub.world_size(), job.name, expected, o.job_file));
   cosim::cplscheme::CouplerOptions options;
   options.output_dir = std::filesystem::absolute(o.output);
   options.job_id = o.job_id;
@@ -167,24 +176,28 @@ int run(const RunOptions& o) {
     return launch_mpirun(job, opts);
   }
   if (o.print_mpi_command)
-    throw cosim::InputError(fmt::format("{}: job '{}' uses transport '{}'; --print-mpi-command "
-                                        "needs 'transport: mpi'",
-                                        o.job_file, job.name, "zmq"));
+    throw cosim::InputError(
+        fmt::format("{}: job '{}' uses transport '{}'; --print-mpi-command "
+                    "needs 'transport: mpi'",
+                    o.job_file, job.name, "zmq"));
 
   cosim::create_output_directory(o.output);
   cosim::init_logging(o.output, "cosim", cosim::parse_verbosity(o.verbosity));
   cosim::RunSummary summary(o.output, "cosim run");
   summary.set_config(fs::absolute(o.job_file), std::stoull(job.config_hash, nullptr, 16));
-  summary.set_section("job", {{"name", job.name},
-                              {"id", opts.job_id},
-                              {"transport", job.transport == cosim::job::TransportKind::mpi ? "mpi" : "zmq"},
-                              {"window_s", job.window},
-                              {"start_time_s", job.start_time},
-                              {"end_time_s", job.end_time}});
+  summary.set_section(
+      "job", {{"name", job.name},
+              {"id", opts.job_id},
+              {"transport", job.transport == cosim::job::TransportKind::mpi ? "mpi" : "zmq"},
+              {"window_s", job.window},
+              {"start_time_s", job.start_time},
+              {"end_time_s", job.end_time}});
   summary.write();
   try {
-    if (job.transport == cosim::job::TransportKind::mpi) run_under_mpirun(job, opts, summary);
-    else run_with_zmq(job, opts, summary);
+    if (job.transport == cosim::job::TransportKind::mpi)
+      run_under_mpirun(job, opts, summary);
+    else
+      run_with_zmq(job, opts, summary);
   } catch (const cosim::Error& e) {
     spdlog::error("{}", e.what());
     summary.finish(e.code(), e.what());
@@ -211,8 +224,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--verbosity", run_options.verbosity, "quiet | normal | verbose | trace");
   run_cmd->add_flag("--print-mpi-command", run_options.print_mpi_command,
                     "print the mpirun line of an MPI job and exit");
-  run_cmd->add_option("--connect-timeout", run_options.connect_timeout_s,
-                      "seconds to wait for every participant's hello")
+  run_cmd
+      ->add_option("--connect-timeout", run_options.connect_timeout_s,
+                   "seconds to wait for every participant's hello")
       ->check(CLI::PositiveNumber);
   run_cmd->add_option("--job-id", run_options.job_id, "job id (set by the MPI launch)");
 
@@ -236,10 +250,11 @@ int main(int argc, char** argv) {
     }
     if (*validate_cmd) {
       const auto job = cosim::job::load_job(validate_file);
-      std::cout << fmt::format("{}: job '{}' is valid: {} participants, {} exchanges, {} windows "
-                               "of {} s, config hash {}\n",
-                               validate_file, job.name, job.participants.size(),
-                               job.exchanges.size(), job.windows(), job.window, job.config_hash);
+      std::cout << fmt::format(
+          "{}: job '{}' is valid: {} participants, {} exchanges, {} windows "
+          "of {} s, config hash {}\n",
+          validate_file, job.name, job.participants.size(), job.exchanges.size(), job.windows(),
+          job.window, job.config_hash);
       return 0;
     }
     return run(run_options);

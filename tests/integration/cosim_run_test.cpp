@@ -204,5 +204,27 @@ TEST(CosimRun, HungParticipantTimesOutWithExit3) {
   EXPECT_FALSE(process_exists(right));
 }
 
+TEST(CosimRun, BadInputExitsWith2AndNamesIt) {
+  const fs::path dir = fresh_directory("e2e_bad_input");
+  std::string job = read_text(write_job(dir, {}));
+  job.replace(job.find("executable: cosim_test_participant"),
+              std::string("executable: cosim_test_participant").size(),
+              "executable: no_such_solver");
+  write_text(dir / "job.yaml", job);
+  const auto missing = cosim_run(dir / "job.yaml", dir / "run");
+  EXPECT_EQ(missing.exit_code, 2) << missing.output;
+  EXPECT_THAT(missing.output, HasSubstr("'no_such_solver'"));
+
+  const auto no_output =
+      run({binary("cosim").string(), "run", (dir / "job.yaml").string()}, std::chrono::seconds(30));
+  EXPECT_EQ(no_output.exit_code, 2) << no_output.output;
+  EXPECT_THAT(no_output.output, HasSubstr("--output"));
+
+  const auto no_file = run({binary("cosim").string(), "validate", (dir / "nope.yaml").string()},
+                           std::chrono::seconds(30));
+  EXPECT_EQ(no_file.exit_code, 2);
+  EXPECT_THAT(no_file.output, HasSubstr("nope.yaml"));
+}
+
 }  // namespace
 }  // namespace cosim::testing

@@ -74,7 +74,8 @@ std::string to_json(const Hello& h) {
 }
 
 std::string to_json(const Welcome& w) {
-  return json{{"start_time", w.start_time},
+  return json{{"config_hash", w.config_hash},
+              {"start_time", w.start_time},
               {"end_time", w.end_time},
               {"window", w.window},
               {"extrapolation", w.extrapolation == Extrapolation::linear ? "linear" : "constant"},
@@ -106,6 +107,7 @@ Welcome parse_welcome(const std::string& text, const std::string& peer) {
   try {
     const json j = json::parse(text);
     Welcome w;
+    w.config_hash = j.at("config_hash").get<std::string>();
     w.start_time = j.at("start_time").get<double>();
     w.end_time = j.at("end_time").get<double>();
     w.window = j.at("window").get<double>();

@@ -181,6 +181,7 @@ struct Coupler::Impl {
     }
     check_exchange_declarations();
     com::Welcome welcome;
+    welcome.config_hash = job.config_hash;
     welcome.start_time = job.start_time;
     welcome.end_time = job.end_time;
     welcome.window = job.window;

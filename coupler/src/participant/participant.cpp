@@ -1,14 +1,13 @@
 #include "cosim/participant.hpp"
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <CLI/CLI.hpp>
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include "cosim/com/handshake.hpp"
 #include "cosim/com/mpi_transport.hpp"
@@ -42,8 +41,9 @@ void add_coupling_options(CLI::App& app, CouplingEndpoint& endpoint) {
   group->add_option("--cosim-name", endpoint.name, "this participant's name in the job");
   group->add_option("--cosim-job", endpoint.job_id, "id of the job this process belongs to");
   group->add_option("--cosim-config-hash", endpoint.config_hash, "hash of the job's config");
-  group->add_option("--cosim-connect-timeout", endpoint.connect_timeout_s,
-                    "seconds to wait for the coupler's welcome")
+  group
+      ->add_option("--cosim-connect-timeout", endpoint.connect_timeout_s,
+                   "seconds to wait for the coupler's welcome")
       ->check(CLI::PositiveNumber);
 }
 
@@ -91,9 +91,7 @@ struct Participant::Impl {
     return meshes.at(f.mesh).mesh.size() * static_cast<std::size_t>(f.components);
   }
 
-  double window_end() const {
-    return std::min(schedule.end_time, window_start + schedule.window);
-  }
+  double window_end() const { return std::min(schedule.end_time, window_start + schedule.window); }
 
   void send(com::Message message) {
     const auto start = Clock::now();
@@ -146,7 +144,8 @@ struct Participant::Impl {
       const auto& values = w.spec.time == TimeTreatment::integral ? w.integral : w.values;
       send(com::make_field_message(endpoint.job_id, name, window, time, field_name, w.spec.mesh,
                                    values, static_cast<std::uint32_t>(w.spec.components)));
-      if (w.spec.time == TimeTreatment::integral) std::fill(w.integral.begin(), w.integral.end(), 0.0);
+      if (w.spec.time == TimeTreatment::integral)
+        std::fill(w.integral.begin(), w.integral.end(), 0.0);
     }
     send(header_only(MessageType::window_end));
   }
@@ -157,13 +156,17 @@ struct Participant::Impl {
     for (;;) {
       com::Message m = receive(schedule.timeout_s);
       switch (m.header.type) {
-        case MessageType::field: store_field(m); break;
+        case MessageType::field:
+          store_field(m);
+          break;
         case MessageType::window_begin:
           if (m.header.window != window + 1)
             throw ProtocolError(com::coupler_peer, fmt::format("began window {} after window {}",
                                                                m.header.window, window));
           return;
-        case MessageType::finish: finished = true; return;
+        case MessageType::finish:
+          finished = true;
+          return;
         default:
           throw ProtocolError(com::coupler_peer,
                               fmt::format("unexpected '{}' message while waiting for window data",
@@ -199,8 +202,8 @@ struct Participant::Impl {
   void check_declaration(const FieldSpec& f) const {
     if (f.name.empty()) usage_error(name, "a field has an empty name");
     if (!meshes.count(f.mesh))
-      usage_error(name, fmt::format("field '{}' is on mesh '{}', which is not declared", f.name,
-                                    f.mesh));
+      usage_error(name,
+                  fmt::format("field '{}' is on mesh '{}', which is not declared", f.name, f.mesh));
     if (writes.count(f.name) || reads.count(f.name))
       usage_error(name, fmt::format("field '{}' is declared twice", f.name));
     if (f.components < 1 || f.components > 9)
@@ -224,14 +227,20 @@ Participant::Participant(std::string name, CouplingEndpoint endpoint)
 
 Participant::~Participant() {
   try {
-    if (std::uncaught_exceptions() > 0) abort("the solver stopped with an error");
-    else finalize();
+    if (std::uncaught_exceptions() > 0)
+      abort("the solver stopped with an error");
+    else
+      finalize();
   } catch (...) {
   }
 }
 
-const std::string& Participant::name() const { return impl_->name; }
-bool Participant::is_coupled() const { return !impl_->endpoint.is_standalone(); }
+const std::string& Participant::name() const {
+  return impl_->name;
+}
+bool Participant::is_coupled() const {
+  return !impl_->endpoint.is_standalone();
+}
 
 void Participant::declare_mesh(Mesh mesh) {
   if (impl_->initialized) usage_error(impl_->name, "meshes are declared before initialize()");
@@ -275,15 +284,17 @@ void Participant::initialize(double start_time, double end_time) {
   if (!is_coupled()) {
     s.schedule.start_time = start_time;
     s.schedule.end_time = end_time;
-    s.schedule.window = s.standalone_window > 0.0 ? s.standalone_window
-                                                  : std::max(end_time - start_time, 1e-300);
+    s.schedule.window =
+        s.standalone_window > 0.0 ? s.standalone_window : std::max(end_time - start_time, 1e-300);
     s.time = s.window_start = start_time;
     return;
   }
 
   const std::string& uri = s.endpoint.uri;
-  if (uri.rfind("mpi://", 0) == 0) s.transport = std::make_unique<com::MpiClient>(s.name);
-  else s.transport = std::make_unique<com::ZmqClient>(uri, s.name);
+  if (uri.rfind("mpi://", 0) == 0)
+    s.transport = std::make_unique<com::MpiClient>(s.name);
+  else
+    s.transport = std::make_unique<com::ZmqClient>(uri, s.name);
 
   com::Hello hello;
   hello.participant = s.name;
@@ -299,14 +310,20 @@ void Participant::initialize(double start_time, double end_time) {
                                 com::to_json(hello)));
   com::Message reply = s.receive(s.endpoint.connect_timeout_s);
   if (reply.header.type != MessageType::welcome)
-    throw ProtocolError(com::coupler_peer, fmt::format("answered hello with '{}'",
-                                                       com::to_string(reply.header.type)));
+    throw ProtocolError(com::coupler_peer,
+                        fmt::format("answered hello with '{}'", com::to_string(reply.header.type)));
   s.schedule = com::parse_welcome(reply.payload.text(), com::coupler_peer);
+  if (s.schedule.config_hash != s.endpoint.config_hash)
+    throw ProtocolError(com::coupler_peer,
+                        fmt::format("runs a job config with hash {}, participant '{}' was started "
+                                    "for hash {}",
+                                    s.schedule.config_hash, s.name, s.endpoint.config_hash));
   s.admitted = true;
   if (std::abs(s.schedule.end_time - end_time) > 0.0 || s.schedule.start_time != start_time)
-    spdlog::info("participant '{}': the job's schedule [{}, {}] s replaces the solver's own [{}, "
-                 "{}] s",
-                 s.name, s.schedule.start_time, s.schedule.end_time, start_time, end_time);
+    spdlog::info(
+        "participant '{}': the job's schedule [{}, {}] s replaces the solver's own [{}, "
+        "{}] s",
+        s.name, s.schedule.start_time, s.schedule.end_time, start_time, end_time);
   s.time = s.window_start = s.schedule.start_time;
   for (auto& [field_name, r] : s.reads) r.received_at = r.previous_at = s.time;
 
@@ -317,12 +334,22 @@ void Participant::initialize(double start_time, double end_time) {
   s.timings.windows = 0;
 }
 
-double Participant::time() const { return impl_->time; }
-double Participant::window_size() const { return impl_->schedule.window; }
-std::size_t Participant::window_index() const { return impl_->window; }
-double Participant::end_time() const { return impl_->schedule.end_time; }
+double Participant::time() const {
+  return impl_->time;
+}
+double Participant::window_size() const {
+  return impl_->schedule.window;
+}
+std::size_t Participant::window_index() const {
+  return impl_->window;
+}
+double Participant::end_time() const {
+  return impl_->schedule.end_time;
+}
 
-double Participant::max_time_step() const { return impl_->window_end() - impl_->time; }
+double Participant::max_time_step() const {
+  return impl_->window_end() - impl_->time;
+}
 
 bool Participant::is_coupling_ongoing() const {
   const Impl& s = *impl_;
@@ -335,8 +362,8 @@ void Participant::update_mesh(const Mesh& mesh) {
   if (it == impl_->meshes.end())
     usage_error(impl_->name, fmt::format("updates undeclared mesh '{}'", mesh.name));
   if (mesh.kind() != it->second.mesh.kind() || mesh.size() != it->second.mesh.size())
-    usage_error(impl_->name, fmt::format("mesh '{}' may move but not change kind or size",
-                                         mesh.name));
+    usage_error(impl_->name,
+                fmt::format("mesh '{}' may move but not change kind or size", mesh.name));
   validate(mesh);
   it->second.mesh = mesh;
   it->second.changed = true;
@@ -411,8 +438,8 @@ void Participant::read_increment(std::string_view field, double dt, std::span<do
   Impl& s = *impl_;
   auto it = s.reads.find(field);
   if (it == s.reads.end() || it->second.spec.time != TimeTreatment::integral)
-    usage_error(s.name, fmt::format("read_increment() needs a declared integral field, not '{}'",
-                                    field));
+    usage_error(s.name,
+                fmt::format("read_increment() needs a declared integral field, not '{}'", field));
   ReadBuffer& r = it->second;
   if (values.size() != r.current.size())
     usage_error(s.name, fmt::format("reads {} values of field '{}', which has {}", values.size(),
@@ -431,7 +458,9 @@ std::size_t Participant::field_size(std::string_view field) const {
   return impl_->read_buffer(field).current.size();
 }
 
-const CouplingTimings& Participant::timings() const { return impl_->timings; }
+const CouplingTimings& Participant::timings() const {
+  return impl_->timings;
+}
 
 void Participant::finalize() {
   Impl& s = *impl_;
@@ -451,8 +480,8 @@ void Participant::abort(std::string_view reason) {
   s.finalized = true;
   if (s.transport && s.admitted && !s.finished) {
     try {
-      s.send(com::make_text_message(MessageType::abort, s.endpoint.job_id, s.name, s.window,
-                                    s.time, reason));
+      s.send(com::make_text_message(MessageType::abort, s.endpoint.job_id, s.name, s.window, s.time,
+                                    reason));
     } catch (...) {
     }
   }

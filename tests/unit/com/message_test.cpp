@@ -154,13 +154,14 @@ TEST(Handshake, HelloAndWelcomeRoundTrip) {
   EXPECT_EQ(back.writes[0].upper_bound, 0.64);
   EXPECT_EQ(back.writes[0].quantity, Quantity::extensive);
   EXPECT_THROW(parse_hello("{\"participant\": 3}", "soil"), ProtocolError);
-  Welcome w{0.0, 1.0, 0.01, Extrapolation::linear, 30.0};
+  Welcome w{"00ff", 0.0, 1.0, 0.01, Extrapolation::linear, 30.0};
   const Welcome wb = parse_welcome(to_json(w), "coupler");
   EXPECT_EQ(wb.window, 0.01);
+  EXPECT_EQ(wb.config_hash, "00ff");
   EXPECT_EQ(wb.extrapolation, Extrapolation::linear);
   EXPECT_THROW(
       parse_welcome(
-          R"({"start_time":0,"end_time":1,"window":-1,"extrapolation":"constant","timeout_s":1})",
+          R"({"config_hash":"0","start_time":0,"end_time":1,"window":-1,"extrapolation":"constant","timeout_s":1})",
           "c"),
       ProtocolError);
 }

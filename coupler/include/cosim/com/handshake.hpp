@@ -31,6 +31,7 @@ struct Hello {
 enum class Extrapolation { constant, linear };
 
 struct Welcome {
+  std::string config_hash;  // the job's; the participant checks it against its own
   double start_time = 0.0;
   double end_time = 0.0;
   double window = 0.0;
