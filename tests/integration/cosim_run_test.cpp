@@ -19,6 +19,7 @@ namespace fs = std::filesystem;
 
 struct JobOptions {
   std::string transport = "zmq";
+  std::string extrapolation = "constant";
   std::string scheme = "ipc";
   double end_time = 0.05;
   double window_timeout = 60.0;
@@ -32,12 +33,12 @@ fs::path write_job(const fs::path& dir, const JobOptions& o) {
   const fs::path demo = fs::path(COSIM_SOURCE_DIR) / "configs" / "demo";
   fs::copy_file(demo / "left.yaml", dir / "left.yaml", fs::copy_options::overwrite_existing);
   fs::copy_file(demo / "right.yaml", dir / "right.yaml", fs::copy_options::overwrite_existing);
-  const std::string job =
-      fmt::format(R"(kind: job
+  const std::string job = fmt::format(R"(kind: job
 name: e2e
 end_time: {}
 window: 2.5e-3
 transport: {}
+extrapolation: {}
 zmq: {{scheme: {}}}
 window_timeout: {}
 participants:
@@ -60,7 +61,8 @@ exchange:
   - {{field: heat, from: left, to: right, mapping: conservative}}
   - {{field: pressure, from: right, to: left, mapping: consistent}}
 )",
-                  o.end_time, o.transport, o.scheme, o.window_timeout, o.left_args, o.right_args);
+                                      o.end_time, o.transport, o.extrapolation, o.scheme,
+                                      o.window_timeout, o.left_args, o.right_args);
   write_text(dir / "job.yaml", job);
   return dir / "job.yaml";
 }
@@ -202,6 +204,48 @@ TEST(CosimRun, HungParticipantTimesOutWithExit3) {
   EXPECT_LT(seconds, 30.0);
   const pid_t right = wait_for_pid_file(dir / "run" / "right" / "pid", std::chrono::seconds(1));
   EXPECT_FALSE(process_exists(right));
+}
+
+// A field linear in time and constant in space (so mapping is exact): with
+// linear extrapolation the reader sees its exact value at every sub-step
+// once two windows of history have arrived; held constant it lags.
+void write_time_linear_fields(const fs::path& dir) {
+  write_text(dir / "left.yaml", R"(kind: test_participant
+dt: 1.0e-3
+mesh: {dim: 2, origin: [0.0, 0.0], spacing: [0.1, 0.1], cells: [20, 10]}
+writes:
+  - {name: temperature, unit: K, function: [300.0, 0.0, 0.0, 0.0, 10.0]}
+  - {name: heat, unit: J, quantity: extensive, time: integral}
+reads:
+  - {name: pressure, unit: Pa}
+)");
+  write_text(dir / "right.yaml", R"(kind: test_participant
+dt: 7.0e-4
+mesh: {dim: 2, origin: [0.1, 0.1], spacing: [0.14, 0.12], cells: [13, 6], location: node}
+writes:
+  - {name: pressure, unit: Pa}
+reads:
+  - {name: temperature, unit: K, function: [300.0, 0.0, 0.0, 0.0, 10.0], tolerance: 1.0e-9,
+     check_every_step_from_window: 3}
+  - {name: heat, unit: J, quantity: extensive, time: integral}
+)");
+}
+
+TEST(CosimRun, LinearExtrapolationIsExactForFieldsLinearInTime) {
+  const fs::path dir = fresh_directory("e2e_extrapolation");
+  JobOptions o;
+  o.extrapolation = "linear";
+  const auto job = write_job(dir, o);
+  write_time_linear_fields(dir);
+  const auto r = cosim_run(job, dir / "run");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+
+  o.extrapolation = "constant";  // the control: the held value lags by up to 10 K/s x window
+  const auto held = write_job(dir, o);
+  write_time_linear_fields(dir);
+  const auto lagging = cosim_run(held, dir / "run_constant");
+  EXPECT_EQ(lagging.exit_code, 3);
+  EXPECT_THAT(lagging.output, HasSubstr("read 'temperature'"));
 }
 
 TEST(CosimRun, BadInputExitsWith2AndNamesIt) {

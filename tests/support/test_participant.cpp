@@ -45,6 +45,9 @@ struct FieldConfig {
   LinearFunction function;  // writes: the value (state) or rate per unit volume (integral)
   double tolerance = 0.0;   // reads of state fields: max |read - f| allowed
   bool check = false;
+  // Check at every sub-step (from this window on) instead of at window starts
+  // only: with linear extrapolation a field linear in time reads exactly.
+  long check_every_step_from_window = 0;
 };
 
 // Optional dynamics: a velocity state per element that a body force drives
@@ -85,6 +88,8 @@ Schema config_schema() {
                 "Values per element (each component takes `function`).")
       .optional("function", Schema::vector(5, 5).default_value("[0,0,0,0,0]"),
                 "c0 + c1 x + c2 y + c3 z + c4 t.")
+      .optional("check_every_step_from_window", Schema::integer().positive(),
+                "Also check the read at every sub-step from this window on.")
       .optional("tolerance", Schema::number().non_negative(),
                 "Check reads against `function` to this tolerance.");
   Schema dynamics = Schema::object("A velocity state driven by a body force and the impulse read.");
@@ -115,6 +120,7 @@ FieldConfig read_field(const Node& f) {
   c.spec.time = f.get<std::string>("time", "state") == "integral" ? cosim::TimeTreatment::integral
                                                                   : cosim::TimeTreatment::state;
   c.function.c = f.get<std::vector<double>>("function", {0, 0, 0, 0, 0});
+  c.check_every_step_from_window = f.get<long>("check_every_step_from_window", 0);
   if (auto t = f.find("tolerance")) {
     c.tolerance = t->as<double>();
     c.check = true;
@@ -235,14 +241,18 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
   for (const auto& w : config.writes)
     sent_integral[w.spec.name].assign(participant.field_size(w.spec.name), 0.0);
 
-  auto check_reads = [&]() {
+  auto check_reads = [&](bool sub_step) {
     for (const auto& r : config.reads) {
       if (r.spec.time == cosim::TimeTreatment::integral) continue;
+      if (sub_step &&
+          (r.check_every_step_from_window == 0 ||
+           static_cast<long>(participant.window_index()) < r.check_every_step_from_window))
+        continue;
       const auto v = participant.read(r.spec.name);
       double max_error = 0.0;
       if (r.check) {
-        // The partner wrote these values at the end of the previous window,
-        // which is the start of this one.
+        // At a window start: what the partner wrote at the end of the
+        // previous window. Inside a window: the extrapolation to now.
         const double t_written = participant.time();
         const auto components = static_cast<std::size_t>(r.spec.components);
         for (std::size_t i = 0; i < v.size(); ++i)
@@ -253,8 +263,9 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
               fmt::format("read '{}' at t = {} s: error {:.3e} exceeds {:.3e}", r.spec.name,
                           t_written, max_error, r.tolerance));
       }
-      log(r.spec.name, "read", static_cast<double>(participant.window_index()), participant.time(),
-          total(v), max_error);
+      if (!sub_step)
+        log(r.spec.name, "read", static_cast<double>(participant.window_index()),
+            participant.time(), total(v), max_error);
     }
   };
 
@@ -262,7 +273,7 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
   for (const auto& r : config.reads)
     received_integral[r.spec.name].assign(participant.field_size(r.spec.name), 0.0);
   try {
-    check_reads();
+    check_reads(false);
     apply_impulse();
     while (participant.is_coupling_ongoing()) {
       const std::size_t window = participant.window_index();
@@ -273,6 +284,7 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
 
       const double dt = std::min(config.dt, participant.max_time_step());
       const double t = participant.time();
+      check_reads(true);
       for (const auto& r : config.reads) {
         if (r.spec.time != cosim::TimeTreatment::integral) continue;
         std::vector<double> share(participant.field_size(r.spec.name));
@@ -312,7 +324,7 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
                     0.0);
         }
         if (participant.is_coupling_ongoing()) {
-          check_reads();
+          check_reads(false);
           apply_impulse();
         }
       }
