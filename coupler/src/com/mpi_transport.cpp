@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "cosim/com/allocator_tuning.hpp"
 #include "cosim/error.hpp"
 
 #ifdef COSIM_HAVE_MPI
@@ -38,6 +39,7 @@ class MpiEnvironment {
   }
   void acquire() {
     if (users_++ > 0) return;
+    tune_allocator_for_large_fields();
     int initialized = 0;
     MPI_Initialized(&initialized);
     if (!initialized) {
@@ -96,18 +98,23 @@ void send_to(MPI_Comm comm, int rank, const std::string& peer, const Message& me
   } while (offset < bytes.size());
 }
 
-// Polls for a header from `source` (or any) until the timeout, yielding the
-// core between probes so oversubscribed runs make progress.
+// Polls for a header from `source` (or any) until the timeout. The first
+// millisecond yields the core between probes (an answer usually comes within
+// it, and oversubscribed runs still make progress); after that the waiting
+// process sleeps between probes so a long wait costs no CPU.
 std::optional<int> probe_header(MPI_Comm comm, int source, std::chrono::milliseconds timeout) {
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  int spins = 0;
+  const auto start = std::chrono::steady_clock::now();
+  const auto deadline = start + timeout;
+  const auto eager_until = start + std::chrono::milliseconds(1);
   for (;;) {
     int flag = 0;
     MPI_Status status;
     MPI_Iprobe(source, header_tag, comm, &flag, &status);
     if (flag) return status.MPI_SOURCE;
-    if (std::chrono::steady_clock::now() >= deadline) return std::nullopt;
-    if (++spins > 200) std::this_thread::sleep_for(std::chrono::microseconds(50));
+    const auto now = std::chrono::steady_clock::now();
+    if (now >= deadline) return std::nullopt;
+    if (now < eager_until) std::this_thread::yield();
+    else std::this_thread::sleep_for(std::chrono::microseconds(200));
   }
 }
 

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "cosim/com/allocator_tuning.hpp"
 #include "cosim/error.hpp"
 
 namespace cosim::com {
@@ -77,8 +78,14 @@ std::filesystem::path make_private_directory() {
 
 }  // namespace
 
+// The allocator is tuned before the context starts its I/O thread.
+zmq::context_t make_context() {
+  tune_allocator_for_large_fields();
+  return zmq::context_t(1);
+}
+
 struct ZmqHub::Impl {
-  zmq::context_t context{1};
+  zmq::context_t context = make_context();
   zmq::socket_t socket{context, zmq::socket_type::router};
   std::filesystem::path directory;
   std::string endpoint;
@@ -147,7 +154,7 @@ std::optional<Received> ZmqHub::receive(std::chrono::milliseconds timeout) {
 }
 
 struct ZmqClient::Impl {
-  zmq::context_t context{1};
+  zmq::context_t context = make_context();
   zmq::socket_t socket{context, zmq::socket_type::dealer};
   std::string endpoint;
 };
