@@ -202,6 +202,10 @@ int run(const RunOptions& o) {
     spdlog::error("{}", e.what());
     summary.finish(e.code(), e.what());
     return cosim::to_int(e.code());
+  } catch (const std::exception& e) {
+    spdlog::critical("internal error: {}", e.what());
+    summary.finish(cosim::ExitCode::internal_error, std::string("internal error: ") + e.what());
+    return cosim::to_int(cosim::ExitCode::internal_error);
   }
   summary.finish(cosim::ExitCode::success, "completed");
   spdlog::info("job '{}' completed: {} windows, wall time {:.3f} s; outputs in {}", job.name,
@@ -215,7 +219,9 @@ int main(int argc, char** argv) {
   install_signal_handlers();
   CLI::App app{"cosim: co-simulation of soil-water-structure interaction"};
   app.set_version_flag("--version", std::string("cosim ") + COSIM_VERSION);
-  app.require_subcommand(1);
+  app.require_subcommand(0, 1);
+  bool help_config_flag = false;
+  app.add_flag("--help-config", help_config_flag, "list every key of a job file and exit");
 
   RunOptions run_options;
   auto* run_cmd = app.add_subcommand("run", "Run a coupled job");
@@ -244,7 +250,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*help_config) {
+    if (*help_config || help_config_flag) {
       std::cout << cosim::job::job_schema().help("Job file (kind: job)");
       return 0;
     }
@@ -257,7 +263,9 @@ int main(int argc, char** argv) {
           job.window, job.config_hash);
       return 0;
     }
-    return run(run_options);
+    if (*run_cmd) return run(run_options);
+    std::cerr << app.help();
+    return cosim::to_int(cosim::ExitCode::bad_input);
   } catch (const cosim::Error& e) {
     std::cerr << "cosim: error: " << e.what() << "\n";
     return cosim::to_int(e.code());

@@ -180,6 +180,27 @@ TEST(CosimRun, KilledCouplerTakesItsParticipantsWithIt) {
   EXPECT_FALSE(process_exists(right));
 }
 
+TEST(CosimRun, TerminatedCouplerStopsItsParticipantsAndRecordsWhy) {
+  const fs::path dir = fresh_directory("e2e_sigterm");
+  JobOptions o;
+  o.end_time = 1000.0;
+  const auto job = write_job(dir, o);
+  const auto log = dir / "cosim.log";
+  const pid_t cosim = spawn(
+      {binary("cosim").string(), "run", job.string(), "--output", (dir / "run").string()}, log);
+  const pid_t left = wait_for_pid_file(dir / "run" / "left" / "pid", std::chrono::seconds(30));
+  const pid_t right = wait_for_pid_file(dir / "run" / "right" / "pid", std::chrono::seconds(30));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ASSERT_EQ(::kill(cosim, SIGTERM), 0);
+  const auto r = wait_for(cosim, log, std::chrono::seconds(30));
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("interrupted by a signal"));
+  EXPECT_FALSE(process_exists(left));
+  EXPECT_FALSE(process_exists(right));
+  const auto summary = nlohmann::json::parse(read_text(dir / "run" / "summary.json"));
+  EXPECT_EQ(summary["status"]["exit_code"], 3);
+}
+
 TEST(CosimRun, FailingParticipantIsNamedWithItsReason) {
   const fs::path dir = fresh_directory("e2e_crash");
   JobOptions o;

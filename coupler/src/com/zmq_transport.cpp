@@ -42,6 +42,18 @@ void send_parts(zmq::socket_t& socket, const std::string* routing_id, const Mess
   socket.send(to_zmq(message.payload), zmq::send_flags::none);
 }
 
+// Waits for the socket to be readable; a signal arriving meanwhile (EINTR)
+// counts as nothing received, so the caller can look at why it was woken.
+bool wait_readable(zmq::socket_t& socket, std::chrono::milliseconds timeout) {
+  std::array<zmq::pollitem_t, 1> items{{{socket.handle(), 0, ZMQ_POLLIN, 0}}};
+  try {
+    return zmq::poll(items.data(), items.size(), timeout) > 0;
+  } catch (const zmq::error_t& e) {
+    if (e.num() == EINTR) return false;
+    throw;
+  }
+}
+
 // Reads the remaining parts of a multipart message; returns false (and drains)
 // when the shape is not [header][payload].
 bool receive_header_and_payload(zmq::socket_t& socket, zmq::message_t& header,
@@ -138,8 +150,7 @@ void ZmqHub::send(const std::string& peer, const Message& message) {
 
 std::optional<Received> ZmqHub::receive(std::chrono::milliseconds timeout) {
   auto& s = impl_->socket;
-  std::array<zmq::pollitem_t, 1> items{{{s.handle(), 0, ZMQ_POLLIN, 0}}};
-  if (zmq::poll(items.data(), items.size(), timeout) == 0) return std::nullopt;
+  if (!wait_readable(s, timeout)) return std::nullopt;
   zmq::message_t identity, header, payload;
   (void)s.recv(identity, zmq::recv_flags::none);
   std::string peer = identity.to_string();
@@ -188,8 +199,7 @@ void ZmqClient::send(const std::string& peer, const Message& message) {
 
 std::optional<Received> ZmqClient::receive(std::chrono::milliseconds timeout) {
   auto& s = impl_->socket;
-  std::array<zmq::pollitem_t, 1> items{{{s.handle(), 0, ZMQ_POLLIN, 0}}};
-  if (zmq::poll(items.data(), items.size(), timeout) == 0) return std::nullopt;
+  if (!wait_readable(s, timeout)) return std::nullopt;
   zmq::message_t header, payload;
   (void)s.recv(header, zmq::recv_flags::none);
   if (!s.get(zmq::sockopt::rcvmore))

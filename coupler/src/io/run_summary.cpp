@@ -27,6 +27,8 @@ const char* exit_code_name(ExitCode code) {
   switch (code) {
     case ExitCode::success:
       return "success";
+    case ExitCode::internal_error:
+      return "internal_error";
     case ExitCode::bad_input:
       return "bad_input";
     case ExitCode::participant_failed:
