@@ -113,8 +113,12 @@ struct Participant::Impl {
   // the timeout, an abort from it ends this participant.
   com::Message receive(double timeout_s) {
     const auto start = Clock::now();
-    auto received =
-        transport->receive(std::chrono::milliseconds(static_cast<long>(timeout_s * 1000.0)));
+    const auto deadline = start + std::chrono::milliseconds(static_cast<long>(timeout_s * 1000.0));
+    std::optional<com::Received> received;
+    // An empty receive before the deadline is a signal's wake-up: wait on.
+    while (!received && Clock::now() < deadline)
+      received = transport->receive(
+          std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now()));
     timings.waiting += seconds_since(start);
     if (!received)
       throw ProtocolError(com::coupler_peer,
