@@ -138,66 +138,67 @@ TEST(CosimRun, DemoJobOverMpiUnderOneMpmdLaunch) {
   EXPECT_EQ(summary["job"]["transport"], "mpi");
 }
 
-TEST(CosimRun, KilledParticipantEndsTheRunWithExit3AndNoOrphans) {
-  const fs::path dir = fresh_directory("e2e_kill");
+// A run that would last long (end time 1000 s), started in the background,
+// with both participants up.
+struct LongRun {
+  fs::path dir;
+  fs::path log;
+  pid_t cosim = 0;
+  pid_t left = 0;
+  pid_t right = 0;
+};
+
+LongRun start_long_run(const std::string& name) {
+  LongRun run;
+  run.dir = fresh_directory(name);
   JobOptions o;
-  o.end_time = 1000.0;  // would run for a long time
-  const auto job = write_job(dir, o);
-  const auto log = dir / "cosim.log";
-  const pid_t cosim = spawn(
-      {binary("cosim").string(), "run", job.string(), "--output", (dir / "run").string()}, log);
-  const pid_t left = wait_for_pid_file(dir / "run" / "left" / "pid", std::chrono::seconds(30));
-  const pid_t right = wait_for_pid_file(dir / "run" / "right" / "pid", std::chrono::seconds(30));
+  o.end_time = 1000.0;
+  const auto job = write_job(run.dir, o);
+  run.log = run.dir / "cosim.log";
+  run.cosim =
+      spawn({binary("cosim").string(), "run", job.string(), "--output", (run.dir / "run").string()},
+            run.log);
+  run.left = wait_for_pid_file(run.dir / "run" / "left" / "pid", std::chrono::seconds(30));
+  run.right = wait_for_pid_file(run.dir / "run" / "right" / "pid", std::chrono::seconds(30));
+  return run;
+}
+
+TEST(CosimRun, KilledParticipantEndsTheRunWithExit3AndNoOrphans) {
+  const LongRun run = start_long_run("e2e_kill");
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // mid-run
-  ASSERT_EQ(::kill(right, SIGKILL), 0);
-  const auto r = wait_for(cosim, log, std::chrono::seconds(60));
+  ASSERT_EQ(::kill(run.right, SIGKILL), 0);
+  const auto r = wait_for(run.cosim, run.log, std::chrono::seconds(60));
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_THAT(r.output, HasSubstr("participant 'right'"));
   EXPECT_THAT(r.output, HasSubstr("killed by signal 9"));
-  EXPECT_FALSE(process_exists(left)) << "participant 'left' outlived the coupler";
-  EXPECT_FALSE(process_exists(right));
-  const auto summary = nlohmann::json::parse(read_text(dir / "run" / "summary.json"));
+  EXPECT_FALSE(process_exists(run.left)) << "participant 'left' outlived the coupler";
+  EXPECT_FALSE(process_exists(run.right));
+  const auto summary = nlohmann::json::parse(read_text(run.dir / "run" / "summary.json"));
   EXPECT_EQ(summary["status"]["exit_code"], 3);
 }
 
 TEST(CosimRun, KilledCouplerTakesItsParticipantsWithIt) {
-  const fs::path dir = fresh_directory("e2e_kill_coupler");
-  JobOptions o;
-  o.end_time = 1000.0;
-  const auto job = write_job(dir, o);
-  const auto log = dir / "cosim.log";
-  const pid_t cosim = spawn(
-      {binary("cosim").string(), "run", job.string(), "--output", (dir / "run").string()}, log);
-  const pid_t left = wait_for_pid_file(dir / "run" / "left" / "pid", std::chrono::seconds(30));
-  const pid_t right = wait_for_pid_file(dir / "run" / "right" / "pid", std::chrono::seconds(30));
-  ASSERT_EQ(::kill(cosim, SIGKILL), 0);
-  wait_for(cosim, log, std::chrono::seconds(10));
+  const LongRun run = start_long_run("e2e_kill_coupler");
+  ASSERT_EQ(::kill(run.cosim, SIGKILL), 0);
+  wait_for(run.cosim, run.log, std::chrono::seconds(10));
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-  while ((process_exists(left) || process_exists(right)) &&
+  while ((process_exists(run.left) || process_exists(run.right)) &&
          std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  EXPECT_FALSE(process_exists(left));
-  EXPECT_FALSE(process_exists(right));
+  EXPECT_FALSE(process_exists(run.left));
+  EXPECT_FALSE(process_exists(run.right));
 }
 
 TEST(CosimRun, TerminatedCouplerStopsItsParticipantsAndRecordsWhy) {
-  const fs::path dir = fresh_directory("e2e_sigterm");
-  JobOptions o;
-  o.end_time = 1000.0;
-  const auto job = write_job(dir, o);
-  const auto log = dir / "cosim.log";
-  const pid_t cosim = spawn(
-      {binary("cosim").string(), "run", job.string(), "--output", (dir / "run").string()}, log);
-  const pid_t left = wait_for_pid_file(dir / "run" / "left" / "pid", std::chrono::seconds(30));
-  const pid_t right = wait_for_pid_file(dir / "run" / "right" / "pid", std::chrono::seconds(30));
+  const LongRun run = start_long_run("e2e_sigterm");
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  ASSERT_EQ(::kill(cosim, SIGTERM), 0);
-  const auto r = wait_for(cosim, log, std::chrono::seconds(30));
+  ASSERT_EQ(::kill(run.cosim, SIGTERM), 0);
+  const auto r = wait_for(run.cosim, run.log, std::chrono::seconds(30));
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_THAT(r.output, HasSubstr("interrupted by a signal"));
-  EXPECT_FALSE(process_exists(left));
-  EXPECT_FALSE(process_exists(right));
-  const auto summary = nlohmann::json::parse(read_text(dir / "run" / "summary.json"));
+  EXPECT_FALSE(process_exists(run.left));
+  EXPECT_FALSE(process_exists(run.right));
+  const auto summary = nlohmann::json::parse(read_text(run.dir / "run" / "summary.json"));
   EXPECT_EQ(summary["status"]["exit_code"], 3);
 }
 
