@@ -1,12 +1,12 @@
 #include "cosim/com/message.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
-
-#include <fmt/format.h>
 
 #include "cosim/error.hpp"
 
@@ -63,8 +63,8 @@ class HeaderReader {
   std::string get_string(const char* what) {
     const auto n = get<std::uint32_t>(what);
     if (n > max_name_length)
-      throw ProtocolError(peer_, fmt::format("header {} is {} bytes long (limit {})", what, n,
-                                             max_name_length));
+      throw ProtocolError(
+          peer_, fmt::format("header {} is {} bytes long (limit {})", what, n, max_name_length));
     need(n, what);
     std::string s(reinterpret_cast<const char*>(in_.data() + pos_), n);
     pos_ += n;
@@ -90,9 +90,12 @@ class HeaderReader {
 
 std::size_t element_size(ElementType type) {
   switch (type) {
-    case ElementType::float64: return sizeof(double);
-    case ElementType::text: return 1;
-    case ElementType::none: return 0;
+    case ElementType::float64:
+      return sizeof(double);
+    case ElementType::text:
+      return 1;
+    case ElementType::none:
+      return 0;
   }
   return 0;
 }
@@ -116,6 +119,15 @@ Payload Payload::from_doubles(std::span<const double> values) {
   p.data_ = reinterpret_cast<const std::byte*>(storage->data());
   p.size_ = storage->size() * sizeof(double);
   p.owner_ = std::move(storage);
+  return p;
+}
+
+Payload Payload::share_doubles(std::shared_ptr<const std::vector<double>> values) {
+  if constexpr (std::endian::native == std::endian::big) return from_doubles(*values);
+  Payload p;
+  p.data_ = reinterpret_cast<const std::byte*>(values->data());
+  p.size_ = values->size() * sizeof(double);
+  p.owner_ = std::move(values);
   return p;
 }
 
@@ -144,19 +156,30 @@ void Payload::copy_doubles_to(std::span<double> out) const {
     for (std::size_t i = 0; i < n; ++i) out[i] = to_little_endian(out[i]);
 }
 
-std::string Payload::text() const { return std::string(reinterpret_cast<const char*>(data_), size_); }
+std::string Payload::text() const {
+  return std::string(reinterpret_cast<const char*>(data_), size_);
+}
 
 const char* to_string(MessageType type) {
   switch (type) {
-    case MessageType::hello: return "hello";
-    case MessageType::welcome: return "welcome";
-    case MessageType::refuse: return "refuse";
-    case MessageType::mesh: return "mesh";
-    case MessageType::field: return "field";
-    case MessageType::window_end: return "window_end";
-    case MessageType::window_begin: return "window_begin";
-    case MessageType::finish: return "finish";
-    case MessageType::abort: return "abort";
+    case MessageType::hello:
+      return "hello";
+    case MessageType::welcome:
+      return "welcome";
+    case MessageType::refuse:
+      return "refuse";
+    case MessageType::mesh:
+      return "mesh";
+    case MessageType::field:
+      return "field";
+    case MessageType::window_end:
+      return "window_end";
+    case MessageType::window_begin:
+      return "window_begin";
+    case MessageType::finish:
+      return "finish";
+    case MessageType::abort:
+      return "abort";
   }
   return "unknown";
 }
@@ -215,15 +238,15 @@ void validate_payload(const Message& message, const std::string& peer, bool allo
   const std::size_t esize = element_size(h.element);
   const std::uint64_t components = h.element == ElementType::float64 ? h.components : 1;
   if (h.element == ElementType::float64 && h.components == 0)
-    throw ProtocolError(peer, fmt::format("{} '{}' declares zero components", to_string(h.type),
-                                          h.field));
+    throw ProtocolError(
+        peer, fmt::format("{} '{}' declares zero components", to_string(h.type), h.field));
   const std::uint64_t expected = h.count * components * esize;
   if (h.count > (std::uint64_t{1} << 40) || message.payload.size() != expected)
-    throw ProtocolError(peer, fmt::format("{} '{}' on mesh '{}': payload has {} bytes, the header "
-                                          "announces {} x {} x {} = {}",
-                                          to_string(h.type), h.field, h.mesh,
-                                          message.payload.size(), h.count, components, esize,
-                                          expected));
+    throw ProtocolError(
+        peer, fmt::format("{} '{}' on mesh '{}': payload has {} bytes, the header "
+                          "announces {} x {} x {} = {}",
+                          to_string(h.type), h.field, h.mesh, message.payload.size(), h.count,
+                          components, esize, expected));
   if (h.element == ElementType::float64 && !allow_nonfinite) {
     const auto bytes = message.payload.bytes();
     for (std::size_t i = 0; i < h.count * components; ++i) {
@@ -237,10 +260,11 @@ void validate_payload(const Message& message, const std::string& peer, bool allo
   }
 }
 
-Message make_field_message(const std::string& job_id, const std::string& sender,
-                           std::uint64_t window, double time, const std::string& field,
-                           const std::string& mesh, std::span<const double> values,
-                           std::uint32_t components) {
+namespace {
+
+Message field_message(const std::string& job_id, const std::string& sender, std::uint64_t window,
+                      double time, const std::string& field, const std::string& mesh,
+                      std::size_t values, std::uint32_t components) {
   Message m;
   m.header.type = MessageType::field;
   m.header.element = ElementType::float64;
@@ -251,8 +275,28 @@ Message make_field_message(const std::string& job_id, const std::string& sender,
   m.header.field = field;
   m.header.mesh = mesh;
   m.header.components = components;
-  m.header.count = components == 0 ? 0 : values.size() / components;
+  m.header.count = components == 0 ? 0 : values / components;
+  return m;
+}
+
+}  // namespace
+
+Message make_field_message(const std::string& job_id, const std::string& sender,
+                           std::uint64_t window, double time, const std::string& field,
+                           const std::string& mesh, std::span<const double> values,
+                           std::uint32_t components) {
+  Message m = field_message(job_id, sender, window, time, field, mesh, values.size(), components);
   m.payload = Payload::from_doubles(values);
+  return m;
+}
+
+Message make_field_message(const std::string& job_id, const std::string& sender,
+                           std::uint64_t window, double time, const std::string& field,
+                           const std::string& mesh,
+                           std::shared_ptr<const std::vector<double>> values,
+                           std::uint32_t components) {
+  Message m = field_message(job_id, sender, window, time, field, mesh, values->size(), components);
+  m.payload = Payload::share_doubles(std::move(values));
   return m;
 }
 

@@ -41,6 +41,11 @@ struct Peer {
   bool window_done = false;
 };
 
+// What the coupler sends each participant in a window: field -> values,
+// shared with the messages (no copy) and the snapshot writer.
+using FieldValues = std::shared_ptr<const std::vector<double>>;
+using FieldsByPeer = std::map<std::string, std::map<std::string, FieldValues>>;
+
 double sum(std::span<const double> v) {
   return std::accumulate(v.begin(), v.end(), 0.0);
 }
@@ -318,7 +323,7 @@ struct Coupler::Impl {
     return {p.spec, &p.hello, &p.meshes, &p.mesh_version, &p.written};
   }
 
-  void exchange_momentum(std::map<std::string, std::map<std::string, std::vector<double>>>& out) {
+  void exchange_momentum(FieldsByPeer& out) {
     if (!momentum_exchange) return;
     auto scope = summary.phases().measure("exchange");
     const job::MomentumExchangeSpec& spec = *job.momentum_exchange;
@@ -327,13 +332,15 @@ struct Coupler::Impl {
     auto impulses = momentum_exchange->run(dt, side_of(spec.fluid), side_of(spec.solid), operators);
     max_momentum_balance_error =
         std::max(max_momentum_balance_error, impulses.momentum_balance_error);
-    out[spec.fluid][job::momentum_exchange_fields::impulse] = std::move(impulses.fluid);
-    out[spec.solid][job::momentum_exchange_fields::impulse] = std::move(impulses.solid);
+    out[spec.fluid][job::momentum_exchange_fields::impulse] =
+        std::make_shared<const std::vector<double>>(std::move(impulses.fluid));
+    out[spec.solid][job::momentum_exchange_fields::impulse] =
+        std::make_shared<const std::vector<double>>(std::move(impulses.solid));
   }
 
   void map_and_send() {
     const double t = window_time(window);
-    std::map<std::string, std::map<std::string, std::vector<double>>> received;  // peer -> field
+    FieldsByPeer received;
     {
       auto scope = summary.phases().measure("mapping");
       for (std::size_t i = 0; i < job.exchanges.size(); ++i) {
@@ -358,7 +365,7 @@ struct Coupler::Impl {
           max_conservation_error =
               std::max(max_conservation_error, std::abs(sum(target) - sum(source)) / scale);
         }
-        received[x.to][x.field] = std::move(target);
+        received[x.to][x.field] = std::make_shared<const std::vector<double>>(std::move(target));
       }
     }
     exchange_momentum(received);
@@ -380,8 +387,7 @@ struct Coupler::Impl {
     }
   }
 
-  void write_snapshots(
-      double t, const std::map<std::string, std::map<std::string, std::vector<double>>>& data) {
+  void write_snapshots(double t, const FieldsByPeer& data) {
     if (job.output_every <= 0.0 || t + time_tolerance * job.window < next_output_time) return;
     auto scope = summary.phases().measure("output");
     next_output_time = t + job.output_every;
@@ -390,7 +396,7 @@ struct Coupler::Impl {
       std::map<std::string, SnapshotFields> per_mesh;
       for (const auto& [field, values] : fields) {
         const FieldSpec& spec = declared(peer.hello.reads, field);
-        per_mesh[spec.mesh][field] = FieldView{values, spec.components, spec.unit};
+        per_mesh[spec.mesh][field] = FieldView{*values, spec.components, spec.unit};
       }
       for (const auto& [mesh_name, snapshot] : per_mesh) {
         const std::string key = peer_name + "_" + mesh_name;

@@ -96,6 +96,17 @@ TEST(MessagePayload, SizeMustMatchTheHeader) {
   EXPECT_THROW(validate_payload(m, "soil", false), ProtocolError);
 }
 
+TEST(MessagePayload, SharedValuesAreSentWithoutACopyAndStayAlive) {
+  auto values = std::make_shared<const std::vector<double>>(std::vector<double>{1.5, -2.0, 3.25});
+  const double* data = values->data();
+  const Message m = make_field_message("job-1", "coupler", 2, 0.5, "p", "grid", values, 1);
+  values.reset();  // the message alone keeps them
+  EXPECT_EQ(reinterpret_cast<const double*>(m.payload.bytes().data()), data);
+  EXPECT_EQ(m.header.count, 3u);
+  EXPECT_NO_THROW(validate_payload(m, "coupler", false));
+  EXPECT_EQ(m.payload.doubles(), (std::vector<double>{1.5, -2.0, 3.25}));
+}
+
 TEST(MessagePayload, NonFiniteValuesAreRejectedUnlessTheFieldAllowsThem) {
   std::vector<double> values{1.0, std::numeric_limits<double>::quiet_NaN(), 3.0};
   const Message m = make_field_message("job-1", "water", 1, 0.0, "p", "grid", values, 1);

@@ -48,6 +48,9 @@ class Payload {
   Payload() = default;
   static Payload copy_of(std::span<const std::byte> bytes);
   static Payload from_doubles(std::span<const double> values);
+  // Shares the values instead of copying them (on little-endian hosts): the
+  // payload keeps them alive until the transport has sent them.
+  static Payload share_doubles(std::shared_ptr<const std::vector<double>> values);
   static Payload from_text(std::string_view text);
   static Payload adopt(std::shared_ptr<const void> owner, const std::byte* data, std::size_t size);
 
@@ -85,6 +88,11 @@ void validate_payload(const Message& message, const std::string& peer, bool allo
 Message make_field_message(const std::string& job_id, const std::string& sender,
                            std::uint64_t window, double time, const std::string& field,
                            const std::string& mesh, std::span<const double> values,
+                           std::uint32_t components);
+Message make_field_message(const std::string& job_id, const std::string& sender,
+                           std::uint64_t window, double time, const std::string& field,
+                           const std::string& mesh,
+                           std::shared_ptr<const std::vector<double>> values,
                            std::uint32_t components);
 Message make_text_message(MessageType type, const std::string& job_id, const std::string& sender,
                           std::uint64_t window, double time, std::string_view text);
