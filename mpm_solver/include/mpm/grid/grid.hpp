@@ -1,0 +1,57 @@
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "mpm/core/tensor.hpp"
+#include "mpm/shape/shape_kernel.hpp"
+
+namespace mpm {
+
+// The uniform background grid and the values it carries for one step. The
+// grid values sit where the shape kernel puts them (nodes for linear and
+// GIMP, B-spline control points at the Greville abscissae); `dofs` counts
+// them per direction, x fastest in the flat index.
+template <int Dim>
+struct Grid {
+  Vec<Dim> origin = Vec<Dim>::Zero();
+  Vec<Dim> spacing = Vec<Dim>::Ones();
+  std::array<int, Dim> cells{};
+  std::array<int, Dim> dofs{};
+  ShapeKind shape = ShapeKind::linear;
+
+  // Per value: lumped mass, momentum, force, velocity after the update and
+  // its change over the step (for FLIP).
+  std::vector<double> mass;
+  std::vector<Vec<Dim>> momentum;
+  std::vector<Vec<Dim>> force;
+  std::vector<Vec<Dim>> velocity;
+  std::vector<Vec<Dim>> velocity_change;
+
+  std::size_t size() const { return mass.size(); }
+  std::size_t flat(const std::array<int, Dim>& index) const;
+  std::array<int, Dim> unflat(std::size_t flat_index) const;
+  // Position of a grid value.
+  Vec<Dim> position(std::size_t flat_index) const;
+  double cell_volume() const { return spacing.prod(); }
+  double min_spacing() const { return spacing.minCoeff(); }
+  std::size_t cell_count() const;
+  // Cell holding x (clamped to the grid), and its flat index.
+  std::array<int, Dim> cell_of(const Vec<Dim>& x) const;
+  std::size_t cell_flat(const std::array<int, Dim>& cell) const;
+  Vec<Dim> upper() const;
+  bool contains(const Vec<Dim>& x) const;
+
+  void resize(std::size_t n);
+  void clear();
+};
+
+template <int Dim>
+Grid<Dim> make_grid(const Vec<Dim>& origin, const Vec<Dim>& spacing,
+                    const std::array<int, Dim>& cells, ShapeKind shape);
+
+extern template struct Grid<2>;
+extern template struct Grid<3>;
+
+}  // namespace mpm

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "mpm/core/tensor.hpp"
+
+namespace mpm {
+
+// Symmetric 3 x 3 tensor in Voigt order xx, yy, zz, xy, yz, xz.
+using Voigt = std::array<double, 6>;
+Voigt to_voigt(const Tensor& t);
+Tensor from_voigt(const Voigt& v);
+
+// The material points, as structure-of-arrays: one vector per quantity,
+// indexed by particle. Particles of a body are contiguous and keep their
+// index (their id) for the whole run.
+template <int Dim>
+struct Particles {
+  // Kinematics.
+  std::vector<Vec<Dim>> position;
+  std::vector<Vec<Dim>> velocity;
+  std::vector<Mat<Dim>> deformation_gradient;
+  std::vector<Vec<Dim>> half_length;  // initial domain half-length (uGIMP) [m]
+  // Mass and volume.
+  std::vector<double> mass;
+  std::vector<double> initial_volume;
+  std::vector<double> volume;
+  // Stress and material state (see MaterialState).
+  std::vector<Voigt> stress;  // effective Cauchy stress sigma', tension positive [Pa]
+  std::vector<double> plastic_strain;
+  std::vector<double> damage;
+  std::vector<std::array<double, 2>> internal;
+  // Porous medium (Pan et al. 2021, eqs. 74-76; Tran et al., MPMICE, eq. 3).
+  std::vector<double> porosity;
+  std::vector<double> initial_porosity;
+  std::vector<double> permeability;  // intrinsic [m^2]
+  std::vector<double> grain_size;    // D50 [m]
+  std::vector<double> pore_pressure;  // received from the fluid [Pa]
+  // Forces applied from outside the grid solve: surface loads, coupling.
+  std::vector<Vec<Dim>> external_force;  // [N] (per unit depth in 2D)
+  // Owner.
+  std::vector<std::uint32_t> body;
+
+  std::size_t size() const { return mass.size(); }
+  void resize(std::size_t n);
+  // Bytes held per particle by these arrays (capacity included).
+  double bytes_per_particle() const;
+};
+
+extern template struct Particles<2>;
+extern template struct Particles<3>;
+
+}  // namespace mpm

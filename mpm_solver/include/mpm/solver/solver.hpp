@@ -1,0 +1,78 @@
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "mpm/case/case_description.hpp"
+#include "mpm/grid/grid.hpp"
+#include "mpm/particles/particles.hpp"
+
+namespace mpm {
+
+// Conserved and dissipated quantities of the particle system [J, kg, kg m/s]
+// (per unit depth in 2D).
+template <int Dim>
+struct Totals {
+  double mass = 0.0;
+  Vec<Dim> momentum = Vec<Dim>::Zero();
+  double kinetic_energy = 0.0;
+  double strain_energy = 0.0;  // elastic estimate sum V sigma':sigma'/(2 M)-type, see solver.cpp
+  double gravitational_energy = 0.0;  // sum m (-g . x)
+  double contact_dissipation = 0.0;   // work removed by frictional/inelastic grid contact
+  double boundary_dissipation = 0.0;  // work removed by frictional grid faces
+  double external_work = 0.0;         // work of surface loads and coupling forces
+};
+
+// The explicit MPM of Zheng et al. (eqs. 13-23) with the USL/MUSL variants
+// and PIC/FLIP blend of Pan et al. 2021 (eqs. 70-73). One call to step()
+// runs the ordered list of named steps in solver.cpp.
+template <int Dim>
+class Solver {
+ public:
+  explicit Solver(const CaseDescription& description);
+  ~Solver();
+  Solver(const Solver&) = delete;
+  Solver& operator=(const Solver&) = delete;
+
+  // Zheng et al., eq. 23: alpha h / (max_p c_p + max |v_i|), bounded by the
+  // case's max_time_step.
+  double stable_time_step() const;
+  // Advances by dt (<= stable_time_step() for stability; not enforced).
+  void step(double dt);
+
+  double time() const;
+  std::size_t step_count() const;
+
+  // Coupling and extra physics hook in here. Force sources run each step
+  // after the surface loads and add their force [N] to
+  // particles().external_force; grid corrections run after the grid
+  // velocity update and before boundary conditions and grid-to-particle
+  // (e.g. the velocity increment of a momentum exchange).
+  using ParticleForceSource = std::function<void(double time, double dt, Particles<Dim>&)>;
+  using GridVelocityCorrection = std::function<void(double time, double dt, Grid<Dim>&)>;
+  void add_particle_force_source(ParticleForceSource source);
+  void add_grid_velocity_correction(GridVelocityCorrection correction);
+
+  Particles<Dim>& particles();
+  const Particles<Dim>& particles() const;
+  const Grid<Dim>& grid() const;
+  const CaseDescription& description() const;
+  Totals<Dim> totals() const;
+  // Total Cauchy stress sigma' - p I of a particle (Tran et al., MPMICE, eq. 3).
+  Tensor total_stress(std::size_t particle) const;
+
+  // Throws NumericalError naming the particle id, body and time when a
+  // particle's state is not finite or a particle has left the grid.
+  void check_state() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+extern template class Solver<2>;
+extern template class Solver<3>;
+
+}  // namespace mpm

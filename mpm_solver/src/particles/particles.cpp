@@ -1,0 +1,55 @@
+#include "mpm/particles/particles.hpp"
+
+namespace mpm {
+
+Voigt to_voigt(const Tensor& t) {
+  return {t(0, 0), t(1, 1), t(2, 2), 0.5 * (t(0, 1) + t(1, 0)), 0.5 * (t(1, 2) + t(2, 1)),
+          0.5 * (t(0, 2) + t(2, 0))};
+}
+
+Tensor from_voigt(const Voigt& v) {
+  Tensor t;
+  t << v[0], v[3], v[5], v[3], v[1], v[4], v[5], v[4], v[2];
+  return t;
+}
+
+template <int Dim>
+void Particles<Dim>::resize(std::size_t n) {
+  position.resize(n, Vec<Dim>::Zero());
+  velocity.resize(n, Vec<Dim>::Zero());
+  deformation_gradient.resize(n, Mat<Dim>::Identity());
+  half_length.resize(n, Vec<Dim>::Zero());
+  mass.resize(n, 0.0);
+  initial_volume.resize(n, 0.0);
+  volume.resize(n, 0.0);
+  stress.resize(n, Voigt{});
+  plastic_strain.resize(n, 0.0);
+  damage.resize(n, 0.0);
+  internal.resize(n, std::array<double, 2>{});
+  porosity.resize(n, 0.0);
+  initial_porosity.resize(n, 0.0);
+  permeability.resize(n, 0.0);
+  grain_size.resize(n, 0.0);
+  pore_pressure.resize(n, 0.0);
+  external_force.resize(n, Vec<Dim>::Zero());
+  body.resize(n, 0);
+}
+
+template <int Dim>
+double Particles<Dim>::bytes_per_particle() const {
+  const auto bytes = [](const auto& v) {
+    return static_cast<double>(v.capacity() * sizeof(typename std::decay_t<decltype(v)>::value_type));
+  };
+  const double total = bytes(position) + bytes(velocity) + bytes(deformation_gradient) +
+                       bytes(half_length) + bytes(mass) + bytes(initial_volume) + bytes(volume) +
+                       bytes(stress) + bytes(plastic_strain) + bytes(damage) + bytes(internal) +
+                       bytes(porosity) + bytes(initial_porosity) + bytes(permeability) +
+                       bytes(grain_size) + bytes(pore_pressure) + bytes(external_force) +
+                       bytes(body);
+  return size() == 0 ? 0.0 : total / static_cast<double>(size());
+}
+
+template struct Particles<2>;
+template struct Particles<3>;
+
+}  // namespace mpm
