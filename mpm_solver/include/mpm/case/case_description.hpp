@@ -84,6 +84,9 @@ struct RigidMotion {
   TimeSeries velocity;  // for `prescribed`
 };
 
+// Particle mass is the material density times the particle volume; for a
+// porous body the material density is the grain density and the mass is
+// rho_s (1 - n0) V (the solid phase only, as in mixture theory).
 struct BodySpec {
   std::string name;
   int material = -1;  // index into CaseDescription::materials; -1 for rigid bodies

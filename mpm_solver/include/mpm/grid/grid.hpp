@@ -21,15 +21,26 @@ struct Grid {
   std::array<int, Dim> dofs{};
   ShapeKind shape = ShapeKind::linear;
 
-  // Per value: lumped mass, momentum, force, velocity after the update and
-  // its change over the step (for FLIP).
+  // Velocity fields: one per body when bodies meet through grid contact
+  // (Bardenhagen), else one shared by every deformable body plus one per
+  // rigid body. Arrays hold `fields * size()` entries, field-major:
+  // index = field * size() + value.
+  int fields = 1;
+  // Per field and value: lumped mass, momentum, force, velocity after the
+  // update, its change over the step (for FLIP), and the mass gradient
+  // (contact normals; only with several fields).
   std::vector<double> mass;
   std::vector<Vec<Dim>> momentum;
   std::vector<Vec<Dim>> force;
   std::vector<Vec<Dim>> velocity;
   std::vector<Vec<Dim>> velocity_change;
+  std::vector<Vec<Dim>> mass_gradient;
+  // MUSL: the velocity re-mapped from the updated particle velocities.
+  std::vector<Vec<Dim>> remapped_velocity;
 
-  std::size_t size() const { return mass.size(); }
+  // Grid values per field.
+  std::size_t size() const { return values; }
+  std::size_t values = 0;
   std::size_t flat(const std::array<int, Dim>& index) const;
   std::array<int, Dim> unflat(std::size_t flat_index) const;
   // Position of a grid value.
@@ -43,7 +54,9 @@ struct Grid {
   Vec<Dim> upper() const;
   bool contains(const Vec<Dim>& x) const;
 
-  void resize(std::size_t n);
+  // Sizes the arrays for `fields` velocity fields (values from dofs).
+  void allocate(int field_count);
+  // Zeroes every array before a particle-to-grid pass.
   void clear();
 };
 
