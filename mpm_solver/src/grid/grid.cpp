@@ -1,0 +1,130 @@
+#include "mpm/grid/grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mpm {
+namespace {
+
+// Grid values per direction and their positions (in cells from the
+// origin) for each shape; see shape_kernel.hpp.
+int dofs_per_direction(ShapeKind shape, int cells) {
+  return shape == ShapeKind::quadratic_bspline ? cells + 2 : cells + 1;
+}
+
+double dof_coordinate(ShapeKind shape, int i, int cells) {
+  if (shape != ShapeKind::quadratic_bspline) return i;
+  if (i == 0) return 0.0;
+  if (i == cells + 1) return cells;
+  return i - 0.5;  // Greville abscissae of the open-knot quadratic B-spline
+}
+
+}  // namespace
+
+template <int Dim>
+std::size_t Grid<Dim>::flat(const std::array<int, Dim>& index) const {
+  std::size_t f = 0;
+  for (int d = Dim - 1; d >= 0; --d) f = f * static_cast<std::size_t>(dofs[d]) + index[d];
+  return f;
+}
+
+template <int Dim>
+std::array<int, Dim> Grid<Dim>::unflat(std::size_t flat_index) const {
+  std::array<int, Dim> index{};
+  for (int d = 0; d < Dim; ++d) {
+    index[d] = static_cast<int>(flat_index % static_cast<std::size_t>(dofs[d]));
+    flat_index /= static_cast<std::size_t>(dofs[d]);
+  }
+  return index;
+}
+
+template <int Dim>
+Vec<Dim> Grid<Dim>::position(std::size_t flat_index) const {
+  const auto index = unflat(flat_index);
+  Vec<Dim> x;
+  for (int d = 0; d < Dim; ++d)
+    x[d] = origin[d] + spacing[d] * dof_coordinate(shape, index[d], cells[d]);
+  return x;
+}
+
+template <int Dim>
+std::size_t Grid<Dim>::cell_count() const {
+  std::size_t n = 1;
+  for (int d = 0; d < Dim; ++d) n *= static_cast<std::size_t>(cells[d]);
+  return n;
+}
+
+template <int Dim>
+std::array<int, Dim> Grid<Dim>::cell_of(const Vec<Dim>& x) const {
+  std::array<int, Dim> cell{};
+  for (int d = 0; d < Dim; ++d) {
+    const double xi = std::floor((x[d] - origin[d]) / spacing[d]);
+    cell[d] = static_cast<int>(std::clamp(xi, 0.0, static_cast<double>(cells[d] - 1)));
+  }
+  return cell;
+}
+
+template <int Dim>
+std::size_t Grid<Dim>::cell_flat(const std::array<int, Dim>& cell) const {
+  std::size_t f = 0;
+  for (int d = Dim - 1; d >= 0; --d) f = f * static_cast<std::size_t>(cells[d]) + cell[d];
+  return f;
+}
+
+template <int Dim>
+Vec<Dim> Grid<Dim>::upper() const {
+  Vec<Dim> u;
+  for (int d = 0; d < Dim; ++d) u[d] = origin[d] + spacing[d] * cells[d];
+  return u;
+}
+
+template <int Dim>
+bool Grid<Dim>::contains(const Vec<Dim>& x) const {
+  const Vec<Dim> u = upper();
+  for (int d = 0; d < Dim; ++d)
+    if (!(x[d] >= origin[d] && x[d] <= u[d])) return false;
+  return true;
+}
+
+template <int Dim>
+void Grid<Dim>::allocate(int field_count) {
+  fields = field_count;
+  values = 1;
+  for (int d = 0; d < Dim; ++d) values *= static_cast<std::size_t>(dofs[d]);
+  const std::size_t n = values * static_cast<std::size_t>(fields);
+  mass.assign(n, 0.0);
+  momentum.assign(n, Vec<Dim>::Zero());
+  force.assign(n, Vec<Dim>::Zero());
+  velocity.assign(n, Vec<Dim>::Zero());
+  velocity_change.assign(n, Vec<Dim>::Zero());
+  mass_gradient.assign(fields > 1 ? n : 0, Vec<Dim>::Zero());
+  remapped_velocity.assign(n, Vec<Dim>::Zero());
+}
+
+template <int Dim>
+void Grid<Dim>::clear() {
+  std::fill(mass.begin(), mass.end(), 0.0);
+  std::fill(momentum.begin(), momentum.end(), Vec<Dim>::Zero());
+  std::fill(force.begin(), force.end(), Vec<Dim>::Zero());
+  std::fill(mass_gradient.begin(), mass_gradient.end(), Vec<Dim>::Zero());
+}
+
+template <int Dim>
+Grid<Dim> make_grid(const Vec<Dim>& origin, const Vec<Dim>& spacing,
+                    const std::array<int, Dim>& cells, ShapeKind shape) {
+  Grid<Dim> grid;
+  grid.origin = origin;
+  grid.spacing = spacing;
+  grid.cells = cells;
+  grid.shape = shape;
+  for (int d = 0; d < Dim; ++d) grid.dofs[d] = dofs_per_direction(shape, cells[d]);
+  grid.allocate(1);
+  return grid;
+}
+
+template struct Grid<2>;
+template struct Grid<3>;
+template Grid<2> make_grid<2>(const Vec<2>&, const Vec<2>&, const std::array<int, 2>&, ShapeKind);
+template Grid<3> make_grid<3>(const Vec<3>&, const Vec<3>&, const std::array<int, 3>&, ShapeKind);
+
+}  // namespace mpm
