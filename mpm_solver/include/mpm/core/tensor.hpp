@@ -1,6 +1,6 @@
 #pragma once
 
-#include <Eigen/Core>
+#include <Eigen/Dense>
 
 // Small fixed-size tensors of the MPM solver. Vectors and gradients live in
 // the problem's dimension; stresses are always 3 x 3 (plane strain keeps

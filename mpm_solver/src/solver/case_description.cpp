@@ -1,0 +1,22 @@
+#include "mpm/case/case_description.hpp"
+
+#include <algorithm>
+
+namespace mpm {
+
+Vec3d TimeSeries::at(double t) const {
+  if (time.empty()) return Vec3d::Zero();
+  if (t <= time.front()) return value.front();
+  if (t >= time.back()) return value.back();
+  const auto upper = std::upper_bound(time.begin(), time.end(), t);
+  const auto i = static_cast<std::size_t>(upper - time.begin());
+  const double s = (t - time[i - 1]) / (time[i] - time[i - 1]);
+  return (1.0 - s) * value[i - 1] + s * value[i];
+}
+
+double ContactSpec::friction_between(int a, int b) const {
+  const auto it = pair_friction.find({std::min(a, b), std::max(a, b)});
+  return it == pair_friction.end() ? friction : it->second;
+}
+
+}  // namespace mpm

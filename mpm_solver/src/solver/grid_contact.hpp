@@ -1,0 +1,107 @@
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "mpm/grid/grid.hpp"
+
+namespace mpm::detail {
+
+// Velocity fields of the grid and how they meet.
+struct ContactFields {
+  std::vector<bool> rigid;                  // per field
+  std::vector<std::vector<double>> friction;  // per field pair
+};
+
+struct ContactResult {
+  double dissipated = 0.0;  // kinetic energy removed [J]
+};
+
+// Frictional multi-body contact on the grid (Bardenhagen et al. 2001, as in
+// Tran et al., MPMICE, eqs. 20-22). At a grid value where several fields
+// have mass, each deformable field b is compared with the centre-of-mass
+// velocity v_cm (the rigid velocity when a rigid field is present, its mass
+// being taken as infinite). Along the contact normal n_b, the unit vector of
+// the other fields' mass gradient minus b's own, the field approaches when
+// (v_b - v_cm) . n_b > 0; then the normal part is removed and the
+// tangential part is reduced by mu times it (eq. 20), or removed entirely
+// when friction is enough to stick (eq. 21). Between two deformable fields
+// the normals are opposite and the corrections conserve momentum exactly.
+// The kinetic energy the corrections remove in the centre-of-mass frame is
+// the dissipated work (eq. 22). `impulse_on_field` receives, per field, the
+// momentum the others lost to it (the reaction on rigid bodies).
+template <int Dim>
+ContactResult apply_grid_contact(const ContactFields& fields, Grid<Dim>& grid,
+                                 std::vector<Vec<Dim>>& impulse_on_field) {
+  ContactResult result;
+  const std::size_t n = grid.size();
+  const int F = grid.fields;
+  std::fill(impulse_on_field.begin(), impulse_on_field.end(), Vec<Dim>::Zero());
+  constexpr double tiny = 1e-300;
+  for (std::size_t v = 0; v < n; ++v) {
+    int present = 0;
+    int rigid_field = -1;
+    double mass = 0.0;
+    Vec<Dim> momentum = Vec<Dim>::Zero();
+    Vec<Dim> gradient_sum = Vec<Dim>::Zero();
+    int heaviest = -1;
+    for (int f = 0; f < F; ++f) {
+      const std::size_t i = static_cast<std::size_t>(f) * n + v;
+      if (grid.mass[i] <= tiny) continue;
+      ++present;
+      gradient_sum += grid.mass_gradient[i];
+      if (fields.rigid[static_cast<std::size_t>(f)]) {
+        rigid_field = f;
+      } else {
+        mass += grid.mass[i];
+        momentum += grid.mass[i] * grid.velocity[i];
+      }
+    }
+    if (present < 2) continue;
+    Vec<Dim> v_cm = rigid_field >= 0 ? grid.velocity[static_cast<std::size_t>(rigid_field) * n + v]
+                                     : Vec<Dim>(momentum / mass);
+    for (int b = 0; b < F; ++b) {
+      const std::size_t i = static_cast<std::size_t>(b) * n + v;
+      if (grid.mass[i] <= tiny || fields.rigid[static_cast<std::size_t>(b)]) continue;
+      // The partner that sets the friction: the rigid field, else the heaviest other.
+      int partner = rigid_field;
+      if (partner < 0) {
+        double heaviest_mass = 0.0;
+        for (int c = 0; c < F; ++c) {
+          const std::size_t j = static_cast<std::size_t>(c) * n + v;
+          if (c != b && grid.mass[j] > heaviest_mass) {
+            heaviest_mass = grid.mass[j];
+            heaviest = c;
+          }
+        }
+        partner = heaviest;
+      }
+      if (partner < 0) continue;
+      const Vec<Dim> others = gradient_sum - grid.mass_gradient[i];
+      Vec<Dim> normal = others - grid.mass_gradient[i];
+      const double length = normal.norm();
+      if (!(length > 0.0)) continue;
+      normal /= length;
+      const Vec<Dim> relative = grid.velocity[i] - v_cm;
+      const double approach = relative.dot(normal);
+      if (approach <= 0.0) continue;
+      const Vec<Dim> tangential = relative - approach * normal;
+      const double slip = tangential.norm();
+      const double mu = fields.friction[static_cast<std::size_t>(b)][static_cast<std::size_t>(partner)];
+      Vec<Dim> corrected;
+      if (slip <= mu * approach) {
+        corrected = Vec<Dim>::Zero();  // sticks
+      } else {
+        corrected = tangential * (1.0 - mu * approach / slip);
+      }
+      const double m = grid.mass[i];
+      result.dissipated += 0.5 * m * (relative.squaredNorm() - corrected.squaredNorm());
+      const Vec<Dim> change = corrected - relative;
+      grid.velocity[i] += change;
+      impulse_on_field[static_cast<std::size_t>(partner)] -= m * change;
+    }
+  }
+  return result;
+}
+
+}  // namespace mpm::detail

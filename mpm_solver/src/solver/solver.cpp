@@ -1,0 +1,648 @@
+#include "mpm/solver/solver.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "body_state.hpp"
+#include "cosim/error.hpp"
+#include "geostatic_stress.hpp"
+#include "grid_boundaries.hpp"
+#include "grid_contact.hpp"
+#include "mpm/shape/grid_geometry.hpp"
+#include "mpm/shape/shape_dispatch.hpp"
+#include "mpm/shape/stencil.hpp"
+#include "particle_bins.hpp"
+#include "stress_update.hpp"
+
+namespace mpm {
+
+template <int Dim>
+struct Solver<Dim>::Impl {
+  CaseDescription description;
+  Grid<Dim> grid;
+  GridGeometry<Dim> geometry;
+  Particles<Dim> particles;
+  std::vector<detail::BodyState<Dim>> bodies;
+  std::vector<int> field_of_body;
+  detail::ContactFields contact;
+  detail::FaceValues faces;
+  detail::ParticleBins bins;
+  std::vector<ParticleForceSource> force_sources;
+  std::vector<GridVelocityCorrection> grid_corrections;
+  std::vector<Vec<Dim>> impulse_on_field;
+  // Cell sums for the volumetric locking mitigation (value, weight).
+  std::vector<double> cell_sum;
+  std::vector<double> cell_weight;
+  std::vector<double> volumetric_increment;  // per particle, scratch
+  double time = 0.0;
+  std::size_t steps = 0;
+  double contact_dissipation = 0.0;
+  double boundary_dissipation = 0.0;
+  double external_work = 0.0;
+  int threads = 1;
+
+  explicit Impl(const CaseDescription& d);
+
+  Vec<Dim> gravity_at(double t) const;
+  int field_of(std::size_t p) const { return field_of_body[particles.body[p]]; }
+  const detail::BodyState<Dim>& body_of(std::size_t p) const { return bodies[particles.body[p]]; }
+
+  // The time step, in order (Uintah style).
+  void step(double dt);
+  void bin_particles();
+  void apply_surface_loads(double dt);
+  void set_rigid_velocities(double dt);
+  template <class Kernel>
+  void interpolate_particles_to_grid(double dt);
+  void integrate_grid_momentum(double dt);
+  void apply_grid_corrections(double dt);
+  void apply_contact_and_boundaries(double dt);
+  template <class Kernel>
+  void interpolate_grid_to_particles(double dt, bool also_kinematics);
+  template <class Kernel>
+  void remap_particle_velocities_to_grid();
+  template <class Kernel>
+  void update_positions_and_stresses(double dt);
+  void move_rigid_bodies(double dt);
+
+  template <class Kernel>
+  Mat<Dim> velocity_gradient(const Stencil<Dim, Kernel>& stencil,
+                             const std::vector<Vec<Dim>>& field_velocity, std::size_t offset) const;
+  template <class Kernel>
+  void update_kinematics_and_stress(double dt, bool use_remapped);
+
+  double stable_time_step() const;
+  Totals<Dim> totals() const;
+  void check_state() const;
+};
+
+namespace {
+
+template <int Dim>
+Vec<Dim> shrink(const Vec3d& v) {
+  return v.template head<Dim>();
+}
+
+}  // namespace
+
+template <int Dim>
+Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
+  threads = d.threads > 0 ? d.threads : omp_get_max_threads();
+  if (d.threads > 0) omp_set_num_threads(d.threads);
+  std::array<int, Dim> cells{};
+  for (int k = 0; k < Dim; ++k) cells[static_cast<std::size_t>(k)] = d.grid.cells[static_cast<std::size_t>(k)];
+  grid = make_grid<Dim>(shrink<Dim>(d.grid.origin), shrink<Dim>(d.grid.spacing), cells, d.shape);
+  geometry.origin = grid.origin;
+  geometry.spacing = grid.spacing;
+  geometry.cells = grid.cells;
+
+  // Particles, body by body.
+  std::size_t total = 0;
+  for (const BodySpec& b : d.bodies) total += b.positions.size();
+  particles.resize(total);
+  std::size_t next = 0;
+  int deformable_field = -1;
+  int field_count = 0;
+  for (std::size_t b = 0; b < d.bodies.size(); ++b) {
+    const BodySpec& spec = d.bodies[b];
+    detail::BodyState<Dim> state;
+    state.name = spec.name;
+    state.first = next;
+    state.count = spec.positions.size();
+    if (spec.rigid) {
+      state.rigid = &*spec.rigid;
+      state.field = field_count++;
+    } else {
+      state.material = d.materials.at(static_cast<std::size_t>(spec.material)).get();
+      if (d.contact.enabled) {
+        state.field = field_count++;
+      } else {
+        if (deformable_field < 0) deformable_field = field_count++;
+        state.field = deformable_field;
+      }
+    }
+    const double density = spec.rigid ? spec.density_override : state.material->density();
+    const double solid_fraction = spec.porous ? 1.0 - spec.porous->porosity : 1.0;
+    for (std::size_t k = 0; k < spec.positions.size(); ++k, ++next) {
+      const std::size_t p = next;
+      particles.position[p] = shrink<Dim>(spec.positions[k]);
+      particles.half_length[p] = shrink<Dim>(spec.half_lengths[k]);
+      particles.velocity[p] = shrink<Dim>(spec.initial_velocity);
+      particles.initial_volume[p] = spec.volumes[k];
+      particles.volume[p] = spec.volumes[k];
+      particles.mass[p] = (std::isfinite(density) ? density : 0.0) * solid_fraction * spec.volumes[k];
+      particles.body[p] = static_cast<std::uint32_t>(b);
+      if (spec.porous) {
+        particles.porosity[p] = spec.porous->porosity;
+        particles.initial_porosity[p] = spec.porous->porosity;
+        particles.grain_size[p] = spec.porous->grain_size;
+        particles.permeability[p] = detail::permeability(*spec.porous, spec.porous->porosity);
+      }
+      if (state.material) {
+        MaterialState ms;
+        state.material->initialise(ms);
+        particles.stress[p] = to_voigt(ms.stress);
+        particles.plastic_strain[p] = ms.plastic_strain;
+        particles.damage[p] = ms.damage;
+        particles.internal[p] = ms.internal;
+      }
+      state.mass += particles.mass[p];
+    }
+    if (spec.rigid && spec.rigid->kind == RigidMotion::Kind::prescribed)
+      state.rigid_velocity = shrink<Dim>(spec.rigid->velocity.at(0.0));
+    if (spec.rigid && spec.rigid->kind == RigidMotion::Kind::free)
+      state.rigid_velocity = shrink<Dim>(spec.initial_velocity);
+    bodies.push_back(state);
+    field_of_body.push_back(state.field);
+  }
+  if (field_count == 0) field_count = 1;
+  grid.allocate(field_count);
+  contact.rigid.assign(static_cast<std::size_t>(field_count), false);
+  contact.friction.assign(static_cast<std::size_t>(field_count),
+                          std::vector<double>(static_cast<std::size_t>(field_count), d.contact.friction));
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    if (bodies[b].is_rigid()) contact.rigid[static_cast<std::size_t>(bodies[b].field)] = true;
+    for (std::size_t c = 0; c < bodies.size(); ++c) {
+      if (bodies[b].field == bodies[c].field) continue;
+      contact.friction[static_cast<std::size_t>(bodies[b].field)][static_cast<std::size_t>(bodies[c].field)] =
+          d.contact.friction_between(static_cast<int>(b), static_cast<int>(c));
+    }
+  }
+  impulse_on_field.assign(static_cast<std::size_t>(field_count), Vec<Dim>::Zero());
+  faces = detail::face_values(grid);
+  for (std::size_t p = 0; p < particles.size(); ++p)
+    if (bodies[particles.body[p]].is_rigid()) particles.velocity[p] = bodies[particles.body[p]].rigid_velocity;
+
+  detail::initialise_geostatic_stress(description, bodies, gravity_at(std::max(d.gravity_ramp_time, 0.0)),
+                                      particles);
+}
+
+template <int Dim>
+Vec<Dim> Solver<Dim>::Impl::gravity_at(double t) const {
+  const double ramp = description.gravity_ramp_time > 0.0
+                          ? std::min(1.0, t / description.gravity_ramp_time)
+                          : 1.0;
+  return ramp * shrink<Dim>(description.gravity);
+}
+
+// One explicit step: Zheng et al., Algorithm 1 (MPM part) and eqs. 13-21,
+// with the MUSL re-mapping and PIC/FLIP blend of Pan et al. 2021, eqs. 70-73.
+template <int Dim>
+void Solver<Dim>::Impl::step(double dt) {
+  with_kernel<Dim>(description.shape, [&](auto kernel) {
+    using Kernel = decltype(kernel);
+    bin_particles();
+    apply_surface_loads(dt);
+    set_rigid_velocities(dt);
+    interpolate_particles_to_grid<Kernel>(dt);
+    integrate_grid_momentum(dt);
+    apply_grid_corrections(dt);
+    apply_contact_and_boundaries(dt);
+    if (description.scheme == UpdateScheme::usl) {
+      interpolate_grid_to_particles<Kernel>(dt, /*also_kinematics=*/true);
+    } else {
+      interpolate_grid_to_particles<Kernel>(dt, /*also_kinematics=*/false);
+      remap_particle_velocities_to_grid<Kernel>();
+      update_positions_and_stresses<Kernel>(dt);
+    }
+    move_rigid_bodies(dt);
+  });
+  time += dt;
+  ++steps;
+}
+
+template <int Dim>
+void Solver<Dim>::Impl::bin_particles() {
+  bins.build(particles, grid, threads);
+}
+
+template <int Dim>
+void Solver<Dim>::Impl::apply_surface_loads(double dt) {
+  std::fill(particles.external_force.begin(), particles.external_force.end(), Vec<Dim>::Zero());
+  for (const LoadSpec& load : description.loads) {
+    const double ramp = load.ramp_time > 0.0 ? std::min(1.0, time / load.ramp_time) : 1.0;
+    const int axis = load.face / 2;
+    const double outward = load.face % 2 == 0 ? -1.0 : 1.0;
+    for (const std::size_t p : load.particles) {
+      // Face area of the particle's initial domain normal to the face.
+      const double area = particles.initial_volume[p] / (2.0 * particles.half_length[p][axis]);
+      Vec<Dim> force = Vec<Dim>::Zero();
+      if (load.traction) force = shrink<Dim>(*load.traction) * area;
+      if (load.pressure) force[axis] -= outward * *load.pressure * area;
+      particles.external_force[p] += ramp * force;
+    }
+  }
+  for (auto& source : force_sources) source(time, dt, particles);
+  double work = 0.0;
+  for (std::size_t p = 0; p < particles.size(); ++p)
+    work += particles.external_force[p].dot(particles.velocity[p]) * dt;
+  external_work += work;
+}
+
+template <int Dim>
+void Solver<Dim>::Impl::set_rigid_velocities(double dt) {
+  for (auto& body : bodies) {
+    if (!body.is_rigid()) continue;
+    switch (body.rigid->kind) {
+      case RigidMotion::Kind::fixed:
+        body.rigid_velocity.setZero();
+        break;
+      case RigidMotion::Kind::prescribed:
+        body.rigid_velocity = shrink<Dim>(body.rigid->velocity.at(time + dt));
+        break;
+      case RigidMotion::Kind::free:
+        break;  // set by move_rigid_bodies from the last step's forces
+    }
+    for (std::size_t p = body.first; p < body.first + body.count; ++p) particles.velocity[p] = body.rigid_velocity;
+  }
+}
+
+// Zheng et al., eqs. 14-17: lumped mass, momentum, and the internal, body
+// and external forces at the grid values. The internal force is the
+// divergence of the effective stress; the pore fluid acts through the
+// external force -phi_s grad p its coupling adds (Tran et al., MPMICE, eq. 7).
+template <int Dim>
+template <class Kernel>
+void Solver<Dim>::Impl::interpolate_particles_to_grid(double /*dt*/) {
+  grid.clear();
+  const Vec<Dim> g = gravity_at(time);
+  const std::size_t n = grid.size();
+  const bool gradients = grid.fields > 1;
+  bins.scatter([&](std::size_t p) {
+    Stencil<Dim, Kernel> stencil;
+    stencil.evaluate(particles.position[p], particles.half_length[p], geometry);
+    const std::size_t offset = static_cast<std::size_t>(field_of(p)) * n;
+    const double m = particles.mass[p];
+    const Vec<Dim> mv = m * particles.velocity[p];
+    const Mat<Dim> volume_stress =
+        particles.volume[p] * from_voigt(particles.stress[p]).template topLeftCorner<Dim, Dim>();
+    const Vec<Dim> external = m * g + particles.external_force[p];
+    stencil.for_each([&](std::size_t v, double w, const Vec<Dim>& grad) {
+      const std::size_t i = offset + v;
+      grid.mass[i] += w * m;
+      grid.momentum[i] += w * mv;
+      grid.force[i] += w * external - volume_stress * grad;
+      if (gradients) grid.mass_gradient[i] += m * grad;
+    });
+  });
+}
+
+// Zheng et al., eqs. 18-19: v^{n+1} = (p + dt f) / m, with optional local
+// damping of the unbalanced force.
+template <int Dim>
+void Solver<Dim>::Impl::integrate_grid_momentum(double dt) {
+  const std::size_t total = grid.mass.size();
+  const std::size_t n = grid.size();
+  const double damping = description.damping;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < total; ++i) {
+    const double m = grid.mass[i];
+    if (m <= 1e-300) {
+      grid.velocity[i].setZero();
+      grid.velocity_change[i].setZero();
+      continue;
+    }
+    const int field = static_cast<int>(i / n);
+    const Vec<Dim> v_old = grid.momentum[i] / m;
+    if (contact.rigid[static_cast<std::size_t>(field)]) {
+      grid.velocity[i] = v_old;  // the rigid velocity itself (all its particles carry it)
+      grid.velocity_change[i].setZero();
+      continue;
+    }
+    Vec<Dim> force = grid.force[i];
+    if (damping > 0.0) {
+      for (int d = 0; d < Dim; ++d) {
+        const double direction = v_old[d] + dt * force[d] / m;
+        force[d] -= damping * std::abs(force[d]) * (direction > 0 ? 1.0 : direction < 0 ? -1.0 : 0.0);
+      }
+    }
+    grid.velocity[i] = v_old + dt * force / m;
+    grid.velocity_change[i] = v_old;  // holds v^n until contact and boundaries are applied
+  }
+}
+
+template <int Dim>
+void Solver<Dim>::Impl::apply_grid_corrections(double dt) {
+  for (auto& correction : grid_corrections) correction(time, dt, grid);
+}
+
+template <int Dim>
+void Solver<Dim>::Impl::apply_contact_and_boundaries(double /*dt*/) {
+  if (grid.fields > 1) {
+    const auto result = detail::apply_grid_contact(contact, grid, impulse_on_field);
+    contact_dissipation += result.dissipated;
+    for (auto& body : bodies)
+      if (body.is_rigid()) body.contact_impulse = impulse_on_field[static_cast<std::size_t>(body.field)];
+  }
+  boundary_dissipation += detail::apply_face_conditions(description.boundaries, faces, contact.rigid, grid);
+  const std::size_t total = grid.mass.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < total; ++i) {
+    if (grid.mass[i] <= 1e-300) continue;
+    grid.velocity_change[i] = grid.velocity[i] - grid.velocity_change[i];  // v^{n+1} - v^n
+  }
+}
+
+template <int Dim>
+template <class Kernel>
+Mat<Dim> Solver<Dim>::Impl::velocity_gradient(const Stencil<Dim, Kernel>& stencil,
+                                              const std::vector<Vec<Dim>>& field_velocity,
+                                              std::size_t offset) const {
+  Mat<Dim> L = Mat<Dim>::Zero();
+  stencil.for_each([&](std::size_t v, double /*w*/, const Vec<Dim>& grad) {
+    L.noalias() += field_velocity[offset + v] * grad.transpose();
+  });
+  return L;
+}
+
+// Zheng et al., eqs. 20-21 and Pan et al. 2021, eqs. 71-72, blended:
+// v_p <- a (v_p + sum N dv) + (1 - a) sum N v^{n+1}, x_p <- x_p + dt sum N v^{n+1}.
+// USL continues with the kinematics and stresses from the same velocities.
+template <int Dim>
+template <class Kernel>
+void Solver<Dim>::Impl::interpolate_grid_to_particles(double dt, bool also_kinematics) {
+  if (also_kinematics) {
+    update_kinematics_and_stress<Kernel>(dt, /*use_remapped=*/false);
+    return;
+  }
+  const double flip = description.flip_fraction;
+  const std::size_t n = grid.size();
+  const auto count = static_cast<std::ptrdiff_t>(particles.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t q = 0; q < count; ++q) {
+    const auto p = static_cast<std::size_t>(q);
+    if (body_of(p).is_rigid()) continue;
+    Stencil<Dim, Kernel> stencil;
+    stencil.evaluate(particles.position[p], particles.half_length[p], geometry);
+    const std::size_t offset = static_cast<std::size_t>(field_of(p)) * n;
+    Vec<Dim> v_pic = Vec<Dim>::Zero();
+    Vec<Dim> dv = Vec<Dim>::Zero();
+    stencil.for_each([&](std::size_t v, double w, const Vec<Dim>&) {
+      v_pic += w * grid.velocity[offset + v];
+      dv += w * grid.velocity_change[offset + v];
+    });
+    particles.velocity[p] = flip * (particles.velocity[p] + dv) + (1.0 - flip) * v_pic;
+  }
+}
+
+// MUSL: the updated particle momenta mapped back to the grid give the
+// velocity the strain rate is computed from (Pan et al. 2021, Sec. 3.2).
+template <int Dim>
+template <class Kernel>
+void Solver<Dim>::Impl::remap_particle_velocities_to_grid() {
+  const std::size_t n = grid.size();
+  std::fill(grid.remapped_velocity.begin(), grid.remapped_velocity.end(), Vec<Dim>::Zero());
+  bins.scatter([&](std::size_t p) {
+    if (body_of(p).is_rigid()) return;
+    Stencil<Dim, Kernel> stencil;
+    stencil.evaluate(particles.position[p], particles.half_length[p], geometry);
+    const std::size_t offset = static_cast<std::size_t>(field_of(p)) * n;
+    const Vec<Dim> mv = particles.mass[p] * particles.velocity[p];
+    stencil.for_each([&](std::size_t v, double w, const Vec<Dim>&) {
+      grid.remapped_velocity[offset + v] += w * mv;
+    });
+  });
+  const std::size_t total = grid.mass.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < total; ++i) {
+    const int field = static_cast<int>(i / n);
+    if (contact.rigid[static_cast<std::size_t>(field)]) {
+      grid.remapped_velocity[i] = grid.velocity[i];
+    } else {
+      grid.remapped_velocity[i] = grid.mass[i] > 1e-300 ? Vec<Dim>(grid.remapped_velocity[i] / grid.mass[i])
+                                                        : Vec<Dim>::Zero();
+    }
+  }
+  // The re-mapped velocity obeys the same contact and face conditions.
+  std::swap(grid.velocity, grid.remapped_velocity);
+  if (grid.fields > 1) {
+    std::vector<Vec<Dim>> unused(impulse_on_field.size(), Vec<Dim>::Zero());
+    detail::apply_grid_contact(contact, grid, unused);
+  }
+  detail::apply_face_conditions(description.boundaries, faces, contact.rigid, grid);
+  std::swap(grid.velocity, grid.remapped_velocity);
+}
+
+template <int Dim>
+template <class Kernel>
+void Solver<Dim>::Impl::update_positions_and_stresses(double dt) {
+  update_kinematics_and_stress<Kernel>(dt, /*use_remapped=*/true);
+}
+
+// Positions (eq. 21), deformation gradient (Tran et al., MPMICE, eq. 94;
+// Pan et al. 2021, eq. 73), volume and porosity (Pan et al. 2021, eqs.
+// 74-76), then the stress from the material with its objective rate. USL
+// also updates the particle velocities here (use_remapped = false).
+template <int Dim>
+template <class Kernel>
+void Solver<Dim>::Impl::update_kinematics_and_stress(double dt, bool use_remapped) {
+  const double flip = description.flip_fraction;
+  const std::size_t n = grid.size();
+  const std::vector<Vec<Dim>>& strain_velocity = use_remapped ? grid.remapped_velocity : grid.velocity;
+  const LockingMitigation locking = description.locking;
+  const bool averaged = locking != LockingMitigation::none;
+  const auto count = static_cast<std::ptrdiff_t>(particles.size());
+
+  if (averaged) {
+    // Cell-averaged volumetric increment: sum V x / sum V over the cell's points.
+    cell_sum.assign(grid.cell_count(), 0.0);
+    cell_weight.assign(grid.cell_count(), 0.0);
+    volumetric_increment.resize(particles.size());
+    bins.per_slab([&](std::size_t p) {
+      if (body_of(p).is_rigid()) return;
+      Stencil<Dim, Kernel> stencil;
+      stencil.evaluate(particles.position[p], particles.half_length[p], geometry);
+      const Mat<Dim> L = velocity_gradient(stencil, strain_velocity, static_cast<std::size_t>(field_of(p)) * n);
+      const double x = locking == LockingMitigation::fbar
+                           ? (Mat<Dim>::Identity() + dt * L).determinant()
+                           : dt * L.trace();
+      volumetric_increment[p] = x;
+      const std::size_t c = grid.cell_flat(grid.cell_of(particles.position[p]));
+      cell_sum[c] += particles.volume[p] * x;
+      cell_weight[c] += particles.volume[p];
+    });
+  }
+
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t q = 0; q < count; ++q) {
+    const auto p = static_cast<std::size_t>(q);
+    const auto& body = body_of(p);
+    if (body.is_rigid()) continue;
+    Stencil<Dim, Kernel> stencil;
+    stencil.evaluate(particles.position[p], particles.half_length[p], geometry);
+    const std::size_t offset = static_cast<std::size_t>(body.field) * n;
+    Vec<Dim> v_pic = Vec<Dim>::Zero();
+    Vec<Dim> dv = Vec<Dim>::Zero();
+    Mat<Dim> L = Mat<Dim>::Zero();
+    stencil.for_each([&](std::size_t v, double w, const Vec<Dim>& grad) {
+      v_pic += w * grid.velocity[offset + v];
+      if (!use_remapped) dv += w * grid.velocity_change[offset + v];
+      L.noalias() += strain_velocity[offset + v] * grad.transpose();
+    });
+    if (!use_remapped) particles.velocity[p] = flip * (particles.velocity[p] + dv) + (1.0 - flip) * v_pic;
+    const std::size_t cell = averaged ? grid.cell_flat(grid.cell_of(particles.position[p])) : 0;
+    particles.position[p] += dt * v_pic;
+
+    detail::VolumetricAverage average;
+    if (averaged && cell_weight[cell] > 0.0) {
+      average.kind = locking;
+      average.own = volumetric_increment[p];
+      average.cell = cell_sum[cell] / cell_weight[cell];
+    }
+    detail::update_point(*body.material, L, dt, average, description.bodies[particles.body[p]].porous, p,
+                         particles);
+  }
+}
+
+template <int Dim>
+void Solver<Dim>::Impl::move_rigid_bodies(double dt) {
+  const Vec<Dim> g = gravity_at(time);
+  for (auto& body : bodies) {
+    if (!body.is_rigid()) continue;
+    if (body.rigid->kind == RigidMotion::Kind::free && body.mass > 0.0)
+      body.rigid_velocity += dt * g + body.contact_impulse / body.mass;
+    for (std::size_t p = body.first; p < body.first + body.count; ++p) {
+      particles.position[p] += dt * particles.velocity[p];
+      particles.velocity[p] = body.rigid_velocity;
+    }
+  }
+}
+
+template <int Dim>
+double Solver<Dim>::Impl::stable_time_step() const {
+  double wave = 0.0;
+  double speed = 0.0;
+  const auto count = static_cast<std::ptrdiff_t>(particles.size());
+#pragma omp parallel for schedule(static) reduction(max : wave, speed)
+  for (std::ptrdiff_t q = 0; q < count; ++q) {
+    const auto p = static_cast<std::size_t>(q);
+    const auto& body = body_of(p);
+    speed = std::max(speed, particles.velocity[p].cwiseAbs().maxCoeff());
+    if (body.is_rigid() || particles.volume[p] <= 0.0) continue;
+    const double density = particles.mass[p] / particles.volume[p];
+    if (density > 0.0) wave = std::max(wave, std::sqrt(body.material->p_wave_modulus() / density));
+  }
+  // Zheng et al., eq. 23.
+  const double denominator = wave + speed;
+  const double dt = denominator > 0.0 ? description.time.safety_factor * grid.min_spacing() / denominator
+                                      : description.time.max_time_step;
+  return std::min(dt, description.time.max_time_step);
+}
+
+template <int Dim>
+Totals<Dim> Solver<Dim>::Impl::totals() const {
+  Totals<Dim> t;
+  const Vec<Dim> g = gravity_at(time);
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    const double m = particles.mass[p];
+    t.mass += m;
+    t.momentum += m * particles.velocity[p];
+    t.kinetic_energy += 0.5 * m * particles.velocity[p].squaredNorm();
+    t.gravitational_energy -= m * g.dot(particles.position[p]);
+    const auto& body = body_of(p);
+    if (!body.is_rigid()) {
+      // Complementary elastic energy V (p^2 / 2K + s:s / 4G) of the current stress.
+      const Tensor s = from_voigt(particles.stress[p]);
+      const double mean = s.trace() / 3.0;
+      const Tensor dev = s - mean * Tensor::Identity();
+      t.strain_energy += particles.volume[p] * (mean * mean / (2.0 * body.material->bulk_modulus()) +
+                                                dev.squaredNorm() / (4.0 * body.material->shear_modulus()));
+    }
+  }
+  t.contact_dissipation = contact_dissipation;
+  t.boundary_dissipation = boundary_dissipation;
+  t.external_work = external_work;
+  return t;
+}
+
+template <int Dim>
+void Solver<Dim>::Impl::check_state() const {
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    const auto& body = body_of(p);
+    const Voigt& s = particles.stress[p];
+    const bool finite = particles.position[p].allFinite() && particles.velocity[p].allFinite() &&
+                        std::all_of(s.begin(), s.end(), [](double x) { return std::isfinite(x); }) &&
+                        std::isfinite(particles.volume[p]) && particles.volume[p] > 0.0;
+    if (!finite) {
+      throw cosim::NumericalError(fmt::format(
+          "particle {} of body '{}' has a non-finite or collapsed state at t = {:.9g} s "
+          "(position {}, volume {:.6g} m^{})",
+          p, body.name, time, fmt::join(particles.position[p], ", "), particles.volume[p], Dim));
+    }
+    if (!grid.contains(particles.position[p])) {
+      throw cosim::NumericalError(fmt::format(
+          "particle {} of body '{}' left the grid at t = {:.9g} s (position {}; grid from {} to {})", p,
+          body.name, time, fmt::join(particles.position[p], ", "), fmt::join(grid.origin, ", "),
+          fmt::join(grid.upper(), ", ")));
+    }
+  }
+}
+
+// Public interface.
+
+template <int Dim>
+Solver<Dim>::Solver(const CaseDescription& description) : impl_(std::make_unique<Impl>(description)) {}
+template <int Dim>
+Solver<Dim>::~Solver() = default;
+template <int Dim>
+double Solver<Dim>::stable_time_step() const {
+  return impl_->stable_time_step();
+}
+template <int Dim>
+void Solver<Dim>::step(double dt) {
+  impl_->step(dt);
+}
+template <int Dim>
+double Solver<Dim>::time() const {
+  return impl_->time;
+}
+template <int Dim>
+std::size_t Solver<Dim>::step_count() const {
+  return impl_->steps;
+}
+template <int Dim>
+void Solver<Dim>::add_particle_force_source(ParticleForceSource source) {
+  impl_->force_sources.push_back(std::move(source));
+}
+template <int Dim>
+void Solver<Dim>::add_grid_velocity_correction(GridVelocityCorrection correction) {
+  impl_->grid_corrections.push_back(std::move(correction));
+}
+template <int Dim>
+Particles<Dim>& Solver<Dim>::particles() {
+  return impl_->particles;
+}
+template <int Dim>
+const Particles<Dim>& Solver<Dim>::particles() const {
+  return impl_->particles;
+}
+template <int Dim>
+const Grid<Dim>& Solver<Dim>::grid() const {
+  return impl_->grid;
+}
+template <int Dim>
+const CaseDescription& Solver<Dim>::description() const {
+  return impl_->description;
+}
+template <int Dim>
+Totals<Dim> Solver<Dim>::totals() const {
+  return impl_->totals();
+}
+template <int Dim>
+Tensor Solver<Dim>::total_stress(std::size_t particle) const {
+  return from_voigt(impl_->particles.stress[particle]) -
+         impl_->particles.pore_pressure[particle] * Tensor::Identity();
+}
+template <int Dim>
+void Solver<Dim>::check_state() const {
+  impl_->check_state();
+}
+
+template class Solver<2>;
+template class Solver<3>;
+
+}  // namespace mpm

@@ -1,0 +1,255 @@
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <random>
+
+#include "case_builder.hpp"
+#include "mpm/solver/solver.hpp"
+
+namespace mpm {
+namespace {
+
+using testing::box_body;
+using testing::elastic;
+using testing::empty_case;
+
+template <int Dim>
+CaseDescription spinning_block_case(ShapeKind shape, UpdateScheme scheme) {
+  CaseDescription c = empty_case(Dim, {16, 16, 16}, 0.1);
+  c.shape = shape;
+  c.scheme = scheme;
+  c.materials.push_back(elastic(1000.0, 1e6, 0.3));
+  const Vec3d lo = Vec3d::Constant(0.5), hi = Vec3d::Constant(1.1);
+  c.bodies.push_back(box_body("block", 0, Dim, lo, hi, 0.1, 2));
+  return c;
+}
+
+// Random velocities and stresses, so that every term of the transfer is exercised.
+template <int Dim>
+void randomise(Particles<Dim>& particles, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    for (int d = 0; d < Dim; ++d) particles.velocity[p][d] = u(rng);
+    for (auto& s : particles.stress[p]) s = 1e3 * u(rng);
+  }
+}
+
+template <int Dim>
+void expect_transfer_conserves(ShapeKind shape) {
+  Solver<Dim> solver(spinning_block_case<Dim>(shape, UpdateScheme::usl));
+  randomise(solver.particles(), 7);
+  const Totals<Dim> before = solver.totals();
+  solver.step(1e-5);
+  const Grid<Dim>& grid = solver.grid();
+  double mass = 0.0;
+  Vec<Dim> momentum = Vec<Dim>::Zero();
+  Vec<Dim> force = Vec<Dim>::Zero();
+  for (std::size_t i = 0; i < grid.mass.size(); ++i) {
+    mass += grid.mass[i];
+    momentum += grid.momentum[i];
+    force += grid.force[i];
+  }
+  const double mass_error = std::abs(mass - before.mass) / before.mass;
+  const double momentum_error = (momentum - before.momentum).norm() / (before.mass * 1.0);
+  std::printf("%dD %s: grid mass error %.2e, momentum error %.2e, net internal force %.2e N (tolerance 1e-12)\n",
+              Dim, std::string(to_string(shape)).c_str(), mass_error, momentum_error, force.norm());
+  EXPECT_LT(mass_error, 1e-12);
+  EXPECT_LT(momentum_error, 1e-12);
+  // Internal forces are equilibrated: the gradients of a partition of unity sum to zero.
+  EXPECT_LT(force.norm(), 1e-9 * 1e3 * before.mass);
+}
+
+TEST(SolverTransfer, ParticleToGridConservesMassAndMomentum2D) {
+  for (auto shape : {ShapeKind::linear, ShapeKind::gimp, ShapeKind::quadratic_bspline})
+    expect_transfer_conserves<2>(shape);
+}
+
+TEST(SolverTransfer, ParticleToGridConservesMassAndMomentum3D) {
+  for (auto shape : {ShapeKind::linear, ShapeKind::gimp, ShapeKind::quadratic_bspline})
+    expect_transfer_conserves<3>(shape);
+}
+
+TEST(SolverDynamics, FreeFallGainsExactlyGravityTimesTime) {
+  for (auto scheme : {UpdateScheme::usl, UpdateScheme::musl}) {
+    CaseDescription c = spinning_block_case<2>(ShapeKind::gimp, scheme);
+    c.gravity = Vec3d(0.0, -9.81, 0.0);
+    Solver<2> solver(c);
+    const double dt = 1e-4;
+    for (int n = 0; n < 200; ++n) solver.step(dt);
+    const Totals<2> t = solver.totals();
+    const double expected = -9.81 * 200 * dt;
+    for (std::size_t p = 0; p < solver.particles().size(); ++p) {
+      ASSERT_NEAR(solver.particles().velocity[p][1], expected, 1e-10);
+      ASSERT_NEAR(solver.particles().velocity[p][0], 0.0, 1e-12);
+    }
+    EXPECT_NEAR(t.momentum[1] / t.mass, expected, 1e-12);
+  }
+}
+
+template <int Dim>
+std::vector<double> run_and_collect(int threads, ShapeKind shape) {
+  CaseDescription c = spinning_block_case<Dim>(shape, UpdateScheme::musl);
+  c.gravity = Vec3d(0.0, Dim == 2 ? -9.81 : 0.0, Dim == 3 ? -9.81 : 0.0);
+  c.boundaries[2 * (Dim - 1)].kind = FaceCondition::Kind::fixed;
+  c.bodies[0].positions.front()[Dim - 1] -= 0.45;  // one point near the floor
+  c.threads = threads;
+  Solver<Dim> solver(c);
+  randomise(solver.particles(), 3);
+  for (int n = 0; n < 20; ++n) solver.step(0.2 * solver.stable_time_step());
+  std::vector<double> state;
+  for (std::size_t p = 0; p < solver.particles().size(); ++p) {
+    for (int d = 0; d < Dim; ++d) state.push_back(solver.particles().position[p][d]);
+    for (int d = 0; d < Dim; ++d) state.push_back(solver.particles().velocity[p][d]);
+    for (double s : solver.particles().stress[p]) state.push_back(s);
+  }
+  return state;
+}
+
+TEST(SolverDeterminism, IdenticalBitsForOneAndTwoThreads) {
+  const int saved = omp_get_max_threads();
+  for (auto shape : {ShapeKind::gimp, ShapeKind::quadratic_bspline}) {
+    const auto one = run_and_collect<2>(1, shape);
+    const auto two = run_and_collect<2>(2, shape);
+    const auto again = run_and_collect<2>(2, shape);
+    EXPECT_EQ(one, two);
+    EXPECT_EQ(two, again);
+    EXPECT_EQ(run_and_collect<3>(1, shape), run_and_collect<3>(2, shape));
+  }
+  omp_set_num_threads(saved);
+}
+
+// A pre-stressed block spun as a rigid body: the stress must turn with it
+// (objectivity of the Jaumann and polar-rotation updates in the solver).
+void expect_stress_rotates_with_body(const std::string& rate) {
+  CaseDescription c = empty_case(2, {24, 24, 1}, 0.1);
+  c.shape = ShapeKind::gimp;
+  c.scheme = UpdateScheme::usl;
+  c.flip_fraction = 0.0;
+  c.materials.push_back(elastic(1000.0, 1e6, 0.3, rate));
+  c.bodies.push_back(box_body("block", 0, 2, Vec3d(1.0, 1.0, 0), Vec3d(1.4, 1.4, 0), 0.1, 2));
+  Solver<2> solver(c);
+  auto& particles = solver.particles();
+  const Vec<2> centre(1.2, 1.2);
+  const double omega = 1.0;
+  const double s0 = 1e4;
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    const Vec<2> r = particles.position[p] - centre;
+    particles.velocity[p] = omega * Vec<2>(-r[1], r[0]);
+    particles.stress[p] = Voigt{s0, 0, 0, 0, 0, 0};
+  }
+  // Keep the angular velocity exact: reset velocities to the rigid field each step.
+  const double dt = 1e-3;
+  const int steps = 300;
+  for (int n = 0; n < steps; ++n) {
+    solver.step(dt);
+    for (std::size_t p = 0; p < particles.size(); ++p) {
+      const Vec<2> r = particles.position[p] - centre;
+      particles.velocity[p] = omega * Vec<2>(-r[1], r[0]);
+    }
+  }
+  const double angle = omega * dt * steps;
+  Eigen::Matrix2d R;
+  R << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+  Eigen::Matrix2d expected = R * Eigen::Vector2d(s0, 0).asDiagonal() * R.transpose();
+  double worst = 0.0;
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    const Tensor s = from_voigt(particles.stress[p]);
+    worst = std::max(worst, (s.topLeftCorner<2, 2>() - expected).norm() / s0);
+  }
+  std::printf("%s: stress after a %.2f rad rigid rotation, worst relative error %.3e (tolerance 2e-2)\n",
+              rate.c_str(), angle, worst);
+  EXPECT_LT(worst, 2e-2);
+}
+
+TEST(SolverObjectivity, JaumannStressTurnsWithRigidRotation) { expect_stress_rotates_with_body("jaumann"); }
+TEST(SolverObjectivity, PolarRotationStressTurnsWithRigidRotation) {
+  expect_stress_rotates_with_body("polar_rotation");
+}
+
+// Two elastic blocks meeting head-on through frictionless grid contact.
+TEST(SolverContact, HeadOnCollisionConservesMomentumAndAccountsEnergy) {
+  CaseDescription c = empty_case(2, {40, 12, 1}, 0.05);
+  c.shape = ShapeKind::gimp;
+  c.contact.enabled = true;
+  c.contact.friction = 0.0;
+  c.flip_fraction = 1.0;
+  c.materials.push_back(elastic(1000.0, 1e6, 0.3));
+  c.bodies.push_back(box_body("left", 0, 2, Vec3d(0.4, 0.2, 0), Vec3d(0.8, 0.4, 0), 0.05, 2));
+  c.bodies.push_back(box_body("right", 0, 2, Vec3d(0.9, 0.2, 0), Vec3d(1.3, 0.4, 0), 0.05, 2));
+  c.bodies[0].initial_velocity = Vec3d(1.0, 0, 0);
+  c.bodies[1].initial_velocity = Vec3d(-0.5, 0, 0);
+  Solver<2> solver(c);
+  const Totals<2> start = solver.totals();
+  double min_gap = 1e9;
+  for (int n = 0; n < 4000 && solver.time() < 0.25; ++n) {
+    solver.step(solver.stable_time_step());
+    double right_of_left = -1e9, left_of_right = 1e9;
+    for (std::size_t p = 0; p < solver.particles().size(); ++p) {
+      const double x = solver.particles().position[p][0];
+      if (solver.particles().body[p] == 0) right_of_left = std::max(right_of_left, x);
+      else left_of_right = std::min(left_of_right, x);
+    }
+    min_gap = std::min(min_gap, left_of_right - right_of_left);
+  }
+  const Totals<2> end = solver.totals();
+  const double momentum_error = (end.momentum - start.momentum).norm() / start.mass;
+  const double energy_start = start.kinetic_energy + start.strain_energy;
+  const double energy_end = end.kinetic_energy + end.strain_energy + end.contact_dissipation;
+  std::printf("collision: momentum error %.2e m/s (tolerance 1e-12), energy balance %.3e relative "
+              "(tolerance 5e-2), dissipated %.3e J, closest approach %.4f m\n",
+              momentum_error, std::abs(energy_end - energy_start) / energy_start, end.contact_dissipation,
+              min_gap);
+  EXPECT_LT(momentum_error, 1e-12);
+  EXPECT_GT(end.contact_dissipation, 0.0);
+  EXPECT_LT(std::abs(energy_end - energy_start) / energy_start, 5e-2);
+  // They bounced: the left block now moves left relative to the right one.
+  double v_left = 0, v_right = 0, m_left = 0, m_right = 0;
+  for (std::size_t p = 0; p < solver.particles().size(); ++p) {
+    auto& P = solver.particles();
+    (P.body[p] == 0 ? v_left : v_right) += P.mass[p] * P.velocity[p][0];
+    (P.body[p] == 0 ? m_left : m_right) += P.mass[p];
+  }
+  EXPECT_LT(v_left / m_left, v_right / m_right);
+}
+
+// A block sliding on a fixed rigid floor with Coulomb friction decelerates
+// at mu g: it stops after v0^2 / (2 mu g).
+TEST(SolverContact, BlockOnRigidFloorStopsAtCoulombDistance) {
+  const double h = 0.02, mu = 0.3, v0 = 1.0, g = 9.81;
+  CaseDescription c = empty_case(2, {60, 15, 1}, h);
+  c.shape = ShapeKind::gimp;
+  c.contact.enabled = true;
+  c.contact.friction = mu;
+  c.gravity = Vec3d(0, -g, 0);
+  c.materials.push_back(elastic(2000.0, 5e6, 0.3));
+  c.bodies.push_back(box_body("block", 0, 2, Vec3d(0.1, 0.1, 0), Vec3d(0.3, 0.16, 0), h, 2));
+  BodySpec floor = box_body("floor", -1, 2, Vec3d(0.0, 0.04, 0), Vec3d(1.2, 0.1, 0), h, 2);
+  floor.rigid = RigidMotion{};
+  floor.density_override = 2000.0;
+  c.bodies.push_back(floor);
+  c.bodies[0].initial_velocity = Vec3d(v0, 0, 0);
+  Solver<2> solver(c);
+  auto centre = [&] {
+    double x = 0, m = 0;
+    for (std::size_t p = 0; p < solver.particles().size(); ++p)
+      if (solver.particles().body[p] == 0) {
+        x += solver.particles().mass[p] * solver.particles().position[p][0];
+        m += solver.particles().mass[p];
+      }
+    return x / m;
+  };
+  const double x0 = centre();
+  while (solver.time() < 0.6) solver.step(solver.stable_time_step());
+  const double travelled = centre() - x0;
+  const double expected = v0 * v0 / (2 * mu * g);
+  const double error = std::abs(travelled - expected) / expected;
+  std::printf("sliding block: travelled %.4f m, Coulomb %.4f m, error %.2f %% (tolerance 10 %%), "
+              "dissipated %.3f J\n", travelled, expected, 100 * error, solver.totals().contact_dissipation);
+  EXPECT_LT(error, 0.10);
+  EXPECT_GT(solver.totals().contact_dissipation, 0.0);
+}
+
+}  // namespace
+}  // namespace mpm
