@@ -48,6 +48,11 @@ class MaterialRegistry {
   std::vector<std::pair<std::string, Entry>> entries_;
 };
 
+// Adds the built-in models (linear_elastic, neo_hookean, mohr_coulomb,
+// drucker_prager) to `registry`; instance() calls it once, so the models are
+// present whatever the linker keeps of the static library.
+void register_builtin_materials(MaterialRegistry& registry);
+
 inline std::unique_ptr<Material> make_material(const cosim::config::Node& node) {
   return MaterialRegistry::instance().make(node);
 }
