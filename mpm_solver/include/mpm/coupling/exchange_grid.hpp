@@ -1,0 +1,157 @@
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+#include "cosim/mesh.hpp"
+#include "mpm/core/tensor.hpp"
+#include "mpm/grid/grid.hpp"
+
+namespace mpm::coupling {
+
+// The cell-centred grid the MPM exchanges porous-medium fields on (mesh
+// "mpm_grid"): the MPM cells, or blocks of `factor` x `factor` of them. Two
+// sets of weights tie a point to the cell centres:
+//  - conservative (particle -> cell): linear in each direction between the
+//    two nearest centres, all weight to the last centre beyond it (the half
+//    cell at a face). Non-negative and a partition of unity, so sums over
+//    cells equal sums over particles.
+//  - consistent (cell -> point): the same linear weights, extrapolated in the
+//    half cell at a face, so a linear field and its gradient are reproduced
+//    exactly everywhere.
+template <int Dim>
+struct ExchangeGrid {
+  Vec<Dim> origin = Vec<Dim>::Zero();
+  Vec<Dim> spacing = Vec<Dim>::Ones();
+  std::array<int, Dim> cells{};
+
+  // The MPM grid's cells grouped by `factor` per direction (the last block
+  // of a direction extends past the grid when factor does not divide it).
+  static ExchangeGrid covering(const Grid<Dim>& grid, int factor) {
+    ExchangeGrid g;
+    g.origin = grid.origin;
+    for (int d = 0; d < Dim; ++d) {
+      g.spacing[d] = grid.spacing[d] * factor;
+      g.cells[static_cast<std::size_t>(d)] = (grid.cells[static_cast<std::size_t>(d)] + factor - 1) / factor;
+    }
+    return g;
+  }
+
+  std::size_t size() const {
+    std::size_t n = 1;
+    for (int c : cells) n *= static_cast<std::size_t>(c);
+    return n;
+  }
+  double cell_volume() const { return spacing.prod(); }
+  std::size_t flat(const std::array<int, Dim>& index) const {
+    std::size_t f = 0, stride = 1;
+    for (std::size_t d = 0; d < Dim; ++d) {
+      f += static_cast<std::size_t>(index[d]) * stride;
+      stride *= static_cast<std::size_t>(cells[d]);
+    }
+    return f;
+  }
+  Vec<Dim> centre(const std::array<int, Dim>& index) const {
+    Vec<Dim> x;
+    for (int d = 0; d < Dim; ++d) x[d] = origin[d] + (index[static_cast<std::size_t>(d)] + 0.5) * spacing[d];
+    return x;
+  }
+
+  cosim::UniformGrid mesh() const {
+    cosim::UniformGrid m;
+    m.dim = Dim;
+    for (std::size_t d = 0; d < Dim; ++d) {
+      m.origin[d] = origin[static_cast<int>(d)];
+      m.spacing[d] = spacing[static_cast<int>(d)];
+      m.cells[d] = cells[d];
+    }
+    m.location = cosim::GridLocation::cell;
+    return m;
+  }
+
+  // f(flat cell, weight) for the 2^Dim cells a point gives its quantities to.
+  template <class F>
+  void for_each_conservative(const Vec<Dim>& x, F&& f) const {
+    std::array<int, Dim> first{};
+    double w[Dim][2];
+    for (int d = 0; d < Dim; ++d) {
+      const int n = cells[static_cast<std::size_t>(d)];
+      const double s = (x[d] - origin[d]) / spacing[d] - 0.5;
+      int i = static_cast<int>(std::floor(s));
+      double t = s - i;
+      if (i < 0) {
+        i = 0;
+        t = 0.0;
+      } else if (i >= n - 1) {
+        i = n - 1;
+        t = 0.0;
+      }
+      first[static_cast<std::size_t>(d)] = i;
+      w[d][0] = 1.0 - t;
+      w[d][1] = t;
+    }
+    visit(first, w, nullptr, [&](std::size_t c, double weight, const Vec<Dim>&) { f(c, weight); });
+  }
+
+  // f(flat cell, weight, gradient of the weight) of the multilinear
+  // interpolant through the 2^Dim nearest centres (extrapolated at faces).
+  template <class F>
+  void for_each_consistent(const Vec<Dim>& x, F&& f) const {
+    std::array<int, Dim> first{};
+    double w[Dim][2];
+    double dw[Dim][2];
+    for (int d = 0; d < Dim; ++d) {
+      const int n = cells[static_cast<std::size_t>(d)];
+      if (n == 1) {
+        first[static_cast<std::size_t>(d)] = 0;
+        w[d][0] = 1.0;
+        w[d][1] = 0.0;
+        dw[d][0] = dw[d][1] = 0.0;
+        continue;
+      }
+      const double s = (x[d] - origin[d]) / spacing[d] - 0.5;
+      int i = static_cast<int>(std::floor(s));
+      if (i < 0) i = 0;
+      if (i > n - 2) i = n - 2;
+      const double t = s - i;
+      first[static_cast<std::size_t>(d)] = i;
+      w[d][0] = 1.0 - t;
+      w[d][1] = t;
+      dw[d][0] = -1.0 / spacing[d];
+      dw[d][1] = 1.0 / spacing[d];
+    }
+    visit(first, w, dw, f);
+  }
+
+ private:
+  template <class F>
+  void visit(const std::array<int, Dim>& first, const double (&w)[Dim][2], const double (*dw)[2],
+             F&& f) const {
+    constexpr int corners = 1 << Dim;
+    for (int corner = 0; corner < corners; ++corner) {
+      std::array<int, Dim> index{};
+      double weight = 1.0;
+      bool inside = true;
+      for (int d = 0; d < Dim; ++d) {
+        const int bit = (corner >> d) & 1;
+        index[static_cast<std::size_t>(d)] = first[static_cast<std::size_t>(d)] + bit;
+        if (index[static_cast<std::size_t>(d)] >= cells[static_cast<std::size_t>(d)]) inside = false;
+        weight *= w[d][bit];
+      }
+      if (!inside) continue;  // a zero weight past a single-cell direction
+      Vec<Dim> gradient = Vec<Dim>::Zero();
+      if (dw) {
+        for (int d = 0; d < Dim; ++d) {
+          double g = dw[d][(corner >> d) & 1];
+          for (int e = 0; e < Dim; ++e)
+            if (e != d) g *= w[e][(corner >> e) & 1];
+          gradient[d] = g;
+        }
+      }
+      f(flat(index), weight, gradient);
+    }
+  }
+};
+
+}  // namespace mpm::coupling

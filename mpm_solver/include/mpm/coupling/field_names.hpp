@@ -1,0 +1,32 @@
+#pragma once
+
+#include "cosim/job/job.hpp"
+
+// The meshes the MPM declares and the fields it exchanges on them. The
+// porous-medium fields keep the names the coupler's momentum exchange
+// expects (cosim::job::momentum_exchange_fields).
+namespace mpm::coupling::names {
+
+// Cell-centred Dim-D grid over the MPM grid (exchange grid).
+inline constexpr const char* exchange_mesh = "mpm_grid";
+// Cell-centred (Dim-1)-D grid over the MPM grid's horizontal extent.
+inline constexpr const char* surface_mesh = "mpm_surface";
+
+namespace mx = cosim::job::momentum_exchange_fields;
+// On mpm_grid, written [1, m/s, kg/m^3, m^2, m].
+inline constexpr const char* solid_fraction = mx::solid_fraction;
+inline constexpr const char* solid_velocity = mx::solid_velocity;
+inline constexpr const char* solid_bulk_density = mx::solid_bulk_density;
+inline constexpr const char* permeability = mx::permeability;
+inline constexpr const char* grain_size = mx::grain_size;
+// On mpm_grid, read: pore pressure [Pa] (intensive state) and the momentum
+// the solid receives from the implicit exchange [kg m/s] (extensive window
+// integral, Dim components).
+inline constexpr const char* pore_pressure = "pore_pressure";
+inline constexpr const char* impulse = mx::impulse;
+// On mpm_surface: bed elevation [m] written; bed traction [Pa], Dim
+// components (horizontal shear, then the vertical normal component), read.
+inline constexpr const char* bed_elevation = "bed_elevation";
+inline constexpr const char* bed_traction = "bed_traction";
+
+}  // namespace mpm::coupling::names

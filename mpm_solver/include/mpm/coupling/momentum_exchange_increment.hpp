@@ -1,0 +1,33 @@
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "mpm/coupling/body_roles.hpp"
+#include "mpm/coupling/exchange_grid.hpp"
+#include "mpm/particles/particles.hpp"
+
+namespace mpm::coupling {
+
+// Totals of one split [kg m/s] (per unit depth in 2D).
+template <int Dim>
+struct ImpulseSplit {
+  Vec<Dim> received = Vec<Dim>::Zero();  // sum over the cells
+  Vec<Dim> applied = Vec<Dim>::Zero();   // sum over the particles
+  Vec<Dim> absorbed = Vec<Dim>::Zero();  // cells without deformable solid (rigid or empty)
+};
+
+// The momentum the implicit exchange gives the solid in a step (the step's
+// share of the window's impulse, DESIGN.md §4), cell by cell, split over the
+// deformable particles by their mass weight in the cell:
+//   J_p = sum_c J_c m_p w_pc / sum_q m_q w_qc
+// with the conservative weights w_pc of the fields written, so
+// sum_p J_p = sum_c J_c to round-off over the cells that hold deformable
+// solid. Rigid bodies take no coupling force; a cell holding only rigid
+// solid (or none) absorbs its impulse.
+template <int Dim>
+ImpulseSplit<Dim> split_impulse(const ExchangeGrid<Dim>& grid, std::span<const double> cell_impulse,
+                                const Particles<Dim>& particles, const std::vector<BodyRole>& roles,
+                                std::vector<Vec<Dim>>& particle_impulse);
+
+}  // namespace mpm::coupling

@@ -1,0 +1,101 @@
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "mpm/coupling/body_roles.hpp"
+#include "mpm/coupling/coupling_channel.hpp"
+#include "mpm/coupling/coupling_spec.hpp"
+#include "mpm/coupling/exchange_grid.hpp"
+#include "mpm/coupling/momentum_exchange_increment.hpp"
+#include "mpm/coupling/surface_grid.hpp"
+#include "mpm/coupling/surface_traction.hpp"
+#include "mpm/solver/solver.hpp"
+
+namespace cosim {
+class Participant;
+}
+
+// The MPM side of the coupling (DESIGN.md §3-4): what the solver writes to
+// and reads from the coupler, and how what it reads acts on the particles.
+//
+// Call order in the run loop:
+//
+//   auto coupling = mpm::coupling::attach_coupling(solver, participant, spec);
+//   coupling->declare();                      // meshes, fields, initial data (before initialize)
+//   participant.initialize(start, end);
+//   while (participant.is_coupling_ongoing()) {
+//     const double dt = std::min(solver.stable_time_step(), coupling->max_time_step());
+//     coupling->before_step(dt);              // reads: pore pressure, the step's impulse share, bed traction
+//     solver.step(dt);                        // its particle force source applies them
+//     coupling->after_step(dt);               // writes, when this step ends the window
+//     participant.advance(dt);                // exchanges, when the window is complete
+//   }
+//
+// Exchange grid (mesh "mpm_grid", cell-centred, Dim-D): writes solid_fraction,
+// solid_velocity, solid_bulk_density, permeability, grain_size (see
+// porous_fields_writer.hpp); reads pore_pressure (applied as -phi_s grad p,
+// pore_pressure_force.hpp) and momentum_exchange_impulse (split over the
+// particles, momentum_exchange_increment.hpp). Surface (mesh "mpm_surface",
+// cell-centred, (Dim-1)-D): writes bed_elevation (bed_elevation.hpp), reads
+// bed_traction (surface_traction.hpp).
+//
+// Everything read acts through one particle force source registered on the
+// solver: for a step of dt the force on particle p is
+//   -(1 - n_p) V_p grad p  +  J_p / dt  +  (bed traction share),
+// so the momentum it adds over the step is exactly the impulse share J_p.
+// A step the coupling did not prepare (no before_step) gets no coupling force.
+namespace mpm::coupling {
+
+template <int Dim>
+struct CouplingDiagnostics {
+  std::size_t capped_solid_fraction_cells = 0;  // summed over all writes
+  std::size_t held_cells = 0;                   // at the last write
+  std::size_t writes = 0;                       // times the fields were written
+  Vec<Dim> pore_pressure_force = Vec<Dim>::Zero();  // last step [N]
+  ImpulseSplit<Dim> impulse_step;                   // last step [kg m/s]
+  ImpulseSplit<Dim> impulse_total;                  // whole run
+  TractionTotals<Dim> traction_step;                // last step [N]
+};
+
+template <int Dim>
+class MpmCoupling {
+ public:
+  // Registers the particle force source on the solver. The coupling state it
+  // uses is shared with the solver, so the solver may outlive this object.
+  MpmCoupling(Solver<Dim>& solver, std::unique_ptr<CouplingChannel> channel, CouplingSpec spec);
+  ~MpmCoupling();
+  MpmCoupling(const MpmCoupling&) = delete;
+  MpmCoupling& operator=(const MpmCoupling&) = delete;
+
+  // Declares the meshes and fields, then writes the initial fields (sent by
+  // initialize() as the initial data).
+  void declare();
+  double max_time_step() const;
+  void before_step(double dt);
+  void after_step(double dt);
+  // Writes every declared field from the current particles.
+  void write_fields();
+
+  const ExchangeGrid<Dim>* exchange_grid() const;
+  const SurfaceGrid<Dim>* surface() const;
+  const std::vector<BodyRole>& roles() const;
+  const CouplingDiagnostics<Dim>& diagnostics() const;
+
+ private:
+  struct State;
+  std::shared_ptr<State> state_;
+};
+
+// The production glue: a coupling over a cosim::Participant (coupled or
+// standalone). The participant must outlive the coupling.
+template <int Dim>
+std::unique_ptr<MpmCoupling<Dim>> attach_coupling(Solver<Dim>& solver, cosim::Participant& participant,
+                                                  const CouplingSpec& spec);
+
+extern template class MpmCoupling<2>;
+extern template class MpmCoupling<3>;
+
+}  // namespace mpm::coupling

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "mpm/coupling/body_roles.hpp"
+#include "mpm/coupling/exchange_grid.hpp"
+#include "mpm/particles/particles.hpp"
+
+namespace mpm::coupling {
+
+// The solid phase per exchange cell, as the coupler's implicit momentum
+// exchange reads it (Tran et al., MPMICE, eqs. 7 and 131; DESIGN.md §4).
+// With w_pc the conservative weights of ExchangeGrid and V_c the cell volume:
+//   phi_s       = sum_p (1 - n_p) V_p w_pc / V_c      (capped at 1)
+//   rho_bar_s   = sum_p m_p w_pc / V_c                 (m_p is the solid mass)
+//   u_s         = sum_p m_p v_p w_pc / sum_p m_p w_pc
+//   kappa, D50  = mass-weighted means over the porous particles (each
+//                 particle's permeability follows its porosity, Pan et al.
+//                 2021, eq. 76); 0 where no porous particle reaches the cell.
+// A cell is held when more than half of its solid mass (of its volume, for
+// massless rigid bodies) belongs to held particles; its rho_bar_s is
+// written as held_density_factor x max(rho_bar_s, 1 kg/m^3), which makes the
+// exchange's solid velocity increment dt K / rho_bar_s vanish.
+struct PorousFields {
+  std::vector<double> solid_fraction;
+  std::vector<double> solid_velocity;  // Dim per cell, cell-major
+  std::vector<double> solid_bulk_density;
+  std::vector<double> permeability;
+  std::vector<double> grain_size;
+  std::vector<std::uint8_t> held;
+  std::size_t capped_cells = 0;  // cells where phi_s exceeded 1 (overlapping particles)
+};
+
+template <int Dim>
+PorousFields porous_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& particles,
+                           const std::vector<BodyRole>& roles, const std::vector<std::uint8_t>& held,
+                           double held_density_factor);
+
+}  // namespace mpm::coupling

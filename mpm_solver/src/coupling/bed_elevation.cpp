@@ -1,0 +1,105 @@
+#include "mpm/coupling/bed_elevation.hpp"
+
+#include <algorithm>
+#include <set>
+
+namespace mpm::coupling {
+
+namespace {
+
+struct Plateau {
+  double from, to, height;
+};
+
+// Adds weight x (cell average of the upper envelope of `plateaus`, the
+// bottom where none is) to out[0..n) for the n cells of width dx from x0.
+void add_envelope_averages(const std::vector<Plateau>& plateaus, double x0, double dx, int n,
+                           double bottom, double weight, double* out) {
+  const double x1 = x0 + n * dx;
+  struct Event {
+    double x;
+    bool start;
+    double height;
+  };
+  std::vector<Event> events;
+  events.reserve(2 * plateaus.size() + 2);
+  for (const Plateau& p : plateaus) {
+    const double a = std::max(p.from, x0), b = std::min(p.to, x1);
+    if (!(b > a)) continue;
+    events.push_back({a, true, p.height});
+    events.push_back({b, false, p.height});
+  }
+  std::sort(events.begin(), events.end(), [](const Event& l, const Event& r) { return l.x < r.x; });
+  std::multiset<double> active;
+  auto add_segment = [&](double a, double b, double value) {
+    if (!(b > a)) return;
+    int i = std::clamp(static_cast<int>(std::floor((a - x0) / dx)), 0, n - 1);
+    for (; i < n; ++i) {
+      const double lo = x0 + i * dx, hi = lo + dx;
+      if (lo >= b) break;
+      const double overlap = std::min(b, hi) - std::max(a, lo);
+      if (overlap > 0.0) out[i] += weight * value * overlap / dx;
+    }
+  };
+  double x = x0;
+  for (const Event& e : events) {
+    const double top = active.empty() ? bottom : std::max(bottom, *active.rbegin());
+    add_segment(x, e.x, top);
+    x = e.x;
+    if (e.start)
+      active.insert(e.height);
+    else
+      active.erase(active.find(e.height));
+  }
+  add_segment(x, x1, bottom);
+}
+
+}  // namespace
+
+template <int Dim>
+std::vector<double> bed_elevation(const SurfaceGrid<Dim>& surface, const Particles<Dim>& particles,
+                                  const std::vector<BodyRole>& roles, int strips) {
+  constexpr int up = Dim - 1;
+  std::vector<double> bed(surface.size(), 0.0);
+  auto plateau_of = [&](std::size_t p) {
+    const Vec<Dim>& x = particles.position[p];
+    const Vec<Dim>& l = particles.half_length[p];
+    return Plateau{x[0] - l[0], x[0] + l[0], x[up] + l[up]};
+  };
+  if constexpr (Dim == 2) {
+    std::vector<Plateau> plateaus;
+    for (std::size_t p = 0; p < particles.size(); ++p)
+      if (roles[particles.body[p]].bed) plateaus.push_back(plateau_of(p));
+    add_envelope_averages(plateaus, surface.origin[0], surface.spacing[0], surface.cells[0], surface.bottom, 1.0,
+                          bed.data());
+  } else {
+    // Lines across y at the centres of `strips` equal strips of every row of cells.
+    const int rows = surface.cells[1];
+    const int lines = rows * strips;
+    const double dy = surface.spacing[1] / strips;
+    std::vector<std::vector<Plateau>> on_line(static_cast<std::size_t>(lines));
+    for (std::size_t p = 0; p < particles.size(); ++p) {
+      if (!roles[particles.body[p]].bed) continue;
+      const double y = particles.position[p][1], ly = particles.half_length[p][1];
+      // Lines k with y_k = y0 + (k + 1/2) dy inside [y - ly, y + ly].
+      const double s0 = (y - ly - surface.origin[1]) / dy - 0.5;
+      const double s1 = (y + ly - surface.origin[1]) / dy - 0.5;
+      const int first = std::max(0, static_cast<int>(std::ceil(s0)));
+      const int last = std::min(lines - 1, static_cast<int>(std::floor(s1)));
+      for (int k = first; k <= last; ++k) on_line[static_cast<std::size_t>(k)].push_back(plateau_of(p));
+    }
+    const auto nx = static_cast<std::size_t>(surface.cells[0]);
+    for (int k = 0; k < lines; ++k)
+      add_envelope_averages(on_line[static_cast<std::size_t>(k)], surface.origin[0], surface.spacing[0],
+                            surface.cells[0], surface.bottom, 1.0 / strips,
+                            bed.data() + static_cast<std::size_t>(k / strips) * nx);
+  }
+  return bed;
+}
+
+template std::vector<double> bed_elevation<2>(const SurfaceGrid<2>&, const Particles<2>&,
+                                              const std::vector<BodyRole>&, int);
+template std::vector<double> bed_elevation<3>(const SurfaceGrid<3>&, const Particles<3>&,
+                                              const std::vector<BodyRole>&, int);
+
+}  // namespace mpm::coupling

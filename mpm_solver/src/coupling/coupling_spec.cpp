@@ -1,0 +1,123 @@
+#include "mpm/coupling/coupling_spec.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "mpm/coupling/field_names.hpp"
+
+namespace mpm::coupling {
+
+namespace {
+
+using cosim::config::Node;
+using cosim::config::Schema;
+
+bool contains(const std::vector<std::string>& list, const std::string& item) {
+  return std::find(list.begin(), list.end(), item) != list.end();
+}
+
+Schema field_list(std::vector<std::string> choices) {
+  return Schema::sequence(Schema::one_of(std::move(choices)));
+}
+
+Schema exchange_grid_schema() {
+  Schema s = Schema::object(
+      "Porous soil <-> a fluid on the cell-centred grid 'mpm_grid' over the MPM grid "
+      "(Tran et al., MPMICE, eq. 7; the coupler's implicit momentum exchange).");
+  s.optional("factor", Schema::integer().range(1, 64).default_value("1"),
+             "MPM cells per exchange cell in each direction.")
+      .optional("writes",
+                field_list({names::solid_fraction, names::solid_velocity, names::solid_bulk_density,
+                            names::permeability, names::grain_size})
+                    .default_value("[solid_fraction, solid_velocity, solid_bulk_density, "
+                                   "permeability, grain_size]"),
+                "Fields written per cell at every window end.")
+      .optional("reads",
+                field_list({names::pore_pressure, names::impulse})
+                    .default_value("[pore_pressure, momentum_exchange_impulse]"),
+                "Fields read; the job must send each of them.")
+      .optional("held_density_factor", Schema::number().range(1.0, 1e100).default_value("1e30"),
+                "Factor on solid_bulk_density in cells whose solid cannot take the exchange "
+                "impulse (rigid bodies, held bodies, fixed faces).")
+      .optional("hold_at_fixed_faces", Schema::boolean().default_value("true"),
+                "Count the particles in the MPM cells along fixed grid faces as held.")
+      .optional("held_bodies", Schema::sequence(Schema::string().non_empty()).default_value("[]"),
+                "Bodies the exchange treats as immovable.")
+      .optional("initial_pore_pressure", Schema::number().unit("Pa").default_value("0"),
+                "Pore pressure until the first exchange (and standalone).");
+  return s;
+}
+
+Schema surface_schema() {
+  Schema s = Schema::object(
+      "Seabed <-> shallow water on the cell-centred grid 'mpm_surface' over the MPM grid's "
+      "horizontal extent (Zheng et al., Sec. 2-3, Algorithm 1).");
+  s.required("cells", Schema::vector(1, 2), "Cells per horizontal direction (Dim - 1 entries).")
+      .optional("writes", field_list({names::bed_elevation}).default_value("[bed_elevation]"),
+                "Fields written per surface cell at every window end.")
+      .optional("reads", field_list({names::bed_traction}).default_value("[bed_traction]"),
+                "Fields read; the job must send each of them.")
+      .optional("bed_bodies", Schema::sequence(Schema::string().non_empty()).default_value("[]"),
+                "Bodies whose particles form the bed; empty: every body.")
+      .optional("strips", Schema::integer().range(1, 64).default_value("4"),
+                "3D: lines across each surface cell in y along which the envelope is averaged.");
+  return s;
+}
+
+std::vector<std::string> strings_or(const Node& n, const char* key, std::vector<std::string> fallback) {
+  auto child = n.find(key);
+  return child ? child->as<std::vector<std::string>>() : fallback;
+}
+
+}  // namespace
+
+bool ExchangeGridSpec::writes_field(const std::string& f) const { return contains(writes, f); }
+bool ExchangeGridSpec::reads_field(const std::string& f) const { return contains(reads, f); }
+bool SurfaceSpec::writes_field(const std::string& f) const { return contains(writes, f); }
+bool SurfaceSpec::reads_field(const std::string& f) const { return contains(reads, f); }
+
+Schema coupling_schema() {
+  Schema s = Schema::object(
+      "Coupling of the MPM to other solvers through cosim (used when the solver is started "
+      "by `cosim run`; standalone the reads keep their defaults).");
+  s.optional("exchange_grid", exchange_grid_schema(), "Porous-medium exchange with a fluid.")
+      .optional("surface", surface_schema(), "Bed exchange with a shallow-water solver.");
+  return s;
+}
+
+CouplingSpec read_coupling(const Node& node, int dimension) {
+  coupling_schema().validate(node);
+  CouplingSpec spec;
+  if (auto g = node.find("exchange_grid")) {
+    ExchangeGridSpec e;
+    e.factor = g->get<int>("factor", 1);
+    e.writes = strings_or(*g, "writes",
+                          {names::solid_fraction, names::solid_velocity, names::solid_bulk_density,
+                           names::permeability, names::grain_size});
+    e.reads = strings_or(*g, "reads", {names::pore_pressure, names::impulse});
+    e.held_density_factor = g->get<double>("held_density_factor", 1e30);
+    e.hold_at_fixed_faces = g->get<bool>("hold_at_fixed_faces", true);
+    e.held_bodies = strings_or(*g, "held_bodies", {});
+    e.initial_pore_pressure = g->get<double>("initial_pore_pressure", 0.0);
+    spec.exchange_grid = std::move(e);
+  }
+  if (auto n = node.find("surface")) {
+    SurfaceSpec s;
+    const Node cells = (*n)["cells"];
+    s.cells = cells.as<std::vector<int>>();
+    for (int c : s.cells)
+      if (c < 1) cells.fail(fmt::format("cell counts must be positive, got {}", c));
+    if (dimension >= 2 && static_cast<int>(s.cells.size()) != dimension - 1)
+      cells.fail(fmt::format("a {}D case has {} horizontal direction(s), got {} cell count(s)",
+                             dimension, dimension - 1, s.cells.size()));
+    s.writes = strings_or(*n, "writes", {names::bed_elevation});
+    s.reads = strings_or(*n, "reads", {names::bed_traction});
+    s.bed_bodies = strings_or(*n, "bed_bodies", {});
+    s.strips = n->get<int>("strips", 4);
+    spec.surface = std::move(s);
+  }
+  return spec;
+}
+
+}  // namespace mpm::coupling

@@ -1,0 +1,242 @@
+#include "mpm/coupling/mpm_coupling.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "cosim/error.hpp"
+#include "cosim/participant.hpp"
+#include "mpm/coupling/bed_elevation.hpp"
+#include "mpm/coupling/field_names.hpp"
+#include "mpm/coupling/pore_pressure_force.hpp"
+#include "mpm/coupling/porous_fields_writer.hpp"
+
+namespace mpm::coupling {
+
+namespace {
+
+cosim::FieldSpec field(const char* name, const char* mesh, int components, const char* unit,
+                       cosim::Quantity quantity = cosim::Quantity::intensive,
+                       cosim::TimeTreatment time = cosim::TimeTreatment::state) {
+  cosim::FieldSpec f;
+  f.name = name;
+  f.mesh = mesh;
+  f.components = components;
+  f.unit = unit;
+  f.quantity = quantity;
+  f.time = time;
+  return f;
+}
+
+template <int Dim>
+std::span<const double> flat(const std::vector<Vec<Dim>>& v) {
+  return {v.empty() ? nullptr : v.front().data(), v.size() * static_cast<std::size_t>(Dim)};
+}
+
+}  // namespace
+
+template <int Dim>
+struct MpmCoupling<Dim>::State {
+  Solver<Dim>& solver;
+  std::unique_ptr<CouplingChannel> channel;
+  CouplingSpec spec;
+  std::vector<BodyRole> roles;
+  std::optional<ExchangeGrid<Dim>> exchange;
+  std::optional<SurfaceGrid<Dim>> surface;
+  CouplingDiagnostics<Dim> diagnostics;
+
+  // Prepared by before_step for the solver's next step.
+  bool armed = false;
+  bool ends_window = false;
+  double step_dt = 0.0;
+  std::vector<double> cell_values;     // scratch for reads
+  std::vector<Vec<Dim>> scratch;       // per particle
+  std::vector<Vec<Dim>> force;         // per particle [N]
+
+  State(Solver<Dim>& s, std::unique_ptr<CouplingChannel> c, CouplingSpec sp)
+      : solver(s), channel(std::move(c)), spec(std::move(sp)) {}
+
+  bool exchange_writes(const char* f) const { return spec.exchange_grid && spec.exchange_grid->writes_field(f); }
+  bool exchange_reads(const char* f) const { return spec.exchange_grid && spec.exchange_grid->reads_field(f); }
+  bool surface_writes(const char* f) const { return spec.surface && spec.surface->writes_field(f); }
+  bool surface_reads(const char* f) const { return spec.surface && spec.surface->reads_field(f); }
+
+  void add_to_force(const std::vector<Vec<Dim>>& f, double scale) {
+    for (std::size_t p = 0; p < force.size(); ++p) force[p] += scale * f[p];
+  }
+
+  void apply(double dt, Particles<Dim>& particles) {
+    if (!armed) return;
+    armed = false;
+    if (dt != step_dt)
+      throw std::logic_error(fmt::format(
+          "MpmCoupling: before_step prepared a step of {} s, the solver took {} s", step_dt, dt));
+    for (std::size_t p = 0; p < particles.size(); ++p) particles.external_force[p] += force[p];
+  }
+};
+
+template <int Dim>
+MpmCoupling<Dim>::MpmCoupling(Solver<Dim>& solver, std::unique_ptr<CouplingChannel> channel, CouplingSpec spec)
+    : state_(std::make_shared<State>(solver, std::move(channel), std::move(spec))) {
+  State& s = *state_;
+  s.roles = body_roles(solver.description(), s.spec);
+  if (s.spec.exchange_grid) s.exchange = ExchangeGrid<Dim>::covering(solver.grid(), s.spec.exchange_grid->factor);
+  if (s.spec.surface) {
+    const auto& cells = s.spec.surface->cells;
+    if (static_cast<int>(cells.size()) != Dim - 1)
+      throw cosim::InputError(fmt::format("{}: key 'coupling.surface.cells': a {}D case has {} horizontal "
+                                          "direction(s), got {} cell count(s)",
+                                          solver.description().file.string(), Dim, Dim - 1, cells.size()));
+    std::array<int, Dim - 1> n{};
+    for (std::size_t d = 0; d + 1 < Dim; ++d) n[d] = cells[d];
+    s.surface = SurfaceGrid<Dim>::covering(solver.grid(), n);
+  }
+  std::shared_ptr<State> shared = state_;
+  solver.add_particle_force_source(
+      [shared](double, double dt, Particles<Dim>& particles) { shared->apply(dt, particles); });
+}
+
+template <int Dim>
+MpmCoupling<Dim>::~MpmCoupling() = default;
+
+template <int Dim>
+void MpmCoupling<Dim>::declare() {
+  State& s = *state_;
+  namespace n = names;
+  using cosim::Quantity;
+  using cosim::TimeTreatment;
+  if (s.exchange) {
+    s.channel->declare_mesh({n::exchange_mesh, s.exchange->mesh()});
+    auto write = [&](const char* name, int components, const char* unit, double lo) {
+      if (!s.exchange_writes(name)) return;
+      cosim::FieldSpec f = field(name, n::exchange_mesh, components, unit);
+      f.lower_bound = lo;
+      if (name == std::string(n::solid_fraction)) f.upper_bound = 1.0;
+      s.channel->declare_write(f);
+    };
+    const double none = -std::numeric_limits<double>::infinity();
+    write(n::solid_fraction, 1, "1", 0.0);
+    write(n::solid_velocity, Dim, "m/s", none);
+    write(n::solid_bulk_density, 1, "kg/m^3", 0.0);
+    write(n::permeability, 1, "m^2", 0.0);
+    write(n::grain_size, 1, "m", 0.0);
+    if (s.exchange_reads(n::pore_pressure))
+      s.channel->declare_read(field(n::pore_pressure, n::exchange_mesh, 1, "Pa"),
+                              s.spec.exchange_grid->initial_pore_pressure);
+    if (s.exchange_reads(n::impulse))
+      s.channel->declare_read(
+          field(n::impulse, n::exchange_mesh, Dim, "kg m/s", Quantity::extensive, TimeTreatment::integral), 0.0);
+  }
+  if (s.surface) {
+    s.channel->declare_mesh({n::surface_mesh, s.surface->mesh()});
+    if (s.surface_writes(n::bed_elevation))
+      s.channel->declare_write(field(n::bed_elevation, n::surface_mesh, 1, "m"));
+    if (s.surface_reads(n::bed_traction))
+      s.channel->declare_read(field(n::bed_traction, n::surface_mesh, Dim, "Pa"), 0.0);
+  }
+  write_fields();
+}
+
+template <int Dim>
+double MpmCoupling<Dim>::max_time_step() const {
+  return state_->channel->max_time_step();
+}
+
+template <int Dim>
+void MpmCoupling<Dim>::before_step(double dt) {
+  State& s = *state_;
+  namespace n = names;
+  Particles<Dim>& particles = s.solver.particles();
+  s.ends_window = dt >= s.channel->max_time_step() - 1e-9 * s.channel->window_size();
+  s.force.assign(particles.size(), Vec<Dim>::Zero());
+  if (s.exchange_reads(n::pore_pressure)) {
+    s.cell_values.resize(s.exchange->size());
+    s.channel->read(n::pore_pressure, s.cell_values);
+    s.diagnostics.pore_pressure_force = pore_pressure_force(*s.exchange, s.cell_values, particles, s.roles, s.scratch);
+    s.add_to_force(s.scratch, 1.0);
+  }
+  if (s.exchange_reads(n::impulse)) {
+    s.cell_values.resize(s.exchange->size() * static_cast<std::size_t>(Dim));
+    s.channel->read_increment(n::impulse, dt, s.cell_values);
+    const auto split = split_impulse(*s.exchange, s.cell_values, particles, s.roles, s.scratch);
+    s.diagnostics.impulse_step = split;
+    s.diagnostics.impulse_total.received += split.received;
+    s.diagnostics.impulse_total.applied += split.applied;
+    s.diagnostics.impulse_total.absorbed += split.absorbed;
+    s.add_to_force(s.scratch, 1.0 / dt);
+  }
+  if (s.surface_reads(n::bed_traction)) {
+    s.cell_values.resize(s.surface->size() * static_cast<std::size_t>(Dim));
+    s.channel->read(n::bed_traction, s.cell_values);
+    s.diagnostics.traction_step = surface_traction(*s.surface, s.cell_values, particles, s.roles, s.scratch);
+    s.add_to_force(s.scratch, 1.0);
+  }
+  s.step_dt = dt;
+  s.armed = true;
+}
+
+template <int Dim>
+void MpmCoupling<Dim>::after_step(double /*dt*/) {
+  if (state_->ends_window) write_fields();
+  state_->ends_window = false;
+}
+
+template <int Dim>
+void MpmCoupling<Dim>::write_fields() {
+  State& s = *state_;
+  namespace n = names;
+  const Particles<Dim>& particles = s.solver.particles();
+  if (s.exchange && !s.spec.exchange_grid->writes.empty()) {
+    const auto& g = *s.spec.exchange_grid;
+    const auto held = held_particles(particles, s.solver.grid(), s.roles, s.solver.description().boundaries,
+                                     g.hold_at_fixed_faces);
+    const PorousFields f = porous_fields(*s.exchange, particles, s.roles, held, g.held_density_factor);
+    if (f.capped_cells > 0)
+      spdlog::warn("mpm coupling: solid fraction above 1 capped in {} exchange cell(s) at t = {:.6g} s",
+                   f.capped_cells, s.solver.time());
+    s.diagnostics.capped_solid_fraction_cells += f.capped_cells;
+    s.diagnostics.held_cells = static_cast<std::size_t>(std::count(f.held.begin(), f.held.end(), 1));
+    if (s.exchange_writes(n::solid_fraction)) s.channel->write(n::solid_fraction, f.solid_fraction);
+    if (s.exchange_writes(n::solid_velocity)) s.channel->write(n::solid_velocity, f.solid_velocity);
+    if (s.exchange_writes(n::solid_bulk_density)) s.channel->write(n::solid_bulk_density, f.solid_bulk_density);
+    if (s.exchange_writes(n::permeability)) s.channel->write(n::permeability, f.permeability);
+    if (s.exchange_writes(n::grain_size)) s.channel->write(n::grain_size, f.grain_size);
+  }
+  if (s.surface && s.surface_writes(n::bed_elevation))
+    s.channel->write(n::bed_elevation, bed_elevation(*s.surface, particles, s.roles, s.spec.surface->strips));
+  ++s.diagnostics.writes;
+}
+
+template <int Dim>
+const ExchangeGrid<Dim>* MpmCoupling<Dim>::exchange_grid() const {
+  return state_->exchange ? &*state_->exchange : nullptr;
+}
+template <int Dim>
+const SurfaceGrid<Dim>* MpmCoupling<Dim>::surface() const {
+  return state_->surface ? &*state_->surface : nullptr;
+}
+template <int Dim>
+const std::vector<BodyRole>& MpmCoupling<Dim>::roles() const {
+  return state_->roles;
+}
+template <int Dim>
+const CouplingDiagnostics<Dim>& MpmCoupling<Dim>::diagnostics() const {
+  return state_->diagnostics;
+}
+
+template <int Dim>
+std::unique_ptr<MpmCoupling<Dim>> attach_coupling(Solver<Dim>& solver, cosim::Participant& participant,
+                                                  const CouplingSpec& spec) {
+  return std::make_unique<MpmCoupling<Dim>>(solver, std::make_unique<ParticipantChannel>(participant), spec);
+}
+
+template class MpmCoupling<2>;
+template class MpmCoupling<3>;
+template std::unique_ptr<MpmCoupling<2>> attach_coupling<2>(Solver<2>&, cosim::Participant&, const CouplingSpec&);
+template std::unique_ptr<MpmCoupling<3>> attach_coupling<3>(Solver<3>&, cosim::Participant&, const CouplingSpec&);
+
+}  // namespace mpm::coupling
