@@ -1,5 +1,6 @@
 #pragma once
 
+#include <concepts>
 #include <string_view>
 
 // Shape functions of the background grid. Every shape is a tensor product of
@@ -17,6 +18,12 @@
 //   // grid get no weight and the weights still sum to 1.
 //   static int evaluate(double xi, double half_length, int cells, double* N, double* dN);
 //
+// Kernels clamp xi to [0, cells] (a point that left the grid is weighed as
+// if it sat on the face), so the solver must remove or stop such points.
+// The kernels are LinearKernel, GimpKernel and QuadraticBsplineKernel
+// (mpm/shape/*_kernel.hpp); Stencil (stencil.hpp) forms their tensor
+// products and with_kernel (shape_dispatch.hpp) picks one for a ShapeKind.
+//
 // The grid values ("nodes") are the grid nodes for the linear and GIMP
 // kernels and the control points of the open-knot B-spline (at the Greville
 // abscissae: both faces and every cell centre) for the quadratic B-spline.
@@ -31,5 +38,13 @@ enum class ShapeKind {
 };
 
 std::string_view to_string(ShapeKind kind);
+
+template <class K>
+concept ShapeKernel = requires(double xi, double half_length, int cells, double* N, double* dN) {
+  { K::support } -> std::convertible_to<int>;
+  { K::dofs(cells) } -> std::same_as<int>;
+  { K::dof_coordinate(cells, cells) } -> std::same_as<double>;
+  { K::evaluate(xi, half_length, cells, N, dN) } -> std::same_as<int>;
+};
 
 }  // namespace mpm
