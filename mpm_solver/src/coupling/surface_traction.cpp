@@ -26,7 +26,8 @@ TractionTotals<Dim> surface_traction(const SurfaceGrid<Dim>& surface, std::span<
     highest[column[p]] = std::max(highest[column[p]], top(p));
   }
   auto on_surface = [&](std::size_t p) {
-    return takes_traction(p) && top(p) >= highest[column[p]] - 2.0 * particles.half_length[p][up];
+    // Strictly less than one particle height below, so a regular layer under the top one is out.
+    return takes_traction(p) && highest[column[p]] - top(p) < 2.0 * particles.half_length[p][up] * (1.0 - 1e-9);
   };
   auto face_area = [&](std::size_t p) { return particles.initial_volume[p] / (2.0 * particles.half_length[p][up]); };
 

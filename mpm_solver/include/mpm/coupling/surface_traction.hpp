@@ -23,7 +23,8 @@ struct TractionTotals {
 // surface traction on the bed's surface particles (Zheng et al., eq. 12).
 // A particle belongs to the column holding its centre; the column's surface
 // particles are its deformable bed particles whose domain top z_p + l_p lies
-// within one particle height 2 l_p of the column's highest top. Each
+// less than one particle height 2 l_p below the column's highest top (the
+// top layer; a regular layer below it is exactly 2 l_p lower and left out). Each
 // column's force F_c = t_c A_c is split over them by their face area
 // a_p = V0_p / (2 l_p) (as the solver's surface loads), so the forces sum
 // to F_c exactly:

@@ -1,0 +1,101 @@
+// The exchange impulse is split over the particles by mass and applied in
+// full over a window.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "mock_channel.hpp"
+#include "mpm/coupling/exchange_grid.hpp"
+#include "mpm/coupling/field_names.hpp"
+#include "mpm/coupling/momentum_exchange_increment.hpp"
+#include "particle_fixtures.hpp"
+
+namespace mpm::coupling {
+namespace {
+
+TEST(MpmCouplingImpulse, SplitOverParticlesConservesEachCellsImpulse) {
+  const Grid<3> g = make_grid<3>(Vec<3>::Zero(), Vec<3>::Constant(0.25), {4, 4, 4}, ShapeKind::linear);
+  const auto grid = ExchangeGrid<3>::covering(g, 1);
+  // Particles everywhere, so every cell holds solid.
+  auto particles = testing::random_particles<3>(2000, Vec<3>::Zero(), Vec<3>::Ones(), 5);
+  const auto roles = testing::porous_roles();
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<double> impulse(grid.size() * 3);
+  for (double& j : impulse) j = u(rng);
+  std::vector<Vec<3>> particle_impulse;
+  const auto split = split_impulse(grid, impulse, particles, roles, particle_impulse);
+  Vec<3> sum = Vec<3>::Zero();
+  for (const auto& j : particle_impulse) sum += j;
+  const double error = (sum - split.received).norm() / split.received.norm();
+  std::printf("  sum over particles vs cells: relative error %.2e (tol 1e-12)\n", error);
+  EXPECT_LT(error, 1e-12);
+  EXPECT_EQ(split.absorbed.norm(), 0.0);
+  EXPECT_LT((split.applied - sum).norm(), 1e-15 * sum.norm() + 1e-300);
+}
+
+TEST(MpmCouplingImpulse, CellsWithoutDeformableSolidAbsorbTheirImpulse) {
+  const Grid<2> g = make_grid<2>(Vec<2>::Zero(), Vec<2>::Constant(0.25), {4, 4}, ShapeKind::linear);
+  const auto grid = ExchangeGrid<2>::covering(g, 1);
+  Particles<2> particles;
+  testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.25), 0.125, 0.0, 7800.0, 0);  // rigid floor
+  testing::add_block<2>(particles, Vec<2>(0.0, 0.25), Vec<2>(1.0, 0.5), 0.125, 0.4, 2650.0, 1);
+  auto roles = testing::porous_roles(2);
+  roles[0].rigid = roles[0].held = true;
+  std::vector<double> impulse(grid.size() * 2, 0.0);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) impulse[grid.flat({i, j}) * 2 + 1] = 1.0;  // 1 kg m/s up in every cell
+  std::vector<Vec<2>> particle_impulse;
+  const auto split = split_impulse(grid, impulse, particles, roles, particle_impulse);
+  for (std::size_t p = 0; p < particles.size(); ++p)
+    if (particles.body[p] == 0) {
+      EXPECT_EQ(particle_impulse[p].norm(), 0.0);
+    }
+  // Rows 0..2 hold soil weight (the soil's lowest particles reach row 0's centre region), row 3 none.
+  EXPECT_NEAR(split.received[1], 16.0, 1e-12);
+  EXPECT_NEAR(split.applied[1] + split.absorbed[1], split.received[1], 1e-12);
+  EXPECT_NEAR(split.absorbed[1], 4.0, 1e-12);
+}
+
+TEST(MpmCouplingImpulse, StepSharesOverAWindowAddUpToTheReceivedImpulse) {
+  const Grid<2> g = make_grid<2>(Vec<2>::Zero(), Vec<2>::Constant(0.1), {10, 10}, ShapeKind::linear);
+  const auto grid = ExchangeGrid<2>::covering(g, 1);
+  auto particles = testing::random_particles<2>(800, Vec<2>::Zero(), Vec<2>::Ones(), 21);
+  const auto roles = testing::porous_roles();
+  testing::MockChannel channel;
+  channel.window = 1e-3;
+  channel.declare_mesh({names::exchange_mesh, grid.mesh()});
+  cosim::FieldSpec spec{.name = names::impulse, .mesh = names::exchange_mesh, .components = 2, .unit = "kg m/s",
+                        .quantity = cosim::Quantity::extensive, .time = cosim::TimeTreatment::integral};
+  channel.declare_read(spec, 0.0);
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<double> window_impulse(grid.size() * 2);
+  for (double& j : window_impulse) j = u(rng);
+  channel.set(names::impulse, window_impulse);
+  Vec<2> received = Vec<2>::Zero();
+  for (std::size_t c = 0; c < grid.size(); ++c) received += Vec<2>(window_impulse[2 * c], window_impulse[2 * c + 1]);
+
+  Vec<2> applied = Vec<2>::Zero();
+  std::vector<double> step(grid.size() * 2);
+  std::vector<Vec<2>> particle_impulse;
+  int steps = 0;
+  while (channel.max_time_step() > 0.0 && steps < 1000) {
+    const double dt = std::min(0.7e-4 * (1.0 + 0.3 * std::sin(steps)), channel.max_time_step());
+    channel.read_increment(names::impulse, dt, step);
+    split_impulse(grid, step, particles, roles, particle_impulse);
+    for (const auto& j : particle_impulse) applied += j;
+    for (std::size_t p = 0; p < particles.size(); ++p) particles.position[p][0] = std::fmod(particles.position[p][0] + 0.013, 1.0);
+    const bool last = dt >= channel.max_time_step() - 1e-12;
+    channel.advance(dt);
+    ++steps;
+    if (last) break;
+  }
+  const double error = (applied - received).norm() / received.norm();
+  std::printf("  %d steps: applied over the window vs received: relative error %.2e (tol 1e-12)\n", steps, error);
+  EXPECT_GT(steps, 5);
+  EXPECT_LT(error, 1e-12);
+}
+
+}  // namespace
+}  // namespace mpm::coupling
