@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <stdexcept>
 #include <string>
 
 #include "cosim/error.hpp"
@@ -49,10 +48,6 @@ struct MpmCoupling<Dim>::State {
   std::optional<SurfaceGrid<Dim>> surface;
   CouplingDiagnostics<Dim> diagnostics;
 
-  // Prepared by before_step for the solver's next step.
-  bool armed = false;
-  bool ends_window = false;
-  double step_dt = 0.0;
   std::vector<double> cell_values;     // scratch for reads
   std::vector<Vec<Dim>> scratch;       // per particle
   std::vector<Vec<Dim>> force;         // per particle [N]
@@ -69,15 +64,39 @@ struct MpmCoupling<Dim>::State {
     for (std::size_t p = 0; p < force.size(); ++p) force[p] += scale * f[p];
   }
 
-  void apply(double dt, Particles<Dim>& particles) {
-    if (!armed) return;
-    armed = false;
-    if (dt != step_dt)
-      throw std::logic_error(fmt::format(
-          "MpmCoupling: before_step prepared a step of {} s, the solver took {} s", step_dt, dt));
-    for (std::size_t p = 0; p < particles.size(); ++p) particles.external_force[p] += force[p];
-  }
+  // The solver's particle force source: reads what the partner sent for
+  // this step of dt and adds it to the particles' external force.
+  void apply(double dt, Particles<Dim>& particles);
 };
+
+template <int Dim>
+void MpmCoupling<Dim>::State::apply(double dt, Particles<Dim>& particles) {
+  namespace n = names;
+  force.assign(particles.size(), Vec<Dim>::Zero());
+  if (exchange_reads(n::pore_pressure)) {
+    cell_values.resize(exchange->size());
+    channel->read(n::pore_pressure, cell_values);
+    diagnostics.pore_pressure_force = pore_pressure_force(*exchange, cell_values, particles, roles, scratch);
+    add_to_force(scratch, 1.0);
+  }
+  if (exchange_reads(n::impulse)) {
+    cell_values.resize(exchange->size() * static_cast<std::size_t>(Dim));
+    channel->read_increment(n::impulse, dt, cell_values);
+    const auto split = split_impulse(*exchange, cell_values, particles, roles, scratch);
+    diagnostics.impulse_step = split;
+    diagnostics.impulse_total.received += split.received;
+    diagnostics.impulse_total.applied += split.applied;
+    diagnostics.impulse_total.absorbed += split.absorbed;
+    add_to_force(scratch, 1.0 / dt);
+  }
+  if (surface_reads(n::bed_traction)) {
+    cell_values.resize(surface->size() * static_cast<std::size_t>(Dim));
+    channel->read(n::bed_traction, cell_values);
+    diagnostics.traction_step = surface_traction(*surface, cell_values, particles, roles, scratch);
+    add_to_force(scratch, 1.0);
+  }
+  for (std::size_t p = 0; p < particles.size(); ++p) particles.external_force[p] += force[p];
+}
 
 template <int Dim>
 MpmCoupling<Dim>::MpmCoupling(Solver<Dim>& solver, std::unique_ptr<CouplingChannel> channel, CouplingSpec spec)
@@ -147,42 +166,9 @@ double MpmCoupling<Dim>::max_time_step() const {
 }
 
 template <int Dim>
-void MpmCoupling<Dim>::before_step(double dt) {
-  State& s = *state_;
-  namespace n = names;
-  Particles<Dim>& particles = s.solver.particles();
-  s.ends_window = dt >= s.channel->max_time_step() - 1e-9 * s.channel->window_size();
-  s.force.assign(particles.size(), Vec<Dim>::Zero());
-  if (s.exchange_reads(n::pore_pressure)) {
-    s.cell_values.resize(s.exchange->size());
-    s.channel->read(n::pore_pressure, s.cell_values);
-    s.diagnostics.pore_pressure_force = pore_pressure_force(*s.exchange, s.cell_values, particles, s.roles, s.scratch);
-    s.add_to_force(s.scratch, 1.0);
-  }
-  if (s.exchange_reads(n::impulse)) {
-    s.cell_values.resize(s.exchange->size() * static_cast<std::size_t>(Dim));
-    s.channel->read_increment(n::impulse, dt, s.cell_values);
-    const auto split = split_impulse(*s.exchange, s.cell_values, particles, s.roles, s.scratch);
-    s.diagnostics.impulse_step = split;
-    s.diagnostics.impulse_total.received += split.received;
-    s.diagnostics.impulse_total.applied += split.applied;
-    s.diagnostics.impulse_total.absorbed += split.absorbed;
-    s.add_to_force(s.scratch, 1.0 / dt);
-  }
-  if (s.surface_reads(n::bed_traction)) {
-    s.cell_values.resize(s.surface->size() * static_cast<std::size_t>(Dim));
-    s.channel->read(n::bed_traction, s.cell_values);
-    s.diagnostics.traction_step = surface_traction(*s.surface, s.cell_values, particles, s.roles, s.scratch);
-    s.add_to_force(s.scratch, 1.0);
-  }
-  s.step_dt = dt;
-  s.armed = true;
-}
-
-template <int Dim>
-void MpmCoupling<Dim>::after_step(double /*dt*/) {
-  if (state_->ends_window) write_fields();
-  state_->ends_window = false;
+void MpmCoupling<Dim>::after_step(double dt) {
+  const CouplingChannel& channel = *state_->channel;
+  if (dt >= channel.max_time_step() - 1e-9 * channel.window_size()) write_fields();
 }
 
 template <int Dim>

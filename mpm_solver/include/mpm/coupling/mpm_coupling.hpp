@@ -21,15 +21,17 @@ class Participant;
 // The MPM side of the coupling (DESIGN.md §3-4): what the solver writes to
 // and reads from the coupler, and how what it reads acts on the particles.
 //
-// Call order in the run loop:
+// Call order in the run loop (CouplingObserver runs exactly this inside
+// mpm::run_case):
 //
 //   auto coupling = mpm::coupling::attach_coupling(solver, participant, spec);
 //   coupling->declare();                      // meshes, fields, initial data (before initialize)
 //   participant.initialize(start, end);
 //   while (participant.is_coupling_ongoing()) {
 //     const double dt = std::min(solver.stable_time_step(), coupling->max_time_step());
-//     coupling->before_step(dt);              // reads: pore pressure, the step's impulse share, bed traction
-//     solver.step(dt);                        // its particle force source applies them
+//     solver.step(dt);                        // the coupling's force source reads the pore
+//                                             // pressure, the step's impulse share and the bed
+//                                             // traction, and applies them
 //     coupling->after_step(dt);               // writes, when this step ends the window
 //     participant.advance(dt);                // exchanges, when the window is complete
 //   }
@@ -43,10 +45,11 @@ class Participant;
 // bed_traction (surface_traction.hpp).
 //
 // Everything read acts through one particle force source registered on the
-// solver: for a step of dt the force on particle p is
+// solver, which runs at the start of each solver step (before the participant
+// advances): for a step of dt the force on particle p is
 //   -(1 - n_p) V_p grad p  +  J_p / dt  +  (bed traction share),
-// so the momentum it adds over the step is exactly the impulse share J_p.
-// A step the coupling did not prepare (no before_step) gets no coupling force.
+// so the momentum it adds over the step is exactly the impulse share J_p
+// (less what fixed grid faces and local damping remove).
 namespace mpm::coupling {
 
 template <int Dim>
@@ -74,7 +77,8 @@ class MpmCoupling {
   // initialize() as the initial data).
   void declare();
   double max_time_step() const;
-  void before_step(double dt);
+  // After solver.step(dt), before participant.advance(dt): writes the
+  // fields when this step ends the window.
   void after_step(double dt);
   // Writes every declared field from the current particles.
   void write_fields();

@@ -1,0 +1,96 @@
+#include "mpm/coupling/coupling_observer.hpp"
+
+#include "cosim/config/document.hpp"
+
+namespace mpm::coupling {
+
+namespace {
+
+template <int Dim>
+nlohmann::json vector_json(const Vec<Dim>& v) {
+  nlohmann::json a = nlohmann::json::array();
+  for (int k = 0; k < Dim; ++k) a.push_back(v[k]);
+  return a;
+}
+
+CouplingSpec coupling_spec_of(const CaseDescription& description) {
+  if (description.file.empty()) return {};
+  const auto document = cosim::config::Document::load_file(description.file);
+  const auto block = document.root().find("coupling");
+  if (!block || block->is_null()) return {};
+  return read_coupling(*block, description.dimension);
+}
+
+}  // namespace
+
+template <int Dim>
+CouplingObserver<Dim>::CouplingObserver(cosim::CouplingEndpoint endpoint, std::string name, CouplingSpec spec)
+    : endpoint_(std::move(endpoint)), name_(std::move(name)), spec_(std::move(spec)) {}
+
+template <int Dim>
+void CouplingObserver<Dim>::initialize(Solver<Dim>& solver) {
+  participant_ = std::make_unique<cosim::Participant>(endpoint_.name_or(name_), endpoint_);
+  coupling_ = attach_coupling(solver, *participant_, spec_);
+  coupling_->declare();
+  participant_->initialize(solver.time(), solver.description().time.end_time);
+}
+
+template <int Dim>
+double CouplingObserver<Dim>::max_time_step() const {
+  return participant_->max_time_step();
+}
+
+template <int Dim>
+void CouplingObserver<Dim>::after_step(Solver<Dim>& /*solver*/, double dt) {
+  coupling_->after_step(dt);
+  participant_->advance(dt);
+}
+
+template <int Dim>
+bool CouplingObserver<Dim>::is_ongoing() const {
+  return participant_ && participant_->is_coupling_ongoing();
+}
+
+template <int Dim>
+void CouplingObserver<Dim>::finalize() {
+  if (participant_) participant_->finalize();
+}
+
+template <int Dim>
+void CouplingObserver<Dim>::abort(std::string_view reason) {
+  if (participant_) participant_->abort(reason);
+}
+
+template <int Dim>
+nlohmann::json CouplingObserver<Dim>::summary() const {
+  if (!participant_ || !coupling_) return nullptr;
+  const auto& t = participant_->timings();
+  const auto& d = coupling_->diagnostics();
+  return {{"participant", participant_->name()},
+          {"coupled", participant_->is_coupled()},
+          {"windows", t.windows},
+          {"waiting_s", t.waiting},
+          {"transport_s", t.transport},
+          {"writes", d.writes},
+          {"held_cells", d.held_cells},
+          {"capped_solid_fraction_cells", d.capped_solid_fraction_cells},
+          {"impulse_received", vector_json<Dim>(d.impulse_total.received)},
+          {"impulse_applied", vector_json<Dim>(d.impulse_total.applied)},
+          {"impulse_absorbed", vector_json<Dim>(d.impulse_total.absorbed)}};
+}
+
+StepObservers coupling_observers(const cosim::CouplingEndpoint& endpoint, const std::string& default_name) {
+  StepObservers observers;
+  observers.for_2d = [endpoint, default_name](const CaseDescription& d) -> std::unique_ptr<StepObserver<2>> {
+    return std::make_unique<CouplingObserver<2>>(endpoint, default_name, coupling_spec_of(d));
+  };
+  observers.for_3d = [endpoint, default_name](const CaseDescription& d) -> std::unique_ptr<StepObserver<3>> {
+    return std::make_unique<CouplingObserver<3>>(endpoint, default_name, coupling_spec_of(d));
+  };
+  return observers;
+}
+
+template class CouplingObserver<2>;
+template class CouplingObserver<3>;
+
+}  // namespace mpm::coupling

@@ -1,0 +1,198 @@
+// MpmCoupling on a real solver with a mock partner: declarations, the call
+// order, and what reaches the particles over whole windows.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../mpm_solver/case_builder.hpp"
+#include "mock_channel.hpp"
+#include "mpm/coupling/field_names.hpp"
+#include "mpm/coupling/mpm_coupling.hpp"
+
+namespace mpm::coupling {
+namespace {
+
+namespace n = names;
+
+CaseDescription floating_block_case() {
+  CaseDescription c = testing::empty_case(2, {8, 8, 1}, 0.125);
+  c.shape = ShapeKind::gimp;
+  c.materials.push_back(testing::elastic(2650.0, 1e6, 0.3));
+  BodySpec soil = testing::box_body("soil", 0, 2, Vec3d(0.25, 0.25, 0.0), Vec3d(0.75, 0.75, 0.0), 0.125, 2);
+  PorousSpec porous;
+  porous.porosity = 0.4;
+  porous.grain_size = 1e-3;
+  porous.permeability_model = PermeabilityModel::constant;
+  porous.permeability = 1e-10;
+  soil.porous = porous;
+  c.bodies.push_back(soil);
+  return c;
+}
+
+CouplingSpec both_blocks() {
+  CouplingSpec spec;
+  spec.exchange_grid = ExchangeGridSpec{};
+  spec.exchange_grid->writes = {n::solid_fraction, n::solid_velocity, n::solid_bulk_density, n::permeability,
+                                n::grain_size};
+  spec.exchange_grid->reads = {n::pore_pressure, n::impulse};
+  spec.surface = SurfaceSpec{};
+  spec.surface->cells = {4};
+  spec.surface->writes = {n::bed_elevation};
+  spec.surface->reads = {n::bed_traction};
+  return spec;
+}
+
+struct Rig {
+  Solver<2> solver;
+  testing::MockChannel* channel;
+  MpmCoupling<2> coupling;
+
+  explicit Rig(const CaseDescription& c, const CouplingSpec& spec, double window)
+      : solver(c), channel(new testing::MockChannel), coupling(solver, std::unique_ptr<CouplingChannel>(channel), spec) {
+    channel->window = window;
+    coupling.declare();
+  }
+  // The run loop of mpm_coupling.hpp, for one window.
+  int run_window(double dt) {
+    int steps = 0;
+    for (;;) {
+      const double step = std::min(dt, coupling.max_time_step());
+      const bool last = step >= coupling.max_time_step() - 1e-12;
+      solver.step(step);
+      coupling.after_step(step);
+      channel->advance(step);
+      ++steps;
+      if (last) return steps;
+    }
+  }
+};
+
+TEST(MpmCoupling, DeclaresTheMeshesAndFieldsAndWritesTheInitialData) {
+  Rig rig(floating_block_case(), both_blocks(), 1e-3);
+  const auto& ch = *rig.channel;
+  ASSERT_EQ(ch.meshes.size(), 2u);
+  const auto& grid = std::get<cosim::UniformGrid>(ch.meshes.at(n::exchange_mesh).geometry);
+  EXPECT_EQ(grid.dim, 2);
+  EXPECT_EQ(grid.cells[0], 8);
+  EXPECT_EQ(grid.location, cosim::GridLocation::cell);
+  const auto& surface = std::get<cosim::UniformGrid>(ch.meshes.at(n::surface_mesh).geometry);
+  EXPECT_EQ(surface.dim, 1);
+  EXPECT_EQ(surface.cells[0], 4);
+  EXPECT_DOUBLE_EQ(surface.spacing[0], 0.25);
+  EXPECT_EQ(ch.write_specs.size(), 6u);
+  EXPECT_EQ(ch.write_specs.at(n::solid_velocity).components, 2);
+  EXPECT_EQ(ch.write_specs.at(n::solid_fraction).upper_bound, 1.0);
+  const auto& impulse = ch.reads.at(n::impulse).spec;
+  EXPECT_EQ(impulse.components, 2);
+  EXPECT_EQ(impulse.quantity, cosim::Quantity::extensive);
+  EXPECT_EQ(impulse.time, cosim::TimeTreatment::integral);
+  EXPECT_EQ(ch.reads.at(n::bed_traction).spec.components, 2);
+  EXPECT_EQ(ch.reads.at(n::pore_pressure).spec.unit, "Pa");
+  for (const auto& [name, spec] : ch.write_specs) EXPECT_EQ(ch.write_count.at(name), 1) << name;
+  // The block [0.25, 0.75]^2: total solid volume and a bed at its top over the middle columns.
+  double solid_volume = 0.0;
+  for (double phi : ch.written.at(n::solid_fraction)) solid_volume += phi * 0.125 * 0.125;
+  EXPECT_NEAR(solid_volume, 0.6 * 0.25, 1e-12);
+  EXPECT_NEAR(ch.written.at(n::bed_elevation)[1], 0.75, 1e-12);
+  EXPECT_NEAR(ch.written.at(n::bed_elevation)[2], 0.75, 1e-12);
+  EXPECT_NEAR(ch.written.at(n::bed_elevation)[0], 0.0, 1e-12);  // empty: the grid bottom
+  EXPECT_NEAR(ch.written.at(n::bed_elevation)[3], 0.0, 1e-12);
+}
+
+TEST(MpmCoupling, WritesOnlyWhenAStepEndsTheWindow) {
+  Rig rig(floating_block_case(), both_blocks(), 1e-4);
+  const int steps = rig.run_window(0.3e-4);
+  EXPECT_EQ(steps, 4);
+  EXPECT_EQ(rig.channel->write_count.at(n::solid_fraction), 2);
+  EXPECT_EQ(rig.channel->write_count.at(n::bed_elevation), 2);
+  rig.run_window(0.3e-4);
+  EXPECT_EQ(rig.channel->write_count.at(n::solid_velocity), 3);
+  EXPECT_EQ(rig.coupling.diagnostics().writes, 3u);
+}
+
+TEST(MpmCoupling, ParticlesGainExactlyTheImpulseReceivedOverAWindow) {
+  CouplingSpec spec = both_blocks();
+  spec.surface.reset();
+  spec.exchange_grid->reads = {n::impulse};
+  Rig rig(floating_block_case(), spec, 1e-4);
+  std::vector<double> impulse(64 * 2, 0.0);
+  for (std::size_t c = 0; c < 64; ++c) {
+    impulse[2 * c] = 0.01 * std::sin(static_cast<double>(c));
+    impulse[2 * c + 1] = 0.02;
+  }
+  rig.channel->set(n::impulse, impulse);
+  const Vec<2> before = rig.solver.totals().momentum;
+  rig.run_window(0.35e-4);
+  const Vec<2> gained = rig.solver.totals().momentum - before;
+  const auto& d = rig.coupling.diagnostics();
+  const Vec<2> applied = d.impulse_total.applied;
+  // Cells the block's weights do not reach absorb theirs.
+  EXPECT_LT((applied + d.impulse_total.absorbed - d.impulse_total.received).norm(), 1e-14);
+  const double error = (gained - applied).norm() / applied.norm();
+  std::printf("  momentum gained %.9g, %.9g vs impulse applied %.9g, %.9g: relative error %.2e (tol 1e-12)\n",
+              gained[0], gained[1], applied[0], applied[1], error);
+  EXPECT_LT(error, 1e-12);
+  EXPECT_GT(applied.norm(), 0.5 * 0.02 * 16);  // most of the block's cells
+}
+
+TEST(MpmCoupling, HydrostaticPorePressureBuoysTheSolidVolume) {
+  CouplingSpec spec = both_blocks();
+  spec.surface.reset();
+  spec.exchange_grid->reads = {n::pore_pressure};
+  Rig rig(floating_block_case(), spec, 1e-4);
+  std::vector<double> p(64);
+  for (int j = 0; j < 8; ++j)
+    for (int i = 0; i < 8; ++i) p[static_cast<std::size_t>(j * 8 + i)] = 1000.0 * 9.81 * (1.0 - (j + 0.5) * 0.125);
+  rig.channel->set(n::pore_pressure, p);
+  rig.solver.step(1e-5);
+  Vec<2> force = Vec<2>::Zero();
+  for (const auto& f : rig.solver.particles().external_force) force += f;
+  const double buoyancy = 1000.0 * 9.81 * 0.6 * 0.25;
+  const double error = std::abs(force[1] - buoyancy) / buoyancy;
+  std::printf("  buoyancy %.9g N vs rho_w g (1-n) V = %.9g N: relative error %.2e (tol 1e-12)\n", force[1], buoyancy,
+              error);
+  EXPECT_LT(error, 1e-12);
+  EXPECT_NEAR(rig.solver.particles().pore_pressure[0], 1000.0 * 9.81 * (1.0 - 0.25 - 0.125 / 4), 1e-9);
+}
+
+TEST(MpmCoupling, BedTractionReachesTheSurfaceParticlesInFull) {
+  CouplingSpec spec = both_blocks();
+  spec.exchange_grid.reset();
+  Rig rig(floating_block_case(), spec, 1e-4);
+  rig.channel->set(n::bed_traction, {0.0, 0.0, 5.0, -100.0, 7.0, -120.0, 0.0, 0.0});
+  rig.solver.step(1e-5);
+  Vec<2> force = Vec<2>::Zero();
+  for (const auto& f : rig.solver.particles().external_force) force += f;
+  const Vec<2> expected = 0.25 * Vec<2>(12.0, -220.0);
+  EXPECT_LT((force - expected).norm(), 1e-12 * expected.norm());
+}
+
+TEST(MpmCoupling, RigidBodiesAreHeldInTheExchange) {
+  CaseDescription c = floating_block_case();
+  BodySpec floor = testing::box_body("floor", -1, 2, Vec3d(0.0, 0.0, 0.0), Vec3d(1.0, 0.25, 0.0), 0.125, 2);
+  floor.rigid = RigidMotion{};
+  floor.density_override = 7800.0;
+  c.bodies.push_back(floor);
+  CouplingSpec spec = both_blocks();
+  spec.exchange_grid->hold_at_fixed_faces = false;
+  Rig rig(c, spec, 1e-4);
+  const auto& rho = rig.channel->written.at(n::solid_bulk_density);
+  EXPECT_GT(rho[0], 1e30);        // the floor's cells
+  EXPECT_LT(rho[3 * 8 + 3], 1e4);  // the soil's
+  // Rows 0-1 under the floor, and the 4 cells of row 2 beside the soil that
+  // only the floor's top particles reach.
+  EXPECT_EQ(rig.coupling.diagnostics().held_cells, 20u);
+}
+
+TEST(MpmCoupling, UnknownBodyNamesAreInputErrors) {
+  CouplingSpec spec = both_blocks();
+  spec.exchange_grid->held_bodies = {"sand"};
+  Solver<2> solver(floating_block_case());
+  EXPECT_THROW(MpmCoupling<2>(solver, std::make_unique<testing::MockChannel>(), spec), cosim::InputError);
+  spec = both_blocks();
+  spec.surface->cells = {4, 4};
+  EXPECT_THROW(MpmCoupling<2>(solver, std::make_unique<testing::MockChannel>(), spec), cosim::InputError);
+}
+
+}  // namespace
+}  // namespace mpm::coupling
