@@ -1,0 +1,39 @@
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "cosim/io/snapshot_writer.hpp"
+#include "mpm/solver/solver.hpp"
+
+namespace mpm {
+
+// Grid snapshots (`<dir>/grid.xdmf`): the lumped mass [kg] and velocity
+// [m/s] of the last step on the grid nodes, summed (mass) and mass-averaged
+// (velocity) over the velocity fields of contact.
+//
+// Only for the linear and GIMP shapes, whose grid values are the nodal
+// values of the field. The quadratic B-spline's grid values are control
+// points at the Greville abscissae (faces and cell centres, a non-uniform
+// set), and a control point is not the field's value there; writing them as
+// a node-centred uniform grid would mislabel both position and meaning, so
+// supports() is false and the driver skips grid output for it.
+template <int Dim>
+class GridSnapshotWriter {
+ public:
+  static bool supports(ShapeKind shape) { return shape != ShapeKind::quadratic_bspline; }
+
+  GridSnapshotWriter(const std::filesystem::path& directory, const Grid<Dim>& grid);
+  void write(double time, const Grid<Dim>& grid);
+
+  std::size_t snapshots_written() const { return writer_.snapshots_written(); }
+
+ private:
+  cosim::SnapshotWriter writer_;
+  std::vector<double> mass_, velocity_;
+};
+
+extern template class GridSnapshotWriter<2>;
+extern template class GridSnapshotWriter<3>;
+
+}  // namespace mpm

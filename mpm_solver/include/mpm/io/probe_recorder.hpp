@@ -1,0 +1,35 @@
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "cosim/io/time_series_writer.hpp"
+#include "mpm/solver/solver.hpp"
+
+namespace mpm {
+
+// `probes.csv`: one row per record, `time [s]` then per probe (the particle
+// the loader chose for it) `<probe>_displacement_x [m]` ..,
+// `<probe>_velocity_x [m/s]` .., total stress `<probe>_stress_xx [Pa]`
+// (xx yy zz xy, and yz xz in 3D; tension positive), `<probe>_pore_pressure [Pa]`
+// and `<probe>_plastic_strain [-]`.
+template <int Dim>
+class ProbeRecorder {
+ public:
+  ProbeRecorder(const std::filesystem::path& file, const Solver<Dim>& solver);
+  void record(const Solver<Dim>& solver);
+  std::size_t rows_written() const { return writer_.rows_written(); }
+
+  static std::vector<std::string> columns(const std::vector<ProbeSpec>& probes);
+
+ private:
+  std::vector<ProbeSpec> probes_;
+  std::vector<Vec<Dim>> initial_position_;  // per probe
+  cosim::TimeSeriesWriter writer_;
+  std::vector<double> row_;
+};
+
+extern template class ProbeRecorder<2>;
+extern template class ProbeRecorder<3>;
+
+}  // namespace mpm

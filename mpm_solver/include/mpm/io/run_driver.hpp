@@ -1,0 +1,29 @@
+#pragma once
+
+#include <filesystem>
+
+#include "cosim/exit_codes.hpp"
+#include "cosim/io/logging.hpp"
+#include "mpm/io/step_observer.hpp"
+
+namespace mpm {
+
+struct RunOptions {
+  std::filesystem::path config;  // the case file (kind: mpm_case)
+  std::filesystem::path output;  // run directory
+  int threads = -1;              // OpenMP threads; < 0: the case's `threads`
+  int check_every = 100;         // check_state() interval in steps (and at every output)
+  double progress_interval_s = 5.0;  // wall time between progress lines in the log
+  cosim::Verbosity verbosity = cosim::Verbosity::normal;  // console; log.txt keeps info
+};
+
+// A standalone (or, with an observer, coupled) run of one case, as
+// DESIGN.md §6: sets up <output>/log.txt, loads the case, runs Solver<2|3>
+// to the end time writing particle snapshots (particles.xdmf), grid
+// snapshots (grid.xdmf, with output.grid), probes.csv, and summary.json,
+// which is finished with the exit code and message on every path. Returns
+// the process exit code: 0, 2 bad input, 4 numerical failure, 1 internal
+// error (or the code of any other cosim::Error).
+int run_case(const RunOptions& options, const StepObservers& observers = {});
+
+}  // namespace mpm

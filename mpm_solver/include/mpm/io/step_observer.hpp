@@ -1,0 +1,55 @@
+#pragma once
+
+#include <functional>
+#include <limits>
+#include <memory>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "mpm/solver/solver.hpp"
+
+namespace mpm {
+
+// Something that runs alongside the time loop of run_case: the coupling
+// with a fluid (a cosim::Participant) plugs in here. The driver calls
+//
+//   initialize(solver)                  once, after the solver is built and
+//                                       before the first output; register
+//                                       force sources / grid corrections on
+//                                       the solver here, declare meshes and
+//                                       fields, connect
+//   while (is_ongoing()):               (standalone: while t < end_time)
+//     dt = min(stable step, max_time_step(), time to the next output)
+//     solver.step(dt)
+//     after_step(solver, dt)            write fields, advance the window
+//   finalize() | abort(reason)          at the end, or on any error
+//
+// While an observer is present its is_ongoing() alone decides when the run
+// ends (a coupled run's end time is the job's); outputs still follow the
+// case's output.every and time.end_time.
+template <int Dim>
+class StepObserver {
+ public:
+  virtual ~StepObserver() = default;
+  virtual void initialize(Solver<Dim>& solver) = 0;
+  virtual double max_time_step() const { return std::numeric_limits<double>::infinity(); }
+  virtual void after_step(Solver<Dim>& solver, double dt) = 0;
+  virtual bool is_ongoing() const = 0;
+  virtual void finalize() {}
+  virtual void abort(std::string_view reason) { (void)reason; }
+  // Added to summary.json under "coupling" (timings, windows), when not null.
+  virtual nlohmann::json summary() const { return nullptr; }
+};
+
+template <int Dim>
+using StepObserverFactory =
+    std::function<std::unique_ptr<StepObserver<Dim>>(const CaseDescription& description)>;
+
+// One factory per dimension (either may be empty: no observer).
+struct StepObservers {
+  StepObserverFactory<2> for_2d;
+  StepObserverFactory<3> for_3d;
+};
+
+}  // namespace mpm

@@ -1,0 +1,240 @@
+#include "mpm/case/case_schema.hpp"
+
+#include <limits>
+
+#include "mpm/material/material_registry.hpp"
+
+namespace mpm {
+
+using cosim::config::Schema;
+
+namespace {
+
+constexpr std::size_t unlimited = std::numeric_limits<std::size_t>::max();
+
+Schema coordinates() { return Schema::vector(2, 3); }
+
+Schema grid_schema() {
+  Schema grid = Schema::object("The uniform background grid.");
+  grid.required("origin", coordinates().unit("m"), "Lower corner, one value per dimension.")
+      .optional("upper", coordinates().unit("m"),
+                "Upper corner; give either `upper` or `spacing`.")
+      .optional("spacing", coordinates().unit("m"), "Cell size per direction.")
+      .required("cells", Schema::vector(2, 3), "Cells per direction (whole numbers >= 1).");
+  return grid;
+}
+
+Schema time_schema() {
+  Schema time = Schema::object("Time stepping.");
+  time.required("end_time", Schema::number().positive().unit("s"), "Simulated end time.")
+      .optional("safety_factor", Schema::number().range(1e-6, 1.0).default_value("0.5"),
+                "alpha of the critical time step alpha h / (c + |v|) (Zheng et al., eq. 23).")
+      .optional("min_time_step", Schema::number().positive().unit("s").default_value("1e-12"),
+                "A stable time step below this ends the run as a numerical failure (exit 4).")
+      .optional("max_time_step", Schema::number().positive().unit("s").default_value("none"),
+                "Upper bound of the time step.");
+  return time;
+}
+
+Schema rigid_schema() {
+  Schema rigid = Schema::object("The body is rigid; its particles move together.");
+  rigid
+      .required("motion", Schema::one_of({"fixed", "prescribed", "free"}),
+                "fixed: at rest; prescribed: velocity from `velocity_history`; free: translates "
+                "under gravity and contact forces.")
+      .optional("velocity_history", Schema::path().must_exist(),
+                "CSV with header `time [s],vx [m/s],vy [m/s][,vz [m/s]]`, times increasing; "
+                "linear between rows, constant beyond (motion: prescribed).");
+  return rigid;
+}
+
+Schema geometry_schema() {
+  Schema box = Schema::object("Axis-aligned box.");
+  box.required("min", coordinates().unit("m"), "Lower corner.")
+      .required("max", coordinates().unit("m"), "Upper corner.");
+  Schema polyhedron = Schema::object("Closed triangulated surface (3D).");
+  polyhedron.required("vertices", Schema::sequence(Schema::vector(3, 3)).length(4, unlimited), "Vertex coordinates [m].")
+      .required("triangles", Schema::sequence(Schema::vector(3, 3)).length(4, unlimited),
+                "Vertex indices (0-based) of each triangle, outward normals by the right-hand "
+                "rule.");
+  Schema geometry = Schema::object("Where the body's particles are seeded; exactly one key.");
+  geometry.optional("box", box, "Axis-aligned box.")
+      .optional("polygon",
+                Schema::sequence(Schema::vector(2, 2)).length(3, unlimited),
+                "Simple polygon (2D): vertices [x, y] in order [m].")
+      .optional("polyhedron", polyhedron, "Closed triangulated surface (3D).")
+      .optional("points", Schema::path().must_exist(),
+                "CSV file of particle positions (and volumes), see the geometry module.");
+  return geometry;
+}
+
+Schema porous_schema() {
+  Schema permeability = Schema::object("Intrinsic permeability of the solid skeleton.");
+  permeability
+      .optional("model",
+                Schema::one_of({"kozeny_carman_pan", "kozeny_carman_tran", "constant"})
+                    .default_value("kozeny_carman_pan"),
+                "kozeny_carman_pan: D50^2 n^3 / (150 (1 - n)^2) (Pan et al. 2021, eq. 76); "
+                "kozeny_carman_tran: d^2 (1 - phi_s)^3 / (180 phi_s^2) (Tran et al., MPMICE, "
+                "eq. 32); constant: `value`.")
+      .optional("value", Schema::number().positive().unit("m^2"), "For model: constant.");
+  Schema porous = Schema::object(
+      "Porous skeleton: the material density is the grain density, particle mass rho_s (1 - n0) "
+      "V.");
+  porous.required("porosity", Schema::number().range(0.0, 0.99), "Initial porosity n0.")
+      .optional("grain_size", Schema::number().positive().unit("m"), "D50 (needed by Kozeny-Carman).")
+      .optional("max_porosity", Schema::number().range(0.0, 1.0).default_value("0.99"),
+                "Cap of the porosity update (Pan et al. 2021, text after eq. 76).")
+      .optional("permeability", permeability, "Permeability model.");
+  return porous;
+}
+
+Schema geostatic_schema() {
+  Schema geostatic = Schema::object(
+      "Initial effective stress sigma'_v = -gamma' (surface - z), sigma'_h = K0 sigma'_v.");
+  geostatic
+      .optional("k0", Schema::number().non_negative().default_value("1 - sin(phi), or nu/(1 - nu)"),
+                "Lateral earth pressure coefficient.")
+      .optional("unit_weight", Schema::number().positive().unit("N/m^3").default_value("rho |g|"),
+                "Effective unit weight gamma'.")
+      .optional("surface", Schema::number().unit("m").default_value("top of the body"),
+                "Elevation of the free surface.");
+  return geostatic;
+}
+
+Schema body_schema() {
+  Schema body = Schema::object("A body: deformable (`material`) or `rigid`.");
+  body.required("name", Schema::string().non_empty(), "Unique name (contact pairs, loads, probes).")
+      .optional("material", Schema::string().non_empty(), "Key of `materials` (deformable body).")
+      .optional("rigid", rigid_schema(), "Rigid body instead of a material.")
+      .optional("density", Schema::number().positive().unit("kg/m^3"),
+                "Density of a rigid body (mass for contact and free motion).")
+      .required("geometry", geometry_schema(), "Region the particles fill.")
+      .optional("particles_per_cell",
+                Schema::any_of({Schema::integer().positive(), Schema::vector(2, 3)})
+                    .default_value("2"),
+                "Particles per cell and direction (n gives n^dim per cell), or one count per "
+                "direction; with r2 seeding the product is the number per cell volume.")
+      .optional("seeding", Schema::one_of({"regular", "r2"}).default_value("regular"),
+                "regular: cell-aligned lattice; r2: R2 quasi-random sequence.")
+      .optional("initial_velocity", coordinates().unit("m/s").default_value("0"),
+                "Velocity at t = 0.")
+      .optional("porous", porous_schema(), "Porous medium (coupled with a fluid).")
+      .optional("geostatic", geostatic_schema(), "Geostatic initial stress.");
+  return body;
+}
+
+Schema contact_schema() {
+  Schema pair = Schema::object("Friction of one pair of bodies.");
+  pair.required("bodies", Schema::sequence(Schema::string()).length(2, 2), "Two body names.")
+      .required("friction", Schema::number().non_negative(), "Coulomb coefficient.");
+  Schema contact = Schema::object(
+      "Grid contact between bodies (one velocity field per body, Bardenhagen).");
+  contact.optional("enabled", Schema::boolean().default_value("false"),
+                   "false: all bodies share one velocity field (no-slip).")
+      .optional("friction", Schema::number().non_negative().default_value("0"),
+                "Coulomb coefficient of every pair.")
+      .optional("pairs", Schema::sequence(pair), "Per-pair coefficients.");
+  return contact;
+}
+
+Schema face_schema() {
+  Schema frictional = Schema::object("Coulomb friction on the face.");
+  frictional.required("frictional", Schema::number().non_negative(), "Coefficient mu.");
+  return Schema::any_of({Schema::one_of({"free", "fixed", "slip"}), frictional})
+      .default_value("free");
+}
+
+Schema boundaries_schema() {
+  Schema boundaries = Schema::object(
+      "Conditions on the grid values on each face: free | fixed (no motion) | slip (no normal "
+      "motion) | {frictional: mu}.");
+  const char* const faces[][2] = {{"x_min", "The face x = origin_x."}, {"x_max", "The face x = upper_x."},
+                                  {"y_min", "The face y = origin_y."}, {"y_max", "The face y = upper_y."},
+                                  {"z_min", "The face z = origin_z (3D)."}, {"z_max", "The face z = upper_z (3D)."}};
+  for (const auto& [face, doc] : faces) boundaries.optional(face, face_schema(), doc);
+  return boundaries;
+}
+
+Schema load_schema() {
+  Schema region = Schema::object("Particles of the body inside this box carry the load.");
+  region.required("min", coordinates().unit("m"), "Lower corner.")
+      .required("max", coordinates().unit("m"), "Upper corner.");
+  Schema load = Schema::object("A surface load on particles.");
+  load.required("name", Schema::string().non_empty(), "Name.")
+      .required("body", Schema::string().non_empty(), "Body the particles belong to.")
+      .required("region", region, "Selects the loaded particles at t = 0.")
+      .optional("face",
+                Schema::one_of({"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"})
+                    .default_value("y_max"),
+                "Face of the particles' domains the load acts on.")
+      .optional("traction", coordinates().unit("Pa"), "Traction vector.")
+      .optional("pressure", Schema::number().unit("Pa"),
+                "Pressure against the face's outward normal; give `traction` or `pressure`.")
+      .optional("ramp_time", Schema::number().non_negative().unit("s").default_value("0"),
+                "Linear ramp from zero.");
+  return load;
+}
+
+Schema probe_schema() {
+  Schema probe = Schema::object("Records the particle nearest to `position` at t = 0.");
+  probe.required("name", Schema::string().non_empty(), "Column prefix in probes.csv.")
+      .required("body", Schema::string().non_empty(), "Body of the particle.")
+      .required("position", coordinates().unit("m"), "A point inside the body.");
+  return probe;
+}
+
+Schema output_schema() {
+  Schema output = Schema::object("What the run writes.");
+  output
+      .optional("every", Schema::number().non_negative().unit("s").default_value("0"),
+                "Particle snapshot interval; 0: first and last only.")
+      .optional("grid", Schema::boolean().default_value("false"),
+                "Also grid snapshots (nodal mass and velocity; linear and gimp shapes only).")
+      .optional("probe_every", Schema::number().non_negative().unit("s").default_value("0"),
+                "Probe interval; 0: at every snapshot.");
+  return output;
+}
+
+}  // namespace
+
+Schema mpm_case_schema() {
+  Schema s = Schema::file("mpm_case", "A standalone case of the MPM solver.");
+  s.optional("name", Schema::string().non_empty().default_value("file name"), "Case name.")
+      .required("dimension", Schema::integer().range(2, 3), "2 (plane strain) or 3.")
+      .required("grid", grid_schema(), "Background grid.")
+      .optional("shape",
+                Schema::one_of({"linear", "gimp", "quadratic_bspline"}).default_value("gimp"),
+                "Shape functions.")
+      .optional("scheme", Schema::one_of({"usl", "musl"}).default_value("musl"),
+                "Update stress last, or modified USL (Pan et al. 2021).")
+      .optional("flip_fraction", Schema::number().range(0.0, 1.0).default_value("0.99"),
+                "1: pure FLIP, 0: pure PIC.")
+      .optional("locking", Schema::one_of({"none", "bbar", "fbar"}).default_value("none"),
+                "Volumetric locking mitigation.")
+      .required("time", time_schema(), "Time stepping.")
+      .optional("gravity", coordinates().unit("m/s^2").default_value("0"),
+                "Gravity vector, one value per dimension.")
+      .optional("gravity_ramp_time", Schema::number().non_negative().unit("s").default_value("0"),
+                "Gravity grows linearly from zero over this time.")
+      .optional("damping", Schema::number().range(0.0, 1.0).default_value("0"),
+                "Local non-viscous damping coefficient.")
+      .required("materials", Schema::map_of(Schema::any()).length(1, unlimited),
+                "Named materials, each a mapping with a `type` (models listed below).")
+      .required("bodies", Schema::sequence(body_schema()).length(1, unlimited), "The bodies.")
+      .optional("contact", contact_schema(), "Contact between bodies.")
+      .optional("boundaries", boundaries_schema(), "Grid faces.")
+      .optional("loads", Schema::sequence(load_schema()), "Surface loads.")
+      .optional("probes", Schema::sequence(probe_schema()), "Particles recorded to probes.csv.")
+      .optional("output", output_schema(), "Output.")
+      .optional("threads", Schema::integer().non_negative().default_value("0"),
+                "OpenMP threads; 0: the OpenMP default (--threads overrides).");
+  return s;
+}
+
+std::string mpm_case_help() {
+  return mpm_case_schema().help("MPM case file (kind: mpm_case)") + "\n" +
+         MaterialRegistry::instance().help();
+}
+
+}  // namespace mpm

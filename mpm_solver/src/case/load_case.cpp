@@ -1,0 +1,406 @@
+#include "mpm/case/load_case.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "case/body_seeding.hpp"
+#include "cosim/config/closest_key.hpp"
+#include "cosim/config/document.hpp"
+#include "cosim/error.hpp"
+#include "mpm/case/case_schema.hpp"
+#include "mpm/case/velocity_history.hpp"
+#include "mpm/material/material_registry.hpp"
+
+namespace mpm {
+
+namespace {
+
+using cosim::config::Node;
+
+std::string format_point(const Vec3d& x, int dimension) {
+  if (dimension == 2) return fmt::format("({:.6g}, {:.6g})", x.x(), x.y());
+  return fmt::format("({:.6g}, {:.6g}, {:.6g})", x.x(), x.y(), x.z());
+}
+
+// A list of exactly `dimension` numbers.
+Vec3d read_vector(const Node& node, int dimension) {
+  const auto values = node.as<std::vector<double>>();
+  if (values.size() != static_cast<std::size_t>(dimension))
+    node.fail(fmt::format("expected {} values (dimension: {}), got {}", dimension, dimension,
+                          values.size()));
+  Vec3d v = Vec3d::Zero();
+  for (int d = 0; d < dimension; ++d) v[d] = values[static_cast<std::size_t>(d)];
+  return v;
+}
+
+// `dimension` whole numbers >= 1 (one given number applies to every direction).
+std::array<int, 3> read_counts(const Node& node, int dimension, const char* what) {
+  std::vector<double> values;
+  if (node.is_scalar()) {
+    values.assign(static_cast<std::size_t>(dimension), node.as<double>());
+  } else {
+    values = node.as<std::vector<double>>();
+  }
+  if (values.size() != static_cast<std::size_t>(dimension))
+    node.fail(fmt::format("expected {} values (dimension: {}), got {}", dimension, dimension,
+                          values.size()));
+  std::array<int, 3> counts{1, 1, 1};
+  for (std::size_t d = 0; d < values.size(); ++d) {
+    const double v = values[d];
+    if (v < 1.0 || v != std::floor(v) || v > 1e6)
+      node.fail(fmt::format("{} must be whole numbers >= 1, got {}", what, v));
+    counts[d] = static_cast<int>(v);
+  }
+  return counts;
+}
+
+template <class Enum>
+Enum read_choice(const Node& root, std::string_view key, Enum fallback,
+                 std::initializer_list<std::pair<const char*, Enum>> choices) {
+  const auto node = root.find(key);
+  if (!node) return fallback;
+  const auto text = node->as<std::string>();
+  for (const auto& [name, value] : choices)
+    if (text == name) return value;
+  node->fail(fmt::format("unknown value '{}'", text));  // the schema refuses it first
+}
+
+int index_of(const std::vector<std::string>& names, const Node& node, const char* what) {
+  const auto name = node.as<std::string>();
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end())
+    node.fail(fmt::format("unknown {} '{}'; {}", what, name, cosim::config::suggestion(name, names)));
+  return static_cast<int>(it - names.begin());
+}
+
+class CaseReader {
+ public:
+  explicit CaseReader(const cosim::config::Document& document)
+      : root_(document.root()) {
+    c_.file = document.path();
+  }
+
+  CaseDescription read() {
+    mpm_case_schema().validate(root_);
+    c_.name = root_.get<std::string>("name", c_.file.stem().string());
+    dim_ = root_["dimension"].as<int>();
+    c_.dimension = dim_;
+    read_grid(root_["grid"]);
+    c_.shape = read_choice(root_, "shape", ShapeKind::gimp,
+                           {{"linear", ShapeKind::linear},
+                            {"gimp", ShapeKind::gimp},
+                            {"quadratic_bspline", ShapeKind::quadratic_bspline}});
+    c_.scheme = read_choice(root_, "scheme", UpdateScheme::musl,
+                            {{"usl", UpdateScheme::usl}, {"musl", UpdateScheme::musl}});
+    c_.flip_fraction = root_.get<double>("flip_fraction", 0.99);
+    c_.locking = read_choice(root_, "locking", LockingMitigation::none,
+                             {{"none", LockingMitigation::none},
+                              {"bbar", LockingMitigation::bbar},
+                              {"fbar", LockingMitigation::fbar}});
+    read_time(root_["time"]);
+    if (auto g = root_.find("gravity")) c_.gravity = read_vector(*g, dim_);
+    c_.gravity_ramp_time = root_.get<double>("gravity_ramp_time", 0.0);
+    c_.damping = root_.get<double>("damping", 0.0);
+    read_materials(root_["materials"]);
+    const Node bodies = root_["bodies"];
+    for (const Node& body : bodies.items()) read_body(body);
+    if (auto contact = root_.find("contact")) read_contact(*contact);
+    if (auto boundaries = root_.find("boundaries")) read_boundaries(*boundaries);
+    if (auto loads = root_.find("loads"))
+      for (const Node& load : loads->items()) read_load(load);
+    if (auto probes = root_.find("probes"))
+      for (const Node& probe : probes->items()) read_probe(probe);
+    if (auto output = root_.find("output")) {
+      c_.output.every = output->get<double>("every", 0.0);
+      c_.output.grid = output->get<bool>("grid", false);
+      c_.output.probe_every = output->get<double>("probe_every", 0.0);
+    }
+    c_.threads = root_.get<int>("threads", 0);
+    return std::move(c_);
+  }
+
+ private:
+  void read_grid(const Node& grid) {
+    c_.grid.origin = read_vector(grid["origin"], dim_);
+    c_.grid.cells = read_counts(grid["cells"], dim_, "grid cells");
+    const auto upper = grid.find("upper");
+    const auto spacing = grid.find("spacing");
+    if (upper.has_value() == spacing.has_value())
+      grid.fail("give exactly one of `upper` and `spacing`");
+    if (spacing) {
+      c_.grid.spacing = read_vector(*spacing, dim_);
+      for (int d = 0; d < dim_; ++d)
+        if (!(c_.grid.spacing[d] > 0.0)) spacing->fail("spacing must be > 0 in every direction");
+    } else {
+      const Vec3d top = read_vector(*upper, dim_);
+      for (int d = 0; d < dim_; ++d) {
+        if (!(top[d] > c_.grid.origin[d]))
+          upper->fail("upper must exceed origin in every direction");
+        c_.grid.spacing[d] = (top[d] - c_.grid.origin[d]) / c_.grid.cells[static_cast<std::size_t>(d)];
+      }
+    }
+    if (dim_ == 2) {
+      c_.grid.origin.z() = 0.0;
+      c_.grid.spacing.z() = 1.0;
+      c_.grid.cells[2] = 1;
+    }
+  }
+
+  void read_time(const Node& time) {
+    c_.time.end_time = time["end_time"].as<double>();
+    c_.time.safety_factor = time.get<double>("safety_factor", 0.5);
+    c_.time.min_time_step = time.get<double>("min_time_step", 1e-12);
+    c_.time.max_time_step =
+        time.get<double>("max_time_step", std::numeric_limits<double>::infinity());
+    if (c_.time.min_time_step > c_.time.max_time_step)
+      time["min_time_step"].fail("min_time_step exceeds max_time_step");
+  }
+
+  void read_materials(const Node& materials) {
+    for (const auto& [name, node] : materials.entries()) {
+      c_.materials.push_back(make_material(node));
+      c_.material_names.push_back(name);
+    }
+  }
+
+  bool inside_grid(const Vec3d& x) const {
+    for (int d = 0; d < dim_; ++d) {
+      const double lo = c_.grid.origin[d];
+      const double hi = lo + c_.grid.spacing[d] * c_.grid.cells[static_cast<std::size_t>(d)];
+      if (!(x[d] >= lo && x[d] <= hi)) return false;
+    }
+    return true;
+  }
+
+  void read_body(const Node& node) {
+    BodySpec body;
+    const Node name = node["name"];
+    body.name = name.as<std::string>();
+    if (std::find(body_names_.begin(), body_names_.end(), body.name) != body_names_.end())
+      name.fail(fmt::format("a body named '{}' exists already", body.name));
+
+    const auto material = node.find("material");
+    const auto rigid = node.find("rigid");
+    if (material.has_value() == rigid.has_value())
+      node.fail(fmt::format("body '{}' needs exactly one of `material` and `rigid`", body.name));
+    if (material) {
+      body.material = index_of(c_.material_names, *material, "material");
+      if (auto density = node.find("density"))
+        density->fail_at_key("a deformable body takes its density from its material");
+    } else {
+      body.rigid = read_rigid(*rigid);
+      const auto density = node.find("density");
+      if (!density) node.fail(fmt::format("rigid body '{}' needs a `density`", body.name));
+      body.density_override = density->as<double>();
+      if (auto porous = node.find("porous")) porous->fail_at_key("a rigid body cannot be porous");
+      if (auto geostatic = node.find("geostatic"))
+        geostatic->fail_at_key("a rigid body has no geostatic stress");
+    }
+
+    std::array<int, 3> ppc{2, 2, 2};
+    if (auto n = node.find("particles_per_cell")) ppc = read_counts(*n, dim_, "particles_per_cell");
+    const auto seeding = read_choice(node, "seeding", case_loading::Seeding::regular,
+                                     {{"regular", case_loading::Seeding::regular},
+                                      {"r2", case_loading::Seeding::r2}});
+    const Node geometry = node["geometry"];
+    if (geometry.size() != 1)
+      geometry.fail("give exactly one of `box`, `polygon`, `polyhedron` and `points`");
+    auto seeded = case_loading::seed_body(geometry, dim_, c_.grid, ppc, seeding);
+    if (seeded.positions.empty())
+      geometry.fail(fmt::format(
+          "body '{}' seeds no particles (region smaller than the particle spacing?)", body.name));
+    for (const Vec3d& x : seeded.positions)
+      if (!inside_grid(x))
+        geometry.fail(fmt::format("body '{}' has particles outside the grid, the first at {}",
+                                  body.name, format_point(x, dim_)));
+    body.positions = std::move(seeded.positions);
+    body.volumes = std::move(seeded.volumes);
+    body.half_lengths = std::move(seeded.half_lengths);
+
+    if (auto v = node.find("initial_velocity")) body.initial_velocity = read_vector(*v, dim_);
+    if (auto porous = node.find("porous")) body.porous = read_porous(*porous);
+    if (auto geostatic = node.find("geostatic")) {
+      GeostaticStress g;
+      g.k0 = geostatic->get<double>("k0", g.k0);
+      g.unit_weight = geostatic->get<double>("unit_weight", g.unit_weight);
+      if (auto surface = geostatic->find("surface")) g.surface = surface->as<double>();
+      body.geostatic = g;
+    }
+    body_names_.push_back(body.name);
+    body_offsets_.push_back(particle_count_);
+    particle_count_ += body.positions.size();
+    c_.bodies.push_back(std::move(body));
+  }
+
+  RigidMotion read_rigid(const Node& rigid) {
+    RigidMotion motion;
+    motion.kind = read_choice(rigid, "motion", RigidMotion::Kind::fixed,
+                              {{"fixed", RigidMotion::Kind::fixed},
+                               {"prescribed", RigidMotion::Kind::prescribed},
+                               {"free", RigidMotion::Kind::free}});
+    const auto history = rigid.find("velocity_history");
+    if (motion.kind == RigidMotion::Kind::prescribed) {
+      if (!history) rigid.fail("motion: prescribed needs a `velocity_history`");
+      motion.velocity = read_velocity_history(history->as_path(), dim_, *history);
+    } else if (history) {
+      history->fail_at_key("a velocity_history needs motion: prescribed");
+    }
+    return motion;
+  }
+
+  PorousSpec read_porous(const Node& porous) {
+    PorousSpec p;
+    p.porosity = porous["porosity"].as<double>();
+    p.grain_size = porous.get<double>("grain_size", 0.0);
+    p.max_porosity = porous.get<double>("max_porosity", p.max_porosity);
+    if (p.porosity > p.max_porosity)
+      porous["porosity"].fail(
+          fmt::format("porosity {} exceeds max_porosity {}", p.porosity, p.max_porosity));
+    if (auto permeability = porous.find("permeability")) {
+      p.permeability_model =
+          read_choice(*permeability, "model", PermeabilityModel::kozeny_carman_pan,
+                      {{"kozeny_carman_pan", PermeabilityModel::kozeny_carman_pan},
+                       {"kozeny_carman_tran", PermeabilityModel::kozeny_carman_tran},
+                       {"constant", PermeabilityModel::constant}});
+      const auto value = permeability->find("value");
+      if (p.permeability_model == PermeabilityModel::constant) {
+        if (!value) permeability->fail("model: constant needs a `value` [m^2]");
+        p.permeability = value->as<double>();
+      } else if (value) {
+        value->fail_at_key("`value` is only for model: constant");
+      }
+    }
+    if (p.permeability_model != PermeabilityModel::constant && !(p.grain_size > 0.0))
+      porous.fail("a Kozeny-Carman permeability needs `grain_size` [m]");
+    return p;
+  }
+
+  void read_contact(const Node& contact) {
+    c_.contact.enabled = contact.get<bool>("enabled", false);
+    c_.contact.friction = contact.get<double>("friction", 0.0);
+    if (auto pairs = contact.find("pairs")) {
+      for (const Node& pair : pairs->items()) {
+        const auto bodies = pair["bodies"].items();
+        const int a = index_of(body_names_, bodies[0], "body");
+        const int b = index_of(body_names_, bodies[1], "body");
+        if (a == b) pair["bodies"].fail("a contact pair needs two different bodies");
+        c_.contact.pair_friction[{std::min(a, b), std::max(a, b)}] =
+            pair["friction"].as<double>();
+      }
+    }
+  }
+
+  static int face_index(const std::string& face) {
+    static const char* const names[] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+    for (int f = 0; f < 6; ++f)
+      if (face == names[f]) return f;
+    return -1;
+  }
+
+  void read_boundaries(const Node& boundaries) {
+    for (const auto& [face, node] : boundaries.entries()) {
+      const int f = face_index(face);
+      if (dim_ == 2 && f >= 4) node.fail_at_key("a 2D case has no z faces");
+      FaceCondition condition;
+      if (node.is_map()) {
+        condition.kind = FaceCondition::Kind::frictional;
+        condition.friction = node["frictional"].as<double>();
+      } else {
+        const auto kind = node.as<std::string>();
+        condition.kind = kind == "fixed"  ? FaceCondition::Kind::fixed
+                         : kind == "slip" ? FaceCondition::Kind::slip
+                                          : FaceCondition::Kind::free;
+      }
+      c_.boundaries[static_cast<std::size_t>(f)] = condition;
+    }
+  }
+
+  std::pair<std::size_t, std::size_t> particle_range(int body) const {
+    const auto b = static_cast<std::size_t>(body);
+    return {body_offsets_[b], body_offsets_[b] + c_.bodies[b].positions.size()};
+  }
+
+  void read_load(const Node& node) {
+    LoadSpec load;
+    load.name = node["name"].as<std::string>();
+    const int body = index_of(body_names_, node["body"], "body");
+    const Node region = node["region"];
+    const Vec3d lo = read_vector(region["min"], dim_);
+    const Vec3d hi = read_vector(region["max"], dim_);
+    const auto& spec = c_.bodies[static_cast<std::size_t>(body)];
+    const auto [first, last] = particle_range(body);
+    for (std::size_t p = first; p < last; ++p) {
+      const Vec3d& x = spec.positions[p - first];
+      bool inside = true;
+      for (int d = 0; d < dim_; ++d) inside = inside && x[d] >= lo[d] && x[d] <= hi[d];
+      if (inside) load.particles.push_back(p);
+    }
+    if (load.particles.empty())
+      region.fail(fmt::format("load '{}' selects no particle of body '{}'", load.name,
+                              spec.name));
+    load.face = face_index(node.get("face", "y_max"));
+    if (dim_ == 2 && load.face >= 4) node["face"].fail("a 2D case has no z faces");
+    const auto traction = node.find("traction");
+    const auto pressure = node.find("pressure");
+    if (traction.has_value() == pressure.has_value())
+      node.fail(fmt::format("load '{}' needs exactly one of `traction` and `pressure`", load.name));
+    if (traction) load.traction = read_vector(*traction, dim_);
+    if (pressure) load.pressure = pressure->as<double>();
+    load.ramp_time = node.get<double>("ramp_time", 0.0);
+    c_.loads.push_back(std::move(load));
+  }
+
+  void read_probe(const Node& node) {
+    ProbeSpec probe;
+    probe.name = node["name"].as<std::string>();
+    for (const auto& other : c_.probes)
+      if (other.name == probe.name)
+        node["name"].fail(fmt::format("a probe named '{}' exists already", probe.name));
+    probe.body = index_of(body_names_, node["body"], "body");
+    const Node position = node["position"];
+    probe.position = read_vector(position, dim_);
+    const auto& spec = c_.bodies[static_cast<std::size_t>(probe.body)];
+    const auto [first, last] = particle_range(probe.body);
+    std::size_t nearest = first;
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t p = first; p < last; ++p) {
+      const double distance = (spec.positions[p - first] - probe.position).squaredNorm();
+      if (distance < best) {
+        best = distance;
+        nearest = p;
+      }
+    }
+    // Inside the body: within the (slightly enlarged) domain of its nearest particle.
+    const Vec3d offset = spec.positions[nearest - first] - probe.position;
+    const Vec3d& h = spec.half_lengths[nearest - first];
+    for (int d = 0; d < dim_; ++d)
+      if (std::abs(offset[d]) > 1.5 * h[d] + 1e-12)
+        position.fail(fmt::format("probe '{}' at {} is outside body '{}' (nearest particle at {})",
+                                  probe.name, format_point(probe.position, dim_), spec.name,
+                                  format_point(spec.positions[nearest - first], dim_)));
+    probe.particle = nearest;
+    c_.probes.push_back(std::move(probe));
+  }
+
+  Node root_;
+  CaseDescription c_;
+  int dim_ = 2;
+  std::vector<std::string> body_names_;
+  std::vector<std::size_t> body_offsets_;
+  std::size_t particle_count_ = 0;
+};
+
+}  // namespace
+
+CaseDescription load_case(const std::filesystem::path& file) {
+  return CaseReader(cosim::config::Document::load_file(file)).read();
+}
+
+CaseDescription load_case_text(std::string_view text, const std::filesystem::path& name) {
+  return CaseReader(cosim::config::Document::load_string(text, name)).read();
+}
+
+}  // namespace mpm

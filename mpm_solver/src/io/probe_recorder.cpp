@@ -1,0 +1,69 @@
+#include "mpm/io/probe_recorder.hpp"
+
+#include <string>
+
+namespace mpm {
+
+namespace {
+
+constexpr const char* axes[] = {"x", "y", "z"};
+// Voigt indices (xx yy zz xy yz xz) recorded per dimension.
+constexpr std::size_t stress_components_2d[] = {0, 1, 2, 3};
+constexpr const char* voigt_names[] = {"xx", "yy", "zz", "xy", "yz", "xz"};
+
+template <int Dim>
+std::vector<std::size_t> stress_components() {
+  if constexpr (Dim == 2) {
+    return {std::begin(stress_components_2d), std::end(stress_components_2d)};
+  } else {
+    return {0, 1, 2, 3, 4, 5};
+  }
+}
+
+}  // namespace
+
+template <int Dim>
+std::vector<std::string> ProbeRecorder<Dim>::columns(const std::vector<ProbeSpec>& probes) {
+  std::vector<std::string> names{cosim::column_name("time", "s")};
+  for (const auto& probe : probes) {
+    for (int d = 0; d < Dim; ++d)
+      names.push_back(cosim::column_name(probe.name + "_displacement_" + axes[d], "m"));
+    for (int d = 0; d < Dim; ++d)
+      names.push_back(cosim::column_name(probe.name + "_velocity_" + axes[d], "m/s"));
+    for (const std::size_t c : stress_components<Dim>())
+      names.push_back(cosim::column_name(probe.name + "_stress_" + voigt_names[c], "Pa"));
+    names.push_back(cosim::column_name(probe.name + "_pore_pressure", "Pa"));
+    names.push_back(cosim::column_name(probe.name + "_plastic_strain", "-"));
+  }
+  return names;
+}
+
+template <int Dim>
+ProbeRecorder<Dim>::ProbeRecorder(const std::filesystem::path& file, const Solver<Dim>& solver)
+    : probes_(solver.description().probes),
+      writer_(file, columns(probes_)) {
+  for (const auto& probe : probes_) initial_position_.push_back(solver.particles().position[probe.particle]);
+}
+
+template <int Dim>
+void ProbeRecorder<Dim>::record(const Solver<Dim>& solver) {
+  const Particles<Dim>& p = solver.particles();
+  row_.clear();
+  row_.push_back(solver.time());
+  for (std::size_t k = 0; k < probes_.size(); ++k) {
+    const std::size_t i = probes_[k].particle;
+    const Vec<Dim> u = p.position[i] - initial_position_[k];
+    for (int d = 0; d < Dim; ++d) row_.push_back(u[d]);
+    for (int d = 0; d < Dim; ++d) row_.push_back(p.velocity[i][d]);
+    const Voigt sigma = to_voigt(solver.total_stress(i));
+    for (const std::size_t c : stress_components<Dim>()) row_.push_back(sigma[c]);
+    row_.push_back(i < p.pore_pressure.size() ? p.pore_pressure[i] : 0.0);
+    row_.push_back(i < p.plastic_strain.size() ? p.plastic_strain[i] : 0.0);
+  }
+  writer_.append(row_);
+}
+
+template class ProbeRecorder<2>;
+template class ProbeRecorder<3>;
+
+}  // namespace mpm

@@ -1,0 +1,342 @@
+#include "mpm/io/run_driver.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "cosim/error.hpp"
+#include "cosim/io/content_hash.hpp"
+#include "cosim/io/files.hpp"
+#include "cosim/io/logging.hpp"
+#include "cosim/io/run_summary.hpp"
+#include "mpm/case/load_case.hpp"
+#include "mpm/io/grid_snapshot_writer.hpp"
+#include "mpm/io/particle_snapshot_writer.hpp"
+#include "mpm/io/probe_recorder.hpp"
+
+namespace mpm {
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+// Output times k * interval (k = 1, 2, ...) and the end time; interval 0:
+// the end time only. Times are computed, not accumulated, so a step that
+// ends on one lands on it to round-off.
+class OutputSchedule {
+ public:
+  OutputSchedule(double interval, double end_time) : interval_(interval), end_(end_time) {}
+
+  double next() const {
+    if (done_) return infinity;
+    return interval_ > 0.0 ? std::min(static_cast<double>(k_) * interval_, end_) : end_;
+  }
+  bool due(double t, double tolerance) const { return next() <= t + tolerance; }
+  // Moves past every output time up to t.
+  void passed(double t, double tolerance) {
+    if (end_ <= t + tolerance) done_ = true;
+    while (interval_ > 0.0 && static_cast<double>(k_) * interval_ <= t + tolerance) ++k_;
+  }
+
+ private:
+  double interval_;
+  double end_;
+  long k_ = 1;
+  bool done_ = false;
+};
+
+template <int Dim>
+void record_conserved(cosim::RunSummary& summary, const Totals<Dim>& totals, bool start) {
+  const char* per_depth = Dim == 2 ? "/m" : "";
+  auto set = [&](const std::string& name, double value, const std::string& unit) {
+    const std::string u = unit + per_depth;
+    if (start) {
+      summary.set_conserved_start(name, value, u);
+    } else {
+      summary.set_conserved_end(name, value, u);
+    }
+  };
+  set("mass", totals.mass, "kg");
+  static constexpr const char* axes[] = {"x", "y", "z"};
+  for (int d = 0; d < Dim; ++d) set(std::string("momentum_") + axes[d], totals.momentum[d], "kg m/s");
+  set("kinetic_energy", totals.kinetic_energy, "J");
+  set("strain_energy", totals.strain_energy, "J");
+  set("gravitational_energy", totals.gravitational_energy, "J");
+  set("contact_dissipation", totals.contact_dissipation, "J");
+  set("boundary_dissipation", totals.boundary_dissipation, "J");
+  set("external_work", totals.external_work, "J");
+  // Kinetic + strain + gravitational energy plus what left through
+  // dissipation, minus the work put in: constant for a consistent scheme.
+  set("energy_balance",
+      totals.kinetic_energy + totals.strain_energy + totals.gravitational_energy +
+          totals.contact_dissipation + totals.boundary_dissipation - totals.external_work,
+      "J");
+}
+
+nlohmann::json case_section(const CaseDescription& c) {
+  nlohmann::json bodies = nlohmann::json::array();
+  std::size_t particles = 0;
+  for (const auto& b : c.bodies) {
+    bodies.push_back({{"name", b.name},
+                      {"particles", b.positions.size()},
+                      {"material", b.material >= 0 ? c.material_names[static_cast<std::size_t>(b.material)] : "rigid"}});
+    particles += b.positions.size();
+  }
+  std::vector<int> cells(c.grid.cells.begin(), c.grid.cells.begin() + c.dimension);
+  return {{"name", c.name},
+          {"dimension", c.dimension},
+          {"shape", std::string(to_string(c.shape))},
+          {"scheme", c.scheme == UpdateScheme::usl ? "usl" : "musl"},
+          {"grid_cells", cells},
+          {"particles", particles},
+          {"bodies", bodies},
+          {"end_time_s", c.time.end_time}};
+}
+
+template <int Dim>
+class CaseRun {
+ public:
+  CaseRun(const CaseDescription& description, const RunOptions& options,
+          cosim::RunSummary& summary, std::unique_ptr<StepObserver<Dim>> observer)
+      : options_(options),
+        summary_(summary),
+        observer_(std::move(observer)),
+        solver_(description),
+        end_time_(description.time.end_time),
+        min_time_step_(description.time.min_time_step),
+        snapshots_(description.output.every, end_time_),
+        probe_times_(description.output.probe_every > 0.0 ? description.output.probe_every
+                                                          : description.output.every,
+                     end_time_),
+        tolerance_(1e-10 * end_time_) {}
+
+  void run() {
+    try {
+      {
+        auto scope = summary_.phases().measure("setup");
+        if (observer_) observer_->initialize(solver_);
+        open_outputs();
+      }
+      record_conserved(summary_, solver_.totals(), true);
+      solver_.check_state();
+      write_snapshot();
+      record_probes();
+      summary_.write();
+      loop();
+      finish_outputs();
+      if (observer_) observer_->finalize();
+    } catch (const std::exception& e) {
+      record_end();
+      if (observer_) observer_->abort(e.what());
+      throw;
+    }
+    record_end();
+    spdlog::info("completed: t = {:.6g} s in {} steps; {} particle snapshots", solver_.time(),
+                 solver_.step_count(), particles_->snapshots_written());
+  }
+
+ private:
+  void open_outputs() {
+    particles_.emplace(options_.output, solver_);
+    if (!solver_.description().probes.empty())
+      probes_.emplace(options_.output / "probes.csv", solver_);
+    if (solver_.description().output.grid) {
+      if (GridSnapshotWriter<Dim>::supports(solver_.description().shape)) {
+        grid_.emplace(options_.output, solver_.grid());
+      } else {
+        spdlog::warn(
+            "output.grid: no grid snapshots for the {} shape (its grid values are B-spline "
+            "control points, not nodal values)",
+            to_string(solver_.description().shape));
+      }
+    }
+  }
+
+  bool ongoing() const {
+    if (observer_) return observer_->is_ongoing();
+    return solver_.time() < end_time_ - tolerance_;
+  }
+
+  void loop() {
+    using Clock = std::chrono::steady_clock;
+    auto last_progress = Clock::now();
+    std::size_t steps_at_progress = solver_.step_count();
+    while (ongoing()) {
+      const double t = solver_.time();
+      const double stable = solver_.stable_time_step();
+      if (!(stable >= min_time_step_))
+        throw cosim::NumericalError(fmt::format(
+            "the stable time step {:.4g} s fell below time.min_time_step = {:.4g} s at t = {:.9g} "
+            "s (step {})",
+            stable, min_time_step_, t, solver_.step_count()));
+      double dt = stable;
+      if (observer_) {
+        dt = std::min(dt, observer_->max_time_step());
+      } else {
+        dt = std::min(dt, end_time_ - t);
+      }
+      const double next_output = std::min(snapshots_.next(), probe_times_.next());
+      if (next_output > t + tolerance_) dt = std::min(dt, next_output - t);
+      {
+        auto scope = summary_.phases().measure("advance");
+        solver_.step(dt);
+        if (observer_) observer_->after_step(solver_, dt);
+      }
+      min_dt_ = std::min(min_dt_, dt);
+      max_dt_ = std::max(max_dt_, dt);
+
+      const double now = solver_.time();
+      const bool snapshot = snapshots_.due(now, tolerance_);
+      const bool probe = probe_times_.due(now, tolerance_);
+      if (snapshot || probe || solver_.step_count() % static_cast<std::size_t>(options_.check_every) == 0)
+        solver_.check_state();
+      if (snapshot) write_snapshot();
+      if (probe) record_probes();
+
+      const auto wall = Clock::now();
+      const double since = std::chrono::duration<double>(wall - last_progress).count();
+      if (since >= options_.progress_interval_s) {
+        spdlog::info("t = {:.6g} s ({:.1f}%), dt = {:.3g} s, step {}, {:.0f} steps/s", now,
+                     100.0 * now / end_time_, dt, solver_.step_count(),
+                     static_cast<double>(solver_.step_count() - steps_at_progress) / since);
+        last_progress = wall;
+        steps_at_progress = solver_.step_count();
+        summary_.set_steps(static_cast<std::int64_t>(solver_.step_count()));
+        summary_.write();
+      }
+    }
+  }
+
+  void write_snapshot() {
+    auto scope = summary_.phases().measure("output");
+    particles_->write(solver_);
+    if (grid_) grid_->write(solver_.time(), solver_.grid());
+    last_snapshot_ = solver_.time();
+    snapshots_.passed(solver_.time(), tolerance_);
+    summary_.set_steps(static_cast<std::int64_t>(solver_.step_count()));
+    summary_.write();
+  }
+
+  void record_probes() {
+    if (probes_) {
+      auto scope = summary_.phases().measure("output");
+      probes_->record(solver_);
+    }
+    probe_times_.passed(solver_.time(), tolerance_);
+  }
+
+  // A coupled run may end before or after the case's end time.
+  void finish_outputs() {
+    solver_.check_state();
+    if (solver_.time() > last_snapshot_ + tolerance_) write_snapshot();
+  }
+
+  void record_end() noexcept {
+    try {
+      record_conserved(summary_, solver_.totals(), false);
+      const auto steps = solver_.step_count();
+      summary_.set_steps(static_cast<std::int64_t>(steps));
+      const double advance = summary_.phases().seconds("advance");
+      const double updates = static_cast<double>(steps) * static_cast<double>(solver_.particles().size());
+      summary_.set_metric("simulated_time", solver_.time(), "s");
+      summary_.set_metric("particles", static_cast<double>(solver_.particles().size()), "1");
+      summary_.set_metric("particle_updates_per_second", advance > 0.0 ? updates / advance : 0.0,
+                          "1/s");
+      if (steps > 0) {
+        summary_.set_metric("time_step_min", min_dt_, "s");
+        summary_.set_metric("time_step_max", max_dt_, "s");
+      }
+      if (particles_) summary_.set_metric("snapshots", static_cast<double>(particles_->snapshots_written()), "1");
+      if (observer_) {
+        auto coupling = observer_->summary();
+        if (!coupling.is_null()) summary_.set_section("coupling", std::move(coupling));
+      }
+    } catch (const std::exception& e) {
+      spdlog::warn("could not record the end state in summary.json: {}", e.what());
+    }
+  }
+
+  const RunOptions& options_;
+  cosim::RunSummary& summary_;
+  std::unique_ptr<StepObserver<Dim>> observer_;
+  Solver<Dim> solver_;
+  double end_time_;
+  double min_time_step_;
+  OutputSchedule snapshots_;
+  OutputSchedule probe_times_;
+  double tolerance_;
+  double last_snapshot_ = -infinity;
+  double min_dt_ = infinity;
+  double max_dt_ = 0.0;
+  std::optional<ParticleSnapshotWriter<Dim>> particles_;
+  std::optional<GridSnapshotWriter<Dim>> grid_;
+  std::optional<ProbeRecorder<Dim>> probes_;
+};
+
+template <int Dim>
+void run_dimension(const CaseDescription& description, const RunOptions& options,
+                   cosim::RunSummary& summary, const StepObserverFactory<Dim>& factory) {
+  std::unique_ptr<StepObserver<Dim>> observer;
+  if (factory) observer = factory(description);
+  std::optional<CaseRun<Dim>> run;
+  {
+    auto scope = summary.phases().measure("setup");
+    run.emplace(description, options, summary, std::move(observer));
+  }
+  run->run();
+}
+
+void run_loaded(const RunOptions& options, const StepObservers& observers,
+                cosim::RunSummary& summary) {
+  CaseDescription description;
+  {
+    auto scope = summary.phases().measure("setup");
+    description = load_case(options.config);
+    summary.set_config(std::filesystem::absolute(options.config), cosim::hash_file(options.config));
+    summary.set_section("case", case_section(description));
+  }
+  const int threads = options.threads >= 0 ? options.threads : description.threads;
+  if (threads > 0) omp_set_num_threads(threads);
+  std::size_t particles = 0;
+  for (const auto& b : description.bodies) particles += b.positions.size();
+  spdlog::info("case '{}' ({}): {}D, {} bodies, {} particles, shape {}, {} threads, end time {} s",
+               description.name, options.config.string(), description.dimension,
+               description.bodies.size(), particles, to_string(description.shape),
+               omp_get_max_threads(), description.time.end_time);
+  summary.write();
+  if (description.dimension == 2) {
+    run_dimension<2>(description, options, summary, observers.for_2d);
+  } else {
+    run_dimension<3>(description, options, summary, observers.for_3d);
+  }
+}
+
+}  // namespace
+
+int run_case(const RunOptions& options, const StepObservers& observers) {
+  cosim::create_output_directory(options.output);
+  cosim::init_logging(options.output, "mpm_solver", options.verbosity);
+  cosim::RunSummary summary(options.output, "mpm_solver");
+  summary.write();
+  try {
+    run_loaded(options, observers, summary);
+  } catch (const cosim::Error& e) {
+    spdlog::error("{}", e.what());
+    summary.finish(e.code(), e.what());
+    return cosim::to_int(e.code());
+  } catch (const std::exception& e) {
+    spdlog::critical("internal error: {}", e.what());
+    summary.finish(cosim::ExitCode::internal_error, std::string("internal error: ") + e.what());
+    return cosim::to_int(cosim::ExitCode::internal_error);
+  }
+  summary.finish(cosim::ExitCode::success, "completed");
+  return 0;
+}
+
+}  // namespace mpm
