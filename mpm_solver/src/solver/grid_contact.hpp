@@ -14,21 +14,21 @@ struct ContactFields {
 };
 
 struct ContactResult {
-  double dissipated = 0.0;  // kinetic energy removed [J]
+  double dissipated = 0.0;  // work of the friction forces [J]
 };
 
 // Frictional multi-body contact on the grid (Bardenhagen et al. 2001, as in
 // Tran et al., MPMICE, eqs. 20-22). At a grid value where several fields
 // have mass, each deformable field b is compared with the centre-of-mass
 // velocity v_cm (the rigid velocity when a rigid field is present, its mass
-// being taken as infinite). Along the contact normal n_b, the unit vector of
-// the other fields' mass gradient minus b's own, the field approaches when
+// being taken as infinite). Along the contact normal n_b (from b towards the
+// others, from the fields' mass gradients), the field approaches when
 // (v_b - v_cm) . n_b > 0; then the normal part is removed and the
 // tangential part is reduced by mu times it (eq. 20), or removed entirely
 // when friction is enough to stick (eq. 21). Between two deformable fields
 // the normals are opposite and the corrections conserve momentum exactly.
-// The kinetic energy the corrections remove in the centre-of-mass frame is
-// the dissipated work (eq. 22). `impulse_on_field` receives, per field, the
+// The friction force times the sliding distance is the dissipated work
+// (eq. 22). `impulse_on_field` receives, per field, the
 // momentum the others lost to it (the reaction on rigid bodies).
 template <int Dim>
 ContactResult apply_grid_contact(const ContactFields& fields, Grid<Dim>& grid,
@@ -77,8 +77,10 @@ ContactResult apply_grid_contact(const ContactFields& fields, Grid<Dim>& grid,
         partner = heaviest;
       }
       if (partner < 0) continue;
+      // sum_p m_p grad N_i(x_p) points out of a body; the normal from b
+      // towards the others is b's outward direction minus theirs.
       const Vec<Dim> others = gradient_sum - grid.mass_gradient[i];
-      Vec<Dim> normal = others - grid.mass_gradient[i];
+      Vec<Dim> normal = grid.mass_gradient[i] - others;
       const double length = normal.norm();
       if (!(length > 0.0)) continue;
       normal /= length;
@@ -95,7 +97,8 @@ ContactResult apply_grid_contact(const ContactFields& fields, Grid<Dim>& grid,
         corrected = tangential * (1.0 - mu * approach / slip);
       }
       const double m = grid.mass[i];
-      result.dissipated += 0.5 * m * (relative.squaredNorm() - corrected.squaredNorm());
+      // Eq. 22: friction force m mu approach / dt times the sliding distance |corrected| dt.
+      if (slip > mu * approach) result.dissipated += m * mu * approach * corrected.norm();
       const Vec<Dim> change = corrected - relative;
       grid.velocity[i] += change;
       impulse_on_field[static_cast<std::size_t>(partner)] -= m * change;
