@@ -6,6 +6,7 @@
 
 #include "../mpm_solver/case_builder.hpp"
 #include "mock_channel.hpp"
+#include "mpm/coupling/coupling_observer.hpp"
 #include "mpm/coupling/field_names.hpp"
 #include "mpm/coupling/mpm_coupling.hpp"
 
@@ -192,6 +193,57 @@ TEST(MpmCoupling, UnknownBodyNamesAreInputErrors) {
   spec = both_blocks();
   spec.surface->cells = {4, 4};
   EXPECT_THROW(MpmCoupling<2>(solver, std::make_unique<testing::MockChannel>(), spec), cosim::InputError);
+}
+
+TEST(MpmCoupling, Works3DOverAWindow) {
+  CaseDescription c = testing::empty_case(3, {4, 4, 4}, 0.25);
+  c.materials.push_back(testing::elastic(2650.0, 1e6, 0.3));
+  c.bodies.push_back(testing::box_body("soil", 0, 3, Vec3d(0.25, 0.25, 0.0), Vec3d(0.75, 0.75, 0.5), 0.25, 2));
+  CouplingSpec spec = both_blocks();
+  spec.surface->cells = {2, 2};
+  Solver<3> solver(c);
+  auto* channel = new testing::MockChannel;
+  channel->window = 1e-4;
+  MpmCoupling<3> coupling(solver, std::unique_ptr<CouplingChannel>(channel), spec);
+  coupling.declare();
+  EXPECT_EQ(std::get<cosim::UniformGrid>(channel->meshes.at(n::surface_mesh).geometry).dim, 2);
+  channel->set(n::impulse, std::vector<double>(64 * 3, 1e-3));
+  channel->set(n::bed_traction, std::vector<double>(4 * 3, -50.0));
+  const Vec<3> before = solver.totals().momentum;
+  for (int k = 0; k < 2; ++k) {
+    solver.step(0.5e-4);
+    coupling.after_step(0.5e-4);
+    channel->advance(0.5e-4);
+  }
+  const auto& d = coupling.diagnostics();
+  const Vec<3> gained = solver.totals().momentum - before;
+  // Over the window: the applied impulse plus the traction's (4 columns x 0.25 m^2 x -50 Pa x 1e-4 s).
+  const Vec<3> traction_impulse = Vec<3>::Constant(-50.0 * 0.25 * 4 * 1e-4);
+  EXPECT_LT((gained - d.impulse_total.applied - traction_impulse).norm(), 1e-12 * gained.norm());
+  EXPECT_EQ(channel->write_count.at(n::bed_elevation), 2);
+  // Each column 1/4 covered by the block's top at 0.5 (which has moved by ~1e-8 m).
+  for (double b : channel->written.at(n::bed_elevation)) EXPECT_NEAR(b, 0.25 * 0.5, 1e-6);
+}
+
+TEST(MpmCoupling, StandaloneObserverRunsTheCaseToItsEndTime) {
+  CaseDescription c = floating_block_case();
+  c.time.end_time = 2e-4;
+  Solver<2> solver(c);
+  CouplingObserver<2> observer(cosim::CouplingEndpoint{}, "soil", both_blocks());
+  observer.initialize(solver);
+  int steps = 0;
+  while (observer.is_ongoing() && steps < 1000) {
+    const double dt = std::min(solver.stable_time_step(), observer.max_time_step());
+    solver.step(dt);
+    observer.after_step(solver, dt);
+    ++steps;
+  }
+  observer.finalize();
+  EXPECT_NEAR(solver.time(), 2e-4, 1e-12);
+  const auto summary = observer.summary();
+  EXPECT_EQ(summary["participant"], "soil");
+  EXPECT_EQ(summary["coupled"], false);
+  EXPECT_EQ(summary["writes"], 2);  // the initial data and the one standalone window's end
 }
 
 }  // namespace
