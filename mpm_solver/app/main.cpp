@@ -11,6 +11,7 @@
 #include "cosim/io/logging.hpp"
 #include "cosim/participant.hpp"
 #include "mpm/case/case_schema.hpp"
+#include "mpm/coupling/coupling_observer.hpp"
 #include "mpm/io/run_driver.hpp"
 
 int main(int argc, char** argv) {
@@ -41,12 +42,10 @@ int main(int argc, char** argv) {
     if (options.config.empty() || options.output.empty())
       throw cosim::InputError("--config and --output are required (or --help-config)");
     options.verbosity = cosim::parse_verbosity(verbosity);
-    // Coupled runs: the coupling concept provides the StepObservers that
-    // drive a cosim::Participant; until it exists an endpoint is refused.
-    if (!endpoint.is_standalone())
-      throw cosim::InputError("this mpm_solver build cannot run coupled yet (--cosim-endpoint " +
-                              endpoint.uri + ")");
-    return mpm::run_case(options);
+    // Coupled (an endpoint from `cosim run`): the coupling concept's
+    // observers drive a cosim::Participant alongside the time loop.
+    if (endpoint.is_standalone()) return mpm::run_case(options);
+    return mpm::run_case(options, mpm::coupling::coupling_observers(endpoint));
   } catch (const cosim::Error& e) {
     std::cerr << "mpm_solver: error: " << e.what() << "\n";
     return cosim::to_int(e.code());

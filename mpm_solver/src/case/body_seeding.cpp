@@ -2,95 +2,174 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
-#include <functional>
+#include <string>
+
+#include "cosim/error.hpp"
+#include "mpm/geometry/box.hpp"
+#include "mpm/geometry/particle_file.hpp"
+#include "mpm/geometry/polygon.hpp"
+#include "mpm/geometry/polyhedron.hpp"
+#include "mpm/geometry/seeding.hpp"
 
 namespace mpm::case_loading {
 
 namespace {
 
-Vec3d point(const std::vector<double>& v) {
-  Vec3d x = Vec3d::Zero();
-  for (std::size_t d = 0; d < v.size() && d < 3; ++d) x[static_cast<Eigen::Index>(d)] = v[d];
+using cosim::config::Node;
+
+template <int Dim>
+Vec<Dim> point(const Node& node) {
+  const auto values = node.as<std::vector<double>>();
+  if (values.size() != static_cast<std::size_t>(Dim))
+    node.fail(fmt::format("expected {} coordinates (dimension: {}), got {}", Dim, Dim, values.size()));
+  Vec<Dim> x;
+  for (int d = 0; d < Dim; ++d) x[d] = values[static_cast<std::size_t>(d)];
   return x;
 }
 
-// Even-odd rule.
-bool inside_polygon(const std::vector<Vec3d>& vertices, const Vec3d& x) {
-  bool inside = false;
-  for (std::size_t i = 0, j = vertices.size() - 1; i < vertices.size(); j = i++) {
-    const Vec3d& a = vertices[i];
-    const Vec3d& b = vertices[j];
-    if ((a.y() > x.y()) != (b.y() > x.y()) &&
-        x.x() < (b.x() - a.x()) * (x.y() - a.y()) / (b.y() - a.y()) + a.x())
-      inside = !inside;
+// An InputError of the geometry module, re-thrown with the YAML key: at
+// `node` when it carries no location of its own (a region's own check),
+// else at its location (a line of a points file) naming the key.
+template <class F>
+auto located_at(const Node& node, F&& f) {
+  try {
+    return f();
+  } catch (const cosim::InputError& e) {
+    if (e.where().file.empty()) node.fail(e.what());
+    std::string what = e.what();
+    const std::string prefix =
+        fmt::format("{}:{}:{}: ", e.where().file, e.where().line, e.where().column);
+    if (what.rfind(prefix, 0) == 0) what.erase(0, prefix.size());
+    throw cosim::InputError(e.where(), node.key_path(), what);
   }
-  return inside;
+}
+
+// Cell-aligned seeding with counts per direction: n points per direction
+// everywhere is the module's regular pattern; unequal counts are the
+// regular pattern with one point per cell of the grid refined n_d times in
+// direction d (the same sub-cell centres, volumes and half-lengths).
+template <int Dim>
+std::pair<GridGeometry<Dim>, SeedingPattern> seeding_grid(const GridSpec& spec,
+                                                          const std::array<int, 3>& counts,
+                                                          Seeding seeding) {
+  GridGeometry<Dim> grid;
+  SeedingPattern pattern;
+  bool equal = true;
+  int product = 1;
+  for (int d = 0; d < Dim; ++d) {
+    const auto i = static_cast<std::size_t>(d);
+    grid.origin[d] = spec.origin[d];
+    grid.spacing[d] = spec.spacing[d];
+    grid.cells[i] = spec.cells[i];
+    equal = equal && counts[i] == counts[0];
+    product *= counts[i];
+  }
+  if (seeding == Seeding::r2) {
+    pattern.kind = SeedingPattern::Kind::quasi_random;
+    pattern.per_cell = product;
+  } else if (equal) {
+    pattern.per_direction = counts[0];
+  } else {
+    pattern.per_direction = 1;
+    for (int d = 0; d < Dim; ++d) {
+      const auto i = static_cast<std::size_t>(d);
+      grid.spacing[d] /= counts[i];
+      grid.cells[i] *= counts[i];
+    }
+  }
+  return {grid, pattern};
+}
+
+// The grid grown by whole cells to cover `bounds`: the geometry module
+// seeds grid cells only, and particles outside the grid must be seen (and
+// refused by the loader), not silently dropped.
+template <int Dim>
+GridGeometry<Dim> covering(GridGeometry<Dim> grid, const Box<Dim>& bounds) {
+  for (int d = 0; d < Dim; ++d) {
+    const auto i = static_cast<std::size_t>(d);
+    const double upper = grid.origin[d] + grid.spacing[d] * grid.cells[i];
+    const int below = std::max(0, static_cast<int>(std::ceil((grid.origin[d] - bounds.lower[d]) / grid.spacing[d])));
+    const int above = std::max(0, static_cast<int>(std::ceil((bounds.upper[d] - upper) / grid.spacing[d])));
+    grid.origin[d] -= below * grid.spacing[d];
+    grid.cells[i] += below + above;
+  }
+  return grid;
+}
+
+template <int Dim, class Region>
+SeededParticles<Dim> seed_anywhere(const Region& region, const GridGeometry<Dim>& grid,
+                                   const SeedingPattern& pattern) {
+  return seed_region<Dim>(region, covering<Dim>(grid, region.bounding_box()), pattern);
+}
+
+template <int Dim>
+SeededParticles<Dim> seed(const Node& geometry, const GridSpec& spec,
+                          const std::array<int, 3>& counts, Seeding seeding) {
+  const auto [grid, pattern] = seeding_grid<Dim>(spec, counts, seeding);
+  if (auto box = geometry.find("box")) {
+    Box<Dim> region{point<Dim>((*box)["min"]), point<Dim>((*box)["max"])};
+    if (!(region.lower.array() < region.upper.array()).all())
+      (*box)["max"].fail("box max must exceed min in every direction");
+    return seed_anywhere<Dim>(region, grid, pattern);
+  }
+  if (auto polygon = geometry.find("polygon")) {
+    if constexpr (Dim == 2) {
+      std::vector<Vec<2>> vertices;
+      for (const Node& v : polygon->items()) vertices.push_back(point<2>(v));
+      const Polygon region = located_at(*polygon, [&] { return Polygon(std::move(vertices)); });
+      return seed_anywhere<2>(region, grid, pattern);
+    } else {
+      polygon->fail_at_key("a polygon needs dimension: 2 (use a polyhedron in 3D)");
+    }
+  }
+  if (auto polyhedron = geometry.find("polyhedron")) {
+    if constexpr (Dim == 3) {
+      std::vector<Vec<3>> vertices;
+      for (const Node& v : (*polyhedron)["vertices"].items()) vertices.push_back(point<3>(v));
+      std::vector<std::array<int, 3>> triangles;
+      for (const Node& t : (*polyhedron)["triangles"].items()) {
+        const auto values = t.as<std::vector<int>>();
+        triangles.push_back({values[0], values[1], values[2]});
+      }
+      const Polyhedron region = located_at(
+          *polyhedron, [&] { return Polyhedron(std::move(vertices), std::move(triangles)); });
+      return seed_anywhere<3>(region, grid, pattern);
+    } else {
+      polyhedron->fail_at_key("a polyhedron needs dimension: 3 (use a polygon in 2D)");
+    }
+  }
+  const Node points = geometry["points"];
+  return located_at(points, [&] {
+    return read_particle_file<Dim>(points.as_path().string()).particles;
+  });
+}
+
+template <int Dim>
+Vec3d widened(const Vec<Dim>& v) {
+  Vec3d x = Vec3d::Zero();
+  x.template head<Dim>() = v;
+  return x;
+}
+
+template <int Dim>
+SeededBody seed_body(const Node& geometry, const GridSpec& grid,
+                     const std::array<int, 3>& particles_per_cell, Seeding seeding) {
+  const SeededParticles<Dim> particles = seed<Dim>(geometry, grid, particles_per_cell, seeding);
+  SeededBody body;
+  body.volumes = particles.volumes;
+  for (const auto& x : particles.positions) body.positions.push_back(widened<Dim>(x));
+  for (const auto& h : particles.half_lengths) body.half_lengths.push_back(widened<Dim>(h));
+  return body;
 }
 
 }  // namespace
 
-SeededBody seed_body(const cosim::config::Node& geometry, int dimension, const GridSpec& grid,
+SeededBody seed_body(const Node& geometry, int dimension, const GridSpec& grid,
                      const std::array<int, 3>& particles_per_cell, Seeding seeding) {
-  std::function<bool(const Vec3d&)> contains;
-  Vec3d lower = Vec3d::Zero();  // bounding box of the region
-  Vec3d upper = Vec3d::Zero();
-  if (auto box = geometry.find("box")) {
-    const Vec3d lo = point((*box)["min"].as<std::vector<double>>());
-    const Vec3d hi = point((*box)["max"].as<std::vector<double>>());
-    for (int d = 0; d < dimension; ++d)
-      if (!(lo[d] < hi[d])) (*box)["max"].fail("box max must exceed min in every direction");
-    lower = lo;
-    upper = hi;
-    contains = [lo, hi, dimension](const Vec3d& x) {
-      for (int d = 0; d < dimension; ++d)
-        if (x[d] < lo[d] || x[d] >= hi[d]) return false;
-      return true;
-    };
-  } else if (auto polygon = geometry.find("polygon")) {
-    if (dimension != 2) polygon->fail_at_key("a polygon needs dimension: 2");
-    std::vector<Vec3d> vertices;
-    for (const auto& v : polygon->items()) vertices.push_back(point(v.as<std::vector<double>>()));
-    lower = upper = vertices.front();
-    for (const auto& v : vertices) {
-      lower = lower.cwiseMin(v);
-      upper = upper.cwiseMax(v);
-    }
-    contains = [vertices](const Vec3d& x) { return inside_polygon(vertices, x); };
-  } else {
-    geometry.fail("only box and polygon geometries are available until the geometry module lands");
-  }
-  if (seeding != Seeding::regular) geometry.fail("r2 seeding needs the geometry module");
-
-  SeededBody body;
-  Vec3d step = Vec3d::Ones();
-  double volume = 1.0;
-  for (int d = 0; d < dimension; ++d) {
-    step[d] = grid.spacing[d] / particles_per_cell[static_cast<std::size_t>(d)];
-    volume *= step[d];
-  }
-  // The lattice of cell-aligned sub-cell centres over the region's bounding box.
-  std::array<int, 3> first{0, 0, 0};
-  std::array<int, 3> last{0, 0, 0};
-  for (int d = 0; d < dimension; ++d) {
-    first[static_cast<std::size_t>(d)] =
-        static_cast<int>(std::floor((lower[d] - grid.origin[d]) / step[d]));
-    last[static_cast<std::size_t>(d)] =
-        static_cast<int>(std::ceil((upper[d] - grid.origin[d]) / step[d]));
-  }
-  for (int k = first[2]; k <= last[2]; ++k)
-    for (int j = first[1]; j <= last[1]; ++j)
-      for (int i = first[0]; i <= last[0]; ++i) {
-        Vec3d x = grid.origin + Vec3d(i + 0.5, j + 0.5, k + 0.5).cwiseProduct(step);
-        if (dimension == 2) x.z() = 0.0;
-        if (!contains(x)) continue;
-        body.positions.push_back(x);
-        body.volumes.push_back(volume);
-        Vec3d h = 0.5 * step;
-        if (dimension == 2) h.z() = 0.0;
-        body.half_lengths.push_back(h);
-      }
-  return body;
+  if (dimension == 2) return seed_body<2>(geometry, grid, particles_per_cell, seeding);
+  return seed_body<3>(geometry, grid, particles_per_cell, seeding);
 }
 
 }  // namespace mpm::case_loading

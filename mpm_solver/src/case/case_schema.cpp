@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "mpm/coupling/coupling_spec.hpp"
 #include "mpm/material/material_registry.hpp"
 
 namespace mpm {
@@ -227,6 +228,8 @@ Schema mpm_case_schema() {
       .optional("loads", Schema::sequence(load_schema()), "Surface loads.")
       .optional("probes", Schema::sequence(probe_schema()), "Particles recorded to probes.csv.")
       .optional("output", output_schema(), "Output.")
+      .optional("coupling", coupling::coupling_schema(),
+                "What the solver exchanges when `cosim run` starts it (ignored standalone).")
       .optional("threads", Schema::integer().non_negative().default_value("0"),
                 "OpenMP threads; 0: the OpenMP default (--threads overrides).");
   return s;

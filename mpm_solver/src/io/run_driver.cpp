@@ -188,8 +188,8 @@ class CaseRun {
         solver_.step(dt);
         if (observer_) observer_->after_step(solver_, dt);
       }
-      min_dt_ = std::min(min_dt_, dt);
-      max_dt_ = std::max(max_dt_, dt);
+      min_stable_ = std::min(min_stable_, stable);
+      max_stable_ = std::max(max_stable_, stable);
 
       const double now = solver_.time();
       const bool snapshot = snapshots_.due(now, tolerance_);
@@ -249,8 +249,8 @@ class CaseRun {
       summary_.set_metric("particle_updates_per_second", advance > 0.0 ? updates / advance : 0.0,
                           "1/s");
       if (steps > 0) {
-        summary_.set_metric("time_step_min", min_dt_, "s");
-        summary_.set_metric("time_step_max", max_dt_, "s");
+        summary_.set_metric("stable_time_step_min", min_stable_, "s");
+        summary_.set_metric("stable_time_step_max", max_stable_, "s");
       }
       if (particles_) summary_.set_metric("snapshots", static_cast<double>(particles_->snapshots_written()), "1");
       if (observer_) {
@@ -272,8 +272,8 @@ class CaseRun {
   OutputSchedule probe_times_;
   double tolerance_;
   double last_snapshot_ = -infinity;
-  double min_dt_ = infinity;
-  double max_dt_ = 0.0;
+  double min_stable_ = infinity;
+  double max_stable_ = 0.0;
   std::optional<ParticleSnapshotWriter<Dim>> particles_;
   std::optional<GridSnapshotWriter<Dim>> grid_;
   std::optional<ProbeRecorder<Dim>> probes_;

@@ -63,6 +63,11 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text;
 }
 
+// The valid case with the load region starting at height y.
+std::string with_load_from(double y) {
+  return replaced(valid_case, "min: [0.4, 0.67]", "min: [0.4, " + std::to_string(y) + "]");
+}
+
 // The message of the InputError loading `text` throws.
 std::string error_of(const std::string& text, const fs::path& name = "case.yaml") {
   try {
@@ -273,6 +278,80 @@ TEST(MpmCaseLoad, MissingFileIsABadInput) {
   } catch (const cosim::InputError& e) {
     EXPECT_THAT(e.what(), HasSubstr("/nonexistent/case.yaml"));
   }
+}
+
+TEST(MpmCaseLoad, SeedsPolygonsR2AndPerDirectionCounts) {
+  // Right triangle with legs 0.2 m: half of the 0.2 x 0.2 box.
+  const std::string polygon = replaced(with_load_from(0.55), "{box: {min: [0.4, 0.5], max: [0.6, 0.7]}}",
+                                       "{polygon: [[0.4, 0.5], [0.6, 0.5], [0.4, 0.7]]}");
+  const auto triangle = load_case_text(polygon, "case.yaml").bodies[0];
+  const double area = std::accumulate(triangle.volumes.begin(), triangle.volumes.end(), 0.0);
+  EXPECT_NEAR(area, 0.02, 0.04 / 64 * 8 + 1e-12) << "triangle area from particle volumes";
+
+  const auto r2 = load_case_text(replaced(valid_case, "particles_per_cell: 2",
+                                          "particles_per_cell: 3\n    seeding: r2"),
+                                 "case.yaml")
+                      .bodies[0];
+  EXPECT_EQ(r2.positions.size(), 16u * 9u);  // 4 x 4 cells, 3^2 per cell
+
+  const auto uneven = load_case_text(replaced(valid_case, "particles_per_cell: 2",
+                                              "particles_per_cell: [1, 3]"),
+                                     "case.yaml")
+                          .bodies[0];
+  EXPECT_EQ(uneven.positions.size(), 16u * 3u);
+  EXPECT_DOUBLE_EQ(uneven.half_lengths[0].x(), 0.025);
+  EXPECT_NEAR(uneven.half_lengths[0].y(), 0.05 / 6, 1e-15);
+  EXPECT_NEAR(uneven.volumes[0], 0.05 * 0.05 / 3, 1e-15);
+}
+
+TEST(MpmCaseLoad, DegeneratePolygonIsLocatedAtItsKey) {
+  const std::string message = error_of(replaced(valid_case, "{box: {min: [0.4, 0.5], max: [0.6, 0.7]}}",
+                                                "{polygon: [[0.4, 0.5], [0.5, 0.5], [0.6, 0.5]]}"));
+  EXPECT_THAT(message, HasSubstr("case.yaml:13:25: key 'bodies[0].geometry.polygon'"));
+}
+
+TEST(MpmCaseLoad, ReadsParticlesFromAPointsFile) {
+  const fs::path dir = scratch("points");
+  std::ofstream(dir / "block.csv") << "x,y,volume\n0.5,0.5,0.01\n0.5,0.6,0.01\n";
+  const auto c = load_case_text(replaced(with_load_from(0.55), "{box: {min: [0.4, 0.5], max: [0.6, 0.7]}}",
+                                         "{points: block.csv}"),
+                                dir / "case.yaml");
+  ASSERT_EQ(c.bodies[0].positions.size(), 2u);
+  EXPECT_DOUBLE_EQ(c.bodies[0].positions[1].y(), 0.6);
+  EXPECT_DOUBLE_EQ(c.bodies[0].volumes[0], 0.01);
+
+  std::ofstream(dir / "block.csv") << "x,y,volume\n0.5,0.5,0.01\n0.5,0.6,-1\n";
+  const std::string message = error_of(replaced(with_load_from(0.55), "{box: {min: [0.4, 0.5], max: [0.6, 0.7]}}",
+                                                "{points: block.csv}"),
+                                       dir / "case.yaml");
+  EXPECT_THAT(message, HasSubstr("block.csv:3:"));
+  EXPECT_THAT(message, HasSubstr("key 'bodies[0].geometry.points'"));
+}
+
+TEST(MpmCaseLoad, ThreeDimensionalBoxAndPolyhedron) {
+  const std::string text = R"(kind: mpm_case
+dimension: 3
+grid: {origin: [0, 0, 0], spacing: [0.1, 0.1, 0.1], cells: [4, 4, 4]}
+time: {end_time: 0.1}
+materials:
+  steel: {type: linear_elastic, density: 7800, youngs_modulus: 2.0e11, poisson_ratio: 0.3}
+bodies:
+  - name: cube
+    material: steel
+    geometry: {box: {min: [0.1, 0.1, 0.1], max: [0.3, 0.3, 0.3]}}
+  - name: tetra
+    material: steel
+    particles_per_cell: 4
+    geometry:
+      polyhedron:
+        vertices: [[0, 0, 0], [0.4, 0, 0], [0, 0.4, 0], [0, 0, 0.4]]
+        triangles: [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]
+)";
+  const auto c = load_case_text(text, "case3d.yaml");
+  EXPECT_EQ(c.bodies[0].positions.size(), 64u);  // 2^3 cells x 2^3
+  const double volume = std::accumulate(c.bodies[1].volumes.begin(), c.bodies[1].volumes.end(), 0.0);
+  EXPECT_NEAR(volume, 0.4 * 0.4 * 0.4 / 6, 0.15 * 0.4 * 0.4 * 0.4 / 6)
+      << "tetrahedron volume from particles";
 }
 
 TEST(MpmCaseHelp, ListsCaseKeysAndMaterialModels) {
