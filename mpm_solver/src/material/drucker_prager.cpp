@@ -98,7 +98,15 @@ std::unique_ptr<Material> DruckerPrager::make(const cosim::config::Node& paramet
                                   : DruckerPragerMatch::plane_strain);
 }
 
+DruckerPrager::DruckerPrager(double density, ObjectiveRate rate, FrictionalParameters parameters,
+                             DruckerPragerMatch match)
+    : Material(density, rate), parameters_(std::move(parameters)), match_(match) {
+  if (parameters_.friction.softening_rate() == 0.0 && !parameters_.degradation.enabled())
+    fixed_cone_ = cone(MaterialState{});
+}
+
 DruckerPragerCone DruckerPrager::cone(const MaterialState& state) const {
+  if (fixed_cone_) return *fixed_cone_;
   const double phi = parameters_.friction.friction_angle(state.plastic_strain);
   return DruckerPragerCone::matched(match_, phi, parameters_.friction.dilation_angle(phi),
                                     parameters_.cohesion_at(state), parameters_.tensile_strength_at(state));

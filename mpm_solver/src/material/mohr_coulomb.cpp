@@ -40,13 +40,17 @@ std::unique_ptr<Material> MohrCoulomb::make(const cosim::config::Node& parameter
                                        FrictionalParameters::read(parameters));
 }
 
+MohrCoulomb::MohrCoulomb(double density, ObjectiveRate rate, FrictionalParameters parameters)
+    : Material(density, rate), parameters_(std::move(parameters)) {
+  if (parameters_.friction.softening_rate() == 0.0 && !parameters_.degradation.enabled())
+    fixed_surface_ = surface(MaterialState{});
+}
+
 MohrCoulombSurface MohrCoulomb::surface(const MaterialState& state) const {
-  MohrCoulombSurface s;
-  s.friction_angle = parameters_.friction.friction_angle(state.plastic_strain);
-  s.dilation_angle = parameters_.friction.dilation_angle(s.friction_angle);
-  s.cohesion = parameters_.cohesion_at(state);
-  s.tensile_strength = parameters_.tensile_strength_at(state);
-  return s;
+  if (fixed_surface_) return *fixed_surface_;
+  const double phi = parameters_.friction.friction_angle(state.plastic_strain);
+  return MohrCoulombSurface::from_angles(phi, parameters_.friction.dilation_angle(phi),
+                                         parameters_.cohesion_at(state), parameters_.tensile_strength_at(state));
 }
 
 void MohrCoulomb::update(const Deformation& deformation, MaterialState& state) const {

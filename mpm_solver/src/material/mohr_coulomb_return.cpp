@@ -22,19 +22,18 @@ double value(const Plane& plane, const Vec3d& sigma) { return plane.a.dot(sigma)
 
 // Sets of plane indices tried in order; -1 ends a set.
 using Set = std::array<int, 3>;
-constexpr std::array<Set, 6> faces_and_lines{{
-    {0, -1, -1},  // shear plane
+constexpr Set shear_plane{0, -1, -1};
+constexpr Set compression_edge{0, 1, -1};
+constexpr Set extension_edge{0, 2, -1};
+constexpr std::array<Set, 3> tension_planes_and_lines{{
     {3, -1, -1},  // tension plane
-    {0, 1, -1},   // triaxial compression edge
-    {0, 2, -1},   // triaxial extension edge
     {0, 3, -1},   // shear meets tension
     {3, 4, -1},   // biaxial tension edge
 }};
-// Points: the shear apex (without cut-off), or the cut-off's corners; the
+// Points: the cut-off's corners; the
 // corner sigma_1 = sigma_2 = sigma_t where four planes meet is tried as each
 // of its triples (Caratheodory: a return direction in the cone of four is in
 // the cone of some three).
-constexpr std::array<Set, 1> shear_apex{{{0, 1, 2}}};
 constexpr std::array<Set, 6> tension_corners{{
     {0, 2, 3},  // sigma_1 = sigma_t, sigma_2 = sigma_3 on the shear plane
     {0, 3, 4},  // sigma_1 = sigma_2 = sigma_t on the shear plane
@@ -51,25 +50,23 @@ int size_of(const Set& set) {
 }  // namespace
 
 double MohrCoulombSurface::yield(const Vec3d& principal) const {
-  const double s = std::sin(friction_angle);
-  const double shear = (principal[0] - principal[2]) + (principal[0] + principal[2]) * s -
-                       2.0 * cohesion * std::cos(friction_angle);
+  const double shear = (principal[0] - principal[2]) + (principal[0] + principal[2]) * sin_friction -
+                       2.0 * cohesion * cos_friction;
   return std::max(shear, principal[0] - tensile_strength);
 }
 
 bool MohrCoulombSurface::surely_inside(const Tensor& stress) const {
   const double p = stress.trace() / 3.0;
   const double q = std::sqrt(0.5 * (stress - p * Tensor::Identity()).squaredNorm());
-  const double s = std::sin(friction_angle);
-  const double shear_bound = 2.0 * q + (2.0 * p + q * inv_sqrt3) * s - 2.0 * cohesion * std::cos(friction_angle);
+  const double shear_bound = 2.0 * q + (2.0 * p + q * inv_sqrt3) * sin_friction - 2.0 * cohesion * cos_friction;
   return shear_bound < 0.0 && p + 2.0 * q * inv_sqrt3 < tensile_strength;
 }
 
 PrincipalReturn mohr_coulomb_return(const Vec3d& trial, const MohrCoulombSurface& surface,
                                     const ElasticConstants& elastic) {
-  const double sin_phi = std::sin(surface.friction_angle);
-  const double sin_psi = std::sin(surface.dilation_angle);
-  const double strength = 2.0 * surface.cohesion * std::cos(surface.friction_angle);
+  const double sin_phi = surface.sin_friction;
+  const double sin_psi = surface.sin_dilation;
+  const double strength = 2.0 * surface.cohesion * surface.cos_friction;
   const double lambda = elastic.lame();
   const double two_g = 2.0 * elastic.shear;
   const auto D = [&](const Vec3d& b) -> Vec3d { return lambda * b.sum() * Vec3d::Ones() + two_g * b; };
@@ -109,9 +106,20 @@ PrincipalReturn mohr_coulomb_return(const Vec3d& trial, const MohrCoulombSurface
       rhs[i] = value(plane(i), trial);
       for (int j = 0; j < n; ++j) M(i, j) = plane(i).a.dot(plane(j).return_direction);
     }
-    const double det = M.determinant();
-    if (!(std::abs(det) > 1e-12 * std::pow(M.diagonal().cwiseAbs().maxCoeff(), n))) return false;
-    const Vec3d dlambda = M.inverse() * rhs;
+    Vec3d dlambda = Vec3d::Zero();
+    const double size = std::pow(M.diagonal().cwiseAbs().maxCoeff(), n);
+    if (n == 1) {
+      dlambda[0] = rhs[0] / M(0, 0);
+    } else if (n == 2) {
+      const double det = M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0);
+      if (!(std::abs(det) > 1e-12 * size)) return false;
+      dlambda[0] = (M(1, 1) * rhs[0] - M(0, 1) * rhs[1]) / det;
+      dlambda[1] = (M(0, 0) * rhs[1] - M(1, 0) * rhs[0]) / det;
+    } else {
+      const double det = M.determinant();
+      if (!(std::abs(det) > 1e-12 * size)) return false;
+      dlambda = M.inverse() * rhs;
+    }
     Vec3d sigma = trial;
     unsigned active = 0;
     double violation = 0.0;
@@ -128,18 +136,17 @@ PrincipalReturn mohr_coulomb_return(const Vec3d& trial, const MohrCoulombSurface
     return violation <= tolerance;
   };
 
-  for (const Set& set : faces_and_lines) {
-    if (attempt(set)) return best;
-  }
+  if (attempt(shear_plane)) return best;
+  // The ordering the plane return broke names the edge to try first.
+  const bool compression_first = best.stress[1] - best.stress[0] >= best.stress[2] - best.stress[1];
+  if (attempt(compression_first ? compression_edge : extension_edge)) return best;
+  if (attempt(compression_first ? extension_edge : compression_edge)) return best;
   if (!cutoff) {
-    for (const Set& set : shear_apex) {
-      if (attempt(set)) return best;
-    }
-    if (sin_phi > 0.0) {
-      // The apex is where every return ends that no plane or edge takes.
-      return {Vec3d::Constant(surface.apex()), shear_13 | shear_23 | shear_12};
-    }
+    if (sin_phi > 0.0) return {Vec3d::Constant(surface.apex()), shear_13 | shear_23 | shear_12};
     return best;
+  }
+  for (const Set& set : tension_planes_and_lines) {
+    if (attempt(set)) return best;
   }
   for (const Set& set : tension_corners) {
     if (attempt(set)) return best;

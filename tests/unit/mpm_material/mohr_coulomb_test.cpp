@@ -26,7 +26,7 @@ std::array<Vec3d, 6> potential_gradients(double dilation_angle) {
 }
 
 std::array<double, 6> plane_values(const MohrCoulombSurface& m, const Vec3d& s) {
-  const double sp = std::sin(m.friction_angle), k = 2 * m.cohesion * std::cos(m.friction_angle);
+  const double sp = m.sin_friction, k = 2 * m.cohesion * m.cos_friction;
   const double t = m.tensile_strength;
   return {(1 + sp) * s[0] - (1 - sp) * s[2] - k, (1 + sp) * s[1] - (1 - sp) * s[2] - k,
           (1 + sp) * s[0] - (1 - sp) * s[1] - k, s[0] - t, s[1] - t, s[2] - t};
@@ -71,7 +71,7 @@ TEST(MohrCoulombReturn, RandomTrialsEndOnTheSurfaceWithFlowAlongThePotential) {
   for (const Case& k : {Case{30 * deg, 10 * deg, 1.0e4, none}, Case{35 * deg, 0.0, 2.0e4, 5.0e3},
                         Case{25 * deg, 25 * deg, 1.0e4, none}, Case{40 * deg, 5 * deg, 0.0, none},
                         Case{0.0, 0.0, 1.0e4, 2.0e3}, Case{30 * deg, 20 * deg, 1.0e4, 0.0}}) {
-    MohrCoulombSurface m{k.phi, k.psi, k.c, k.t};
+    const auto m = MohrCoulombSurface::from_angles(k.phi, k.psi, k.c, k.t);
     const auto b = potential_gradients(k.psi);
     std::uniform_real_distribution<double> u(-2.0e5, 6.0e4);
     double worst_yield = 0.0, worst_flow = 0.0;
@@ -132,7 +132,7 @@ TEST(MohrCoulombReturn, RandomTrialsEndOnTheSurfaceWithFlowAlongThePotential) {
 
 TEST(MohrCoulombReturn, InvariantBoundNeverCallsAnOutsideStressInside) {
   std::mt19937 rng(13);
-  const MohrCoulombSurface m{30 * deg, 0.0, 1.0e4, 3.0e3};
+  const auto m = MohrCoulombSurface::from_angles(30 * deg, 0.0, 1.0e4, 3.0e3);
   int inside = 0;
   for (int n = 0; n < 20000; ++n) {
     const Tensor stress = random_symmetric(rng, 5e4) - 3e4 * Tensor::Identity();

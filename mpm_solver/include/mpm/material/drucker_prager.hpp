@@ -1,6 +1,8 @@
 #pragma once
 
+#include <limits>
 #include <memory>
+#include <optional>
 #include <string_view>
 
 #include "cosim/config/node.hpp"
@@ -58,8 +60,7 @@ class DruckerPrager final : public Material {
   static cosim::config::Schema schema();
   static std::unique_ptr<Material> make(const cosim::config::Node& parameters);
 
-  DruckerPrager(double density, ObjectiveRate rate, FrictionalParameters parameters, DruckerPragerMatch match)
-      : Material(density, rate), parameters_(std::move(parameters)), match_(match) {}
+  DruckerPrager(double density, ObjectiveRate rate, FrictionalParameters parameters, DruckerPragerMatch match);
 
   std::string_view type() const override { return name; }
   double bulk_modulus() const override { return parameters_.elastic.bulk; }
@@ -74,6 +75,7 @@ class DruckerPrager final : public Material {
  private:
   FrictionalParameters parameters_;
   DruckerPragerMatch match_;
+  std::optional<DruckerPragerCone> fixed_cone_;  // without softening or degradation
 };
 
 }  // namespace mpm

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string_view>
 
 #include "cosim/config/node.hpp"
@@ -24,8 +25,7 @@ class MohrCoulomb final : public Material {
   static cosim::config::Schema schema();
   static std::unique_ptr<Material> make(const cosim::config::Node& parameters);
 
-  MohrCoulomb(double density, ObjectiveRate rate, FrictionalParameters parameters)
-      : Material(density, rate), parameters_(std::move(parameters)) {}
+  MohrCoulomb(double density, ObjectiveRate rate, FrictionalParameters parameters);
 
   std::string_view type() const override { return name; }
   double bulk_modulus() const override { return parameters_.elastic.bulk; }
@@ -40,6 +40,7 @@ class MohrCoulomb final : public Material {
 
  private:
   FrictionalParameters parameters_;
+  std::optional<MohrCoulombSurface> fixed_surface_;  // without softening or degradation
 };
 
 }  // namespace mpm

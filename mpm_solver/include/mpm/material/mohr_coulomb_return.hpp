@@ -16,15 +16,22 @@ namespace mpm {
 // (the cohesion term taken with the sign that makes f(0) = -2 c cos phi < 0),
 // and the Rankine cut-off sigma_1 <= sigma_t, associated.
 struct MohrCoulombSurface {
-  double friction_angle = 0.0;  // phi [rad]
-  double dilation_angle = 0.0;  // psi [rad], <= phi
-  double cohesion = 0.0;        // c [Pa]
+  double sin_friction = 0.0;  // sin phi
+  double cos_friction = 1.0;  // cos phi
+  double sin_dilation = 0.0;  // sin psi, psi <= phi
+  double cohesion = 0.0;      // c [Pa]
   double tensile_strength = std::numeric_limits<double>::infinity();  // sigma_t [Pa]
+
+  // From the angles phi and psi [rad].
+  static MohrCoulombSurface from_angles(double friction_angle, double dilation_angle, double cohesion,
+                                        double tensile_strength) {
+    return {std::sin(friction_angle), std::cos(friction_angle), std::sin(dilation_angle), cohesion,
+            tensile_strength};
+  }
 
   // Hydrostatic stress of the apex, c cot phi (infinite for phi = 0).
   double apex() const {
-    const double s = std::sin(friction_angle);
-    return s > 0.0 ? cohesion * std::cos(friction_angle) / s : std::numeric_limits<double>::infinity();
+    return sin_friction > 0.0 ? cohesion * cos_friction / sin_friction : std::numeric_limits<double>::infinity();
   }
   // The cut-off acts only where it is below the apex.
   bool has_tension_cutoff() const { return tensile_strength < apex(); }
@@ -64,7 +71,10 @@ struct PrincipalReturn {
 // of: one plane, a line (compression edge, extension edge, shear-tension,
 // tension-tension), a point (Mohr-Coulomb apex, or with the cut-off its
 // corners) for which all dlambda_i >= 0 and no plane is violated; these are
-// the Kuhn-Tucker conditions, which bound the return regions.
+// the Kuhn-Tucker conditions, which bound the return regions. What no plane
+// or edge takes goes to the apex (for psi < phi the apex return is not a
+// combination of the potentials' gradients; with psi = 0 they have no
+// volumetric part at all).
 PrincipalReturn mohr_coulomb_return(const Vec3d& trial, const MohrCoulombSurface& surface,
                                     const ElasticConstants& elastic);
 
