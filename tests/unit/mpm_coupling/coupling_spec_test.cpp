@@ -1,9 +1,13 @@
 // The `coupling:` block of an mpm_case file.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
+
 #include "cosim/config/document.hpp"
 #include "cosim/error.hpp"
 #include "mpm/coupling/coupling_spec.hpp"
+#include "mpm/case/load_case.hpp"
 #include "mpm/coupling/field_names.hpp"
 
 namespace mpm::coupling {
@@ -66,6 +70,24 @@ TEST(MpmCouplingSpec, RefusesUnknownFieldsKeysAndAWrongSurfaceDimension) {
   } catch (const cosim::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("coupling.surface.cells"), std::string::npos) << e.what();
   }
+}
+
+// The coupled case of configs/mpm_coupled: its `coupling` block reads, and
+// the rest of the file is a valid mpm_case.
+TEST(MpmCouplingSpec, TheShippedCoupledCaseIsValid) {
+  const std::string file = std::string(COSIM_SOURCE_DIR) + "/configs/mpm_coupled/soil_column.yaml";
+  const auto doc = cosim::config::Document::load_file(file);
+  const CouplingSpec s = read_coupling(doc.root()["coupling"], 2);
+  ASSERT_TRUE(s.exchange_grid);
+  EXPECT_TRUE(s.exchange_grid->reads_field(names::pore_pressure));
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string without = text.str();
+  without = without.substr(0, without.find("coupling:"));
+  const CaseDescription c = load_case_text(without, file);
+  EXPECT_EQ(c.bodies.size(), 1u);
+  EXPECT_TRUE(c.bodies[0].porous);
 }
 
 }  // namespace

@@ -34,12 +34,12 @@ TEST(MpmCouplingImpulse, SplitOverParticlesConservesEachCellsImpulse) {
   EXPECT_LT((split.applied - sum).norm(), 1e-15 * sum.norm() + 1e-300);
 }
 
-TEST(MpmCouplingImpulse, CellsWithoutDeformableSolidAbsorbTheirImpulse) {
+TEST(MpmCouplingImpulse, CellsWithOnlyRigidSolidAbsorbTheirImpulseAndEmptyCellsPassItOn) {
   const Grid<2> g = make_grid<2>(Vec<2>::Zero(), Vec<2>::Constant(0.25), {4, 4}, ShapeKind::linear);
   const auto grid = ExchangeGrid<2>::covering(g, 1);
   Particles<2> particles;
-  testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.25), 0.125, 0.0, 7800.0, 0);  // rigid floor
-  testing::add_block<2>(particles, Vec<2>(0.0, 0.25), Vec<2>(1.0, 0.5), 0.125, 0.4, 2650.0, 1);
+  testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.5), 0.125, 0.0, 7800.0, 0);   // rigid floor
+  testing::add_block<2>(particles, Vec<2>(0.0, 0.5), Vec<2>(0.5, 0.75), 0.125, 0.4, 2650.0, 1);  // soil, left half
   auto roles = testing::porous_roles(2);
   roles[0].rigid = roles[0].held = true;
   std::vector<double> impulse(grid.size() * 2, 0.0);
@@ -51,10 +51,14 @@ TEST(MpmCouplingImpulse, CellsWithoutDeformableSolidAbsorbTheirImpulse) {
     if (particles.body[p] == 0) {
       EXPECT_EQ(particle_impulse[p].norm(), 0.0);
     }
-  // Rows 0..2 hold soil weight (the soil's lowest particles reach row 0's centre region), row 3 none.
+  // Row 0 and cells (3, 1), (3, 2) hold only the floor's weight: absorbed.
+  // The empty cell (3, 3) passes its impulse to the soil's weight beside it.
   EXPECT_NEAR(split.received[1], 16.0, 1e-12);
-  EXPECT_NEAR(split.applied[1] + split.absorbed[1], split.received[1], 1e-12);
-  EXPECT_NEAR(split.absorbed[1], 4.0, 1e-12);
+  EXPECT_NEAR(split.absorbed[1], 4.0 + 2.0, 1e-12);
+  EXPECT_NEAR(split.applied[1], 10.0, 1e-12);
+  Vec<2> sum = Vec<2>::Zero();
+  for (const auto& j : particle_impulse) sum += j;
+  EXPECT_LT((sum - split.applied).norm(), 1e-12);
 }
 
 TEST(MpmCouplingImpulse, StepSharesOverAWindowAddUpToTheReceivedImpulse) {

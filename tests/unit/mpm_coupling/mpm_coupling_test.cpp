@@ -127,7 +127,7 @@ TEST(MpmCoupling, ParticlesGainExactlyTheImpulseReceivedOverAWindow) {
   const Vec<2> gained = rig.solver.totals().momentum - before;
   const auto& d = rig.coupling.diagnostics();
   const Vec<2> applied = d.impulse_total.applied;
-  // Cells the block's weights do not reach absorb theirs.
+  // Empty cells away from the block absorb theirs.
   EXPECT_LT((applied + d.impulse_total.absorbed - d.impulse_total.received).norm(), 1e-14);
   const double error = (gained - applied).norm() / applied.norm();
   std::printf("  momentum gained %.9g, %.9g vs impulse applied %.9g, %.9g: relative error %.2e (tol 1e-12)\n",

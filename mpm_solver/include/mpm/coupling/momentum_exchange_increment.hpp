@@ -14,7 +14,7 @@ template <int Dim>
 struct ImpulseSplit {
   Vec<Dim> received = Vec<Dim>::Zero();  // sum over the cells
   Vec<Dim> applied = Vec<Dim>::Zero();   // sum over the particles
-  Vec<Dim> absorbed = Vec<Dim>::Zero();  // cells without deformable solid (rigid or empty)
+  Vec<Dim> absorbed = Vec<Dim>::Zero();  // cells with only rigid solid, or empty with no solid around
 };
 
 // The momentum the implicit exchange gives the solid in a step (the step's
@@ -23,8 +23,11 @@ struct ImpulseSplit {
 //   J_p = sum_c J_c m_p w_pc / sum_q m_q w_qc
 // with the conservative weights w_pc of the fields written, so
 // sum_p J_p = sum_c J_c to round-off over the cells that hold deformable
-// solid. Rigid bodies take no coupling force; a cell holding only rigid
-// solid (or none) absorbs its impulse.
+// solid. A cell without any solid (the coupler's mappings smear the impulse
+// a little past the solid's edge) passes its impulse to its neighbours
+// (3^Dim block) by their deformable mass. Rigid bodies take no coupling
+// force: a cell holding only rigid solid, or an empty cell with no
+// deformable neighbour, absorbs its impulse (reported in `absorbed`).
 template <int Dim>
 ImpulseSplit<Dim> split_impulse(const ExchangeGrid<Dim>& grid, std::span<const double> cell_impulse,
                                 const Particles<Dim>& particles, const std::vector<BodyRole>& roles,
