@@ -15,8 +15,10 @@ Schema& FrictionalParameters::add_keys(Schema& schema) {
   schema
       .optional("cohesion", Schema::number().non_negative().unit("Pa").default_value("0"), "Cohesion c0.")
       .optional("tensile_strength", Schema::number().non_negative().unit("Pa").default_value("none"),
-                "Tension cut-off sigma_t on the stress (effective, tension positive); it only acts below the apex "
-                "of the shear surface (c cot phi), which bounds tension anyway. Absent: no cut-off beyond the apex.");
+                "Tension cut-off sigma_t (effective stress, tension positive): on the major principal stress for "
+                "mohr_coulomb, on the mean stress for drucker_prager. It only acts below the apex of the shear "
+                "surface, which bounds tension anyway, and degrades with the cohesion. Absent: no cut-off beyond "
+                "the apex.");
   return CohesionDegradation::add_keys(schema);
 }
 
