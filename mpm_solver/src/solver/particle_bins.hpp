@@ -23,6 +23,7 @@ class ParticleBins {
  public:
   template <int Dim>
   void build(const Particles<Dim>& particles, const Grid<Dim>& grid, int threads) {
+    parallel_ = particles.size() >= 8192;  // see parallel_threshold in solver.cpp
     const int rows = grid.cells[Dim - 1];
     const int wanted = std::max(1, 4 * threads);  // several slabs per thread and colour
     slab_rows_ = std::max(3, rows / (2 * wanted));
@@ -52,7 +53,7 @@ class ParticleBins {
   void scatter(F&& f) const {
     const int n = slabs();
     for (int colour = 0; colour < 2; ++colour) {
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(dynamic, 1) if (parallel_)
       for (int s = colour; s < n; s += 2) {
         for (std::size_t k = begin_[s]; k < begin_[s + 1]; ++k) f(static_cast<std::size_t>(order_[k]));
       }
@@ -64,7 +65,7 @@ class ParticleBins {
   template <class F>
   void per_slab(F&& f) const {
     const int n = slabs();
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(dynamic, 1) if (parallel_)
     for (int s = 0; s < n; ++s) {
       for (std::size_t k = begin_[s]; k < begin_[s + 1]; ++k) f(static_cast<std::size_t>(order_[k]));
     }
@@ -72,6 +73,7 @@ class ParticleBins {
 
  private:
   int slab_rows_ = 3;
+  bool parallel_ = true;
   std::vector<std::size_t> begin_;
   std::vector<std::uint32_t> order_;
   std::vector<std::uint32_t> slab_of_;

@@ -43,6 +43,11 @@ struct Solver<Dim>::Impl {
   double contact_dissipation = 0.0;
   double boundary_dissipation = 0.0;
   double external_work = 0.0;
+  double internal_work = 0.0;
+  double initial_strain_energy = 0.0;
+  // Faces with a wall keep the points inside; free faces let them leave (an error).
+  Vec<Dim> wall_lower;
+  Vec<Dim> wall_upper;
   int threads = 1;
 
   explicit Impl(const CaseDescription& d);
@@ -81,6 +86,11 @@ struct Solver<Dim>::Impl {
 };
 
 namespace {
+
+// Below this many items a loop runs on one thread: thread start-up and
+// barriers cost more than the work, and far more on a loaded machine.
+constexpr std::size_t parallel_threshold = 8192;
+bool worth_threads(std::size_t items) { return items >= parallel_threshold; }
 
 template <int Dim>
 Vec<Dim> shrink(const Vec3d& v) {
@@ -179,6 +189,15 @@ Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
 
   detail::initialise_geostatic_stress(description, bodies, gravity_at(std::max(d.gravity_ramp_time, 0.0)),
                                       particles);
+  initial_strain_energy = totals().strain_energy;
+  const Vec<Dim> upper = grid.upper();
+  for (int k = 0; k < Dim; ++k) {
+    const auto walled = [&](int face) {
+      return d.boundaries[static_cast<std::size_t>(face)].kind != FaceCondition::Kind::free;
+    };
+    wall_lower[k] = walled(2 * k) ? grid.origin[k] : -std::numeric_limits<double>::infinity();
+    wall_upper[k] = walled(2 * k + 1) ? upper[k] : std::numeric_limits<double>::infinity();
+  }
 }
 
 template <int Dim>
@@ -298,7 +317,7 @@ void Solver<Dim>::Impl::integrate_grid_momentum(double dt) {
   const std::size_t total = grid.mass.size();
   const std::size_t n = grid.size();
   const double damping = description.damping;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (worth_threads(total))
   for (std::size_t i = 0; i < total; ++i) {
     const double m = grid.mass[i];
     if (m <= 1e-300) {
@@ -340,7 +359,7 @@ void Solver<Dim>::Impl::apply_contact_and_boundaries(double /*dt*/) {
   }
   boundary_dissipation += detail::apply_face_conditions(description.boundaries, faces, contact.rigid, grid);
   const std::size_t total = grid.mass.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (worth_threads(total))
   for (std::size_t i = 0; i < total; ++i) {
     if (grid.mass[i] <= 1e-300) continue;
     grid.velocity_change[i] = grid.velocity[i] - grid.velocity_change[i];  // v^{n+1} - v^n
@@ -372,7 +391,7 @@ void Solver<Dim>::Impl::interpolate_grid_to_particles(double dt, bool also_kinem
   const double flip = description.flip_fraction;
   const std::size_t n = grid.size();
   const auto count = static_cast<std::ptrdiff_t>(particles.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (worth_threads(particles.size()))
   for (std::ptrdiff_t q = 0; q < count; ++q) {
     const auto p = static_cast<std::size_t>(q);
     if (body_of(p).is_rigid()) continue;
@@ -407,7 +426,7 @@ void Solver<Dim>::Impl::remap_particle_velocities_to_grid() {
     });
   });
   const std::size_t total = grid.mass.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (worth_threads(total))
   for (std::size_t i = 0; i < total; ++i) {
     const int field = static_cast<int>(i / n);
     if (contact.rigid[static_cast<std::size_t>(field)]) {
@@ -467,7 +486,8 @@ void Solver<Dim>::Impl::update_kinematics_and_stress(double dt, bool use_remappe
     });
   }
 
-#pragma omp parallel for schedule(static)
+  double work = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : work) if (worth_threads(particles.size()))
   for (std::ptrdiff_t q = 0; q < count; ++q) {
     const auto p = static_cast<std::size_t>(q);
     const auto& body = body_of(p);
@@ -485,7 +505,7 @@ void Solver<Dim>::Impl::update_kinematics_and_stress(double dt, bool use_remappe
     });
     if (!use_remapped) particles.velocity[p] = flip * (particles.velocity[p] + dv) + (1.0 - flip) * v_pic;
     const std::size_t cell = averaged ? grid.cell_flat(grid.cell_of(particles.position[p])) : 0;
-    particles.position[p] += dt * v_pic;
+    particles.position[p] = (particles.position[p] + dt * v_pic).cwiseMax(wall_lower).cwiseMin(wall_upper);
 
     detail::VolumetricAverage average;
     if (averaged && cell_weight[cell] > 0.0) {
@@ -493,9 +513,10 @@ void Solver<Dim>::Impl::update_kinematics_and_stress(double dt, bool use_remappe
       average.own = volumetric_increment[p];
       average.cell = cell_sum[cell] / cell_weight[cell];
     }
-    detail::update_point(*body.material, L, dt, average, description.bodies[particles.body[p]].porous, p,
-                         particles);
+    work += detail::update_point(*body.material, L, dt, average, description.bodies[particles.body[p]].porous, p,
+                                 particles);
   }
+  internal_work += work;
 }
 
 template <int Dim>
@@ -517,7 +538,7 @@ double Solver<Dim>::Impl::stable_time_step() const {
   double wave = 0.0;
   double speed = 0.0;
   const auto count = static_cast<std::ptrdiff_t>(particles.size());
-#pragma omp parallel for schedule(static) reduction(max : wave, speed)
+#pragma omp parallel for schedule(static) reduction(max : wave, speed) if (worth_threads(particles.size()))
   for (std::ptrdiff_t q = 0; q < count; ++q) {
     const auto p = static_cast<std::size_t>(q);
     const auto& body = body_of(p);
@@ -556,6 +577,8 @@ Totals<Dim> Solver<Dim>::Impl::totals() const {
   t.contact_dissipation = contact_dissipation;
   t.boundary_dissipation = boundary_dissipation;
   t.external_work = external_work;
+  t.internal_work = internal_work;
+  t.plastic_dissipation = internal_work - (t.strain_energy - initial_strain_energy);
   return t;
 }
 

@@ -38,9 +38,9 @@ struct VolumetricAverage {
 };
 
 // Kinematics and stress of one deformable point for a step with velocity
-// gradient L.
+// gradient L. Returns the stress work of the step, V (sigma_n + sigma_n+1)/2 : d eps [J].
 template <int Dim>
-void update_point(const Material& material, const Mat<Dim>& L, double dt, const VolumetricAverage& average,
+double update_point(const Material& material, const Mat<Dim>& L, double dt, const VolumetricAverage& average,
                   const std::optional<PorousSpec>& porous, std::size_t p, Particles<Dim>& particles) {
   Mat<Dim> increment = Mat<Dim>::Identity() + dt * L;  // Tran et al., MPMICE, eq. 94
   if (average.kind == LockingMitigation::fbar && average.own > 0.0 && average.cell > 0.0)
@@ -56,7 +56,7 @@ void update_point(const Material& material, const Mat<Dim>& L, double dt, const 
   const double J = F_new.determinant();
   if (!(J > 0.0)) {
     particles.volume[p] = std::numeric_limits<double>::quiet_NaN();
-    return;
+    return 0.0;
   }
   particles.deformation_gradient[p] = F_new;
   particles.volume[p] = J * particles.initial_volume[p];  // Pan et al. 2021, eq. 74
@@ -76,27 +76,34 @@ void update_point(const Material& material, const Mat<Dim>& L, double dt, const 
   deformation.dt = dt;
   deformation.deformation_gradient = embed<Dim>(F_new, 1.0);
   const Tensor strain_increment = embed<Dim>(strain, 0.0);
+  double work = 0.0;
+  const auto update_and_measure = [&] {
+    const Tensor before = state.stress;
+    material.update(deformation, state);
+    work = 0.5 * particles.volume[p] * (before + state.stress).cwiseProduct(deformation.strain_increment).sum();
+  };
   if (material.is_hyperelastic()) {
     deformation.strain_increment = strain_increment;
-    material.update(deformation, state);
+    update_and_measure();
   } else if (material.objective_rate() == ObjectiveRate::jaumann) {
     const Tensor R = jaumann_rotation(embed<Dim>(spin, 0.0));
     state.stress = R * state.stress * R.transpose();
     deformation.strain_increment = strain_increment;
-    material.update(deformation, state);
+    update_and_measure();
   } else {
     // Tran et al., MPMICE, eqs. 11-14: work in the unrotated frame.
     const Tensor R_old = polar_rotation<Dim>(F_old);
     const Tensor R_new = polar_rotation<Dim>(F_new);
     state.stress = R_old.transpose() * state.stress * R_old;
     deformation.strain_increment = R_new.transpose() * strain_increment * R_new;
-    material.update(deformation, state);
+    update_and_measure();
     state.stress = R_new * state.stress * R_new.transpose();
   }
   particles.stress[p] = to_voigt(state.stress);
   particles.plastic_strain[p] = state.plastic_strain;
   particles.damage[p] = state.damage;
   particles.internal[p] = state.internal;
+  return work;
 }
 
 }  // namespace mpm::detail

@@ -23,6 +23,9 @@ struct Totals {
   double contact_dissipation = 0.0;   // work of the contact friction forces (Tran et al., MPMICE, eq. 22)
   double boundary_dissipation = 0.0;  // work removed by frictional grid faces
   double external_work = 0.0;         // work of surface loads and coupling forces
+  double internal_work = 0.0;         // stress work sum V sigma : d eps since the start
+  // Internal work not stored as elastic energy: plastic (and numerical) dissipation.
+  double plastic_dissipation = 0.0;
 };
 
 // The explicit MPM of Zheng et al. (eqs. 13-23) with the USL/MUSL variants
