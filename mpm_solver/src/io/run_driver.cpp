@@ -71,11 +71,13 @@ void record_conserved(cosim::RunSummary& summary, const Totals<Dim>& totals, boo
   set("contact_dissipation", totals.contact_dissipation, "J");
   set("boundary_dissipation", totals.boundary_dissipation, "J");
   set("external_work", totals.external_work, "J");
+  set("plastic_dissipation", totals.plastic_dissipation, "J");
   // Kinetic + strain + gravitational energy plus what left through
   // dissipation, minus the work put in: constant for a consistent scheme.
   set("energy_balance",
       totals.kinetic_energy + totals.strain_energy + totals.gravitational_energy +
-          totals.contact_dissipation + totals.boundary_dissipation - totals.external_work,
+          totals.contact_dissipation + totals.boundary_dissipation + totals.plastic_dissipation -
+          totals.external_work,
       "J");
 }
 
