@@ -1,22 +1,21 @@
 #include "mpm/grid/grid.hpp"
 
+#include "mpm/shape/shape_dispatch.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace mpm {
 namespace {
 
-// Grid values per direction and their positions (in cells from the
-// origin) for each shape; see shape_kernel.hpp.
+// Grid values per direction and their positions (in cells from the origin),
+// as the run's kernel places them (shape_kernel.hpp).
 int dofs_per_direction(ShapeKind shape, int cells) {
-  return shape == ShapeKind::quadratic_bspline ? cells + 2 : cells + 1;
+  return with_kernel<1>(shape, [&](auto kernel) { return decltype(kernel)::dofs(cells); });
 }
 
 double dof_coordinate(ShapeKind shape, int i, int cells) {
-  if (shape != ShapeKind::quadratic_bspline) return i;
-  if (i == 0) return 0.0;
-  if (i == cells + 1) return cells;
-  return i - 0.5;  // Greville abscissae of the open-knot quadratic B-spline
+  return with_kernel<1>(shape, [&](auto kernel) { return decltype(kernel)::dof_coordinate(i, cells); });
 }
 
 }  // namespace
