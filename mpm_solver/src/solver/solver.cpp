@@ -67,9 +67,9 @@ struct Solver<Dim>::Impl {
   void apply_grid_corrections(double dt);
   void apply_contact_and_boundaries(double dt);
   template <class Kernel>
-  void interpolate_grid_to_particles(double dt, bool also_kinematics);
+  void interpolate_grid_to_particles(double dt);
   template <class Kernel>
-  void remap_particle_velocities_to_grid();
+  void interpolate_and_remap_velocities();
   template <class Kernel>
   void update_positions_and_stresses(double dt);
   void move_rigid_bodies(double dt);
@@ -222,10 +222,9 @@ void Solver<Dim>::Impl::step(double dt) {
     apply_grid_corrections(dt);
     apply_contact_and_boundaries(dt);
     if (description.scheme == UpdateScheme::usl) {
-      interpolate_grid_to_particles<Kernel>(dt, /*also_kinematics=*/true);
+      interpolate_grid_to_particles<Kernel>(dt);
     } else {
-      interpolate_grid_to_particles<Kernel>(dt, /*also_kinematics=*/false);
-      remap_particle_velocities_to_grid<Kernel>();
+      interpolate_and_remap_velocities<Kernel>();
       update_positions_and_stresses<Kernel>(dt);
     }
     move_rigid_bodies(dt);
@@ -256,6 +255,7 @@ void Solver<Dim>::Impl::apply_surface_loads(double dt) {
     }
   }
   for (auto& source : force_sources) source(time, dt, particles);
+  if (description.loads.empty() && force_sources.empty()) return;  // no external force, no work
   double work = 0.0;
   for (std::size_t p = 0; p < particles.size(); ++p)
     work += particles.external_force[p].dot(particles.velocity[p]) * dt;
@@ -378,23 +378,28 @@ Mat<Dim> Solver<Dim>::Impl::velocity_gradient(const Stencil<Dim, Kernel>& stenci
   return L;
 }
 
-// Zheng et al., eqs. 20-21 and Pan et al. 2021, eqs. 71-72, blended:
-// v_p <- a (v_p + sum N dv) + (1 - a) sum N v^{n+1}, x_p <- x_p + dt sum N v^{n+1}.
-// USL continues with the kinematics and stresses from the same velocities.
+// USL: Zheng et al., eqs. 20-21 and Pan et al. 2021, eqs. 71-72, blended,
+// v_p <- a (v_p + sum N dv) + (1 - a) sum N v^{n+1}, x_p <- x_p + dt sum N v^{n+1},
+// then the kinematics and stresses from the same grid velocities.
 template <int Dim>
 template <class Kernel>
-void Solver<Dim>::Impl::interpolate_grid_to_particles(double dt, bool also_kinematics) {
-  if (also_kinematics) {
-    update_kinematics_and_stress<Kernel>(dt, /*use_remapped=*/false);
-    return;
-  }
+void Solver<Dim>::Impl::interpolate_grid_to_particles(double dt) {
+  update_kinematics_and_stress<Kernel>(dt, /*use_remapped=*/false);
+}
+
+// MUSL: the particle velocities updated with the same blend as USL;
+// their momenta mapped back to the grid give the velocity the strain rate is
+// computed from (Pan et al. 2021, Sec. 3.2). One stencil per point serves
+// both: the update reads only the grid velocities, the re-map writes only
+// the re-mapped ones.
+template <int Dim>
+template <class Kernel>
+void Solver<Dim>::Impl::interpolate_and_remap_velocities() {
   const double flip = description.flip_fraction;
   const std::size_t n = grid.size();
-  const auto count = static_cast<std::ptrdiff_t>(particles.size());
-#pragma omp parallel for schedule(static) if (worth_threads(particles.size()))
-  for (std::ptrdiff_t q = 0; q < count; ++q) {
-    const auto p = static_cast<std::size_t>(q);
-    if (body_of(p).is_rigid()) continue;
+  std::fill(grid.remapped_velocity.begin(), grid.remapped_velocity.end(), Vec<Dim>::Zero());
+  bins.scatter([&](std::size_t p) {
+    if (body_of(p).is_rigid()) return;
     Stencil<Dim, Kernel> stencil;
     stencil.evaluate(particles.position[p], particles.half_length[p], geometry);
     const std::size_t offset = static_cast<std::size_t>(field_of(p)) * n;
@@ -405,21 +410,6 @@ void Solver<Dim>::Impl::interpolate_grid_to_particles(double dt, bool also_kinem
       dv += w * grid.velocity_change[offset + v];
     });
     particles.velocity[p] = flip * (particles.velocity[p] + dv) + (1.0 - flip) * v_pic;
-  }
-}
-
-// MUSL: the updated particle momenta mapped back to the grid give the
-// velocity the strain rate is computed from (Pan et al. 2021, Sec. 3.2).
-template <int Dim>
-template <class Kernel>
-void Solver<Dim>::Impl::remap_particle_velocities_to_grid() {
-  const std::size_t n = grid.size();
-  std::fill(grid.remapped_velocity.begin(), grid.remapped_velocity.end(), Vec<Dim>::Zero());
-  bins.scatter([&](std::size_t p) {
-    if (body_of(p).is_rigid()) return;
-    Stencil<Dim, Kernel> stencil;
-    stencil.evaluate(particles.position[p], particles.half_length[p], geometry);
-    const std::size_t offset = static_cast<std::size_t>(field_of(p)) * n;
     const Vec<Dim> mv = particles.mass[p] * particles.velocity[p];
     stencil.for_each([&](std::size_t v, double w, const Vec<Dim>&) {
       grid.remapped_velocity[offset + v] += w * mv;

@@ -86,8 +86,7 @@ double update_point(const Material& material, const Mat<Dim>& L, double dt, cons
     deformation.strain_increment = strain_increment;
     update_and_measure();
   } else if (material.objective_rate() == ObjectiveRate::jaumann) {
-    const Tensor R = jaumann_rotation(embed<Dim>(spin, 0.0));
-    state.stress = R * state.stress * R.transpose();
+    rotate_by_jaumann<Dim>(spin, state.stress);
     deformation.strain_increment = strain_increment;
     update_and_measure();
   } else {
