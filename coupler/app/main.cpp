@@ -193,21 +193,13 @@ int run(const RunOptions& o) {
               {"start_time_s", job.start_time},
               {"end_time_s", job.end_time}});
   summary.write();
-  try {
+  const int code = cosim::run_and_finish(summary, [&] {
     if (job.transport == cosim::job::TransportKind::mpi)
       run_under_mpirun(job, opts, summary);
     else
       run_with_zmq(job, opts, summary);
-  } catch (const cosim::Error& e) {
-    spdlog::error("{}", e.what());
-    summary.finish(e.code(), e.what());
-    return cosim::to_int(e.code());
-  } catch (const std::exception& e) {
-    spdlog::critical("internal error: {}", e.what());
-    summary.finish(cosim::ExitCode::internal_error, std::string("internal error: ") + e.what());
-    return cosim::to_int(cosim::ExitCode::internal_error);
-  }
-  summary.finish(cosim::ExitCode::success, "completed");
+  });
+  if (code != 0) return code;
   spdlog::info("job '{}' completed: {} windows, wall time {:.3f} s; outputs in {}", job.name,
                job.windows(), summary.phases().total_seconds(), fs::absolute(o.output).string());
   return 0;

@@ -1,6 +1,7 @@
 #include "cosim/io/run_summary.hpp"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <array>
 #include <cmath>
@@ -40,6 +41,22 @@ const char* exit_code_name(ExitCode code) {
 }
 
 }  // namespace
+
+int run_and_finish(RunSummary& summary, const std::function<void()>& body) {
+  try {
+    body();
+  } catch (const Error& e) {
+    spdlog::error("{}", e.what());
+    summary.finish(e.code(), e.what());
+    return to_int(e.code());
+  } catch (const std::exception& e) {
+    spdlog::critical("internal error: {}", e.what());
+    summary.finish(ExitCode::internal_error, std::string("internal error: ") + e.what());
+    return to_int(ExitCode::internal_error);
+  }
+  summary.finish(ExitCode::success, "completed");
+  return to_int(ExitCode::success);
+}
 
 std::string iso8601_utc(std::chrono::system_clock::time_point time) {
   using namespace std::chrono;

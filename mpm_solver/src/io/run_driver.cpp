@@ -326,19 +326,7 @@ int run_case(const RunOptions& options, const StepObservers& observers) {
   cosim::init_logging(options.output, "mpm_solver", options.verbosity);
   cosim::RunSummary summary(options.output, "mpm_solver");
   summary.write();
-  try {
-    run_loaded(options, observers, summary);
-  } catch (const cosim::Error& e) {
-    spdlog::error("{}", e.what());
-    summary.finish(e.code(), e.what());
-    return cosim::to_int(e.code());
-  } catch (const std::exception& e) {
-    spdlog::critical("internal error: {}", e.what());
-    summary.finish(cosim::ExitCode::internal_error, std::string("internal error: ") + e.what());
-    return cosim::to_int(cosim::ExitCode::internal_error);
-  }
-  summary.finish(cosim::ExitCode::success, "completed");
-  return 0;
+  return cosim::run_and_finish(summary, [&] { run_loaded(options, observers, summary); });
 }
 
 }  // namespace mpm

@@ -17,6 +17,7 @@ struct BodyState {
   const Material* material = nullptr;  // null for rigid bodies
   const RigidMotion* rigid = nullptr;  // null for deformable bodies
   int field = 0;                       // grid velocity field
+  double p_wave_modulus = 0.0;         // K + 4G/3 of the material, for the time step [Pa]
   double mass = 0.0;
   Vec<Dim> rigid_velocity = Vec<Dim>::Zero();
   Vec<Dim> contact_impulse = Vec<Dim>::Zero();  // on a rigid body, this step [N s]

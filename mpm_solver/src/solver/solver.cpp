@@ -128,6 +128,7 @@ Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
       state.field = field_count++;
     } else {
       state.material = d.materials.at(static_cast<std::size_t>(spec.material)).get();
+      state.p_wave_modulus = state.material->p_wave_modulus();
       if (d.contact.enabled) {
         state.field = field_count++;
       } else {
@@ -535,7 +536,7 @@ double Solver<Dim>::Impl::stable_time_step() const {
     speed = std::max(speed, particles.velocity[p].cwiseAbs().maxCoeff());
     if (body.is_rigid() || particles.volume[p] <= 0.0) continue;
     const double density = particles.mass[p] / particles.volume[p];
-    if (density > 0.0) wave = std::max(wave, std::sqrt(body.material->p_wave_modulus() / density));
+    if (density > 0.0) wave = std::max(wave, std::sqrt(body.p_wave_modulus / density));
   }
   // Zheng et al., eq. 23.
   const double denominator = wave + speed;

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -78,6 +79,11 @@ class RunSummary {
   std::map<std::string, nlohmann::json> sections_;
   PhaseTimer phases_;
 };
+
+// Runs `body` and finishes the summary with its outcome: success
+// ("completed"), the exit code of a cosim::Error, or internal_error for any
+// other exception; errors are logged. Returns the process exit code.
+int run_and_finish(RunSummary& summary, const std::function<void()>& body);
 
 // ISO 8601 UTC with milliseconds, e.g. "2024-05-01T12:34:56.789Z".
 std::string iso8601_utc(std::chrono::system_clock::time_point time);
