@@ -1,0 +1,76 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "swe/boundary.hpp"
+#include "swe/case/bed_shape.hpp"
+#include "swe/case/initial_condition.hpp"
+#include "swe/physics.hpp"
+#include "swe/scheme.hpp"
+#include "swe/solver.hpp"
+#include "swe/solver_1d.hpp"
+#include "swe/solver_2d.hpp"
+
+namespace swe {
+
+// A free-surface gauge: eta, h and the speed at a point, every output.gauge_every.
+struct Gauge {
+  std::string name;
+  double x = 0.0;
+  double y = 0.0;
+};
+
+// The pressure part of the traction the water exerts on the bed.
+enum class BedPressure {
+  // p = rho g h, normal to the bed: per unit horizontal area (p dB/dx[, p dB/dy], -p).
+  // Exactly the reaction of the bed source -g h grad B the water feels.
+  hydrostatic,
+  // p = rho g (eta - eta_0) on wet cells, vertical only (Zheng et al., eq. 10
+  // as used in their Secs. 4.3-4.4: the soil's weight is total and its
+  // still-water load is not re-applied, only the waves' excess pressure).
+  excess,
+};
+
+struct CouplingSpec {
+  bool reads_bed = true;          // bed_elevation, per cell [m]
+  bool writes_traction = true;    // bed_traction, dimension + 1 components [Pa]
+  BedPressure pressure = BedPressure::hydrostatic;
+  double still_level = 0.0;       // eta_0 for `excess` [m]
+};
+
+struct CaseDescription {
+  std::filesystem::path file;
+  std::string name;
+  std::uint64_t config_hash = 0;
+  int dimension = 1;
+
+  std::vector<double> edges;  // 1D cells
+  Grid2d grid;                // 2D cells
+  Boundaries1d boundaries_1d;
+  Boundaries2d boundaries_2d;
+  Physics physics;
+  Scheme scheme;
+  BedShape bed;
+  InitialCondition initial;
+
+  double end_time = 0.0;
+  double min_time_step = 1e-9;
+  double max_time_step = 0.0;  // 0: no limit beyond stability
+
+  double output_every = 0.0;  // snapshots; 0: start and end only
+  bool snapshots = true;
+  double gauge_every = 0.0;   // 0: every step
+  std::vector<Gauge> gauges;
+  int threads = 0;            // 0: OpenMP's default
+
+  CouplingSpec coupling;
+};
+
+// The solver the case describes, with its bed and initial water laid.
+std::unique_ptr<Solver> make_solver(const CaseDescription& description);
+
+}  // namespace swe

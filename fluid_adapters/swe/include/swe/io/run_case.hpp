@@ -1,0 +1,30 @@
+#pragma once
+
+#include <filesystem>
+
+#include "cosim/io/logging.hpp"
+#include "cosim/participant.hpp"
+
+namespace swe {
+
+struct RunOptions {
+  std::filesystem::path config;
+  std::filesystem::path output;
+  int threads = -1;  // -1: the case's `threads`
+  cosim::Verbosity verbosity = cosim::Verbosity::normal;
+};
+
+// Runs a swe_case, standalone (empty endpoint) or as a participant of a
+// coupled job, and writes into options.output (DESIGN.md §6):
+//   summary.json, log.txt
+//   swe.xdmf + swe_<k>.h5   snapshots of h, eta, B, discharge, velocity
+//   gauges.csv              eta, h and speed at the case's gauges
+//   water.csv               per snapshot: volume, highest/lowest wet free
+//                           surface, fastest water
+// Coupled, it reads `bed_elevation` on its cells (mesh `swe_cells`) every
+// step and writes `bed_traction` at the end of every window; the pair's step
+// is min(stable SWE step, the window's remainder) (Zheng et al., eq. 38,
+// with the MPM's own step inside the MPM process). Returns the exit code.
+int run_case(const RunOptions& options, const cosim::CouplingEndpoint& endpoint);
+
+}  // namespace swe

@@ -1,0 +1,333 @@
+#include "swe/case/load_case.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "cosim/config/document.hpp"
+#include "cosim/config/kind.hpp"
+#include "cosim/error.hpp"
+#include "cosim/io/content_hash.hpp"
+#include "swe/case/case_schema.hpp"
+
+namespace swe {
+
+using cosim::config::Node;
+
+namespace {
+
+std::array<double, 2> pair_of(const Node& node, int dimension) {
+  const auto v = node.as<std::vector<double>>();
+  if (static_cast<int>(v.size()) != dimension)
+    node.fail(fmt::format("expected {} value(s) for a {}D case, got {}", dimension, dimension, v.size()));
+  return {v[0], v.size() > 1 ? v[1] : 0.0};
+}
+
+class CaseReader {
+ public:
+  explicit CaseReader(const cosim::config::Document& document) : document_(document), root_(document.root()) {}
+
+  CaseDescription read() {
+    cosim::config::expect_kind(root_, "swe_case");
+    swe_case_schema().validate(root_);
+    CaseDescription c;
+    c.file = document_.path();
+    c.config_hash = cosim::hash_bytes(document_.text());
+    c.name = root_["name"].as<std::string>();
+    c.dimension = root_["dimension"].as<int>();
+    read_mesh(c);
+    read_physics(c);
+    read_scheme(c);
+    read_boundaries(c);
+    read_bed(c);
+    read_initial(c);
+    read_time(c);
+    read_output(c);
+    c.threads = root_.get<int>("threads", 0);
+    read_coupling(c);
+    return c;
+  }
+
+ private:
+  void read_mesh(CaseDescription& c) {
+    const Node mesh = root_["mesh"];
+    if (c.dimension == 1) {
+      for (const char* key : {"origin", "upper"})
+        if (auto n = mesh.find(key)) n->fail_at_key(fmt::format("'{}' is a 2D key; a 1D mesh takes from/to/cells, segments or edges", key));
+      const bool uniform = mesh.has("cells"), stretched = mesh.has("segments"), listed = mesh.has("edges");
+      if (int(uniform) + int(stretched) + int(listed) != 1)
+        mesh.fail("give exactly one of: `cells` (with from/to), `segments` (with from) or `edges`");
+      if (listed) {
+        c.edges = mesh["edges"].as<std::vector<double>>();
+        for (std::size_t i = 1; i < c.edges.size(); ++i)
+          if (!(c.edges[i] > c.edges[i - 1]))
+            mesh["edges"].fail(fmt::format("cell {} has zero or negative width: edges {:.9g} -> {:.9g}", i - 1,
+                                           c.edges[i - 1], c.edges[i]));
+      } else if (uniform) {
+        const Node cells = mesh["cells"];
+        const int n = cells.as<int>();
+        if (n < 1) cells.fail(fmt::format("the number of cells must be >= 1, got {}", n));
+        const double from = mesh["from"].as<double>(), to = mesh["to"].as<double>();
+        if (!(to > from)) mesh["to"].fail(fmt::format("the line has zero or negative length: from {:.9g} to {:.9g}", from, to));
+        c.edges.resize(static_cast<std::size_t>(n) + 1);
+        for (int i = 0; i <= n; ++i) c.edges[static_cast<std::size_t>(i)] = from + (to - from) * i / n;
+      } else {
+        double from = mesh["from"].as<double>();
+        c.edges = {from};
+        for (const Node& segment : mesh["segments"].items()) {
+          const double to = segment["to"].as<double>(), width = segment["width"].as<double>();
+          if (!(to > from))
+            segment["to"].fail(fmt::format("segment ends at {:.9g}, not beyond its start {:.9g}", to, from));
+          const int n = std::max(1, static_cast<int>(std::lround((to - from) / width)));
+          for (int i = 1; i <= n; ++i) c.edges.push_back(i == n ? to : from + (to - from) * i / n);
+          from = to;
+        }
+      }
+      lower_ = {c.edges.front(), 0.0};
+      upper_ = {c.edges.back(), 0.0};
+    } else {
+      for (const char* key : {"from", "to", "segments", "edges"})
+        if (auto n = mesh.find(key)) n->fail_at_key(fmt::format("'{}' is a 1D key; a 2D mesh takes origin, upper and cells", key));
+      const Node cells = mesh["cells"];
+      const auto counts = cells.as<std::vector<int>>();
+      if (counts.size() != 2 || counts[0] < 1 || counts[1] < 1)
+        cells.fail("a 2D mesh needs `cells: [nx, ny]` with whole numbers >= 1");
+      const auto origin = pair_of(mesh["origin"], 2), upper = pair_of(mesh["upper"], 2);
+      for (std::size_t d = 0; d < 2; ++d) {
+        if (!(upper[d] > origin[d]))
+          mesh["upper"].fail(fmt::format("upper corner {:.9g} is not above the origin {:.9g} in direction {}",
+                                         upper[d], origin[d], d == 0 ? "x" : "y"));
+        c.grid.origin[d] = origin[d];
+        c.grid.cells[d] = counts[d];
+        c.grid.spacing[d] = (upper[d] - origin[d]) / counts[d];
+      }
+      lower_ = origin;
+      upper_ = upper;
+    }
+  }
+
+  void read_physics(CaseDescription& c) {
+    if (auto p = root_.find("physics")) {
+      c.physics.gravity = p->get<double>("gravity", c.physics.gravity);
+      c.physics.density = p->get<double>("density", c.physics.density);
+      c.physics.manning = p->get<double>("manning", c.physics.manning);
+      c.physics.dry_depth = p->get<double>("dry_depth", c.physics.dry_depth);
+    }
+  }
+
+  void read_scheme(CaseDescription& c) {
+    if (auto s = root_.find("scheme")) {
+      const std::string flux = s->get("flux", "hllc");
+      c.scheme.flux = flux == "roe" ? FluxKind::roe : flux == "hll" ? FluxKind::hll : FluxKind::hllc;
+      const std::string limiter = s->get("limiter", "van_leer");
+      c.scheme.limiter = limiter == "none"       ? LimiterKind::none
+                         : limiter == "minmod"   ? LimiterKind::minmod
+                         : limiter == "van_leer" ? LimiterKind::van_leer
+                                                 : LimiterKind::monotonized_central;
+      c.scheme.courant = s->get<double>("courant", c.scheme.courant);
+    }
+  }
+
+  static Boundary boundary_of(const Node& node) {
+    if (node.is_scalar())
+      return {node.as<std::string>() == "wall" ? BoundaryKind::wall : BoundaryKind::transmissive, 0.0};
+    if (node.size() != 1) node.fail("give one of: inflow_discharge: <q> or fixed_depth: <h>");
+    if (auto q = node.find("inflow_discharge")) return {BoundaryKind::inflow_discharge, q->as<double>()};
+    return {BoundaryKind::fixed_depth, node["fixed_depth"].as<double>()};
+  }
+
+  void read_boundaries(CaseDescription& c) {
+    const auto b = root_.find("boundaries");
+    if (!b) return;
+    const std::vector<std::string> own = c.dimension == 1 ? std::vector<std::string>{"left", "right"}
+                                                          : std::vector<std::string>{"x_min", "x_max", "y_min", "y_max"};
+    for (const auto& [key, node] : b->entries()) {
+      if (std::find(own.begin(), own.end(), key) == own.end())
+        node.fail_at_key(fmt::format("'{}' is not a face of a {}D case (faces: {})", key, c.dimension,
+                                     fmt::join(own, ", ")));
+      const Boundary boundary = boundary_of(node);
+      if (key == "left") c.boundaries_1d.left = boundary;
+      if (key == "right") c.boundaries_1d.right = boundary;
+      if (key == "x_min") c.boundaries_2d.x_min = boundary;
+      if (key == "x_max") c.boundaries_2d.x_max = boundary;
+      if (key == "y_min") c.boundaries_2d.y_min = boundary;
+      if (key == "y_max") c.boundaries_2d.y_max = boundary;
+    }
+  }
+
+  void read_bed(CaseDescription& c) {
+    const auto bed = root_.find("bed");
+    if (!bed) return;
+    c.bed.base = bed->get<double>("base", 0.0);
+    if (auto profile = bed->find("profile")) {
+      for (const Node& point : profile->items()) {
+        const auto p = point.as<std::vector<double>>();
+        if (!c.bed.profile.empty() && !(p[0] > c.bed.profile.back()[0]))
+          point.fail(fmt::format("profile x must increase: {:.9g} follows {:.9g}", p[0], c.bed.profile.back()[0]));
+        c.bed.profile.push_back({p[0], p[1]});
+      }
+      if (c.bed.profile.front()[0] > lower_[0] || c.bed.profile.back()[0] < upper_[0])
+        profile->fail(fmt::format("the profile spans x = {:.9g} .. {:.9g} but the domain spans {:.9g} .. {:.9g}; "
+                                  "it must cover the domain",
+                                  c.bed.profile.front()[0], c.bed.profile.back()[0], lower_[0], upper_[0]));
+    }
+    if (auto bumps = bed->find("bumps")) {
+      for (const Node& b : bumps->items()) {
+        BedBump bump;
+        bump.centre = pair_of(b["centre"], c.dimension);
+        bump.radius = b["radius"].as<double>();
+        bump.height = b["height"].as<double>();
+        if (!inside(bump.centre, c.dimension, bump.radius))
+          b["centre"].fail("the bump lies entirely outside the domain");
+        c.bed.bumps.push_back(bump);
+      }
+    }
+  }
+
+  InitialRegion water_of(const Node& node, int dimension, bool required) const {
+    InitialRegion r;
+    const auto surface = node.find("free_surface"), depth = node.find("depth");
+    if (surface && depth) depth->fail_at_key("give `free_surface` or `depth`, not both");
+    if (!surface && !depth) {
+      if (required) node.fail("give the water as `free_surface: <eta>` or `depth: <h>`");
+      return r;
+    }
+    r.free_surface = surface.has_value();
+    r.level = surface ? surface->as<double>() : depth->as<double>();
+    if (depth && r.level < 0.0) depth->fail(fmt::format("negative depth {:.9g} m", r.level));
+    if (auto v = node.find("velocity")) r.velocity = pair_of(*v, dimension);
+    return r;
+  }
+
+  void read_initial(CaseDescription& c) {
+    const Node initial = root_["initial"];
+    c.initial.regions.push_back(water_of(initial, c.dimension, true));
+    if (auto regions = initial.find("regions")) {
+      for (const Node& node : regions->items()) {
+        InitialRegion r = water_of(node, c.dimension, true);
+        const auto box = node.find("box"), circle = node.find("circle");
+        if (bool(box) == bool(circle)) node.fail("give the region's shape as `box` or `circle`");
+        if (box) {
+          r.shape = InitialRegion::Shape::box;
+          r.min = pair_of((*box)["min"], c.dimension);
+          r.max = pair_of((*box)["max"], c.dimension);
+        } else {
+          if (c.dimension != 2) circle->fail_at_key("a circle needs a 2D case; use a box in 1D");
+          r.shape = InitialRegion::Shape::circle;
+          r.centre = pair_of((*circle)["centre"], 2);
+          r.radius = (*circle)["radius"].as<double>();
+        }
+        c.initial.regions.push_back(r);
+      }
+    }
+  }
+
+  void read_time(CaseDescription& c) {
+    const Node time = root_["time"];
+    c.end_time = time["end_time"].as<double>();
+    c.min_time_step = time.get<double>("min_time_step", c.min_time_step);
+    c.max_time_step = time.get<double>("max_time_step", 0.0);
+  }
+
+  void read_output(CaseDescription& c) {
+    const auto output = root_.find("output");
+    if (!output) return;
+    c.output_every = output->get<double>("every", 0.0);
+    c.snapshots = output->get<bool>("snapshots", true);
+    c.gauge_every = output->get<double>("gauge_every", 0.0);
+    if (auto gauges = output->find("gauges")) {
+      for (const Node& node : gauges->items()) {
+        Gauge g;
+        g.name = node["name"].as<std::string>();
+        for (const Gauge& other : c.gauges)
+          if (other.name == g.name) node["name"].fail(fmt::format("a gauge named '{}' already exists", g.name));
+        std::array<double, 2> at{};
+        if (c.dimension == 1) {
+          if (node.has("position")) node["position"].fail_at_key("a 1D gauge takes `x`");
+          at = {node["x"].as<double>(), 0.0};
+        } else {
+          if (node.has("x")) node["x"].fail_at_key("a 2D gauge takes `position: [x, y]`");
+          at = pair_of(node["position"], 2);
+        }
+        if (!inside(at, c.dimension, 0.0))
+          node.fail(fmt::format("gauge '{}' at {} lies outside the domain [{:.9g}, {:.9g}]{}", g.name,
+                                c.dimension == 1 ? fmt::format("x = {:.9g}", at[0])
+                                                 : fmt::format("({:.9g}, {:.9g})", at[0], at[1]),
+                                lower_[0], upper_[0],
+                                c.dimension == 1 ? "" : fmt::format(" x [{:.9g}, {:.9g}]", lower_[1], upper_[1])));
+        g.x = at[0];
+        g.y = at[1];
+        c.gauges.push_back(g);
+      }
+    }
+  }
+
+  void read_coupling(CaseDescription& c) {
+    const auto coupling = root_.find("coupling");
+    if (!coupling) return;
+    auto listed = [&](const char* key, const char* field) {
+      const auto node = coupling->find(key);
+      if (!node) return true;
+      const auto names = node->as<std::vector<std::string>>();
+      return std::find(names.begin(), names.end(), field) != names.end();
+    };
+    c.coupling.reads_bed = listed("reads", "bed_elevation");
+    c.coupling.writes_traction = listed("writes", "bed_traction");
+    if (coupling->get("bed_pressure", "hydrostatic") == "excess") {
+      c.coupling.pressure = BedPressure::excess;
+      if (!coupling->has("still_level"))
+        coupling->fail("bed_pressure: excess needs `still_level`, the free surface eta_0 of the water at rest");
+      c.coupling.still_level = (*coupling)["still_level"].as<double>();
+    } else if (auto level = coupling->find("still_level")) {
+      level->fail_at_key("`still_level` is only used with bed_pressure: excess");
+    }
+  }
+
+  bool inside(const std::array<double, 2>& x, int dimension, double margin) const {
+    for (int d = 0; d < dimension; ++d) {
+      const auto k = static_cast<std::size_t>(d);
+      if (x[k] < lower_[k] - margin || x[k] > upper_[k] + margin) return false;
+    }
+    return true;
+  }
+
+  const cosim::config::Document& document_;
+  Node root_;
+  std::array<double, 2> lower_{}, upper_{};
+};
+
+}  // namespace
+
+CaseDescription load_case(const std::filesystem::path& file) {
+  const auto document = cosim::config::Document::load_file(file);
+  return CaseReader(document).read();
+}
+
+CaseDescription load_case_text(std::string_view text, const std::filesystem::path& name) {
+  const auto document = cosim::config::Document::load_string(text, name);
+  return CaseReader(document).read();
+}
+
+std::unique_ptr<Solver> make_solver(const CaseDescription& c) {
+  std::unique_ptr<Solver> solver;
+  if (c.dimension == 1)
+    solver = std::make_unique<Solver1d>(c.edges, c.physics, c.scheme, c.boundaries_1d);
+  else
+    solver = std::make_unique<Solver2d>(c.grid, c.physics, c.scheme, c.boundaries_2d);
+  const cosim::Mesh cells{"swe_cells", solver->cells()};
+  std::vector<double> bed(cells.size());
+  for (std::size_t i = 0; i < bed.size(); ++i) {
+    const cosim::Vec3 x = cells.position(i);
+    bed[i] = c.bed.at(x[0], x[1]);
+  }
+  std::vector<double> h, hu, hv;
+  c.initial.lay(cells, bed, h, hu, hv);
+  solver->set_bed(bed);
+  solver->set_state(h, hu, hv);
+  return solver;
+}
+
+}  // namespace swe

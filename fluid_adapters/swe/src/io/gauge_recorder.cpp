@@ -1,0 +1,45 @@
+#include "swe/io/gauge_recorder.hpp"
+
+#include <cmath>
+
+namespace swe {
+
+namespace {
+
+std::vector<std::string> gauge_columns(const std::vector<Gauge>& gauges) {
+  std::vector<std::string> columns{cosim::column_name("time", "s")};
+  for (const Gauge& g : gauges) {
+    columns.push_back(cosim::column_name("eta_" + g.name, "m"));
+    columns.push_back(cosim::column_name("h_" + g.name, "m"));
+    columns.push_back(cosim::column_name("speed_" + g.name, "m/s"));
+  }
+  return columns;
+}
+
+}  // namespace
+
+GaugeRecorder::GaugeRecorder(const std::filesystem::path& file, const std::vector<Gauge>& gauges,
+                             const Solver& solver)
+    : writer_(file, gauge_columns(gauges)) {
+  for (const Gauge& g : gauges) cells_.push_back(solver.cell_at(g.x, g.y));
+  row_.resize(1 + 3 * cells_.size());
+}
+
+void GaugeRecorder::record(double time, const Solver& solver) {
+  const auto h = solver.depth();
+  const auto bed = solver.bed();
+  const auto qx = solver.discharge_x();
+  const auto qy = solver.discharge_y();
+  const double dry = solver.physics().dry_depth;
+  row_[0] = time;
+  for (std::size_t k = 0; k < cells_.size(); ++k) {
+    const std::size_t c = cells_[k];
+    const double q = qy.empty() ? std::abs(qx[c]) : std::hypot(qx[c], qy[c]);
+    row_[1 + 3 * k] = h[c] + bed[c];
+    row_[2 + 3 * k] = h[c];
+    row_[3 + 3 * k] = h[c] > dry ? q / h[c] : 0.0;
+  }
+  writer_.append(row_);
+}
+
+}  // namespace swe

@@ -1,0 +1,320 @@
+#include "swe/io/run_case.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "cosim/error.hpp"
+#include "cosim/io/files.hpp"
+#include "cosim/io/run_summary.hpp"
+#include "cosim/io/snapshot_writer.hpp"
+#include "cosim/io/time_series_writer.hpp"
+#include "swe/case/load_case.hpp"
+#include "swe/coupling/bed_traction.hpp"
+#include "swe/io/gauge_recorder.hpp"
+
+namespace swe {
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr const char* cells_mesh = "swe_cells";
+constexpr const char* bed_field = "bed_elevation";
+constexpr const char* traction_field = "bed_traction";
+
+// Output times k * interval and the end; computed, not accumulated.
+class Schedule {
+ public:
+  Schedule(double interval, double end) : interval_(interval), end_(end) {}
+  double next() const {
+    if (done_) return infinity;
+    return interval_ > 0.0 ? std::min(static_cast<double>(k_) * interval_, end_) : end_;
+  }
+  bool due(double t, double tolerance) const { return next() <= t + tolerance; }
+  void passed(double t, double tolerance) {
+    if (end_ <= t + tolerance) done_ = true;
+    while (interval_ > 0.0 && static_cast<double>(k_) * interval_ <= t + tolerance) ++k_;
+  }
+
+ private:
+  double interval_, end_;
+  long k_ = 1;
+  bool done_ = false;
+};
+
+struct WaterStats {
+  double volume, eta_max, eta_min, speed_max;
+};
+
+WaterStats water_stats(const Solver& solver) {
+  const auto h = solver.depth();
+  const auto bed = solver.bed();
+  const auto qx = solver.discharge_x();
+  const auto qy = solver.discharge_y();
+  const double dry = solver.physics().dry_depth;
+  WaterStats s{solver.totals().volume, -infinity, infinity, 0.0};
+  for (std::size_t c = 0; c < h.size(); ++c) {
+    if (!(h[c] > dry)) continue;
+    s.eta_max = std::max(s.eta_max, h[c] + bed[c]);
+    s.eta_min = std::min(s.eta_min, h[c] + bed[c]);
+    const double q = qy.empty() ? std::abs(qx[c]) : std::hypot(qx[c], qy[c]);
+    s.speed_max = std::max(s.speed_max, q / h[c]);
+  }
+  if (s.eta_max == -infinity) s.eta_max = s.eta_min = std::numeric_limits<double>::quiet_NaN();
+  return s;
+}
+
+nlohmann::json case_section(const CaseDescription& c, const Solver& solver) {
+  return {{"name", c.name},
+          {"dimension", c.dimension},
+          {"cells", solver.cell_count()},
+          {"flux", to_string(c.scheme.flux)},
+          {"limiter", to_string(c.scheme.limiter)},
+          {"courant", c.scheme.courant},
+          {"manning", c.physics.manning},
+          {"end_time_s", c.end_time}};
+}
+
+class CaseRun {
+ public:
+  CaseRun(const CaseDescription& description, const RunOptions& options, const cosim::CouplingEndpoint& endpoint,
+          cosim::RunSummary& summary)
+      : c_(description),
+        options_(options),
+        summary_(summary),
+        solver_(make_solver(description)),
+        participant_(endpoint.name_or(description.name), endpoint),
+        snapshots_(description.output_every, description.end_time),
+        tolerance_(1e-10 * description.end_time) {}
+
+  void run() {
+    try {
+      {
+        auto scope = summary_.phases().measure("setup");
+        summary_.set_section("case", case_section(c_, *solver_));
+        declare_coupling();
+        participant_.initialize(0.0, c_.end_time);
+        if (participant_.is_coupled() && c_.coupling.reads_bed) lay_water_over_received_bed();
+        end_time_ = participant_.end_time();
+        gauge_times_.emplace(c_.gauge_every, end_time_);
+        snapshots_ = Schedule(c_.output_every, end_time_);
+        tolerance_ = 1e-10 * end_time_;
+        open_outputs();
+      }
+      const Totals start = solver_->totals();
+      record_conserved(start, true);
+      write_outputs(0.0);
+      summary_.write();
+      loop();
+      record_conserved(solver_->totals(), false);
+      participant_.finalize();
+    } catch (const std::exception& e) {
+      record_conserved(solver_->totals(), false);
+      participant_.abort(e.what());
+      throw;
+    }
+    spdlog::info("completed: t = {:.6g} s in {} steps ({} snapshots)", participant_.time(), steps_,
+                 snapshot_writer_ ? snapshot_writer_->snapshots_written() : 0);
+  }
+
+ private:
+  void declare_coupling() {
+    if (!participant_.is_coupled()) return;
+    participant_.declare_mesh({cells_mesh, solver_->cells()});
+    if (c_.coupling.reads_bed) participant_.declare_read({bed_field, cells_mesh, 1, "m"}, 0.0);
+    if (c_.coupling.writes_traction) {
+      participant_.declare_write({traction_field, cells_mesh, solver_->dimension() + 1, "Pa"});
+      participant_.write(traction_field, bed_traction(*solver_, c_.coupling));
+    }
+  }
+
+  // The bed of a coupled run comes from the soil: the case's water is laid
+  // again over it (a free surface stays a free surface).
+  void lay_water_over_received_bed() {
+    const std::vector<double> bed = participant_.read(bed_field);
+    std::vector<double> h, hu, hv;
+    c_.initial.lay({cells_mesh, solver_->cells()}, bed, h, hu, hv);
+    solver_->set_bed(bed);
+    solver_->set_state(h, hu, hv);
+    spdlog::info("coupled: water laid over the received bed ({} cells)", bed.size());
+  }
+
+  void open_outputs() {
+    if (c_.snapshots)
+      snapshot_writer_.emplace(options_.output, "swe", cosim::Mesh{cells_mesh, solver_->cells()});
+    if (!c_.gauges.empty()) gauges_.emplace(options_.output / "gauges.csv", c_.gauges, *solver_);
+    water_.emplace(options_.output / "water.csv",
+                   std::vector<std::string>{cosim::column_name("time", "s"),
+                                            cosim::column_name("volume", solver_->dimension() == 1 ? "m^2" : "m^3"),
+                                            cosim::column_name("eta_max", "m"), cosim::column_name("eta_min", "m"),
+                                            cosim::column_name("speed_max", "m/s")});
+  }
+
+  void loop() {
+    using Clock = std::chrono::steady_clock;
+    auto last_progress = Clock::now();
+    const bool coupled = participant_.is_coupled();
+    std::vector<double> bed;
+    while (participant_.is_coupling_ongoing()) {
+      const double t = participant_.time();
+      if (coupled && c_.coupling.reads_bed) {
+        auto scope = summary_.phases().measure("bed_update");
+        bed.resize(solver_->cell_count());
+        participant_.read(bed_field, bed);
+        solver_->set_bed(bed);
+      }
+      const double stable = solver_->stable_time_step();
+      if (!(stable >= c_.min_time_step))
+        throw cosim::NumericalError(fmt::format(
+            "the stable time step {:.4g} s fell below time.min_time_step = {:.4g} s at t = {:.9g} s (step {})",
+            stable, c_.min_time_step, t, steps_));
+      double dt = std::min(stable, participant_.max_time_step());
+      if (c_.max_time_step > 0.0) dt = std::min(dt, c_.max_time_step);
+      const double next_output = std::min(snapshots_.next(), gauge_times_->next());
+      if (next_output > t + tolerance_) dt = std::min(dt, next_output - t);
+      {
+        auto scope = summary_.phases().measure("advance");
+        solver_->step(dt);
+      }
+      ++steps_;
+      min_dt_ = std::min(min_dt_, dt);
+      const bool window_ends = dt >= participant_.max_time_step() - tolerance_;
+      if (coupled && c_.coupling.writes_traction && window_ends) {
+        auto scope = summary_.phases().measure("traction");
+        participant_.write(traction_field, bed_traction(*solver_, c_.coupling));
+      }
+      {
+        auto scope = summary_.phases().measure("coupling");
+        participant_.advance(dt);
+      }
+      const double now = participant_.time();
+      if (steps_ % 64 == 0 || snapshots_.due(now, tolerance_)) check_state(now);
+      write_outputs(now);
+      if (Clock::now() - last_progress > std::chrono::seconds(5)) {
+        last_progress = Clock::now();
+        const WaterStats s = water_stats(*solver_);
+        spdlog::info("t = {:.6g} s / {:.6g} s, step {}, dt = {:.3g} s, eta max {:.6g} m, speed max {:.4g} m/s", now,
+                     end_time_, steps_, dt, s.eta_max, s.speed_max);
+        summary_.set_steps(static_cast<std::int64_t>(steps_));
+        summary_.write();
+      }
+    }
+  }
+
+  void check_state(double t) const {
+    const auto h = solver_->depth();
+    const auto q = solver_->discharge_x();
+    for (std::size_t c = 0; c < h.size(); ++c)
+      if (!std::isfinite(h[c]) || !std::isfinite(q[c]) || h[c] < 0.0)
+        throw cosim::NumericalError(
+            fmt::format("cell {} has depth {} and discharge {} at t = {:.9g} s (step {})", c, h[c], q[c], t, steps_));
+  }
+
+  void write_outputs(double t) {
+    if (gauges_ && (t == 0.0 || gauge_times_->due(t, tolerance_))) gauges_->record(t, *solver_);
+    if (t > 0.0) gauge_times_->passed(t, tolerance_);
+    if (t == 0.0 || snapshots_.due(t, tolerance_)) {
+      auto scope = summary_.phases().measure("output");
+      const WaterStats s = water_stats(*solver_);
+      eta_max_ = std::max(eta_max_, s.eta_max);
+      water_->append({t, s.volume, s.eta_max, s.eta_min, s.speed_max});
+      if (snapshot_writer_) write_snapshot(t);
+      if (t > 0.0) snapshots_.passed(t, tolerance_);
+    }
+  }
+
+  void write_snapshot(double t) {
+    const auto h = solver_->depth();
+    const auto bed = solver_->bed();
+    const auto qx = solver_->discharge_x();
+    const auto qy = solver_->discharge_y();
+    const double dry = solver_->physics().dry_depth;
+    const int dim = solver_->dimension();
+    const std::size_t n = h.size();
+    eta_.resize(n);
+    discharge_.resize(n * static_cast<std::size_t>(dim));
+    velocity_.resize(n * static_cast<std::size_t>(dim));
+    for (std::size_t c = 0; c < n; ++c) {
+      eta_[c] = h[c] + bed[c];
+      const std::size_t k = c * static_cast<std::size_t>(dim);
+      discharge_[k] = qx[c];
+      velocity_[k] = h[c] > dry ? qx[c] / h[c] : 0.0;
+      if (dim == 2) {
+        discharge_[k + 1] = qy[c];
+        velocity_[k + 1] = h[c] > dry ? qy[c] / h[c] : 0.0;
+      }
+    }
+    snapshot_writer_->write(t, {{"h", {h, 1, "m"}},
+                                {"eta", {eta_, 1, "m"}},
+                                {"bed", {bed, 1, "m"}},
+                                {"discharge", {discharge_, dim, "m^2/s"}},
+                                {"velocity", {velocity_, dim, "m/s"}}});
+  }
+
+  void record_conserved(const Totals& totals, bool start) {
+    const bool line = solver_->dimension() == 1;
+    auto set = [&](const std::string& name, double value, const std::string& unit) {
+      if (start)
+        summary_.set_conserved_start(name, value, unit);
+      else
+        summary_.set_conserved_end(name, value, unit);
+    };
+    set("water_volume", totals.volume, line ? "m^2" : "m^3");
+    set("momentum_x", c_.physics.density * totals.momentum_x, line ? "kg/s" : "kg m/s");
+    if (!line) set("momentum_y", c_.physics.density * totals.momentum_y, "kg m/s");
+    if (!start) {
+      summary_.set_steps(static_cast<std::int64_t>(steps_));
+      summary_.set_windows(static_cast<std::int64_t>(participant_.window_index()));
+      summary_.set_metric("max_free_surface", eta_max_, "m");
+      if (steps_ > 0) summary_.set_metric("min_time_step", min_dt_, "s");
+      const auto& timings = participant_.timings();
+      summary_.set_metric("coupling_wait", timings.waiting, "s");
+    }
+  }
+
+  const CaseDescription& c_;
+  const RunOptions& options_;
+  cosim::RunSummary& summary_;
+  std::unique_ptr<Solver> solver_;
+  cosim::Participant participant_;
+  Schedule snapshots_;
+  std::optional<Schedule> gauge_times_;
+  double tolerance_;
+  double end_time_ = 0.0;
+  std::size_t steps_ = 0;
+  double min_dt_ = infinity;
+  double eta_max_ = -infinity;
+  std::optional<cosim::SnapshotWriter> snapshot_writer_;
+  std::optional<GaugeRecorder> gauges_;
+  std::optional<cosim::TimeSeriesWriter> water_;
+  std::vector<double> eta_, discharge_, velocity_;
+};
+
+}  // namespace
+
+int run_case(const RunOptions& options, const cosim::CouplingEndpoint& endpoint) {
+  cosim::create_output_directory(options.output);
+  cosim::init_logging(options.output, "swe_fluid", options.verbosity);
+  cosim::RunSummary summary(options.output, "swe_fluid");
+  return cosim::run_and_finish(summary, [&] {
+    const CaseDescription description = [&] {
+      auto scope = summary.phases().measure("read_case");
+      return load_case(options.config);
+    }();
+    summary.set_config(options.config, description.config_hash);
+    const int threads = options.threads >= 0 ? options.threads : description.threads;
+    if (threads > 0) omp_set_num_threads(threads);
+    spdlog::info("case '{}': {}D, {} threads, end time {} s", description.name, description.dimension,
+                 omp_get_max_threads(), description.end_time);
+    CaseRun run(description, options, endpoint, summary);
+    run.run();
+  });
+}
+
+}  // namespace swe
