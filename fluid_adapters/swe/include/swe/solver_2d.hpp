@@ -23,9 +23,17 @@ struct Boundaries2d {
   Boundary x_min, x_max, y_min, y_max;
 };
 
+//
+// Ghost cells: walls mirror the interior (bed included) with the normal
+// velocity negated; the other kinds copy the adjacent cell (see boundary.hpp;
+// inflow into a dry cell uses the critical depth (q^2/g)^(1/3)).
+// cell_at: cells are closed below, open above, except that the upper edges of
+// the domain belong to the last cells.
 class Solver2d final : public Solver {
  public:
-  // Throws cosim::InputError for a non-positive spacing or cell count.
+  // Throws cosim::InputError for a non-positive spacing or cell count (and a
+  // non-positive gravity, a Courant number outside (0, 1], a negative
+  // fixed_depth).
   Solver2d(Grid2d grid, Physics physics, Scheme scheme, Boundaries2d boundaries);
   ~Solver2d() override;
 
@@ -37,6 +45,11 @@ class Solver2d final : public Solver {
 
   void set_state(std::span<const double> h, std::span<const double> hu, std::span<const double> hv) override;
   void set_bed(std::span<const double> bed) override;
+  // dt = C_r / max over cells of ((|u| + k c) / dx + (|v| + k c) / dy),
+  // c = sqrt(g h), k = 2 for a cell with a dry neighbour (the dry-front
+  // speed u + 2c), else 1. The unsplit update is a convex combination of 1D
+  // half-cell updates, so depths stay non-negative for C_r <= 1/2.
+  // +infinity when every cell is dry.
   double stable_time_step() const override;
   void step(double dt) override;
 

@@ -1,0 +1,85 @@
+#include "solver_2d/ghost_cells.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace swe::solver_2d {
+
+namespace {
+
+// One side of the grid: `count` boundary cells, first at `first`, the next at
+// +along; `inward` steps from a boundary cell into the domain; the outward
+// normal points along -inward with sign `outward` (+1 on max sides, -1 on
+// min sides); `depth` interior cells lie along inward.
+struct Side {
+  std::ptrdiff_t first, count, along, inward, depth;
+  double outward;
+  std::vector<double>* normal_discharge;
+  std::vector<double>* tangential_discharge;
+};
+
+void fill_side(const Side& side, const Boundary& boundary, const Physics& physics, PaddedFields& f,
+               std::vector<double>& bed) {
+  std::vector<double>& qn = *side.normal_discharge;
+  std::vector<double>& qt = *side.tangential_discharge;
+  const double g = physics.gravity;
+  for (std::ptrdiff_t n = 0; n < side.count; ++n) {
+    const std::ptrdiff_t edge = side.first + n * side.along;
+    for (std::ptrdiff_t layer = 1; layer <= PaddedLayout::ghosts; ++layer) {
+      const std::ptrdiff_t ghost = edge - layer * side.inward;
+      const std::ptrdiff_t source =
+          boundary.kind == BoundaryKind::wall ? edge + std::min(layer - 1, side.depth - 1) * side.inward : edge;
+      bed[ghost] = bed[source];
+      switch (boundary.kind) {
+        case BoundaryKind::wall:
+          f.h[ghost] = f.h[source];
+          qn[ghost] = -qn[source];
+          qt[ghost] = qt[source];
+          break;
+        case BoundaryKind::transmissive:
+          f.h[ghost] = f.h[source];
+          qn[ghost] = qn[source];
+          qt[ghost] = qt[source];
+          break;
+        case BoundaryKind::inflow_discharge: {
+          const double q = boundary.value;
+          const double critical_depth = std::cbrt(q * q / g);
+          f.h[ghost] = f.h[source] >= physics.dry_depth ? f.h[source] : critical_depth;
+          qn[ghost] = -side.outward * q;
+          qt[ghost] = 0.0;
+          break;
+        }
+        case BoundaryKind::fixed_depth: {
+          const double h_i = f.h[source];
+          const bool wet = h_i >= physics.dry_depth;
+          const double un_i = wet ? qn[source] / h_i : 0.0;
+          const double ut_i = wet ? qt[source] / h_i : 0.0;
+          const double h_b = boundary.value;
+          // Outgoing invariant u_n + 2c (max side) or u_n - 2c (min side) kept.
+          const double un_b = un_i + side.outward * 2.0 * (std::sqrt(g * h_i) - std::sqrt(g * h_b));
+          f.h[ghost] = h_b;
+          qn[ghost] = h_b * un_b;
+          qt[ghost] = h_b * ut_i;
+          break;
+        }
+      }
+      update_primitives(f, bed.data(), ghost, physics.dry_depth);
+    }
+  }
+}
+
+}  // namespace
+
+void fill_ghost_cells(const PaddedLayout& layout, const Boundaries2d& boundaries, const Physics& physics,
+                      PaddedFields& fields, std::vector<double>& bed) {
+  const std::ptrdiff_t nx = layout.nx, ny = layout.ny, sx = layout.stride();
+  std::vector<double>* hu = &fields.hu;
+  std::vector<double>* hv = &fields.hv;
+  fill_side({layout.index(0, 0), ny, sx, 1, nx, -1.0, hu, hv}, boundaries.x_min, physics, fields, bed);
+  fill_side({layout.index(nx - 1, 0), ny, sx, -1, nx, 1.0, hu, hv}, boundaries.x_max, physics, fields, bed);
+  fill_side({layout.index(0, 0), nx, 1, sx, ny, -1.0, hv, hu}, boundaries.y_min, physics, fields, bed);
+  fill_side({layout.index(0, ny - 1), nx, 1, -sx, ny, 1.0, hv, hu}, boundaries.y_max, physics, fields, bed);
+}
+
+}  // namespace swe::solver_2d

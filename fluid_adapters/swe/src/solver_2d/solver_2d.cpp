@@ -1,0 +1,281 @@
+#include "swe/solver_2d.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cosim/error.hpp"
+#include "solver_2d/ghost_cells.hpp"
+#include "solver_2d/padded_fields.hpp"
+#include "solver_2d/runge_kutta_stage.hpp"
+
+namespace swe {
+
+using solver_2d::PaddedFields;
+using solver_2d::PaddedLayout;
+
+namespace {
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw cosim::InputError("swe 2D solver: " + what);
+}
+
+std::string number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
+
+void validate(const Grid2d& grid, const Physics& physics, const Scheme& scheme, const Boundaries2d& boundaries) {
+  const char* axis[2] = {"x", "y"};
+  for (int d = 0; d < 2; ++d) {
+    require(grid.spacing[d] > 0.0 && std::isfinite(grid.spacing[d]),
+            std::string("grid spacing in ") + axis[d] + " must be positive, got " + number(grid.spacing[d]));
+    require(grid.cells[d] > 0,
+            std::string("cell count in ") + axis[d] + " must be positive, got " + std::to_string(grid.cells[d]));
+    require(std::isfinite(grid.origin[d]), std::string("grid origin in ") + axis[d] + " must be finite");
+  }
+  require(physics.gravity > 0.0, "gravity must be positive, got " + number(physics.gravity));
+  require(physics.manning >= 0.0, "manning must be non-negative, got " + number(physics.manning));
+  require(physics.dry_depth >= 0.0, "dry_depth must be non-negative, got " + number(physics.dry_depth));
+  require(scheme.courant > 0.0 && scheme.courant <= 1.0,
+          "courant must lie in (0, 1], got " + number(scheme.courant));
+  const std::pair<const char*, const Boundary*> sides[4] = {
+      {"x_min", &boundaries.x_min}, {"x_max", &boundaries.x_max},
+      {"y_min", &boundaries.y_min}, {"y_max", &boundaries.y_max}};
+  for (const auto& [name, b] : sides) {
+    require(std::isfinite(b->value), std::string("boundary ") + name + " value must be finite");
+    require(b->kind != BoundaryKind::fixed_depth || b->value >= 0.0,
+            std::string("boundary ") + name + " fixed_depth must be non-negative, got " + number(b->value));
+  }
+}
+
+}  // namespace
+
+struct Solver2d::Impl {
+  Grid2d grid;
+  Physics physics;
+  Scheme scheme;
+  Boundaries2d boundaries;
+  PaddedLayout layout;
+  std::vector<double> bed;  // padded
+  PaddedFields state;       // U^n, ghosts and primitives always current
+  PaddedFields stage;       // U^(1) of SSP-RK2
+  std::vector<solver_2d::StageWorkspace> workspaces;
+  std::vector<double> bed_cells;  // unpadded, for bed()
+  // Unpadded copies of the state for depth() and the discharges, refreshed on demand.
+  mutable std::vector<double> h_cells, hu_cells, hv_cells;
+  mutable bool cells_current = false;
+
+  Impl(Grid2d g, Physics p, Scheme s, Boundaries2d b)
+      : grid(g), physics(p), scheme(s), boundaries(b), layout{g.cells[0], g.cells[1]},
+        bed(layout.size()), state(layout.size()), stage(layout.size()),
+        bed_cells(static_cast<std::size_t>(layout.nx * layout.ny)) {
+    fill_ghosts(state);
+  }
+
+  std::size_t cell_count() const { return static_cast<std::size_t>(layout.nx * layout.ny); }
+  bool parallel() const { return layout.nx * layout.ny > solver_2d::parallel_cell_count; }
+
+  void fill_ghosts(PaddedFields& f) { solver_2d::fill_ghost_cells(layout, boundaries, physics, f, bed); }
+
+  // Interior primitives of the state (after set_state / set_bed) and its ghosts.
+  void refresh_state() {
+    const std::ptrdiff_t nx = layout.nx, ny = layout.ny;
+    for (std::ptrdiff_t j = 0; j < ny; ++j)
+      for (std::ptrdiff_t i = 0; i < nx; ++i)
+        solver_2d::update_primitives(state, bed.data(), layout.index(i, j), physics.dry_depth);
+    fill_ghosts(state);
+    cells_current = false;
+  }
+
+  void copy_cells() const {
+    if (cells_current) return;
+    const std::size_t n = cell_count();
+    h_cells.resize(n);
+    hu_cells.resize(n);
+    hv_cells.resize(n);
+    const std::ptrdiff_t nx = layout.nx, ny = layout.ny;
+#pragma omp parallel for schedule(static) if (n > solver_2d::parallel_cell_count)
+    for (std::ptrdiff_t j = 0; j < ny; ++j) {
+      const std::ptrdiff_t from = layout.index(0, j);
+      std::copy_n(state.h.begin() + from, nx, h_cells.begin() + j * nx);
+      std::copy_n(state.hu.begin() + from, nx, hu_cells.begin() + j * nx);
+      std::copy_n(state.hv.begin() + from, nx, hv_cells.begin() + j * nx);
+    }
+    cells_current = true;
+  }
+
+  solver_2d::StageArguments stage_arguments(double dt, double base_weight, bool with_friction) const {
+    return {layout, &physics, &scheme, bed.data(), dt, 1.0 / grid.spacing[0], 1.0 / grid.spacing[1],
+            base_weight, with_friction};
+  }
+};
+
+Solver2d::Solver2d(Grid2d grid, Physics physics, Scheme scheme, Boundaries2d boundaries) {
+  validate(grid, physics, scheme, boundaries);
+  impl_ = std::make_unique<Impl>(grid, physics, scheme, boundaries);
+}
+
+Solver2d::~Solver2d() = default;
+
+std::size_t Solver2d::cell_count() const { return impl_->cell_count(); }
+
+cosim::MeshGeometry Solver2d::cells() const {
+  const Grid2d& g = impl_->grid;
+  cosim::UniformGrid mesh;
+  mesh.dim = 2;
+  mesh.origin = {g.origin[0], g.origin[1], 0.0};
+  mesh.spacing = {g.spacing[0], g.spacing[1], 1.0};
+  mesh.cells = {g.cells[0], g.cells[1], 1};
+  mesh.location = cosim::GridLocation::cell;
+  return mesh;
+}
+
+double Solver2d::cell_size(std::size_t) const { return impl_->grid.spacing[0] * impl_->grid.spacing[1]; }
+
+std::size_t Solver2d::cell_at(double x, double y) const {
+  const Grid2d& g = impl_->grid;
+  const double position[2] = {x, y};
+  std::size_t index[2];
+  for (int d = 0; d < 2; ++d) {
+    const double s = (position[d] - g.origin[d]) / g.spacing[d];
+    // The upper edge of the domain belongs to the last cell.
+    if (!(s >= 0.0 && s <= g.cells[d])) return cell_count();
+    index[d] = std::min(static_cast<std::size_t>(s), static_cast<std::size_t>(g.cells[d] - 1));
+  }
+  return index[0] + static_cast<std::size_t>(g.cells[0]) * index[1];
+}
+
+void Solver2d::set_state(std::span<const double> h, std::span<const double> hu, std::span<const double> hv) {
+  Impl& m = *impl_;
+  const std::size_t n = m.cell_count();
+  auto check_size = [n](std::span<const double> values, const char* name, bool may_be_empty) {
+    require(values.size() == n || (may_be_empty && values.empty()),
+            std::string(name) + " has " + std::to_string(values.size()) + " values for " + std::to_string(n) +
+                " cells");
+  };
+  check_size(h, "depth", false);
+  check_size(hu, "discharge_x", true);
+  check_size(hv, "discharge_y", true);
+  for (std::size_t c = 0; c < n; ++c) {
+    require(h[c] >= 0.0 && std::isfinite(h[c]),
+            "depth of cell " + std::to_string(c) + " must be finite and non-negative, got " + number(h[c]));
+    require((hu.empty() || std::isfinite(hu[c])) && (hv.empty() || std::isfinite(hv[c])),
+            "discharge of cell " + std::to_string(c) + " must be finite");
+  }
+  const std::ptrdiff_t nx = m.layout.nx;
+  for (std::size_t c = 0; c < n; ++c) {
+    const std::ptrdiff_t k = m.layout.index(static_cast<std::ptrdiff_t>(c) % nx, static_cast<std::ptrdiff_t>(c) / nx);
+    const bool wet = h[c] >= m.physics.dry_depth;  // dry cells carry no momentum
+    m.state.h[k] = h[c];
+    m.state.hu[k] = wet && !hu.empty() ? hu[c] : 0.0;
+    m.state.hv[k] = wet && !hv.empty() ? hv[c] : 0.0;
+  }
+  m.refresh_state();
+}
+
+void Solver2d::set_bed(std::span<const double> bed) {
+  Impl& m = *impl_;
+  const std::size_t n = m.cell_count();
+  require(bed.size() == n, "bed has " + std::to_string(bed.size()) + " values for " + std::to_string(n) + " cells");
+  for (std::size_t c = 0; c < n; ++c)
+    require(std::isfinite(bed[c]), "bed of cell " + std::to_string(c) + " must be finite");
+  const std::ptrdiff_t nx = m.layout.nx;
+  for (std::size_t c = 0; c < n; ++c)
+    m.bed[m.layout.index(static_cast<std::ptrdiff_t>(c) % nx, static_cast<std::ptrdiff_t>(c) / nx)] = bed[c];
+  m.bed_cells.assign(bed.begin(), bed.end());
+  m.refresh_state();
+}
+
+double Solver2d::stable_time_step() const {
+  const Impl& m = *impl_;
+  const PaddedLayout& layout = m.layout;
+  const std::ptrdiff_t nx = layout.nx, ny = layout.ny, sx = layout.stride();
+  const double inv_dx = 1.0 / m.grid.spacing[0], inv_dy = 1.0 / m.grid.spacing[1];
+  const double g = m.physics.gravity, dry_depth = m.physics.dry_depth;
+  const double* h = m.state.h.data();
+  const double* u = m.state.u.data();
+  const double* v = m.state.v.data();
+  double rate = 0.0;  // max over cells of (|u| + k c) / dx + (|v| + k c) / dy
+#pragma omp parallel for schedule(static) reduction(max : rate) if (m.parallel())
+  for (std::ptrdiff_t j = 0; j < ny; ++j) {
+    for (std::ptrdiff_t i = 0; i < nx; ++i) {
+      const std::ptrdiff_t c = layout.index(i, j);
+      const bool dry_neighbour =
+          std::min(std::min(h[c - 1], h[c + 1]), std::min(h[c - sx], h[c + sx])) < dry_depth;
+      const double c_wave = (dry_neighbour ? 2.0 : 1.0) * std::sqrt(g * h[c]);
+      rate = std::max(rate, (std::abs(u[c]) + c_wave) * inv_dx + (std::abs(v[c]) + c_wave) * inv_dy);
+    }
+  }
+  return rate > 0.0 ? m.scheme.courant / rate : std::numeric_limits<double>::infinity();
+}
+
+void Solver2d::step(double dt) {
+  Impl& m = *impl_;
+  require(dt >= 0.0 && std::isfinite(dt), "time step must be finite and non-negative, got " + number(dt));
+  // Stage 1: U1 = U^n - dt R(U^n).
+  solver_2d::runge_kutta_stage(m.stage_arguments(dt, 0.0, false), m.state, m.state, m.stage, m.workspaces);
+  m.fill_ghosts(m.stage);
+  // Stage 2: U^(n+1) = (U^n + U1 - dt R(U1)) / 2, then Manning friction.
+  solver_2d::runge_kutta_stage(m.stage_arguments(dt, 0.5, true), m.stage, m.state, m.state, m.workspaces);
+  m.fill_ghosts(m.state);
+  m.cells_current = false;
+}
+
+std::span<const double> Solver2d::depth() const {
+  impl_->copy_cells();
+  return impl_->h_cells;
+}
+
+std::span<const double> Solver2d::discharge_x() const {
+  impl_->copy_cells();
+  return impl_->hu_cells;
+}
+
+std::span<const double> Solver2d::discharge_y() const {
+  impl_->copy_cells();
+  return impl_->hv_cells;
+}
+
+std::span<const double> Solver2d::bed() const { return impl_->bed_cells; }
+
+Totals Solver2d::totals() const {
+  const Impl& m = *impl_;
+  const std::ptrdiff_t nx = m.layout.nx, ny = m.layout.ny;
+  // Row sums, then the rows in order: the same totals on any thread count.
+  std::vector<Totals> rows(static_cast<std::size_t>(ny));
+#pragma omp parallel for schedule(static) if (m.parallel())
+  for (std::ptrdiff_t j = 0; j < ny; ++j) {
+    Totals& r = rows[j];
+    for (std::ptrdiff_t i = 0; i < nx; ++i) {
+      const std::ptrdiff_t c = m.layout.index(i, j);
+      r.volume += m.state.h[c];
+      r.momentum_x += m.state.hu[c];
+      r.momentum_y += m.state.hv[c];
+    }
+  }
+  Totals t;
+  for (const Totals& r : rows) {
+    t.volume += r.volume;
+    t.momentum_x += r.momentum_x;
+    t.momentum_y += r.momentum_y;
+  }
+  const double area = m.grid.spacing[0] * m.grid.spacing[1];
+  t.volume *= area;
+  t.momentum_x *= area;
+  t.momentum_y *= area;
+  return t;
+}
+
+const Physics& Solver2d::physics() const { return impl_->physics; }
+const Scheme& Solver2d::scheme() const { return impl_->scheme; }
+const Grid2d& Solver2d::grid() const { return impl_->grid; }
+
+}  // namespace swe
