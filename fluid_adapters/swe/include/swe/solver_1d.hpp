@@ -12,6 +12,33 @@ namespace swe {
 // the non-uniform spacing, hydrostatic reconstruction of the bed source
 // (well-balanced with dry cells), SSP-RK2 in time, semi-implicit Manning
 // friction (eqs. 35-36), CFL step (eq. 37).
+//
+// Reconstruction: depth h, surface eta = h + B and velocity u (0 in dry
+// cells) get limited slopes from the one-sided differences divided by the
+// centre distances; each slope is then scaled down so that both face values
+// lie between the cell's value and the neighbour's on that side (bounded and
+// non-negative on any spacing, face mean = cell mean). Face bed = eta - h.
+//
+// Boundaries, through two ghost cells per side (bed = adjacent interior bed,
+// width = mirrored interior width):
+//   wall              ghosts mirror the two interior cells, discharge negated;
+//   transmissive      both ghosts copy the adjacent cell;
+//   inflow_discharge  ghost discharge = value, pointing into the domain; ghost
+//                     depth = adjacent depth, but at least the critical depth
+//                     (value^2 / g)^(1/3) so water also enters a dry channel;
+//   fixed_depth       ghost depth h_b = value, velocity from the Riemann
+//                     invariant leaving the domain: on the right side
+//                     u_b = u_i + 2 (sqrt(g h_i) - sqrt(g h_b)) (u + 2c kept),
+//                     on the left side u_b = u_i - 2 (sqrt(g h_i) - sqrt(g h_b))
+//                     (u - 2c kept).
+//
+// Stable step (eq. 37 per face, local width):
+//   dt = C_r * min over faces of min(dx_l, dx_r) / s_face,
+//   s_face = max(|u^| + c^ (Roe averages of the two cells, both wet),
+//                |u_l| + c_l, |u_r| + c_r),
+// where a wet cell next to a dry one (h < dry_depth) counts |u| + 2c, the
+// speed of a front running onto the dry bed; ghost cells take part, so the
+// boundary faces count. +infinity when no cell holds water.
 struct Boundaries1d {
   Boundary left;
   Boundary right;

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "solver_1d/line_cells.hpp"
+#include "swe/physics.hpp"
+#include "swe/scheme.hpp"
+
+namespace swe::solver_1d {
+
+// Per-thread work arrays of one block of cells.
+struct StageScratch {
+  std::vector<double> storage;
+};
+
+// One stage of the SSP-RK2 step on the interior cells (arrays of n + 4
+// values, ghosts filled):
+//   out = base_weight * base + (1 - base_weight) * (in + dt L(in)),
+// where L is the finite-volume residual of the flux and bed source
+// (Zheng et al., eqs. 28-29). Depths left negative by round-off become 0 and
+// dry cells (h < dry_depth) lose their momentum. `out` may alias `base`
+// (never `in`).
+struct StageArrays {
+  const double* h_in;
+  const double* q_in;
+  const double* bed;
+  const double* h_base;
+  const double* q_base;
+  double* h_out;
+  double* q_out;
+};
+
+void advance_stage(const LineCells& cells, const Physics& physics, const Scheme& scheme, const StageArrays& a,
+                   double base_weight, double dt, std::vector<StageScratch>& scratch);
+
+}  // namespace swe::solver_1d
