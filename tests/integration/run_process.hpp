@@ -34,7 +34,7 @@ pid_t wait_for_pid_file(const std::filesystem::path& file, std::chrono::seconds 
 std::string read_text(const std::filesystem::path& file);
 void write_text(const std::filesystem::path& file, const std::string& text);
 
-// Columns of a CSV file with a header row (all values numeric).
+// Rows of a CSV file after its header row (all values numeric).
 std::vector<std::vector<double>> read_csv(const std::filesystem::path& file);
 
 }  // namespace cosim::testing

@@ -120,10 +120,8 @@ struct WaterRow {
 
 // water.csv: time, volume, eta_max, eta_min, speed_max.
 std::map<double, WaterRow> water_rows(const fs::path& water) {
-  const auto columns = ct::read_csv(water / "water.csv");
   std::map<double, WaterRow> out;
-  for (std::size_t r = 0; r < columns[0].size(); ++r)
-    out[std::round(columns[0][r] * 1e6) / 1e6] = {columns[2][r], columns[4][r]};
+  for (const auto& row : ct::read_csv(water / "water.csv")) out[std::round(row[0] * 1e6) / 1e6] = {row[2], row[4]};
   return out;
 }
 

@@ -176,7 +176,8 @@ class CaseRun {
             stable, c_.min_time_step, t, steps_));
       double dt = std::min(stable, participant_.max_time_step());
       if (c_.max_time_step > 0.0) dt = std::min(dt, c_.max_time_step);
-      const double next_output = std::min(snapshots_.next(), gauge_times_->next());
+      const double next_output =
+          c_.gauge_every > 0.0 ? std::min(snapshots_.next(), gauge_times_->next()) : snapshots_.next();
       if (next_output > t + tolerance_) dt = std::min(dt, next_output - t);
       {
         auto scope = summary_.phases().measure("advance");
@@ -217,7 +218,8 @@ class CaseRun {
   }
 
   void write_outputs(double t) {
-    if (gauges_ && (t == 0.0 || gauge_times_->due(t, tolerance_))) gauges_->record(t, *solver_);
+    const bool every_step = c_.gauge_every <= 0.0;
+    if (gauges_ && (t == 0.0 || every_step || gauge_times_->due(t, tolerance_))) gauges_->record(t, *solver_);
     if (t > 0.0) gauge_times_->passed(t, tolerance_);
     if (t == 0.0 || snapshots_.due(t, tolerance_)) {
       auto scope = summary_.phases().measure("output");
