@@ -51,8 +51,14 @@ double update_point(const Material& material, const Mat<Dim>& L, double dt, cons
     strain.diagonal().array() += (average.cell - average.own) / Dim;
   const Mat<Dim> spin = 0.5 * (displacement_gradient - displacement_gradient.transpose());
 
+  // B-bar: the point's volume (and F) follow the cell-averaged dilatation its
+  // stress sees; with the point's own, the volume drifts in the zero-energy
+  // modes the averaging leaves free.
+  Mat<Dim> kinematic_increment = increment;
+  if (average.kind == LockingMitigation::bbar && 1.0 + average.own > 0.0 && 1.0 + average.cell > 0.0)
+    kinematic_increment *= std::pow((1.0 + average.cell) / (1.0 + average.own), 1.0 / Dim);
   const Mat<Dim> F_old = particles.deformation_gradient[p];
-  const Mat<Dim> F_new = increment * F_old;
+  const Mat<Dim> F_new = kinematic_increment * F_old;
   const double J = F_new.determinant();
   if (!(J > 0.0)) {
     particles.volume[p] = std::numeric_limits<double>::quiet_NaN();
