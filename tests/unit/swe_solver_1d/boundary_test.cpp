@@ -25,29 +25,19 @@ TEST(Solver1dBoundary, InflowDischargeAddsQdtPerStepIntoAUniformFlow) {
   }
 }
 
-TEST(Solver1dBoundary, InflowIntoStillWaterSettlesToTheDischarge) {
-  // Still water 1 m deep, 0.4 m^2/s entering on the left of a long channel:
-  // once the boundary cells carry the flow, the volume grows at q.
-  const std::size_t n = 200;
+TEST(Solver1dBoundary, InflowDischargeAddsQdtPerStepIntoStillWater) {
+  // The boundary face passes exactly q, whatever the interior does.
+  const std::size_t n = 100;
   const double q = 0.4;
-  swe::Solver1d s(swe_test::uniform_edges(n, 0.0, 200.0), {}, {},
+  swe::Solver1d s(swe_test::uniform_edges(n, 0.0, 100.0), {}, {},
                   {{BoundaryKind::inflow_discharge, q}, {BoundaryKind::wall, 0.0}});
   s.set_state(std::vector<double>(n, 1.0), std::vector<double>(n, 0.0), {});
-  double t = 0.0;
-  while (t < 5.0) {
-    const double dt = s.stable_time_step();
+  for (int k = 0; k < 50; ++k) {
+    const double v0 = s.totals().volume, dt = s.stable_time_step();
     s.step(dt);
-    t += dt;
+    ASSERT_NEAR(s.totals().volume - v0, q * dt, 1e-12) << "step " << k;
   }
-  const double v0 = s.totals().volume, t0 = t;
-  while (t < 25.0) {
-    const double dt = s.stable_time_step();
-    s.step(dt);
-    t += dt;
-  }
-  const double rate = (s.totals().volume - v0) / (t - t0);
-  std::cout << "inflow rate " << rate << " m^2/s for q = " << q << "\n";
-  EXPECT_NEAR(rate, q, 0.01 * q);
+  EXPECT_GT(s.discharge_x()[0], 0.5 * q);
 }
 
 TEST(Solver1dBoundary, InflowEntersADryChannel) {

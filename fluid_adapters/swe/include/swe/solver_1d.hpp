@@ -26,6 +26,11 @@ namespace swe {
 //   inflow_discharge  ghost discharge = value, pointing into the domain; ghost
 //                     depth = adjacent depth, but at least the critical depth
 //                     (value^2 / g)^(1/3) so water also enters a dry channel;
+//                     the mass flux through the boundary face is the value
+//                     itself (exactly value * dt enters per step; the Riemann
+//                     flux of the ghost state alone passes about the mean of
+//                     the ghost and interior discharges), its momentum flux
+//                     the Riemann solver's;
 //   fixed_depth       ghost depth h_b = value, velocity from the Riemann
 //                     invariant leaving the domain: on the right side
 //                     u_b = u_i + 2 (sqrt(g h_i) - sqrt(g h_b)) (u + 2c kept),

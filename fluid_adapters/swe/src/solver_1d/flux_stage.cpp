@@ -23,6 +23,7 @@ constexpr std::size_t parallel_cells = 8192;
 struct StageContext {
   const LineCells* cells;
   StageArrays a;
+  ImposedMassFlux imposed;
   double g, dry_depth, base_weight, dt;
 };
 
@@ -100,6 +101,8 @@ void advance_block(const StageContext& c, std::size_t first, std::size_t last, d
     momentum_left[j] = f.normal_momentum + face.left_correction;
     momentum_right[j] = f.normal_momentum + face.right_correction;
   }
+  if (first == 0 && c.imposed.left) mass[1] = c.imposed.left_value;
+  if (last == c.cells->count && c.imposed.right) mass[m - 3] = c.imposed.right_value;
 
   // Zheng et al., eq. 28, combined into the SSP-RK2 stage.
   const double wb = c.base_weight, wi = 1.0 - c.base_weight, dt = c.dt;
@@ -149,11 +152,12 @@ BlockKernel block_kernel(FluxKind flux, LimiterKind limiter) {
 }  // namespace
 
 void advance_stage(const LineCells& cells, const Physics& physics, const Scheme& scheme, const StageArrays& a,
-                   double base_weight, double dt, std::vector<StageScratch>& scratch) {
+                   const ImposedMassFlux& imposed, double base_weight, double dt,
+                   std::vector<StageScratch>& scratch) {
   const std::size_t n = cells.count;
   const auto threads = static_cast<std::size_t>(omp_get_max_threads());
   if (scratch.size() < threads) scratch.resize(threads);
-  const StageContext context{&cells, a, physics.gravity, physics.dry_depth, base_weight, dt};
+  const StageContext context{&cells, a, imposed, physics.gravity, physics.dry_depth, base_weight, dt};
   const BlockKernel kernel = block_kernel(scheme.flux, scheme.limiter);
   const auto blocks = static_cast<std::ptrdiff_t>((n + block_cells - 1) / block_cells);
 

@@ -31,7 +31,15 @@ struct StageArrays {
   double* q_out;
 };
 
+// Mass fluxes imposed on the two boundary faces (inflow_discharge), in the +x
+// direction; the momentum flux there stays the Riemann solver's.
+struct ImposedMassFlux {
+  bool left = false, right = false;
+  double left_value = 0.0, right_value = 0.0;
+};
+
 void advance_stage(const LineCells& cells, const Physics& physics, const Scheme& scheme, const StageArrays& a,
-                   double base_weight, double dt, std::vector<StageScratch>& scratch);
+                   const ImposedMassFlux& imposed, double base_weight, double dt,
+                   std::vector<StageScratch>& scratch);
 
 }  // namespace swe::solver_1d

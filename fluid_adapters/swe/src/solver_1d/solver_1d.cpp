@@ -56,6 +56,7 @@ struct Solver1d::Impl {
   // h and q always hold the boundary values of the current state.
   std::vector<double> h, q, bed;
   std::vector<double> h_stage, q_stage;  // the first SSP-RK2 stage
+  solver_1d::ImposedMassFlux imposed;
   std::vector<solver_1d::StageScratch> scratch;
 
   std::size_t n() const { return cells.count; }
@@ -76,6 +77,10 @@ Solver1d::Solver1d(std::vector<double> edges, Physics physics, Scheme scheme, Bo
   s.physics = physics;
   s.scheme = scheme;
   s.boundaries = boundaries;
+  s.imposed.left = boundaries.left.kind == BoundaryKind::inflow_discharge;
+  s.imposed.left_value = boundaries.left.value;
+  s.imposed.right = boundaries.right.kind == BoundaryKind::inflow_discharge;
+  s.imposed.right_value = -boundaries.right.value;
   const std::size_t size = s.n() + 2 * ghost_layers;
   s.h.assign(size, 0.0);
   s.q.assign(size, 0.0);
@@ -186,12 +191,12 @@ void Solver1d::step(double dt) {
   solver_1d::advance_stage(s.cells, s.physics, s.scheme,
                            {s.h.data(), s.q.data(), s.bed.data(), s.h.data(), s.q.data(), s.h_stage.data(),
                             s.q_stage.data()},
-                           0.0, dt, s.scratch);
+                           s.imposed, 0.0, dt, s.scratch);
   s.fill_ghosts(s.h_stage, s.q_stage);
   solver_1d::advance_stage(s.cells, s.physics, s.scheme,
                            {s.h_stage.data(), s.q_stage.data(), s.bed.data(), s.h.data(), s.q.data(), s.h.data(),
                             s.q.data()},
-                           0.5, dt, s.scratch);
+                           s.imposed, 0.5, dt, s.scratch);
   if (s.physics.manning > 0.0) s.apply_friction(dt);
   s.fill_ghosts(s.h, s.q);
 }
