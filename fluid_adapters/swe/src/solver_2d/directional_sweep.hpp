@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <vector>
 
 #include "swe/numerics/face_state.hpp"
 #include "swe/numerics/hydrostatic_reconstruction.hpp"
@@ -16,11 +17,19 @@
 // so a state symmetric under x <-> y is advanced symmetrically.
 namespace swe::solver_2d {
 
-// A cell's MUSCL reconstruction along one direction: the states at its lower
-// and upper faces in the face frame, and the bed there (eta_face - h_face).
-struct ReconstructedCell {
-  FaceState lower, upper;
-  double bed_lower = 0.0, bed_upper = 0.0;
+// MUSCL reconstructions of a run of cells along one direction (SoA, so the
+// loops vectorise): the states at each cell's lower and upper faces in the
+// face frame, and the bed there (eta_face - h_face).
+struct ReconstructedCells {
+  std::vector<double> h_lower, h_upper, bed_lower, bed_upper;
+  std::vector<double> un_lower, un_upper, ut_lower, ut_upper;
+
+  void resize(std::ptrdiff_t n) {
+    for (auto* v : {&h_lower, &h_upper, &bed_lower, &bed_upper, &un_lower, &un_upper, &ut_lower, &ut_upper})
+      v->resize(n);
+  }
+  FaceState lower(std::ptrdiff_t k) const { return {h_lower[k], un_lower[k], ut_lower[k]}; }
+  FaceState upper(std::ptrdiff_t k) const { return {h_upper[k], un_upper[k], ut_upper[k]}; }
 };
 
 // Fluxes through one face per unit face length. The normal momentum flux
@@ -45,55 +54,87 @@ struct PrimitiveView {
   const double* eta;
 };
 
+// swe::limited_slope, bit for bit, without branches so the reconstruction
+// loop vectorises (both sides of each choice are computed, then one is kept).
+template <LimiterKind limiter>
+inline double branch_free_slope(double a, double b) {
+  const bool same_sign = a * b > 0.0;
+  double slope = 0.0;
+  if constexpr (limiter == LimiterKind::minmod) {
+    slope = std::abs(a) < std::abs(b) ? a : b;
+  } else if constexpr (limiter == LimiterKind::van_leer) {
+    slope = 2.0 * a * b / (a + b);
+  } else if constexpr (limiter == LimiterKind::monotonized_central) {
+    slope = std::copysign(std::min(std::min(2.0 * std::abs(a), 2.0 * std::abs(b)), 0.5 * std::abs(a + b)), a);
+  } else {
+    return 0.0;
+  }
+  return same_sign ? slope : 0.0;
+}
+
 // Reconstructs `count` cells, first, first + 1, ..., with neighbours at
-// +-stride: limited slopes (undivided, uniform spacing) of h, eta = h + B and
-// the two velocity components; the face bed follows from eta and h so a
-// flat surface stays flat.
+// +-stride, into out[0 .. count): limited slopes (undivided, uniform spacing)
+// of h, eta = h + B and the two velocity components; the face bed follows
+// from eta and h so a flat surface stays flat.
 template <LimiterKind limiter>
 inline void reconstruct_cells(PrimitiveView p, const double* un, const double* ut, std::ptrdiff_t first,
-                              std::ptrdiff_t count, std::ptrdiff_t stride, ReconstructedCell* out) {
+                              std::ptrdiff_t count, std::ptrdiff_t stride, ReconstructedCells& out) {
+  const double* h = p.h + first;
+  const double* eta = p.eta + first;
+  un += first;
+  ut += first;
+  double* __restrict h_lower = out.h_lower.data();
+  double* __restrict h_upper = out.h_upper.data();
+  double* __restrict bed_lower = out.bed_lower.data();
+  double* __restrict bed_upper = out.bed_upper.data();
+  double* __restrict un_lower = out.un_lower.data();
+  double* __restrict un_upper = out.un_upper.data();
+  double* __restrict ut_lower = out.ut_lower.data();
+  double* __restrict ut_upper = out.ut_upper.data();
+#pragma omp simd
   for (std::ptrdiff_t k = 0; k < count; ++k) {
-    const std::ptrdiff_t c = first + k;
-    auto half_slope = [&](const double* q) {
-      return 0.5 * limited_slope(limiter, q[c] - q[c - stride], q[c + stride] - q[c]);
-    };
-    const double dh = half_slope(p.h), deta = half_slope(p.eta);
-    const double dun = half_slope(un), dut = half_slope(ut);
-    ReconstructedCell& r = out[k];
-    r.lower.h = std::max(0.0, p.h[c] - dh);
-    r.upper.h = std::max(0.0, p.h[c] + dh);
-    r.bed_lower = (p.eta[c] - deta) - r.lower.h;
-    r.bed_upper = (p.eta[c] + deta) - r.upper.h;
-    r.lower.un = un[c] - dun;
-    r.upper.un = un[c] + dun;
-    r.lower.ut = ut[c] - dut;
-    r.upper.ut = ut[c] + dut;
+    const std::ptrdiff_t below = k - stride, above = k + stride;
+    const double dh = 0.5 * branch_free_slope<limiter>(h[k] - h[below], h[above] - h[k]);
+    const double deta = 0.5 * branch_free_slope<limiter>(eta[k] - eta[below], eta[above] - eta[k]);
+    const double dun = 0.5 * branch_free_slope<limiter>(un[k] - un[below], un[above] - un[k]);
+    const double dut = 0.5 * branch_free_slope<limiter>(ut[k] - ut[below], ut[above] - ut[k]);
+    h_lower[k] = std::max(0.0, h[k] - dh);
+    h_upper[k] = std::max(0.0, h[k] + dh);
+    bed_lower[k] = (eta[k] - deta) - h_lower[k];
+    bed_upper[k] = (eta[k] + deta) - h_upper[k];
+    un_lower[k] = un[k] - dun;
+    un_upper[k] = un[k] + dun;
+    ut_lower[k] = ut[k] - dut;
+    ut_upper[k] = ut[k] + dut;
   }
 }
 
-// Flux through the face between `lower` (its upper face) and `upper` (its
-// lower face): hydrostatic reconstruction, then the Riemann solver.
+// Flux through the face between cell l of `lower` (its upper face) and cell
+// u of `upper` (its lower face): hydrostatic reconstruction, then the Riemann
+// solver.
 template <FluxKind flux>
-inline FaceFluxes face_fluxes(const ReconstructedCell& lower, const ReconstructedCell& upper, double g) {
-  const HydrostaticFace hr = hydrostatic_face(lower.upper.h, lower.bed_upper, upper.lower.h, upper.bed_lower, g);
-  const FaceFlux f = numerical_flux(flux, FaceState{hr.h_left, lower.upper.un, lower.upper.ut},
-                                    FaceState{hr.h_right, upper.lower.un, upper.lower.ut}, g);
+inline FaceFluxes face_fluxes(const ReconstructedCells& lower, std::ptrdiff_t l, const ReconstructedCells& upper,
+                              std::ptrdiff_t u, double g) {
+  const HydrostaticFace hr = hydrostatic_face(lower.h_upper[l], lower.bed_upper[l], upper.h_lower[u], upper.bed_lower[u], g);
+  const FaceFlux f = numerical_flux(flux, FaceState{hr.h_left, lower.un_upper[l], lower.ut_upper[l]},
+                                    FaceState{hr.h_right, upper.un_lower[u], upper.ut_lower[u]}, g);
   return {f.mass, f.normal_momentum + hr.left_correction, f.normal_momentum + hr.right_correction,
           f.tangential_momentum};
 }
 
-// Fluxes of `count` faces, face k between cells lower[k] and upper[k].
+// Fluxes of `count` faces, face k between cells lower_first + k of `lower`
+// and upper_first + k of `upper`.
 template <FluxKind flux>
-inline void face_fluxes(const ReconstructedCell* lower, const ReconstructedCell* upper, std::ptrdiff_t count, double g,
-                        FaceFluxes* out) {
-  for (std::ptrdiff_t k = 0; k < count; ++k) out[k] = face_fluxes<flux>(lower[k], upper[k], g);
+inline void face_fluxes(const ReconstructedCells& lower, std::ptrdiff_t lower_first, const ReconstructedCells& upper,
+                        std::ptrdiff_t upper_first, std::ptrdiff_t count, double g, FaceFluxes* out) {
+  for (std::ptrdiff_t k = 0; k < count; ++k) out[k] = face_fluxes<flux>(lower, lower_first + k, upper, upper_first + k, g);
 }
 
 // Flux difference across a cell minus its in-cell bed source, per unit
 // length of the direction (inv_spacing = 1 / dx or 1 / dy).
 inline DirectionalResidual residual(const FaceFluxes& lower_face, const FaceFluxes& upper_face,
-                                    const ReconstructedCell& cell, double inv_spacing, double g) {
-  const double bed_source = cell_bed_source(cell.lower.h, cell.bed_lower, cell.upper.h, cell.bed_upper, g);
+                                    const ReconstructedCells& cells, std::ptrdiff_t k, double inv_spacing, double g) {
+  const double bed_source = cell_bed_source(cells.h_lower[k], cells.bed_lower[k], cells.h_upper[k], cells.bed_upper[k], g);
   return {(upper_face.mass - lower_face.mass) * inv_spacing,
           (upper_face.normal_momentum_to_lower - lower_face.normal_momentum_to_upper - bed_source) * inv_spacing,
           (upper_face.tangential_momentum - lower_face.tangential_momentum) * inv_spacing};

@@ -35,26 +35,26 @@ void advance_rows(const StageArguments& a, const PaddedFields& in, const PaddedF
   const double* u = in.u.data();
   const double* v = in.v.data();
 
-  ReconstructedCell* y_row = ws.y_cells[0].data();       // row j
-  ReconstructedCell* y_adjacent = ws.y_cells[1].data();  // row j - 1, then row j + 1
+  ReconstructedCells* y_row = &ws.y_cells[0];       // row j
+  ReconstructedCells* y_adjacent = &ws.y_cells[1];  // row j - 1, then row j + 1
   FaceFluxes* y_faces_below = ws.y_faces[0].data();
   FaceFluxes* y_faces_above = ws.y_faces[1].data();
-  ReconstructedCell* x_cells = ws.x_cells.data();
+  ReconstructedCells& x_cells = ws.x_cells;
   FaceFluxes* x_faces = ws.x_faces.data();
 
-  reconstruct_cells<limiter>(p, v, u, layout.index(0, first_row - 1), nx, sx, y_adjacent);
-  reconstruct_cells<limiter>(p, v, u, layout.index(0, first_row), nx, sx, y_row);
-  face_fluxes<flux>(y_adjacent, y_row, nx, g, y_faces_below);
+  reconstruct_cells<limiter>(p, v, u, layout.index(0, first_row - 1), nx, sx, *y_adjacent);
+  reconstruct_cells<limiter>(p, v, u, layout.index(0, first_row), nx, sx, *y_row);
+  face_fluxes<flux>(*y_adjacent, 0, *y_row, 0, nx, g, y_faces_below);
   for (std::ptrdiff_t j = first_row; j < end_row; ++j) {
-    reconstruct_cells<limiter>(p, v, u, layout.index(0, j + 1), nx, sx, y_adjacent);
-    face_fluxes<flux>(y_row, y_adjacent, nx, g, y_faces_above);
+    reconstruct_cells<limiter>(p, v, u, layout.index(0, j + 1), nx, sx, *y_adjacent);
+    face_fluxes<flux>(*y_row, 0, *y_adjacent, 0, nx, g, y_faces_above);
     reconstruct_cells<limiter>(p, u, v, layout.index(-1, j), nx + 2, 1, x_cells);
-    face_fluxes<flux>(x_cells, x_cells + 1, nx + 1, g, x_faces);
+    face_fluxes<flux>(x_cells, 0, x_cells, 1, nx + 1, g, x_faces);
 
     const std::ptrdiff_t row = layout.index(0, j);
     for (std::ptrdiff_t i = 0; i < nx; ++i) {
-      const DirectionalResidual rx = residual(x_faces[i], x_faces[i + 1], x_cells[i + 1], a.inv_dx, g);
-      const DirectionalResidual ry = residual(y_faces_below[i], y_faces_above[i], y_row[i], a.inv_dy, g);
+      const DirectionalResidual rx = residual(x_faces[i], x_faces[i + 1], x_cells, i + 1, a.inv_dx, g);
+      const DirectionalResidual ry = residual(y_faces_below[i], y_faces_above[i], *y_row, i, a.inv_dy, g);
       const std::ptrdiff_t c = row + i;
       double h = base_weight * base.h[c] + stage_weight * (in.h[c] - dt * (rx.mass + ry.mass));
       double hu = base_weight * base.hu[c] +

@@ -13,9 +13,9 @@ namespace swe::solver_2d {
 // Row buffers of one thread: the x reconstruction and faces of the row being
 // updated, and the y reconstructions and faces of the rows below and at it.
 struct StageWorkspace {
-  std::vector<ReconstructedCell> x_cells;  // cells -1 .. nx of the row
-  std::vector<FaceFluxes> x_faces;         // faces 0 .. nx of the row
-  std::vector<ReconstructedCell> y_cells[2];
+  ReconstructedCells x_cells;       // cells -1 .. nx of the row
+  std::vector<FaceFluxes> x_faces;  // faces 0 .. nx of the row
+  ReconstructedCells y_cells[2];
   std::vector<FaceFluxes> y_faces[2];
 
   void resize(std::ptrdiff_t nx);
