@@ -236,6 +236,11 @@ void Solver<Dim>::Impl::step(double dt) {
 
 template <int Dim>
 void Solver<Dim>::Impl::bin_particles() {
+  // A point gone non-finite since the last check_state() would index the bins
+  // and the grid out of range: stop with the check's message instead.
+  if (!std::all_of(particles.position.begin(), particles.position.end(),
+                   [](const Vec<Dim>& x) { return x.allFinite(); }))
+    check_state();
   bins.build(particles, grid, threads);
 }
 

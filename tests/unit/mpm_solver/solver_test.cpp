@@ -3,12 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 #include <utility>
 #include <vector>
 
 #include "case_builder.hpp"
+#include "cosim/error.hpp"
 #include "mpm/solver/solver.hpp"
 
 namespace mpm {
@@ -163,6 +165,14 @@ TEST(SolverLocking, BbarPointsOfOneCellChangeVolumeAlike) {
   ASSERT_GT(none, 1e-6);
   EXPECT_LT(bbar, 1e-3 * none);
   EXPECT_LT(fbar, 1e-3 * none);
+}
+
+// A point whose state went non-finite between two check_state() calls ends
+// the next step with a NumericalError, not an out-of-range index.
+TEST(SolverFailure, NonFinitePositionStopsTheNextStepCleanly) {
+  Solver<2> solver(spinning_block_case<2>(ShapeKind::gimp, UpdateScheme::usl));
+  solver.particles().position[5][1] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(solver.step(1e-4), cosim::NumericalError);
 }
 
 // A pre-stressed block spun as a rigid body: the stress must turn with it
