@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "solver_2d/hllc_selects.hpp"
 #include "swe/numerics/face_state.hpp"
 #include "swe/numerics/hydrostatic_reconstruction.hpp"
 #include "swe/numerics/riemann_solvers.hpp"
@@ -109,15 +110,27 @@ inline void reconstruct_cells(PrimitiveView p, const double* un, const double* u
   }
 }
 
-// Flux through the face between cell l of `lower` (its upper face) and cell
-// u of `upper` (its lower face): hydrostatic reconstruction, then the Riemann
-// solver.
+// The faces of a run of reconstructed cells, as raw pointers (so the face
+// loop reads them without reloading the vectors).
+struct FaceSides {
+  const double *h_lower, *h_upper, *bed_lower, *bed_upper, *un_lower, *un_upper, *ut_lower, *ut_upper;
+
+  explicit FaceSides(const ReconstructedCells& c, std::ptrdiff_t first)
+      : h_lower(c.h_lower.data() + first), h_upper(c.h_upper.data() + first),
+        bed_lower(c.bed_lower.data() + first), bed_upper(c.bed_upper.data() + first),
+        un_lower(c.un_lower.data() + first), un_upper(c.un_upper.data() + first),
+        ut_lower(c.ut_lower.data() + first), ut_upper(c.ut_upper.data() + first) {}
+};
+
+// Flux through the face between cell k of `lower` (its upper face) and cell
+// k of `upper` (its lower face): hydrostatic reconstruction, then the
+// Riemann solver.
 template <FluxKind flux>
-inline FaceFluxes face_fluxes(const ReconstructedCells& lower, std::ptrdiff_t l, const ReconstructedCells& upper,
-                              std::ptrdiff_t u, double g) {
-  const HydrostaticFace hr = hydrostatic_face(lower.h_upper[l], lower.bed_upper[l], upper.h_lower[u], upper.bed_lower[u], g);
-  const FaceFlux f = numerical_flux(flux, FaceState{hr.h_left, lower.un_upper[l], lower.ut_upper[l]},
-                                    FaceState{hr.h_right, upper.un_lower[u], upper.ut_lower[u]}, g);
+inline FaceFluxes face_fluxes(const FaceSides& lower, const FaceSides& upper, std::ptrdiff_t k, double g) {
+  const HydrostaticFace hr = hydrostatic_face(lower.h_upper[k], lower.bed_upper[k], upper.h_lower[k], upper.bed_lower[k], g);
+  const FaceState left{hr.h_left, lower.un_upper[k], lower.ut_upper[k]};
+  const FaceState right{hr.h_right, upper.un_lower[k], upper.ut_lower[k]};
+  const FaceFlux f = flux == FluxKind::hllc ? hllc_flux_selects(left, right, g) : numerical_flux(flux, left, right, g);
   return {f.mass, f.normal_momentum + hr.left_correction, f.normal_momentum + hr.right_correction,
           f.tangential_momentum};
 }
@@ -125,9 +138,12 @@ inline FaceFluxes face_fluxes(const ReconstructedCells& lower, std::ptrdiff_t l,
 // Fluxes of `count` faces, face k between cells lower_first + k of `lower`
 // and upper_first + k of `upper`.
 template <FluxKind flux>
-inline void face_fluxes(const ReconstructedCells& lower, std::ptrdiff_t lower_first, const ReconstructedCells& upper,
-                        std::ptrdiff_t upper_first, std::ptrdiff_t count, double g, FaceFluxes* out) {
-  for (std::ptrdiff_t k = 0; k < count; ++k) out[k] = face_fluxes<flux>(lower, lower_first + k, upper, upper_first + k, g);
+[[gnu::flatten]] inline void face_fluxes(const ReconstructedCells& lower, std::ptrdiff_t lower_first,
+                                         const ReconstructedCells& upper, std::ptrdiff_t upper_first,
+                                         std::ptrdiff_t count, double g, FaceFluxes* out) {
+  const FaceSides l(lower, lower_first), u(upper, upper_first);
+#pragma omp simd
+  for (std::ptrdiff_t k = 0; k < count; ++k) out[k] = face_fluxes<flux>(l, u, k, g);
 }
 
 // Flux difference across a cell minus its in-cell bed source, per unit
