@@ -16,6 +16,15 @@
 // velocity arrays in the face's order (normal, tangential). x sweeps pass
 // (1, u, v), y sweeps (row stride, v, u); everything below is the same code,
 // so a state symmetric under x <-> y is advanced symmetrically.
+// The row loops are compiled for AVX2 too and picked at run time where the
+// CPU has it (GCC function multi-versioning). Without FMA contraction
+// (-ffp-contract=off on the solver's files) every clone gives the same bits.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+#define SWE_2D_ROW_LOOP [[gnu::target_clones("avx512f", "avx2", "default")]]
+#else
+#define SWE_2D_ROW_LOOP
+#endif
+
 namespace swe::solver_2d {
 
 // MUSCL reconstructions of a run of cells along one direction (SoA, so the
@@ -78,7 +87,7 @@ inline double branch_free_slope(double a, double b) {
 // of h, eta = h + B and the two velocity components; the face bed follows
 // from eta and h so a flat surface stays flat.
 template <LimiterKind limiter>
-inline void reconstruct_cells(PrimitiveView p, const double* un, const double* ut, std::ptrdiff_t first,
+SWE_2D_ROW_LOOP void reconstruct_cells(PrimitiveView p, const double* un, const double* ut, std::ptrdiff_t first,
                               std::ptrdiff_t count, std::ptrdiff_t stride, ReconstructedCells& out) {
   const double* h = p.h + first;
   const double* eta = p.eta + first;
@@ -138,7 +147,7 @@ inline FaceFluxes face_fluxes(const FaceSides& lower, const FaceSides& upper, st
 // Fluxes of `count` faces, face k between cells lower_first + k of `lower`
 // and upper_first + k of `upper`.
 template <FluxKind flux>
-[[gnu::flatten]] inline void face_fluxes(const ReconstructedCells& lower, std::ptrdiff_t lower_first,
+SWE_2D_ROW_LOOP [[gnu::flatten]] void face_fluxes(const ReconstructedCells& lower, std::ptrdiff_t lower_first,
                                          const ReconstructedCells& upper, std::ptrdiff_t upper_first,
                                          std::ptrdiff_t count, double g, FaceFluxes* out) {
   const FaceSides l(lower, lower_first), u(upper, upper_first);
@@ -148,8 +157,8 @@ template <FluxKind flux>
 
 // Flux difference across a cell minus its in-cell bed source, per unit
 // length of the direction (inv_spacing = 1 / dx or 1 / dy).
-inline DirectionalResidual residual(const FaceFluxes& lower_face, const FaceFluxes& upper_face,
-                                    const ReconstructedCells& cells, std::ptrdiff_t k, double inv_spacing, double g) {
+inline DirectionalResidual residual(const FaceFluxes& lower_face, const FaceFluxes& upper_face, const FaceSides& cells,
+                                    std::ptrdiff_t k, double inv_spacing, double g) {
   const double bed_source = cell_bed_source(cells.h_lower[k], cells.bed_lower[k], cells.h_upper[k], cells.bed_upper[k], g);
   return {(upper_face.mass - lower_face.mass) * inv_spacing,
           (upper_face.normal_momentum_to_lower - lower_face.normal_momentum_to_upper - bed_source) * inv_spacing,

@@ -3,10 +3,9 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <cmath>
 #include <utility>
 
-#include "swe/numerics/manning_friction.hpp"
+#include "solver_2d/row_update.hpp"
 
 namespace swe::solver_2d {
 
@@ -29,8 +28,8 @@ void advance_rows(const StageArguments& a, const PaddedFields& in, const PaddedF
                   std::ptrdiff_t first_row, std::ptrdiff_t end_row, StageWorkspace& ws) {
   const PaddedLayout& layout = a.layout;
   const std::ptrdiff_t nx = layout.nx, sx = layout.stride();
-  const double g = a.physics->gravity, dry_depth = a.physics->dry_depth, manning = a.physics->manning;
-  const double dt = a.dt, base_weight = a.base_weight, stage_weight = 1.0 - a.base_weight;
+  const double g = a.physics->gravity;
+  const UpdateConstants constants{a.dt, a.inv_dx, a.inv_dy, a.base_weight, g, a.physics->dry_depth, a.physics->manning};
   const PrimitiveView p{in.h.data(), in.eta.data()};
   const double* u = in.u.data();
   const double* v = in.v.data();
@@ -52,30 +51,25 @@ void advance_rows(const StageArguments& a, const PaddedFields& in, const PaddedF
     face_fluxes<flux>(x_cells, 0, x_cells, 1, nx + 1, g, x_faces);
 
     const std::ptrdiff_t row = layout.index(0, j);
-    for (std::ptrdiff_t i = 0; i < nx; ++i) {
-      const DirectionalResidual rx = residual(x_faces[i], x_faces[i + 1], x_cells, i + 1, a.inv_dx, g);
-      const DirectionalResidual ry = residual(y_faces_below[i], y_faces_above[i], *y_row, i, a.inv_dy, g);
-      const std::ptrdiff_t c = row + i;
-      double h = base_weight * base.h[c] + stage_weight * (in.h[c] - dt * (rx.mass + ry.mass));
-      double hu = base_weight * base.hu[c] +
-                  stage_weight * (in.hu[c] - dt * (rx.normal_momentum + ry.tangential_momentum));
-      double hv = base_weight * base.hv[c] +
-                  stage_weight * (in.hv[c] - dt * (rx.tangential_momentum + ry.normal_momentum));
-      h = std::max(h, 0.0);
-      if (h < dry_depth) {
-        hu = 0.0;
-        hv = 0.0;
-      } else if constexpr (with_friction) {
-        const double speed = std::sqrt(hu * hu + hv * hv) / h;
-        const double factor = manning_factor(h, speed, g, manning, dt);
-        hu *= factor;
-        hv *= factor;
-      }
-      out.h[c] = h;
-      out.hu[c] = hu;
-      out.hv[c] = hv;
-      update_primitives(out, a.bed, c, dry_depth);
-    }
+    const RowUpdate update{x_faces,
+                           y_faces_below,
+                           y_faces_above,
+                           FaceSides(x_cells, 1),
+                           FaceSides(*y_row, 0),
+                           in.h.data() + row,
+                           in.hu.data() + row,
+                           in.hv.data() + row,
+                           base.h.data() + row,
+                           base.hu.data() + row,
+                           base.hv.data() + row,
+                           a.bed + row,
+                           out.h.data() + row,
+                           out.hu.data() + row,
+                           out.hv.data() + row,
+                           out.eta.data() + row,
+                           out.u.data() + row,
+                           out.v.data() + row};
+    update_row<with_friction>(update, nx, constants);
     std::swap(y_row, y_adjacent);
     std::swap(y_faces_below, y_faces_above);
   }
