@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "solver_2d/hllc_selects.hpp"
+#include "solver_2d/row_loop.hpp"
 #include "swe/numerics/face_state.hpp"
 #include "swe/numerics/hydrostatic_reconstruction.hpp"
 #include "swe/numerics/riemann_solvers.hpp"
@@ -16,15 +17,6 @@
 // velocity arrays in the face's order (normal, tangential). x sweeps pass
 // (1, u, v), y sweeps (row stride, v, u); everything below is the same code,
 // so a state symmetric under x <-> y is advanced symmetrically.
-// The row loops are compiled for AVX2 too and picked at run time where the
-// CPU has it (GCC function multi-versioning). Without FMA contraction
-// (-ffp-contract=off on the solver's files) every clone gives the same bits.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
-#define SWE_2D_ROW_LOOP [[gnu::target_clones("avx512f", "avx2", "default")]]
-#else
-#define SWE_2D_ROW_LOOP
-#endif
-
 namespace swe::solver_2d {
 
 // MUSCL reconstructions of a run of cells along one direction (SoA, so the

@@ -13,6 +13,7 @@
 #include "cosim/error.hpp"
 #include "solver_2d/ghost_cells.hpp"
 #include "solver_2d/padded_fields.hpp"
+#include "solver_2d/row_loop.hpp"
 #include "solver_2d/runge_kutta_stage.hpp"
 
 namespace swe {
@@ -30,6 +31,22 @@ std::string number(double value) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%g", value);
   return buffer;
+}
+
+// max over the row's cells of (|u| + k c) / dx + (|v| + k c) / dy (see
+// stable_time_step); h, u, v address the row's first cell, `stride` is the
+// row stride.
+SWE_2D_ROW_LOOP double max_wave_rate(const double* h, const double* u, const double* v, std::ptrdiff_t nx,
+                                     std::ptrdiff_t stride, double inv_dx, double inv_dy, double g,
+                                     double dry_depth) {
+  double rate = 0.0;
+#pragma omp simd reduction(max : rate)
+  for (std::ptrdiff_t i = 0; i < nx; ++i) {
+    const double neighbour = std::min(std::min(h[i - 1], h[i + 1]), std::min(h[i - stride], h[i + stride]));
+    const double c = (neighbour < dry_depth ? 2.0 : 1.0) * std::sqrt(g * h[i]);
+    rate = std::max(rate, (std::abs(u[i]) + c) * inv_dx + (std::abs(v[i]) + c) * inv_dy);
+  }
+  return rate;
 }
 
 void validate(const Grid2d& grid, const Physics& physics, const Scheme& scheme, const Boundaries2d& boundaries) {
@@ -203,16 +220,11 @@ double Solver2d::stable_time_step() const {
   const double* h = m.state.h.data();
   const double* u = m.state.u.data();
   const double* v = m.state.v.data();
-  double rate = 0.0;  // max over cells of (|u| + k c) / dx + (|v| + k c) / dy
+  double rate = 0.0;
 #pragma omp parallel for schedule(static) reduction(max : rate) if (m.parallel())
   for (std::ptrdiff_t j = 0; j < ny; ++j) {
-    for (std::ptrdiff_t i = 0; i < nx; ++i) {
-      const std::ptrdiff_t c = layout.index(i, j);
-      const bool dry_neighbour =
-          std::min(std::min(h[c - 1], h[c + 1]), std::min(h[c - sx], h[c + sx])) < dry_depth;
-      const double c_wave = (dry_neighbour ? 2.0 : 1.0) * std::sqrt(g * h[c]);
-      rate = std::max(rate, (std::abs(u[c]) + c_wave) * inv_dx + (std::abs(v[c]) + c_wave) * inv_dy);
-    }
+    const std::ptrdiff_t row = layout.index(0, j);
+    rate = std::max(rate, max_wave_rate(h + row, u + row, v + row, nx, sx, inv_dx, inv_dy, g, dry_depth));
   }
   return rate > 0.0 ? m.scheme.courant / rate : std::numeric_limits<double>::infinity();
 }
