@@ -23,12 +23,15 @@ struct Boundaries2d {
   Boundary x_min, x_max, y_min, y_max;
 };
 
-//
-// Ghost cells: walls mirror the interior (bed included) with the normal
+// Solver2d. Ghost cells: walls mirror the interior (bed included) with the normal
 // velocity negated; the other kinds copy the adjacent cell (see boundary.hpp;
 // inflow into a dry cell uses the critical depth (q^2/g)^(1/3)).
 // cell_at: cells are closed below, open above, except that the upper edges of
 // the domain belong to the last cells.
+//
+// A stage sweeps the grid row by row (faces computed once, in vectorised
+// loops over a row); rows are split over OpenMP threads above 8192 cells,
+// with the same bits on any thread count.
 class Solver2d final : public Solver {
  public:
   // Throws cosim::InputError for a non-positive spacing or cell count (and a
@@ -53,6 +56,8 @@ class Solver2d final : public Solver {
   double stable_time_step() const override;
   void step(double dt) override;
 
+  // Views of unpadded copies of the state, refreshed by the first call after
+  // a step (the same storage for the solver's life).
   std::span<const double> depth() const override;
   std::span<const double> discharge_x() const override;
   std::span<const double> discharge_y() const override;
