@@ -19,53 +19,60 @@ struct Side {
   std::vector<double>* tangential_discharge;
 };
 
+template <BoundaryKind kind>
 void fill_side(const Side& side, const Boundary& boundary, const Physics& physics, PaddedFields& f,
                std::vector<double>& bed) {
   std::vector<double>& qn = *side.normal_discharge;
   std::vector<double>& qt = *side.tangential_discharge;
-  const double g = physics.gravity;
+  const double g = physics.gravity, dry_depth = physics.dry_depth;
   for (std::ptrdiff_t n = 0; n < side.count; ++n) {
     const std::ptrdiff_t edge = side.first + n * side.along;
     for (std::ptrdiff_t layer = 1; layer <= PaddedLayout::ghosts; ++layer) {
       const std::ptrdiff_t ghost = edge - layer * side.inward;
       const std::ptrdiff_t source =
-          boundary.kind == BoundaryKind::wall ? edge + std::min(layer - 1, side.depth - 1) * side.inward : edge;
+          kind == BoundaryKind::wall ? edge + std::min(layer - 1, side.depth - 1) * side.inward : edge;
       bed[ghost] = bed[source];
-      switch (boundary.kind) {
-        case BoundaryKind::wall:
-          f.h[ghost] = f.h[source];
-          qn[ghost] = -qn[source];
-          qt[ghost] = qt[source];
-          break;
-        case BoundaryKind::transmissive:
-          f.h[ghost] = f.h[source];
-          qn[ghost] = qn[source];
-          qt[ghost] = qt[source];
-          break;
-        case BoundaryKind::inflow_discharge: {
-          const double q = boundary.value;
-          const double critical_depth = std::cbrt(q * q / g);
-          f.h[ghost] = f.h[source] >= physics.dry_depth ? f.h[source] : critical_depth;
-          qn[ghost] = -side.outward * q;
-          qt[ghost] = 0.0;
-          break;
-        }
-        case BoundaryKind::fixed_depth: {
-          const double h_i = f.h[source];
-          const bool wet = h_i >= physics.dry_depth;
-          const double un_i = wet ? qn[source] / h_i : 0.0;
-          const double ut_i = wet ? qt[source] / h_i : 0.0;
-          const double h_b = boundary.value;
-          // Outgoing invariant u_n + 2c (max side) or u_n - 2c (min side) kept.
-          const double un_b = un_i + side.outward * 2.0 * (std::sqrt(g * h_i) - std::sqrt(g * h_b));
-          f.h[ghost] = h_b;
-          qn[ghost] = h_b * un_b;
-          qt[ghost] = h_b * ut_i;
-          break;
-        }
+      if constexpr (kind == BoundaryKind::wall) {
+        f.h[ghost] = f.h[source];
+        qn[ghost] = -qn[source];
+        qt[ghost] = qt[source];
+      } else if constexpr (kind == BoundaryKind::transmissive) {
+        f.h[ghost] = f.h[source];
+        qn[ghost] = qn[source];
+        qt[ghost] = qt[source];
+      } else if constexpr (kind == BoundaryKind::inflow_discharge) {
+        const double q = boundary.value;
+        f.h[ghost] = f.h[source] >= dry_depth ? f.h[source] : std::cbrt(q * q / g);
+        qn[ghost] = -side.outward * q;
+        qt[ghost] = 0.0;
+      } else {
+        const double h_i = f.h[source];
+        const bool wet = h_i >= dry_depth;
+        const double un_i = wet ? qn[source] / h_i : 0.0;
+        const double ut_i = wet ? qt[source] / h_i : 0.0;
+        const double h_b = boundary.value;
+        // Outgoing invariant u_n + 2c (max side) or u_n - 2c (min side) kept.
+        const double un_b = un_i + side.outward * 2.0 * (std::sqrt(g * h_i) - std::sqrt(g * h_b));
+        f.h[ghost] = h_b;
+        qn[ghost] = h_b * un_b;
+        qt[ghost] = h_b * ut_i;
       }
-      update_primitives(f, bed.data(), ghost, physics.dry_depth);
+      update_primitives(f, bed.data(), ghost, dry_depth);
     }
+  }
+}
+
+void fill_side(const Side& side, const Boundary& boundary, const Physics& physics, PaddedFields& f,
+               std::vector<double>& bed) {
+  switch (boundary.kind) {
+    case BoundaryKind::wall:
+      return fill_side<BoundaryKind::wall>(side, boundary, physics, f, bed);
+    case BoundaryKind::transmissive:
+      return fill_side<BoundaryKind::transmissive>(side, boundary, physics, f, bed);
+    case BoundaryKind::inflow_discharge:
+      return fill_side<BoundaryKind::inflow_discharge>(side, boundary, physics, f, bed);
+    case BoundaryKind::fixed_depth:
+      return fill_side<BoundaryKind::fixed_depth>(side, boundary, physics, f, bed);
   }
 }
 
