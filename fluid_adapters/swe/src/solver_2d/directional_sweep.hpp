@@ -1,6 +1,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -30,8 +31,6 @@ struct ReconstructedCells {
     for (auto* v : {&h_lower, &h_upper, &bed_lower, &bed_upper, &un_lower, &un_upper, &ut_lower, &ut_upper})
       v->resize(n);
   }
-  FaceState lower(std::ptrdiff_t k) const { return {h_lower[k], un_lower[k], ut_lower[k]}; }
-  FaceState upper(std::ptrdiff_t k) const { return {h_upper[k], un_upper[k], ut_upper[k]}; }
 };
 
 // Fluxes through one face per unit face length. The normal momentum flux
