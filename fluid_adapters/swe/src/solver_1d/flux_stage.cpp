@@ -5,9 +5,9 @@
 
 #include <omp.h>
 
+#include "solver_1d/branch_free_flux.hpp"
+#include "solver_1d/branch_free_slope.hpp"
 #include "swe/numerics/hydrostatic_reconstruction.hpp"
-#include "swe/numerics/riemann_solvers.hpp"
-#include "swe/numerics/slope_limiter.hpp"
 
 namespace swe::solver_1d {
 
@@ -16,7 +16,7 @@ namespace {
 // Cells per block: the block's work arrays stay in the core's cache and
 // every loop over them vectorises.
 constexpr std::size_t block_cells = 512;
-constexpr std::size_t scratch_arrays = 12;
+constexpr std::size_t scratch_arrays = 14;
 // Below this many cells one thread does the stage.
 constexpr std::size_t parallel_cells = 8192;
 
@@ -27,27 +27,14 @@ struct StageContext {
   double g, dry_depth, base_weight, dt;
 };
 
-// The increment from the cell value to its upper face, from the limited
-// slope of the differences to the neighbours (per unit length), scaled down
-// so that both faces lie between the cell value and the neighbour's on that
-// side: |increment| <= min(|d_l|, |d_r|), the slope having their sign. On
-// non-uniform cells the limiter alone does not ensure this. Scaling the slope
-// (instead of clipping one face) keeps the face mean at the cell mean, which
-// the positivity of the hydrostatic scheme relies on.
-template <LimiterKind limiter>
-inline double face_increment(double d_l, double d_r, double inv_distance_l, double inv_distance_r,
-                             double half_width) {
-  const double slope = limited_slope(limiter, d_l * inv_distance_l, d_r * inv_distance_r);
-  const double bound = std::min(std::abs(d_l), std::abs(d_r));
-  return std::clamp(slope * half_width, -bound, bound);
-}
-
 // Advances interior cells [first, last). Local index j covers the cells
-// first - 2 ... last + 1 (ghost-shifted index k = first + j).
+// first - 2 ... last + 1 (ghost-shifted index k = first + j). Each pass over
+// the block is one branch-free loop (selects instead of early returns), so
+// it vectorises.
 template <FluxKind flux, LimiterKind limiter>
 void advance_block(const StageContext& c, std::size_t first, std::size_t last, double* work) {
   const std::size_t m = last - first + 2 * ghost_layers;
-  const double g = c.g, dry_depth = c.dry_depth;
+  const double g = c.g, dry_depth = c.dry_depth, sqrt_g = std::sqrt(c.g);
   const double* __restrict h = c.a.h_in + first;
   const double* __restrict q = c.a.q_in + first;
   const double* __restrict bed = c.a.bed + first;
@@ -67,14 +54,19 @@ void advance_block(const StageContext& c, std::size_t first, std::size_t last, d
   double* __restrict mass = bed_source + m;
   double* __restrict momentum_left = mass + m;   // face j | j+1: the flux cell j sees
   double* __restrict momentum_right = momentum_left + m;  // ... the flux cell j+1 sees
+  double* __restrict face_h_left = momentum_right + m;    // face j | j+1: hydrostatic depths
+  double* __restrict face_h_right = face_h_left + m;
 
+#pragma omp simd
   for (std::size_t j = 0; j < m; ++j) {
-    u[j] = h[j] >= dry_depth ? q[j] / h[j] : 0.0;
+    const double velocity = q[j] / h[j];
+    u[j] = h[j] >= dry_depth ? velocity : 0.0;
     eta[j] = h[j] + bed[j];
   }
 
   // MUSCL on the non-uniform spacing: h, eta and u per cell.
-  for (std::size_t j = 1; j + 1 < m; ++j) {
+#pragma omp simd
+  for (std::size_t j = 1; j < m - 1; ++j) {
     const double il = inv_distance[j - 1], ir = inv_distance[j], hw = half_width[j];
     const double dh = face_increment<limiter>(h[j] - h[j - 1], h[j + 1] - h[j], il, ir, hw);
     const double de = face_increment<limiter>(eta[j] - eta[j - 1], eta[j + 1] - eta[j], il, ir, hw);
@@ -92,14 +84,25 @@ void advance_block(const StageContext& c, std::size_t first, std::size_t last, d
   // the higher face bed; the pressure it removes comes back as each side's
   // correction. With the in-cell bed_source this is our form of the
   // well-balanced source split of Zheng et al., eqs. 33-34: a lake at rest,
-  // dry emerged cells included, stays at rest and depths stay >= 0.
-  for (std::size_t j = 1; j + 2 < m; ++j) {
-    const HydrostaticFace face = hydrostatic_face(h_plus[j], bed_plus[j], h_minus[j + 1], bed_minus[j + 1], g);
-    const FaceFlux f = numerical_flux(flux, FaceState{face.h_left, u_plus[j], 0.0},
-                                      FaceState{face.h_right, u_minus[j + 1], 0.0}, g);
-    mass[j] = f.mass;
-    momentum_left[j] = f.normal_momentum + face.left_correction;
-    momentum_right[j] = f.normal_momentum + face.right_correction;
+  // dry emerged cells included, stays at rest and depths stay >= 0. (Two
+  // loops: with the depths' max(0, .) in sight GCC 12 folds the flux's dry
+  // tests into selects of booleans it cannot vectorise.)
+#pragma omp simd
+  for (std::size_t j = 1; j < m - 2; ++j) {
+    const auto [hl, hr, left_correction, right_correction] =
+        hydrostatic_face(h_plus[j], bed_plus[j], h_minus[j + 1], bed_minus[j + 1], g);
+    face_h_left[j] = hl;
+    face_h_right[j] = hr;
+    momentum_left[j] = left_correction;
+    momentum_right[j] = right_correction;
+  }
+#pragma omp simd
+  for (std::size_t j = 1; j < m - 2; ++j) {
+    const auto [face_mass, face_momentum] =
+        face_flux_1d<flux>(face_h_left[j], u_plus[j], face_h_right[j], u_minus[j + 1], g, sqrt_g);
+    mass[j] = face_mass;
+    momentum_left[j] += face_momentum;
+    momentum_right[j] += face_momentum;
   }
   if (first == 0 && c.imposed.left) mass[1] = c.imposed.left_value;
   if (last == c.cells->count && c.imposed.right) mass[m - 3] = c.imposed.right_value;
@@ -110,7 +113,8 @@ void advance_block(const StageContext& c, std::size_t first, std::size_t last, d
   const double* q_base = c.a.q_base + first;
   double* h_out = c.a.h_out + first;
   double* q_out = c.a.q_out + first;
-  for (std::size_t j = ghost_layers; j + ghost_layers < m; ++j) {
+#pragma omp simd
+  for (std::size_t j = ghost_layers; j < m - ghost_layers; ++j) {
     const double dh_dt = -(mass[j] - mass[j - 1]) * inv_width[j];
     const double dq_dt = (bed_source[j] - (momentum_left[j] - momentum_right[j - 1])) * inv_width[j];
     const double h_new = std::max(0.0, wb * h_base[j] + wi * (h[j] + dt * dh_dt));
