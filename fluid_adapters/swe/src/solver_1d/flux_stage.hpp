@@ -6,6 +6,7 @@
 #include "solver_1d/line_cells.hpp"
 #include "swe/physics.hpp"
 #include "swe/scheme.hpp"
+#include "swe/solver_1d.hpp"
 
 namespace swe::solver_1d {
 
@@ -38,8 +39,24 @@ struct ImposedMassFlux {
   double left_value = 0.0, right_value = 0.0;
 };
 
-void advance_stage(const LineCells& cells, const Physics& physics, const Scheme& scheme, const StageArrays& a,
-                   const ImposedMassFlux& imposed, double base_weight, double dt,
-                   std::vector<StageScratch>& scratch);
+// The state (h, q) and the first stage's arrays, n + 4 values each (ghosts
+// of h and q filled).
+struct StepArrays {
+  double* h;
+  double* q;
+  const double* bed;
+  double* h_stage;
+  double* q_stage;
+};
+
+// One SSP-RK2 (Heun) step of the interior cells (Zheng et al., eq. 28):
+//   U1 = U + dt L(U),  U <- U/2 + (U1 + dt L(U1))/2,
+// two stages as above, the ghosts of U1 filled from the boundaries between
+// them (the ghosts of U are left for the caller). Each thread walks its
+// blocks once, stage 2 one block behind stage 1, so the stage values are
+// read back from cache.
+void advance_step(const LineCells& cells, const Physics& physics, const Scheme& scheme,
+                  const Boundaries1d& boundaries, const StepArrays& a, const ImposedMassFlux& imposed, double dt,
+                  std::vector<StageScratch>& scratch);
 
 }  // namespace swe::solver_1d

@@ -187,16 +187,9 @@ void Solver1d::step(double dt) {
     throw cosim::InputError(fmt::format("Solver1d::step: dt must be positive and finite, got {}", dt));
   }
   Impl& s = *impl_;
-  // SSP-RK2 (Heun): U1 = U + dt L(U), U <- U/2 + (U1 + dt L(U1))/2.
-  solver_1d::advance_stage(s.cells, s.physics, s.scheme,
-                           {s.h.data(), s.q.data(), s.bed.data(), s.h.data(), s.q.data(), s.h_stage.data(),
-                            s.q_stage.data()},
-                           s.imposed, 0.0, dt, s.scratch);
-  s.fill_ghosts(s.h_stage, s.q_stage);
-  solver_1d::advance_stage(s.cells, s.physics, s.scheme,
-                           {s.h_stage.data(), s.q_stage.data(), s.bed.data(), s.h.data(), s.q.data(), s.h.data(),
-                            s.q.data()},
-                           s.imposed, 0.5, dt, s.scratch);
+  solver_1d::advance_step(s.cells, s.physics, s.scheme, s.boundaries,
+                          {s.h.data(), s.q.data(), s.bed.data(), s.h_stage.data(), s.q_stage.data()}, s.imposed,
+                          dt, s.scratch);
   if (s.physics.manning > 0.0) s.apply_friction(dt);
   s.fill_ghosts(s.h, s.q);
 }
