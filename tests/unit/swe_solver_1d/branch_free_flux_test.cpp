@@ -64,6 +64,33 @@ TEST(BranchFreeFlux, HllcMatchesSharedSolverIn1d) { expect_same_fluxes<swe::Flux
 
 TEST(BranchFreeFlux, RoeMatchesSharedSolver) { expect_same_fluxes<swe::FluxKind::roe>(&swe::roe_flux); }
 
+// Where it reports itself plain, the plain Roe formula is the whole of
+// swe::roe_flux; it must not claim so at a dry side.
+TEST(BranchFreeFlux, PlainRoeMatchesSharedSolverWhereItClaimsTo) {
+  RandomFaces faces;
+  int plain_faces = 0, other_faces = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const double hl = faces.random_depth(), hr = faces.random_depth();
+    const double ul = faces.velocity(faces.rng), ur = faces.velocity(faces.rng);
+    const swe::solver_1d::PlainRoeFlux1d f = swe::solver_1d::plain_roe_flux_1d(hl, ul, hr, ur, g, std::sqrt(g));
+    if (hl <= 0.0 || hr <= 0.0) {
+      ASSERT_EQ(f.plain, 0.0) << "hl " << hl << " hr " << hr;
+    }
+    if (f.plain == 0.0) {
+      ++other_faces;
+      continue;
+    }
+    ++plain_faces;
+    const swe::FaceFlux expected = swe::roe_flux({hl, ul, 0.0}, {hr, ur, 0.0}, g);
+    ASSERT_LE(relative_difference(f.mass, expected.mass), relative_tolerance)
+        << "hl " << hl << " ul " << ul << " hr " << hr << " ur " << ur;
+    ASSERT_LE(relative_difference(f.momentum, expected.normal_momentum), relative_tolerance)
+        << "hl " << hl << " ul " << ul << " hr " << hr << " ur " << ur;
+  }
+  EXPECT_GT(plain_faces, 100000);
+  EXPECT_GT(other_faces, 10000);
+}
+
 template <swe::LimiterKind limiter>
 void expect_same_slopes() {
   std::mt19937_64 rng(7);

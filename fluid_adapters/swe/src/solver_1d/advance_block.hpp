@@ -13,6 +13,7 @@
 #include "solver_1d/branch_free_flux.hpp"
 #include "solver_1d/branch_free_slope.hpp"
 #include "swe/numerics/hydrostatic_reconstruction.hpp"
+#include "swe/numerics/riemann_solvers.hpp"
 
 namespace swe::solver_1d {
 namespace {
@@ -46,6 +47,7 @@ __attribute__((flatten)) void advance_block(const StageContext& c, std::size_t f
   double* __restrict momentum_right = momentum_left + m;  // ... the flux cell j+1 sees
   double* __restrict face_h_left = momentum_right + m;    // face j | j+1: hydrostatic depths
   double* __restrict face_h_right = face_h_left + m;
+  double* __restrict roe_plain = face_h_right + m;        // 1 where Roe's plain formula holds
 
 #pragma omp simd
   for (std::size_t j = 0; j < m; ++j) {
@@ -86,13 +88,34 @@ __attribute__((flatten)) void advance_block(const StageContext& c, std::size_t f
     momentum_left[j] = left_correction;
     momentum_right[j] = right_correction;
   }
+  if constexpr (flux == FluxKind::roe) {
 #pragma omp simd
-  for (std::size_t j = 1; j < m - 2; ++j) {
-    const auto [face_mass, face_momentum] =
-        face_flux_1d<flux>(face_h_left[j], u_plus[j], face_h_right[j], u_minus[j + 1], g, sqrt_g);
-    mass[j] = face_mass;
-    momentum_left[j] += face_momentum;
-    momentum_right[j] += face_momentum;
+    for (std::size_t j = 1; j < m - 2; ++j) {
+      const auto [face_mass, face_momentum, plain] =
+          plain_roe_flux_1d(face_h_left[j], u_plus[j], face_h_right[j], u_minus[j + 1], g, sqrt_g);
+      mass[j] = face_mass;
+      momentum_left[j] += face_momentum;
+      momentum_right[j] += face_momentum;
+      roe_plain[j] = plain;
+    }
+    // The few faces with a dry side or a transonic rarefaction.
+    for (std::size_t j = 1; j < m - 2; ++j) {
+      if (roe_plain[j] != 0.0) continue;
+      const HydrostaticFace face = hydrostatic_face(h_plus[j], bed_plus[j], h_minus[j + 1], bed_minus[j + 1], g);
+      const FaceFlux f = roe_flux(FaceState{face.h_left, u_plus[j], 0.0}, FaceState{face.h_right, u_minus[j + 1], 0.0}, g);
+      mass[j] = f.mass;
+      momentum_left[j] = f.normal_momentum + face.left_correction;
+      momentum_right[j] = f.normal_momentum + face.right_correction;
+    }
+  } else {
+#pragma omp simd
+    for (std::size_t j = 1; j < m - 2; ++j) {
+      const auto [face_mass, face_momentum] =
+          face_flux_1d<flux>(face_h_left[j], u_plus[j], face_h_right[j], u_minus[j + 1], g, sqrt_g);
+      mass[j] = face_mass;
+      momentum_left[j] += face_momentum;
+      momentum_right[j] += face_momentum;
+    }
   }
   if (first == 0 && c.imposed.left) mass[1] = c.imposed.left_value;
   if (last == c.cells->count && c.imposed.right) mass[m - 3] = c.imposed.right_value;

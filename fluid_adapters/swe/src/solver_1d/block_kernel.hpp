@@ -10,7 +10,7 @@ namespace swe::solver_1d {
 
 // Cells per block: the block's work arrays stay in the core's cache.
 inline constexpr std::size_t block_cells = 512;
-inline constexpr std::size_t scratch_arrays = 14;
+inline constexpr std::size_t scratch_arrays = 15;
 
 struct StageContext {
   const LineCells* cells;
