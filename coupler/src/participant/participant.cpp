@@ -82,7 +82,6 @@ struct Participant::Impl {
   bool finished = false;  // the coupler said the run is over
   bool finalized = false;
   double time = 0.0;
-  double window_start = 0.0;
   std::size_t window = 0;
   double standalone_window = 0.0;
   CouplingTimings timings;
@@ -91,7 +90,11 @@ struct Participant::Impl {
     return meshes.at(f.mesh).mesh.size() * static_cast<std::size_t>(f.components);
   }
 
-  double window_end() const { return std::min(schedule.end_time, window_start + schedule.window); }
+  // Computed from the window's index, as the coupler does, never accumulated:
+  // over thousands of windows a running sum drifts past the coupler's tolerance.
+  double window_end() const {
+    return std::min(schedule.end_time, schedule.start_time + static_cast<double>(window) * schedule.window);
+  }
 
   void send(com::Message message) {
     const auto start = Clock::now();
@@ -290,7 +293,7 @@ void Participant::initialize(double start_time, double end_time) {
     s.schedule.end_time = end_time;
     s.schedule.window =
         s.standalone_window > 0.0 ? s.standalone_window : std::max(end_time - start_time, 1e-300);
-    s.time = s.window_start = start_time;
+    s.time = start_time;
     return;
   }
 
@@ -328,7 +331,7 @@ void Participant::initialize(double start_time, double end_time) {
         "participant '{}': the job's schedule [{}, {}] s replaces the solver's own [{}, "
         "{}] s",
         s.name, s.schedule.start_time, s.schedule.end_time, start_time, end_time);
-  s.time = s.window_start = s.schedule.start_time;
+  s.time = s.schedule.start_time;
   for (auto& [field_name, r] : s.reads) r.received_at = r.previous_at = s.time;
 
   // Window 0 carries the initial data both ways.
@@ -410,7 +413,6 @@ void Participant::advance(double dt) {
     s.send_window_data();
     s.receive_window_data();
   }
-  s.window_start = s.time;
   ++s.window;
   for (auto& [field_name, r] : s.reads) std::fill(r.delivered.begin(), r.delivered.end(), 0.0);
 }
