@@ -1,10 +1,11 @@
 #pragma once
 
 // The block kernels of the stage, included by block_kernels.cpp (baseline
-// instruction set) and block_kernels_avx2.cpp (compiled with -mavx2): same
-// source, same operations, so the same results bitwise. Internal linkage,
-// and `flatten` inlines every helper into the kernel, so no out-of-line
-// helper compiled for AVX2 can be picked by the linker for the baseline.
+// instruction set), block_kernels_avx2.cpp and block_kernels_avx512.cpp:
+// same source, same operations, so the same results bitwise. Internal
+// linkage, and `flatten` inlines every helper into the kernel, so no
+// out-of-line helper compiled for AVX2 or AVX-512 can be picked by the
+// linker for the baseline.
 
 #include <algorithm>
 #include <cmath>

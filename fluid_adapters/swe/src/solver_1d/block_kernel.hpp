@@ -25,10 +25,11 @@ using BlockKernel = void (*)(const StageContext& c, std::size_t first, std::size
 
 // The kernel for a flux and limiter, for any x86-64 (SSE2) ...
 BlockKernel block_kernel_baseline(FluxKind flux, LimiterKind limiter);
-#ifdef SWE_1D_AVX2_KERNELS
-// ... and for CPUs with AVX2 (twice the vector width; no FMA, so the same
-// results bitwise).
+#ifdef SWE_1D_X86_KERNELS
+// ... and for CPUs with AVX2 or AVX-512 (4 or 8 lanes; no FMA contraction,
+// so the same results bitwise).
 BlockKernel block_kernel_avx2(FluxKind flux, LimiterKind limiter);
+BlockKernel block_kernel_avx512(FluxKind flux, LimiterKind limiter);
 #endif
 
 }  // namespace swe::solver_1d

@@ -16,7 +16,8 @@ namespace {
 constexpr std::size_t parallel_cells = 8192;
 
 BlockKernel block_kernel(FluxKind flux, LimiterKind limiter) {
-#ifdef SWE_1D_AVX2_KERNELS
+#ifdef SWE_1D_X86_KERNELS
+  if (__builtin_cpu_supports("avx512f")) return block_kernel_avx512(flux, limiter);
   if (__builtin_cpu_supports("avx2")) return block_kernel_avx2(flux, limiter);
 #endif
   return block_kernel_baseline(flux, limiter);

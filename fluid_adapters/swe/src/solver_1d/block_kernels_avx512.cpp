@@ -1,0 +1,7 @@
+#include "solver_1d/advance_block.hpp"
+
+namespace swe::solver_1d {
+
+BlockKernel block_kernel_avx512(FluxKind flux, LimiterKind limiter) { return select_block_kernel(flux, limiter); }
+
+}  // namespace swe::solver_1d
