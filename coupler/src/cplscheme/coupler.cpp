@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <thread>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <numeric>
@@ -108,7 +109,18 @@ struct Coupler::Impl {
 
   void send(const std::string& peer, const com::Message& m) {
     auto scope = summary.phases().measure("transport");
-    transport.send(peer, m);
+    try {
+      transport.send(peer, m);
+    } catch (const ProtocolError&) {
+      // A peer that cannot be reached has usually died: its exit status is
+      // the better report. The kernel closes a dying process's socket a
+      // moment before the process can be reaped, so give it that moment.
+      for (int i = 0; i < 50; ++i) {
+        check_processes();
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      }
+      throw;
+    }
   }
 
   com::Message message(MessageType type, double time) const {
