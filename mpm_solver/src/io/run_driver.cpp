@@ -14,6 +14,7 @@
 #include "cosim/io/content_hash.hpp"
 #include "cosim/io/files.hpp"
 #include "cosim/io/logging.hpp"
+#include "cosim/io/output_schedule.hpp"
 #include "cosim/io/run_summary.hpp"
 #include "mpm/case/load_case.hpp"
 #include "mpm/io/grid_snapshot_writer.hpp"
@@ -25,31 +26,6 @@ namespace mpm {
 namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
-
-// Output times k * interval (k = 1, 2, ...) and the end time; interval 0:
-// the end time only. Times are computed, not accumulated, so a step that
-// ends on one lands on it to round-off.
-class OutputSchedule {
- public:
-  OutputSchedule(double interval, double end_time) : interval_(interval), end_(end_time) {}
-
-  double next() const {
-    if (done_) return infinity;
-    return interval_ > 0.0 ? std::min(static_cast<double>(k_) * interval_, end_) : end_;
-  }
-  bool due(double t, double tolerance) const { return next() <= t + tolerance; }
-  // Moves past every output time up to t.
-  void passed(double t, double tolerance) {
-    if (end_ <= t + tolerance) done_ = true;
-    while (interval_ > 0.0 && static_cast<double>(k_) * interval_ <= t + tolerance) ++k_;
-  }
-
- private:
-  double interval_;
-  double end_;
-  long k_ = 1;
-  bool done_ = false;
-};
 
 template <int Dim>
 void record_conserved(cosim::RunSummary& summary, const Totals<Dim>& totals, bool start) {
@@ -270,8 +246,8 @@ class CaseRun {
   Solver<Dim> solver_;
   double end_time_;
   double min_time_step_;
-  OutputSchedule snapshots_;
-  OutputSchedule probe_times_;
+  cosim::OutputSchedule snapshots_;
+  cosim::OutputSchedule probe_times_;
   double tolerance_;
   double last_snapshot_ = -infinity;
   double min_stable_ = infinity;

@@ -12,6 +12,7 @@
 
 #include "cosim/error.hpp"
 #include "cosim/io/files.hpp"
+#include "cosim/io/output_schedule.hpp"
 #include "cosim/io/run_summary.hpp"
 #include "cosim/io/snapshot_writer.hpp"
 #include "cosim/io/time_series_writer.hpp"
@@ -27,26 +28,6 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr const char* cells_mesh = "swe_cells";
 constexpr const char* bed_field = "bed_elevation";
 constexpr const char* traction_field = "bed_traction";
-
-// Output times k * interval and the end; computed, not accumulated.
-class Schedule {
- public:
-  Schedule(double interval, double end) : interval_(interval), end_(end) {}
-  double next() const {
-    if (done_) return infinity;
-    return interval_ > 0.0 ? std::min(static_cast<double>(k_) * interval_, end_) : end_;
-  }
-  bool due(double t, double tolerance) const { return next() <= t + tolerance; }
-  void passed(double t, double tolerance) {
-    if (end_ <= t + tolerance) done_ = true;
-    while (interval_ > 0.0 && static_cast<double>(k_) * interval_ <= t + tolerance) ++k_;
-  }
-
- private:
-  double interval_, end_;
-  long k_ = 1;
-  bool done_ = false;
-};
 
 struct WaterStats {
   double volume, eta_max, eta_min, speed_max;
@@ -103,7 +84,7 @@ class CaseRun {
         if (participant_.is_coupled() && c_.coupling.reads_bed) lay_water_over_received_bed();
         end_time_ = participant_.end_time();
         gauge_times_.emplace(c_.gauge_every, end_time_);
-        snapshots_ = Schedule(c_.output_every, end_time_);
+        snapshots_ = cosim::OutputSchedule(c_.output_every, end_time_);
         tolerance_ = 1e-10 * end_time_;
         open_outputs();
       }
@@ -285,8 +266,8 @@ class CaseRun {
   cosim::RunSummary& summary_;
   std::unique_ptr<Solver> solver_;
   cosim::Participant participant_;
-  Schedule snapshots_;
-  std::optional<Schedule> gauge_times_;
+  cosim::OutputSchedule snapshots_;
+  std::optional<cosim::OutputSchedule> gauge_times_;
   double tolerance_;
   double end_time_ = 0.0;
   std::size_t steps_ = 0;

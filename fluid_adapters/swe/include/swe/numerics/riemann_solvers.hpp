@@ -39,6 +39,22 @@ inline double upwind_tangential(double mass_flux, double contact_speed, const Fa
 
 }  // namespace detail
 
+namespace detail {
+
+// The HLL flux of depth and normal momentum for wave speeds sl < 0 < sr;
+// the tangential momentum is left to the caller.
+inline FaceFlux hll_between(const FaceState& l, const FaceState& r, double g, double sl, double sr) {
+  const FaceFlux fl = physical_flux(l, g), fr = physical_flux(r, g);
+  const double inv = 1.0 / (sr - sl);
+  FaceFlux f;
+  f.mass = (sr * fl.mass - sl * fr.mass + sl * sr * (r.h - l.h)) * inv;
+  f.normal_momentum = (sr * fl.normal_momentum - sl * fr.normal_momentum +
+                       sl * sr * (r.h * r.un - l.h * l.un)) * inv;
+  return f;
+}
+
+}  // namespace detail
+
 // HLL (Harten, Lax & van Leer) with Einfeldt's speeds; positivity-preserving.
 // The tangential momentum is upwinded with the mass flux.
 inline FaceFlux hll_flux(const FaceState& l, const FaceState& r, double g) {
@@ -46,12 +62,7 @@ inline FaceFlux hll_flux(const FaceState& l, const FaceState& r, double g) {
   const auto [sl, sr] = detail::wave_speeds(l, r, g);
   if (sl >= 0.0) return physical_flux(l, g);
   if (sr <= 0.0) return physical_flux(r, g);
-  const FaceFlux fl = physical_flux(l, g), fr = physical_flux(r, g);
-  const double inv = 1.0 / (sr - sl);
-  FaceFlux f;
-  f.mass = (sr * fl.mass - sl * fr.mass + sl * sr * (r.h - l.h)) * inv;
-  f.normal_momentum = (sr * fl.normal_momentum - sl * fr.normal_momentum +
-                       sl * sr * (r.h * r.un - l.h * l.un)) * inv;
+  FaceFlux f = detail::hll_between(l, r, g, sl, sr);
   f.tangential_momentum = detail::upwind_tangential(f.mass, f.mass, l, r);
   return f;
 }
@@ -64,12 +75,7 @@ inline FaceFlux hllc_flux(const FaceState& l, const FaceState& r, double g) {
   const auto [sl, sr] = detail::wave_speeds(l, r, g);
   if (sl >= 0.0) return physical_flux(l, g);
   if (sr <= 0.0) return physical_flux(r, g);
-  const FaceFlux fl = physical_flux(l, g), fr = physical_flux(r, g);
-  const double inv = 1.0 / (sr - sl);
-  FaceFlux f;
-  f.mass = (sr * fl.mass - sl * fr.mass + sl * sr * (r.h - l.h)) * inv;
-  f.normal_momentum = (sr * fl.normal_momentum - sl * fr.normal_momentum +
-                       sl * sr * (r.h * r.un - l.h * l.un)) * inv;
+  FaceFlux f = detail::hll_between(l, r, g, sl, sr);
   const double denominator = r.h * (r.un - sr) - l.h * (l.un - sl);
   const double s_star = denominator != 0.0
                             ? (sl * r.h * (r.un - sr) - sr * l.h * (l.un - sl)) / denominator
