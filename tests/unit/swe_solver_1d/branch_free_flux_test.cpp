@@ -100,7 +100,7 @@ void expect_same_slopes() {
     const double a = zero(rng) == 0 ? 0.0 : difference(rng);
     const double b = zero(rng) == 0 ? 0.0 : difference(rng);
     const double expected = swe::limited_slope(limiter, a, b);
-    ASSERT_LE(relative_difference(swe::solver_1d::limited_slope_1d<limiter>(a, b), expected), relative_tolerance)
+    ASSERT_LE(relative_difference(swe::limited_slope<limiter>(a, b), expected), relative_tolerance)
         << swe::to_string(limiter) << " a " << a << " b " << b;
   }
 }

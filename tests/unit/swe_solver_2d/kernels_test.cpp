@@ -44,10 +44,10 @@ TEST(Solver2dKernels, BranchFreeSlopesGiveTheBitsOfLimitedSlope) {
   int differences = 0;
   for (const auto& [a, b] : pairs) {
     using swe::LimiterKind;
-    differences += swe::solver_2d::branch_free_slope<LimiterKind::none>(a, b) != swe::limited_slope(LimiterKind::none, a, b);
-    differences += swe::solver_2d::branch_free_slope<LimiterKind::minmod>(a, b) != swe::limited_slope(LimiterKind::minmod, a, b);
-    differences += swe::solver_2d::branch_free_slope<LimiterKind::van_leer>(a, b) != swe::limited_slope(LimiterKind::van_leer, a, b);
-    differences += swe::solver_2d::branch_free_slope<LimiterKind::monotonized_central>(a, b) !=
+    differences += swe::limited_slope<LimiterKind::none>(a, b) != swe::limited_slope(LimiterKind::none, a, b);
+    differences += swe::limited_slope<LimiterKind::minmod>(a, b) != swe::limited_slope(LimiterKind::minmod, a, b);
+    differences += swe::limited_slope<LimiterKind::van_leer>(a, b) != swe::limited_slope(LimiterKind::van_leer, a, b);
+    differences += swe::limited_slope<LimiterKind::monotonized_central>(a, b) !=
                    swe::limited_slope(LimiterKind::monotonized_central, a, b);
   }
   EXPECT_EQ(differences, 0);

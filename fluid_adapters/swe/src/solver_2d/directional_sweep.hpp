@@ -55,24 +55,6 @@ struct PrimitiveView {
   const double* eta;
 };
 
-// swe::limited_slope, bit for bit, without branches so the reconstruction
-// loop vectorises (both sides of each choice are computed, then one is kept).
-template <LimiterKind limiter>
-inline double branch_free_slope(double a, double b) {
-  const bool same_sign = a * b > 0.0;
-  double slope = 0.0;
-  if constexpr (limiter == LimiterKind::minmod) {
-    slope = std::abs(a) < std::abs(b) ? a : b;
-  } else if constexpr (limiter == LimiterKind::van_leer) {
-    slope = 2.0 * a * b / (a + b);
-  } else if constexpr (limiter == LimiterKind::monotonized_central) {
-    slope = std::copysign(std::min(std::min(2.0 * std::abs(a), 2.0 * std::abs(b)), 0.5 * std::abs(a + b)), a);
-  } else {
-    return 0.0;
-  }
-  return same_sign ? slope : 0.0;
-}
-
 // Reconstructs `count` cells, first, first + 1, ..., with neighbours at
 // +-stride, into out[0 .. count): limited slopes (undivided, uniform spacing)
 // of h, eta = h + B and the two velocity components; the face bed follows
@@ -95,10 +77,10 @@ SWE_2D_ROW_LOOP void reconstruct_cells(PrimitiveView p, const double* un, const 
 #pragma omp simd
   for (std::ptrdiff_t k = 0; k < count; ++k) {
     const std::ptrdiff_t below = k - stride, above = k + stride;
-    const double dh = 0.5 * branch_free_slope<limiter>(h[k] - h[below], h[above] - h[k]);
-    const double deta = 0.5 * branch_free_slope<limiter>(eta[k] - eta[below], eta[above] - eta[k]);
-    const double dun = 0.5 * branch_free_slope<limiter>(un[k] - un[below], un[above] - un[k]);
-    const double dut = 0.5 * branch_free_slope<limiter>(ut[k] - ut[below], ut[above] - ut[k]);
+    const double dh = 0.5 * swe::limited_slope<limiter>(h[k] - h[below], h[above] - h[k]);
+    const double deta = 0.5 * swe::limited_slope<limiter>(eta[k] - eta[below], eta[above] - eta[k]);
+    const double dun = 0.5 * swe::limited_slope<limiter>(un[k] - un[below], un[above] - un[k]);
+    const double dut = 0.5 * swe::limited_slope<limiter>(ut[k] - ut[below], ut[above] - ut[k]);
     h_lower[k] = std::max(0.0, h[k] - dh);
     h_upper[k] = std::max(0.0, h[k] + dh);
     bed_lower[k] = (eta[k] - deta) - h_lower[k];
