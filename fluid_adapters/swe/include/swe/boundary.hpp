@@ -5,8 +5,9 @@
 
 namespace swe {
 
-// Conditions on a domain face, imposed through two ghost cells (the bed in
-// the ghosts copies the adjacent interior cell).
+// Conditions on a domain face, imposed through two ghost cells. The first
+// ghost's bed equals the adjacent interior cell's, so there is no bed step
+// at the face (2D walls mirror the interior's bed in both ghosts).
 enum class BoundaryKind : std::uint8_t {
   wall,              // reflective: ghost mirrors the interior, normal velocity negated
   transmissive,      // zero gradient: ghost copies the interior
