@@ -213,6 +213,9 @@ Schema mpm_case_schema() {
                 "1: pure FLIP, 0: pure PIC.")
       .optional("locking", Schema::one_of({"none", "bbar", "fbar"}).default_value("none"),
                 "Volumetric locking mitigation.")
+      .optional("gimp_domain", Schema::one_of({"initial", "deformed"}).default_value("initial"),
+                "GIMP particle domain: the initial size (uGIMP), or stretched every step with the "
+                "deformation gradient, l_i = l_0,i |F_ii| (cpGIMP). Read by the gimp shape only.")
       .required("time", time_schema(), "Time stepping.")
       .optional("gravity", coordinates().unit("m/s^2").default_value("0"),
                 "Gravity vector, one value per dimension.")

@@ -100,6 +100,8 @@ class CaseReader {
                              {{"none", LockingMitigation::none},
                               {"bbar", LockingMitigation::bbar},
                               {"fbar", LockingMitigation::fbar}});
+    c_.gimp_domain = read_choice(root_, "gimp_domain", GimpDomain::initial,
+                                 {{"initial", GimpDomain::initial}, {"deformed", GimpDomain::deformed}});
     read_time(root_["time"]);
     if (auto g = root_.find("gravity")) c_.gravity = read_vector(*g, dim_);
     c_.gravity_ramp_time = root_.get<double>("gravity_ramp_time", 0.0);

@@ -38,6 +38,7 @@ struct Solver<Dim>::Impl {
   std::vector<double> cell_sum;
   std::vector<double> cell_weight;
   std::vector<double> volumetric_increment;  // per particle, scratch
+  std::vector<Vec<Dim>> initial_half_length;  // for GimpDomain::deformed
   double time = 0.0;
   std::size_t steps = 0;
   double contact_dissipation = 0.0;
@@ -72,6 +73,7 @@ struct Solver<Dim>::Impl {
   void interpolate_and_remap_velocities();
   template <class Kernel>
   void update_positions_and_stresses(double dt);
+  void update_particle_domains();
   void move_rigid_bodies(double dt);
 
   template <class Kernel>
@@ -184,6 +186,7 @@ Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
     }
   }
   impulse_on_field.assign(static_cast<std::size_t>(field_count), Vec<Dim>::Zero());
+  if (d.gimp_domain == GimpDomain::deformed) initial_half_length = particles.half_length;
   faces = detail::face_values(grid);
   for (std::size_t p = 0; p < particles.size(); ++p)
     if (bodies[particles.body[p]].is_rigid()) particles.velocity[p] = bodies[particles.body[p]].rigid_velocity;
@@ -228,6 +231,7 @@ void Solver<Dim>::Impl::step(double dt) {
       interpolate_and_remap_velocities<Kernel>();
       update_positions_and_stresses<Kernel>(dt);
     }
+    if (description.gimp_domain == GimpDomain::deformed) update_particle_domains();
     move_rigid_bodies(dt);
   });
   time += dt;
@@ -253,7 +257,8 @@ void Solver<Dim>::Impl::apply_surface_loads(double dt) {
     const double outward = load.face % 2 == 0 ? -1.0 : 1.0;
     for (const std::size_t p : load.particles) {
       // Face area of the particle's initial domain normal to the face.
-      const double area = particles.initial_volume[p] / (2.0 * particles.half_length[p][axis]);
+      const Vec<Dim>& l0 = initial_half_length.empty() ? particles.half_length[p] : initial_half_length[p];
+      const double area = particles.initial_volume[p] / (2.0 * l0[axis]);
       Vec<Dim> force = Vec<Dim>::Zero();
       if (load.traction) force = shrink<Dim>(*load.traction) * area;
       if (load.pressure) force[axis] -= outward * *load.pressure * area;
@@ -513,6 +518,24 @@ void Solver<Dim>::Impl::update_kinematics_and_stress(double dt, bool use_remappe
                                  particles);
   }
   internal_work += work;
+}
+
+// cpGIMP (Bardenhagen and Kober 2004): the domain stays aligned with the
+// axes and stretches with the diagonal of F, l_p,i = l_p0,i |F_ii|. Of the
+// axis-aligned choices this one keeps prod_i l_p,i = J prod_i l_p0,i for
+// stretches along the axes and leaves the domain alone under simple shear;
+// the lengths of the convected edge vectors F l_p0,i e_i (Sadeghirad et al.
+// 2011), the other common choice, grow with shear and overlap neighbours.
+template <int Dim>
+void Solver<Dim>::Impl::update_particle_domains() {
+  const auto count = static_cast<std::ptrdiff_t>(particles.size());
+#pragma omp parallel for schedule(static) if (worth_threads(particles.size()))
+  for (std::ptrdiff_t q = 0; q < count; ++q) {
+    const auto p = static_cast<std::size_t>(q);
+    if (body_of(p).is_rigid()) continue;
+    particles.half_length[p] =
+        initial_half_length[p].cwiseProduct(particles.deformation_gradient[p].diagonal().cwiseAbs());
+  }
 }
 
 template <int Dim>

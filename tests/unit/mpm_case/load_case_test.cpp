@@ -88,6 +88,7 @@ TEST(MpmCaseLoad, ReadsEveryPartOfAValidCase) {
   EXPECT_EQ(c.grid.cells[0], 20);
   EXPECT_EQ(c.shape, ShapeKind::gimp);
   EXPECT_EQ(c.scheme, UpdateScheme::musl);
+  EXPECT_EQ(c.gimp_domain, GimpDomain::initial);
   EXPECT_DOUBLE_EQ(c.time.safety_factor, 0.4);
   EXPECT_DOUBLE_EQ(c.gravity.y(), -9.81);
   ASSERT_EQ(c.materials.size(), 1u);
@@ -130,6 +131,12 @@ TEST(MpmCaseLoad, ReadsEveryPartOfAValidCase) {
   EXPECT_LE((at - Vec3d(0.5, 0.6, 0)).norm(), 0.0125 * std::sqrt(2.0) + 1e-12);
   EXPECT_DOUBLE_EQ(c.output.every, 0.01);
   EXPECT_DOUBLE_EQ(c.output.probe_every, 0.001);
+}
+
+TEST(MpmCaseLoad, ReadsTheGimpDomainUpdate) {
+  std::string text = valid_case;
+  text.replace(text.find("shape: gimp\n"), 12, "shape: gimp\ngimp_domain: deformed\n");
+  EXPECT_EQ(load_case_text(text, "case.yaml").gimp_domain, GimpDomain::deformed);
 }
 
 TEST(MpmCaseLoad, ProbeIndicesAreGlobalInBodyOrder) {
@@ -359,7 +366,7 @@ TEST(MpmCaseHelp, ListsCaseKeysAndMaterialModels) {
   for (const char* key : {"grid.origin", "time.min_time_step", "bodies[].geometry.box.min",
                           "bodies[].rigid.velocity_history", "bodies[].porous.permeability.model",
                           "contact.pairs[].friction", "boundaries.x_min", "loads[].ramp_time",
-                          "probes[].position", "output.probe_every", "threads"})
+                          "probes[].position", "output.probe_every", "gimp_domain", "threads"})
     EXPECT_THAT(help, HasSubstr(key));
   EXPECT_THAT(help, HasSubstr("materials.<name> with type: linear_elastic"));
 }

@@ -230,6 +230,55 @@ TEST(SolverObjectivity, PolarRotationStressTurnsWithRigidRotation) {
   expect_stress_rotates_with_body("polar_rotation");
 }
 
+// A block deformed by a prescribed affine grid velocity v = L (x - c), with L
+// constant: every point sees exactly L (the GIMP weights reproduce linear
+// fields inside the grid), so F = (I + dt L)^n. With gimp_domain: deformed the
+// half-lengths are l_0,i |F_ii| exactly (the shear term of L leaves them
+// alone); with the default they keep their initial value bit for bit.
+double worst_domain_error(GimpDomain domain, const Eigen::Matrix2d& L, int steps, double dt) {
+  CaseDescription c = empty_case(2, {24, 24, 1}, 0.1);
+  c.shape = ShapeKind::gimp;
+  c.scheme = UpdateScheme::usl;
+  c.flip_fraction = 0.0;
+  c.gimp_domain = domain;
+  c.materials.push_back(elastic(1000.0, 1.0, 0.3));
+  c.bodies.push_back(box_body("block", 0, 2, Vec3d(0.8, 0.8, 0), Vec3d(1.6, 1.6, 0), 0.1, 2));
+  Solver<2> solver(c);
+  const Vec<2> centre(1.2, 1.2);
+  solver.add_grid_velocity_correction([&](double, double, Grid<2>& grid) {
+    for (std::size_t i = 0; i < grid.size(); ++i) grid.velocity[i] = L * (grid.position(i) - centre);
+  });
+  const auto& particles = solver.particles();
+  const std::vector<Vec<2>> initial = particles.half_length;
+  for (int n = 0; n < steps; ++n) solver.step(dt);
+  const Eigen::Matrix2d increment = Eigen::Matrix2d::Identity() + dt * L;
+  Eigen::Matrix2d F = Eigen::Matrix2d::Identity();
+  for (int n = 0; n < steps; ++n) F = increment * F;
+  double worst = 0.0;
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    EXPECT_LT((particles.deformation_gradient[p] - F).norm(), 1e-12);
+    const Vec<2> expected =
+        domain == GimpDomain::deformed ? Vec<2>(initial[p].cwiseProduct(F.diagonal().cwiseAbs())) : initial[p];
+    worst = std::max(worst, ((particles.half_length[p] - expected).array() / initial[p].array()).abs().maxCoeff());
+  }
+  return worst;
+}
+
+TEST(SolverGimpDomain, DeformedDomainFollowsTheDiagonalOfF) {
+  Eigen::Matrix2d L;
+  L << 0.5, 0.2, 0.0, -0.3;  // stretch in x, compression in y, shear
+  const double worst = worst_domain_error(GimpDomain::deformed, L, 200, 1e-3);
+  std::printf("deformed GIMP domain: worst relative half-length error %.2e (tolerance 1e-13)\n", worst);
+  EXPECT_LT(worst, 1e-13);
+}
+
+TEST(SolverGimpDomain, InitialDomainIsUnchangedByDefault) {
+  EXPECT_EQ(CaseDescription{}.gimp_domain, GimpDomain::initial);
+  Eigen::Matrix2d L;
+  L << 0.5, 0.2, 0.0, -0.3;
+  EXPECT_EQ(worst_domain_error(GimpDomain::initial, L, 200, 1e-3), 0.0);
+}
+
 // Two elastic blocks meeting head-on through frictionless grid contact: the
 // contact conserves momentum exactly, creates no energy, and they separate.
 TEST(SolverContact, HeadOnCollisionConservesMomentumAndBounces) {

@@ -31,6 +31,13 @@ enum class LockingMitigation {
   fbar,  // cell-averaged volume change of the deformation gradient increment
 };
 
+// The GIMP particle domain (half-lengths l_p): kept at its initial size
+// (uGIMP), or stretched along the axes with the point's deformation,
+// l_p,i = l_p0,i |F_ii| (cpGIMP, Bardenhagen and Kober 2004; the axis-aligned
+// simplification of the convected domain of Sadeghirad et al. 2011). Only the
+// gimp shape reads the domain.
+enum class GimpDomain { initial, deformed };
+
 struct GridSpec {
   Vec3d origin = Vec3d::Zero();
   Vec3d spacing = Vec3d::Ones();
@@ -150,6 +157,7 @@ struct CaseDescription {
   UpdateScheme scheme = UpdateScheme::musl;
   double flip_fraction = 0.99;  // 1: pure FLIP, 0: pure PIC
   LockingMitigation locking = LockingMitigation::none;
+  GimpDomain gimp_domain = GimpDomain::initial;
   TimeSpec time;
   Vec3d gravity = Vec3d::Zero();
   double gravity_ramp_time = 0.0;

@@ -23,7 +23,7 @@ struct Particles {
   std::vector<Vec<Dim>> position;
   std::vector<Vec<Dim>> velocity;
   std::vector<Mat<Dim>> deformation_gradient;
-  std::vector<Vec<Dim>> half_length;  // initial domain half-length (uGIMP) [m]
+  std::vector<Vec<Dim>> half_length;  // GIMP domain half-length, initial or deformed (GimpDomain) [m]
   // Mass and volume.
   std::vector<double> mass;
   std::vector<double> initial_volume;
