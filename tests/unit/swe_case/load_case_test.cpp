@@ -137,12 +137,12 @@ TEST(SweCase, RefusesKeysOfTheOtherDimension) {
   EXPECT_NE(message.find("a 1D gauge takes `x`"), std::string::npos) << message;
 }
 
-TEST(SweCase, NeedsAStillLevelForExcessBedPressure) {
-  const std::string message = error_of(stoker + "coupling: {bed_pressure: excess}\n");
-  EXPECT_NE(message.find("still_level"), std::string::npos) << message;
-  const auto c = swe::load_case_text(stoker + "coupling: {bed_pressure: excess, still_level: 0.5}\n", "c.yaml");
+TEST(SweCase, ReadsTheBedPressureModel) {
+  EXPECT_EQ(swe::load_case_text(stoker, "c.yaml").coupling.pressure, swe::BedPressure::hydrostatic);
+  const auto c = swe::load_case_text(stoker + "coupling: {bed_pressure: excess}\n", "c.yaml");
   EXPECT_EQ(c.coupling.pressure, swe::BedPressure::excess);
-  EXPECT_DOUBLE_EQ(c.coupling.still_level, 0.5);
+  const std::string message = error_of(stoker + "coupling: {bed_pressure: buoyant}\n");
+  EXPECT_NE(message.find("coupling.bed_pressure"), std::string::npos) << message;
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <numeric>
 #include <vector>
 
+#include "cosim/error.hpp"
 #include "swe/coupling/bed_traction.hpp"
 #include "swe/solver_1d.hpp"
 #include "swe/solver_2d.hpp"
@@ -59,18 +60,21 @@ TEST(BedTraction, AddsManningShearAlongTheFlow) {
   EXPECT_NEAR(t[0], -rho * g * 0.03 * 0.03 / std::cbrt(0.5), 1e-9);
 }
 
-TEST(BedTraction, ExcessPressureIsTheWavesLoadOnWetCellsOnly) {
-  swe::Solver1d s = line(3, 3.0);
-  s.set_bed(std::vector<double>{1.2, 0.0, 0.0});
-  s.set_state(std::vector<double>{0.0, 1.1, 0.9}, std::vector<double>(3, 0.0), {});
+TEST(BedTraction, ExcessPressureIsTheWavesPushOverTheInitialSurfaceOnWetCellsOnly) {
+  swe::Solver1d s = line(4, 4.0);
+  s.set_bed(std::vector<double>{1.2, 0.0, 0.0, 0.5});
+  s.set_state(std::vector<double>{0.0, 1.1, 0.9, 1.3}, std::vector<double>(4, 0.0), {});
   swe::CouplingSpec spec;
   spec.pressure = swe::BedPressure::excess;
-  spec.still_level = 1.0;
+  spec.initial_surface = {1.2, 1.0, 1.0, 2.0};  // the last cell started under 1.5 m of water
   const auto t = swe::bed_traction(s, spec);
-  EXPECT_EQ(t[1], 0.0);                            // dry cell above the still level
-  EXPECT_NEAR(t[3], -rho * g * 0.1, 1e-9);         // crest
-  EXPECT_NEAR(t[5], rho * g * 0.1, 1e-9);          // trough pulls
-  EXPECT_EQ(t[0], 0.0);                            // no horizontal pressure
+  EXPECT_EQ(t[1], 0.0);                        // dry cell
+  EXPECT_NEAR(t[3], -rho * g * 0.1, 1e-9);     // crest
+  EXPECT_EQ(t[5], 0.0);                        // a trough does not pull
+  EXPECT_EQ(t[7], 0.0);                        // nor does water draining off the cell
+  EXPECT_EQ(t[0], 0.0);                        // no horizontal pressure
+  spec.initial_surface.pop_back();
+  EXPECT_THROW(swe::bed_traction(s, spec), cosim::Error);
 }
 
 TEST(BedTraction, HasThreeComponentsIn2DAndBalancesALakeAtRestInTotal) {

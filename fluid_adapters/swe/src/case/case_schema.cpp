@@ -103,10 +103,10 @@ Schema coupling_schema() {
       .optional("writes", Schema::sequence(Schema::one_of({"bed_traction"})).default_value("[bed_traction]"),
                 "bed_traction [Pa] per cell: horizontal component(s), then vertical.")
       .optional("bed_pressure", Schema::one_of({"hydrostatic", "excess"}).default_value("hydrostatic"),
-                "hydrostatic: p = rho g h normal to the bed; excess: p = rho g (eta - still_level) "
-                "on wet cells, vertical only (Zheng et al., eq. 10 as used in their Sec. 4.3).")
-      .optional("still_level", Schema::number().unit("m"),
-                "Reference free surface eta_0 of bed_pressure: excess (required there).");
+                "hydrostatic: p = rho g h normal to the bed (the soil then feels its buoyancy); "
+                "excess: the waves' push p = rho g max(0, eta - eta_0) on wet cells, eta_0 the initial "
+                "free surface above each cell, vertical only (Zheng et al., eq. 10 as used in their "
+                "Secs. 4.3-4.4, where the soil's weight is total and never carried the water).");
   return coupling;
 }
 

@@ -276,14 +276,7 @@ class CaseReader {
     };
     c.coupling.reads_bed = listed("reads", "bed_elevation");
     c.coupling.writes_traction = listed("writes", "bed_traction");
-    if (coupling->get("bed_pressure", "hydrostatic") == "excess") {
-      c.coupling.pressure = BedPressure::excess;
-      if (!coupling->has("still_level"))
-        coupling->fail("bed_pressure: excess needs `still_level`, the free surface eta_0 of the water at rest");
-      c.coupling.still_level = (*coupling)["still_level"].as<double>();
-    } else if (auto level = coupling->find("still_level")) {
-      level->fail_at_key("`still_level` is only used with bed_pressure: excess");
-    }
+    if (coupling->get("bed_pressure", "hydrostatic") == "excess") c.coupling.pressure = BedPressure::excess;
   }
 
   bool inside(const std::array<double, 2>& x, int dimension, double margin) const {

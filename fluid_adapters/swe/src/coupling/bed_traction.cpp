@@ -1,7 +1,12 @@
 #include "swe/coupling/bed_traction.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
+
+#include <fmt/format.h>
+
+#include "cosim/error.hpp"
 
 #include "swe/numerics/hydrostatic_reconstruction.hpp"
 #include "swe/numerics/manning_friction.hpp"
@@ -28,6 +33,10 @@ std::vector<double> bed_traction(const Solver& solver, const CouplingSpec& spec)
   const double g = physics.gravity, rho = physics.density;
   const auto h = solver.depth();
   const auto bed = solver.bed();
+  if (spec.pressure == BedPressure::excess && spec.initial_surface.size() != n)
+    throw cosim::Error(cosim::ExitCode::internal_error,
+                       fmt::format("bed traction: {} initial free-surface values for {} cells",
+                                   spec.initial_surface.size(), n));
   const auto qx = solver.discharge_x();
   const auto qy = solver.discharge_y();
   std::vector<double> traction(n * components, 0.0);
@@ -46,7 +55,7 @@ std::vector<double> bed_traction(const Solver& solver, const CouplingSpec& spec)
     if (spec.pressure == BedPressure::hydrostatic)
       vertical = -rho * g * h[c];
     else if (wet)
-      vertical = -rho * g * (h[c] + bed[c] - spec.still_level);
+      vertical = -rho * g * std::max(0.0, h[c] + bed[c] - spec.initial_surface[c]);
   }
   if (spec.pressure != BedPressure::hydrostatic) return traction;
 

@@ -71,6 +71,7 @@ class CaseRun {
         summary_(summary),
         solver_(make_solver(description)),
         participant_(endpoint.name_or(description.name), endpoint),
+        coupling_(description.coupling),
         snapshots_(description.output_every, description.end_time),
         tolerance_(1e-10 * description.end_time) {}
 
@@ -82,6 +83,7 @@ class CaseRun {
         declare_coupling();
         participant_.initialize(0.0, c_.end_time);
         if (participant_.is_coupled() && c_.coupling.reads_bed) lay_water_over_received_bed();
+        record_initial_surface();
         end_time_ = participant_.end_time();
         gauge_times_.emplace(c_.gauge_every, end_time_);
         snapshots_ = cosim::OutputSchedule(c_.output_every, end_time_);
@@ -110,9 +112,18 @@ class CaseRun {
     participant_.declare_mesh({cells_mesh, solver_->cells()});
     if (c_.coupling.reads_bed) participant_.declare_read({bed_field, cells_mesh, 1, "m"}, 0.0);
     if (c_.coupling.writes_traction) {
+      record_initial_surface();
       participant_.declare_write({traction_field, cells_mesh, solver_->dimension() + 1, "Pa"});
-      participant_.write(traction_field, bed_traction(*solver_, c_.coupling));
+      participant_.write(traction_field, bed_traction(*solver_, coupling_));
     }
+  }
+
+  // eta_0 per cell, the reference of BedPressure::excess.
+  void record_initial_surface() {
+    const auto h = solver_->depth();
+    const auto bed = solver_->bed();
+    coupling_.initial_surface.resize(h.size());
+    for (std::size_t c = 0; c < h.size(); ++c) coupling_.initial_surface[c] = h[c] + bed[c];
   }
 
   // The bed of a coupled run comes from the soil: the case's water is laid
@@ -169,7 +180,7 @@ class CaseRun {
       const bool window_ends = dt >= participant_.max_time_step() - tolerance_;
       if (coupled && c_.coupling.writes_traction && window_ends) {
         auto scope = summary_.phases().measure("traction");
-        participant_.write(traction_field, bed_traction(*solver_, c_.coupling));
+        participant_.write(traction_field, bed_traction(*solver_, coupling_));
       }
       {
         auto scope = summary_.phases().measure("coupling");
@@ -266,6 +277,7 @@ class CaseRun {
   cosim::RunSummary& summary_;
   std::unique_ptr<Solver> solver_;
   cosim::Participant participant_;
+  CouplingSpec coupling_;
   cosim::OutputSchedule snapshots_;
   std::optional<cosim::OutputSchedule> gauge_times_;
   double tolerance_;

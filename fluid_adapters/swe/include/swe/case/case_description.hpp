@@ -29,9 +29,11 @@ enum class BedPressure {
   // p = rho g h, normal to the bed: per unit horizontal area (p dB/dx[, p dB/dy], -p).
   // Exactly the reaction of the bed source -g h grad B the water feels.
   hydrostatic,
-  // p = rho g (eta - eta_0) on wet cells, vertical only (Zheng et al., eq. 10
-  // as used in their Secs. 4.3-4.4: the soil's weight is total and its
-  // still-water load is not re-applied, only the waves' excess pressure).
+  // The waves' push, p = rho g max(0, eta - eta_0) on wet cells, eta_0 the
+  // initial free surface above the cell, vertical only (Zheng et al., eq. 10
+  // with eta_0 = h_0 + B_0, as used in their Secs. 4.3-4.4: the soil's weight
+  // is total and the water's initial load is never applied, so a trough or
+  // the water draining off the soil does not pull on it).
   excess,
 };
 
@@ -39,7 +41,7 @@ struct CouplingSpec {
   bool reads_bed = true;          // bed_elevation, per cell [m]
   bool writes_traction = true;    // bed_traction, dimension + 1 components [Pa]
   BedPressure pressure = BedPressure::hydrostatic;
-  double still_level = 0.0;       // eta_0 for `excess` [m]
+  std::vector<double> initial_surface;  // eta_0 per cell for `excess`, set when the run starts [m]
 };
 
 struct CaseDescription {

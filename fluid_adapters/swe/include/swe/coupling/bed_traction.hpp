@@ -21,8 +21,9 @@ namespace swe {
 // puts on the water (first order), so a step in the bed feels the full
 // hydrostatic thrust of the water against it and a lake at rest pushes a
 // flat bed only downwards.
-// Pressure, BedPressure::excess: vertical -rho g (eta - eta_0) on wet
-// cells, no horizontal pressure.
+// Pressure, BedPressure::excess: vertical -rho g max(0, eta - eta_0) on wet
+// cells, eta_0 the free surface above the cell at the start
+// (spec.initial_surface); no horizontal pressure.
 std::vector<double> bed_traction(const Solver& solver, const CouplingSpec& spec);
 
 }  // namespace swe
