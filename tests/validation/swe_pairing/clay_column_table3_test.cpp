@@ -29,6 +29,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -49,8 +50,10 @@ struct Reference {
 
 // seed002_table3_clay_column_still_water.csv: R_ws, t -> the four numbers.
 std::map<std::pair<double, double>, Reference> read_table3() {
-  std::ifstream in(fs::path(COSIM_SOURCE_DIR) / ".." / "shared" / "reference" /
-                   "seed002_table3_clay_column_still_water.csv");
+  const fs::path file =
+      fs::path(COSIM_SOURCE_DIR) / "tests" / "validation" / "swe_pairing" / "reference" / "zheng_table3_clay_column_still_water.csv";
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
   std::map<std::pair<double, double>, Reference> table;
   std::string line;
   bool header = true;
@@ -150,6 +153,7 @@ TEST_P(ClayColumnInStillWater, MatchesZhengTable3) {
   ASSERT_EQ(result.exit_code, 0) << result.output;
 
   const auto table = read_table3();
+  ASSERT_EQ(table.size(), 9u) << "Table 3 has 3 ratios x 3 instants";
   const auto soil = particle_snapshots(out / "soil");
   const auto water = water_rows(out / "water");
   ASSERT_TRUE(soil.count(0.0));
