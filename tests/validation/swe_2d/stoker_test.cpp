@@ -9,48 +9,15 @@
 #include <cmath>
 #include <vector>
 
+#include "exact_dam_break.hpp"
 #include "swe/solver_2d.hpp"
 
 namespace {
 
 constexpr double g = 9.81, h_left = 1.0, h_right = 0.5, dam = 0.5, end_time = 0.1;
 
-// Exact depth of the wet dam break (right state at rest) at x, t.
-class StokerSolution {
- public:
-  StokerSolution() {
-    // Middle depth: the rarefaction's u = 2 (c_l - c_m) meets the shock's
-    // u = (h_m - h_r) sqrt(g (h_m + h_r) / (2 h_m h_r)).
-    auto mismatch = [](double h) {
-      return 2.0 * (std::sqrt(g * h_left) - std::sqrt(g * h)) -
-             (h - h_right) * std::sqrt(0.5 * g * (h + h_right) / (h * h_right));
-    };
-    double h = 0.5 * (h_left + h_right);
-    for (int k = 0; k < 50; ++k) {
-      const double dh = 1e-7 * h;
-      const double derivative = (mismatch(h + dh) - mismatch(h - dh)) / (2.0 * dh);
-      h -= mismatch(h) / derivative;
-    }
-    h_middle_ = h;
-    u_middle_ = 2.0 * (std::sqrt(g * h_left) - std::sqrt(g * h));
-    shock_speed_ = h_middle_ * u_middle_ / (h_middle_ - h_right);
-  }
-
-  double depth(double x, double t) const {
-    const double xi = (x - dam) / t, c_left = std::sqrt(g * h_left);
-    if (xi <= -c_left) return h_left;
-    if (xi <= u_middle_ - std::sqrt(g * h_middle_)) return std::pow(2.0 * c_left - xi, 2) / (9.0 * g);
-    if (xi <= shock_speed_) return h_middle_;
-    return h_right;
-  }
-  double middle_depth() const { return h_middle_; }
-
- private:
-  double h_middle_ = 0.0, u_middle_ = 0.0, shock_speed_ = 0.0;
-};
-
 // L1 error of h along the long direction (x when along_x, else y).
-double stoker_l1_error(bool along_x, const StokerSolution& exact) {
+double stoker_l1_error(bool along_x, const swe_test::ExactDamBreak& exact) {
   const int n = 100, across = 3;
   const double dx = 1.0 / n;
   const swe::Boundary open{swe::BoundaryKind::transmissive, 0.0}, wall{swe::BoundaryKind::wall, 0.0};
@@ -78,7 +45,7 @@ double stoker_l1_error(bool along_x, const StokerSolution& exact) {
 }
 
 TEST(Swe2dStoker, MatchesTheExactDamBreakAlongXAndY) {
-  const StokerSolution exact;
+  const swe_test::ExactDamBreak exact(h_left, h_right, dam, g);
   const double tolerance = 5e-3;
   const double along_x = stoker_l1_error(true, exact), along_y = stoker_l1_error(false, exact);
   fmt::print("Stoker dam break (h_m = {:.5f} m), t = {} s, 100 x 3 cells: L1(h) along x = {:.3e} m, "
