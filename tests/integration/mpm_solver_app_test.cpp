@@ -9,6 +9,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "replaced_text.hpp"
 #include "run_process.hpp"
 
 namespace cosim::testing {
@@ -42,13 +43,6 @@ probes:
   - {name: centre, body: block, position: [0.5, 0.4]}
 output: {every: 0.01, probe_every: 0.005}
 )";
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
 
 struct SolverRun {
   ProcessResult result;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "replaced_text.hpp"
 #include "run_process.hpp"
 
 namespace cosim::testing {
@@ -34,13 +35,6 @@ output:
   gauges:
     - {name: bump, x: 2.5}
 )";
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
 
 ProcessResult run_case(const fs::path& dir, const std::string& text) {
   write_text(dir / "case.yaml", text);

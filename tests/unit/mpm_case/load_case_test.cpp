@@ -10,8 +10,12 @@
 
 #include "cosim/error.hpp"
 #include "mpm/case/case_schema.hpp"
+#include "replaced_text.hpp"
 
 namespace mpm {
+
+using cosim::testing::replaced;
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -54,13 +58,6 @@ fs::path scratch(const std::string& name) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
-}
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
 }
 
 // The valid case with the load region starting at height y.

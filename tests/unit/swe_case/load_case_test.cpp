@@ -3,7 +3,10 @@
 #include <string>
 
 #include "cosim/error.hpp"
+#include "replaced_text.hpp"
 #include "swe/case/load_case.hpp"
+
+using cosim::testing::replaced;
 
 namespace {
 
@@ -35,12 +38,6 @@ std::string error_of(const std::string& text) {
     return e.what();
   }
   return "no error";
-}
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return text.replace(at, from.size(), to);
 }
 
 TEST(SweCase, BuildsNonUniformSegmentsThatFitTheirStretchesExactly) {
