@@ -1,6 +1,8 @@
 #include "mpm/coupling/bed_elevation.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <set>
 
 namespace mpm::coupling {
@@ -10,6 +12,38 @@ namespace {
 struct Plateau {
   double from, to, height;
 };
+
+// The plateaus that can reach the upper envelope over [x0, x1): a plateau is
+// dropped when every bin it touches is fully covered by a strictly higher
+// one. Bins are half the narrowest plateau wide, so each plateau fully
+// covers at least one; the test is exact, and leaves about the top layer of
+// points, which keeps the sweep below cheap (a soil body's interior never
+// reaches it).
+std::vector<Plateau> visible_plateaus(const std::vector<Plateau>& plateaus, double x0, double x1) {
+  double narrowest = x1 - x0;
+  for (const Plateau& p : plateaus) narrowest = std::min(narrowest, p.to - p.from);
+  const double width = 0.5 * narrowest;
+  const double bins_wanted = (x1 - x0) / width;
+  if (!(width > 0.0) || bins_wanted > 4.0 * static_cast<double>(plateaus.size()) + 1024.0) return plateaus;
+  const int bins = static_cast<int>(std::ceil(bins_wanted));
+  auto bin_of = [&](double x) { return std::clamp(static_cast<int>(std::floor((x - x0) / width)), 0, bins - 1); };
+  std::vector<double> covered_to(static_cast<std::size_t>(bins), -std::numeric_limits<double>::infinity());
+  for (const Plateau& p : plateaus) {
+    const int first = static_cast<int>(std::ceil((p.from - x0) / width));  // bins inside [from, to]
+    const int last = static_cast<int>(std::floor((p.to - x0) / width)) - 1;
+    for (int b = std::max(first, 0); b <= std::min(last, bins - 1); ++b)
+      covered_to[static_cast<std::size_t>(b)] = std::max(covered_to[static_cast<std::size_t>(b)], p.height);
+  }
+  std::vector<Plateau> visible;
+  for (const Plateau& p : plateaus) {
+    if (!(std::min(p.to, x1) > std::max(p.from, x0))) continue;
+    bool hidden = true;
+    for (int b = bin_of(p.from); hidden && b <= bin_of(p.to); ++b)
+      hidden = covered_to[static_cast<std::size_t>(b)] > p.height;
+    if (!hidden) visible.push_back(p);
+  }
+  return visible;
+}
 
 // Adds weight x (cell average of the upper envelope of `plateaus`, the
 // bottom where none is) to out[0..n) for the n cells of width dx from x0.
@@ -22,8 +56,9 @@ void add_envelope_averages(const std::vector<Plateau>& plateaus, double x0, doub
     double height;
   };
   std::vector<Event> events;
-  events.reserve(2 * plateaus.size() + 2);
-  for (const Plateau& p : plateaus) {
+  const std::vector<Plateau> visible = visible_plateaus(plateaus, x0, x1);
+  events.reserve(2 * visible.size() + 2);
+  for (const Plateau& p : visible) {
     const double a = std::max(p.from, x0), b = std::min(p.to, x1);
     if (!(b > a)) continue;
     events.push_back({a, true, p.height});

@@ -2,7 +2,10 @@
 // top envelope (Zheng et al., Algorithm 1, line 15).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include "mpm/coupling/bed_elevation.hpp"
 #include "particle_fixtures.hpp"
@@ -75,6 +78,56 @@ TEST(MpmCouplingBedElevation, DoesNotJumpWhenAParticleCrossesAColumnEdge) {
               largest_change, bound, naive_largest_change);
   EXPECT_LE(largest_change, bound);
   EXPECT_GT(naive_largest_change, 10.0 * bound);
+}
+
+// Cell averages of the upper envelope, exactly, by brute force: between
+// consecutive breakpoints (plateau ends, cell edges) the envelope is the
+// highest plateau over the midpoint.
+std::vector<double> brute_force_bed(const SurfaceGrid<2>& surface, const Particles<2>& particles) {
+  const double x0 = surface.origin[0], dx = surface.spacing[0];
+  const int n = surface.cells[0];
+  std::vector<double> breaks;
+  for (int i = 0; i <= n; ++i) breaks.push_back(x0 + i * dx);
+  for (std::size_t p = 0; p < particles.size(); ++p)
+    for (double x : {particles.position[p][0] - particles.half_length[p][0],
+                     particles.position[p][0] + particles.half_length[p][0]})
+      if (x > x0 && x < x0 + n * dx) breaks.push_back(x);
+  std::sort(breaks.begin(), breaks.end());
+  std::vector<double> bed(static_cast<std::size_t>(n), 0.0);
+  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+    const double a = breaks[k], b = breaks[k + 1], mid = 0.5 * (a + b);
+    double top = surface.bottom;
+    for (std::size_t p = 0; p < particles.size(); ++p)
+      if (std::abs(mid - particles.position[p][0]) < particles.half_length[p][0])
+        top = std::max(top, particles.position[p][1] + particles.half_length[p][1]);
+    const auto cell = static_cast<std::size_t>(std::clamp(static_cast<int>((mid - x0) / dx), 0, n - 1));
+    bed[cell] += top * (b - a) / dx;
+  }
+  return bed;
+}
+
+// A spread-out heap of points of mixed sizes, most of them buried: the
+// envelope that skips the hidden ones is the brute-force envelope.
+TEST(MpmCouplingBedElevation, MatchesTheBruteForceEnvelopeOfAJumbledHeap) {
+  const Grid<2> g = make_grid<2>(Vec<2>::Zero(), Vec<2>(0.05, 0.05), {40, 20}, ShapeKind::gimp);
+  const auto surface = SurfaceGrid<2>::covering(g, {25});
+  Particles<2> particles;
+  testing::add_block<2>(particles, Vec<2>(0.2, 0.0), Vec<2>(1.2, 0.3), 0.025, 0.4, 2650.0, 0);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    const double x = particles.position[p][0];
+    particles.position[p][0] = x + 0.6 * (x - 0.7) * unit(random) + 0.01 * (unit(random) - 0.5);
+    particles.position[p][1] *= 0.5 + unit(random);
+    particles.half_length[p] *= 0.5 + unit(random);
+  }
+  const auto bed = bed_elevation(surface, particles, testing::porous_roles(), 1);
+  const auto exact = brute_force_bed(surface, particles);
+  double largest_error = 0.0;
+  for (std::size_t c = 0; c < bed.size(); ++c) largest_error = std::max(largest_error, std::abs(bed[c] - exact[c]));
+  std::printf("  %zu points, largest difference from the brute-force envelope %.1e m\n", particles.size(),
+              largest_error);
+  EXPECT_LT(largest_error, 1e-12);
 }
 
 TEST(MpmCouplingBedElevation, OnlyBedBodiesFormTheBed) {
