@@ -117,10 +117,23 @@ void check(const EquilibrationOptions& options) {
   }
 }
 
-// Tran et al., MPMICE, eqs. 42-43 by safeguarded Newton. The residual is
-// convex and decreasing in P for every model here, so from below the root
-// Newton climbs to it monotonically; a step from above that lands at or
-// below the bracket is replaced by bisection.
+// The Newton step when it stays inside the bracket (low, high), else
+// bisection (or, with no upper bound yet, a step as far above).
+double next_pressure(double pressure, double newton, double low, double high) {
+  if (newton > low && newton < high) return newton;
+  return std::isfinite(high) ? 0.5 * (low + high) : pressure + (pressure - low);
+}
+
+// Tran et al., MPMICE, eqs. 42-43, sum_f phi_f(P) = n, solved by Newton's
+// method on G(P) = 1 / sum_f phi_f - 1 / n. Both models here have rho_f affine in
+// P, so phi_f = rhobar_f / rho_f is the reciprocal of an affine function and
+// 1 / sum_f phi_f is a parallel sum of affine functions: exactly linear for
+// one material (Newton lands on the root in one step), concave and
+// increasing for several (Newton from below climbs to the root
+// monotonically; from above it lands below the root, and a landing outside
+// the bracket is replaced by bisection; the bracket keeps any other model
+// convergent too). The Newton step on G is the one on sum phi_f - n scaled
+// by sum phi_f / n.
 Root solve(const PoreFilling& cell, double pressure_guess, const EquilibrationOptions& options) {
   double lowest = -std::numeric_limits<double>::infinity();
   double lowest_present = lowest;
@@ -152,20 +165,23 @@ Root solve(const PoreFilling& cell, double pressure_guess, const EquilibrationOp
   double pressure = std::isfinite(pressure_guess) && pressure_guess > low ? pressure_guess : low + one_atmosphere;
   for (int iterations = 0;; ++iterations) {
     const auto [residual, slope] = cell.at(pressure);
-    if (std::abs(residual) <= tolerance) return {pressure, iterations, residual};
+    const double newton = pressure - residual / slope * ((residual + cell.porosity()) / cell.porosity());
+    if (std::abs(residual) <= tolerance) {
+      // One last Newton correction, uncounted: it squares the remaining
+      // error, leaving P and sum phi_f - n at round-off.
+      if (!(newton > low && newton < high)) return {pressure, iterations, residual};
+      return {newton, iterations, cell.at(newton).residual};
+    }
     if (iterations == options.max_iterations || !std::isfinite(residual)) {
       throw PressureEquilibrationError(
-          fmt::format("pressure equilibration did not converge in {} iterations: P = {} Pa, "
+          fmt::format("pressure equilibration did not converge in {} iteration{}: P = {} Pa, "
                       "sum phi_f - n = {:.6e} (tolerance {:.1e} n), bracket ({}, {}) Pa",
-                      iterations, pressure, residual, options.tolerance, low, high),
+                      iterations, iterations == 1 ? "" : "s", pressure, residual, options.tolerance,
+                      low, high),
           iterations, pressure, residual);
     }
     (residual > 0.0 ? low : high) = pressure;
-    double next = pressure - residual / slope;
-    if (!(next > low && next < high)) {
-      next = std::isfinite(high) ? 0.5 * (low + high) : pressure + (pressure - low);
-    }
-    pressure = next;
+    pressure = next_pressure(pressure, newton, low, high);
   }
 }
 

@@ -22,8 +22,8 @@ struct EquilibrationOptions {
 // from it, per material in the order given.
 struct CellEquilibrium {
   double pressure = 0.0;  // P [Pa]
-  int iterations = 0;     // Newton (or bisection) updates of P taken
-  double residual = 0.0;  // sum_f phi_f - n at P
+  int iterations = 0;     // Newton (or bisection) updates of P until |residual| <= tolerance n
+  double residual = 0.0;  // sum_f phi_f - n at P, after one more (uncounted) Newton correction
   std::vector<double> density;          // rho_f(P, T_f) [kg/m3]
   std::vector<double> volume_fraction;  // phi_f = rhobar_f / rho_f; they sum to n
   std::vector<double> compressibility;  // kappa_f = 1 / (rho_f (dP/drho)_T) [1/Pa]
@@ -58,10 +58,13 @@ class PressureEquilibrationError : public cosim::NumericalError {
 //
 //   sum_f rhobar_f / rho_f(P, T_f) = n,   rhobar_f = M_f / V,  0 < n <= 1,
 //
-// by Newton's method on P, safeguarded by bisection inside the bracket
-// (P_min, P_max): P_min is the largest minimum_pressure() of the materials
-// (so every rho_f stays positive: an ideal gas keeps P > 0), P_max the
-// smallest P seen where the pores are over-filled. The iteration starts at
+// by Newton's method on 1 / sum_f phi_f - 1 / n (exactly linear in P for a
+// single ideal gas or linear water), kept inside the bracket (P_low, P_high):
+// P_low starts at the largest minimum_pressure() of the materials (so every
+// rho_f stays positive: an ideal gas keeps P > 0) and rises to each P where
+// the materials still over-fill the pores; P_high is the lowest P where they
+// under-fill them. A Newton step leaving the bracket is replaced by
+// bisection. The iteration starts at
 // `pressure_guess` (the cell's previous pressure), or P_min + 1 atm when the
 // guess is not above P_min. A material with rhobar_f = 0 is absent
 // (phi_f = 0) but still gets rho_f(P, T_f).
