@@ -1,0 +1,48 @@
+#include "ice/advection/advection_time_step.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace ice {
+
+template <int Dim>
+double advection_rate(const CellGrid<Dim>& grid, const FaceField<Dim>& face_velocity) {
+  for (int d = 0; d < Dim; ++d) {
+    if (face_velocity[d].size() != static_cast<std::size_t>(grid.face_count(d))) {
+      throw std::invalid_argument("advection_rate: " + std::to_string(face_velocity[d].size()) +
+                                  " face velocities normal to direction " + std::to_string(d) +
+                                  " for " + std::to_string(grid.face_count(d)) + " faces");
+    }
+  }
+  double rate = 0.0;
+  for (int c = 0; c < grid.cell_count(); ++c) {
+    double cell_rate = 0.0;
+    for (int d = 0; d < Dim; ++d) {
+      const std::vector<double>& u = face_velocity[d];
+      const int lower = grid.lower_face(d, c);
+      const int upper = lower + grid.stride(d);
+      cell_rate += std::max(std::abs(u[lower]), std::abs(u[upper])) / grid.spacing()[d];
+    }
+    rate = std::max(rate, cell_rate);
+  }
+  return rate;
+}
+
+template <int Dim>
+double advection_time_step(const CellGrid<Dim>& grid, const FaceField<Dim>& face_velocity,
+                           double courant) {
+  const double rate = advection_rate(grid, face_velocity);
+  return rate > 0.0 ? courant / rate : std::numeric_limits<double>::infinity();
+}
+
+template double advection_rate(const CellGrid<1>&, const FaceField<1>&);
+template double advection_rate(const CellGrid<2>&, const FaceField<2>&);
+template double advection_rate(const CellGrid<3>&, const FaceField<3>&);
+template double advection_time_step(const CellGrid<1>&, const FaceField<1>&, double);
+template double advection_time_step(const CellGrid<2>&, const FaceField<2>&, double);
+template double advection_time_step(const CellGrid<3>&, const FaceField<3>&, double);
+
+}  // namespace ice
