@@ -13,6 +13,15 @@ namespace {
 
 std::size_t size_of(int count) { return static_cast<std::size_t>(count); }
 
+template <int Dim>
+int largest_face_count(const CellGrid<Dim>& grid) {
+  int largest = 0;
+  for (int d = 0; d < Dim; ++d) {
+    largest = std::max(largest, grid.face_count(d));
+  }
+  return largest;
+}
+
 }  // namespace
 
 template <int Dim>
@@ -21,6 +30,7 @@ Advector<Dim>::Advector(const CellGrid<Dim>& grid, Limiter limiter)
       limiter_(limiter),
       courant_(make_face_field(grid)),
       difference_(size_of(grid.cell_count()), 0.0),
+      flux_(size_of(largest_face_count(grid)), 0.0),
       change_(size_of(grid.cell_count()), 0.0) {}
 
 template <int Dim>
@@ -86,9 +96,8 @@ template <Limiter limiter>
 void Advector<Dim>::advance_field(std::span<double> q) {
   std::fill(change_.begin(), change_.end(), 0.0);
   for (int d = 0; d < Dim; ++d) {
-    if constexpr (limiter == Limiter::first_order) {
-      std::fill(difference_.begin(), difference_.end(), 0.0);
-    } else {
+    // first_order keeps the zero differences of construction.
+    if constexpr (limiter != Limiter::first_order) {
       set_limited_differences<limiter>(q, d);
     }
     add_face_fluxes(q, d);
@@ -100,61 +109,67 @@ void Advector<Dim>::advance_field(std::span<double> q) {
 
 // Cells are visited as rows along `direction`: cell i of row `outer` at
 // offset `inner` is outer s n + i s + inner (s = stride, n = cells along the
-// direction), so the innermost loop runs over contiguous memory.
+// direction), so the cells of a row, and those away from its ends, are
+// contiguous ranges; each loop below runs over one such range.
 template <int Dim>
 template <Limiter limiter>
 void Advector<Dim>::set_limited_differences(std::span<const double> q, int direction) {
   const int s = grid_.stride(direction);
   const int n = grid_.cells()[direction];
   const int rows = grid_.cell_count() / (s * n);
+  const double* value = q.data();
   double* difference = difference_.data();
   for (int outer = 0; outer < rows; ++outer) {
     const int row = outer * s * n;
     // The zero-gradient ghosts make a boundary cell's difference zero.
     std::fill_n(difference + row, s, 0.0);
     std::fill_n(difference + row + (n - 1) * s, s, 0.0);
-    for (int i = 1; i < n - 1; ++i) {
-      for (int c = row + i * s; c < row + (i + 1) * s; ++c) {
-        difference[c] = limited_difference<limiter>(q[c] - q[c - s], q[c + s] - q[c]);
-      }
+    for (int c = row + s; c < row + (n - 1) * s; ++c) {
+      difference[c] = limited_difference<limiter>(value[c] - value[c - s], value[c + s] - value[c]);
     }
   }
 }
 
-// Faces are visited as rows too: face i of row `outer` is
-// outer s (n + 1) + i s + inner, between cells i - 1 and i of the row.
+// Face i of row `outer` is outer s (n + 1) + i s + inner, between cells i - 1
+// and i of the row: face f of a row starting at cell `row` has the lower cell
+// f - s (outer + 1) and the upper cell f - s outer. One flux per face, then
+// each cell takes the difference of its two faces' fluxes, so what leaves
+// one cell enters its neighbour exactly.
 template <int Dim>
 void Advector<Dim>::add_face_fluxes(std::span<const double> q, int direction) {
   const int s = grid_.stride(direction);
   const int n = grid_.cells()[direction];
   const int rows = grid_.cell_count() / (s * n);
+  const double* value = q.data();
   const double* courant = courant_[direction].data();
   const double* difference = difference_.data();
+  double* flux = flux_.data();
   double* change = change_.data();
   for (int outer = 0; outer < rows; ++outer) {
-    const int row = outer * s * n;
     const int face_row = outer * s * (n + 1);
-    for (int inner = 0; inner < s; ++inner) {
-      change[row + inner] += courant[face_row + inner] * q[row + inner];
+    const int to_upper_cell = s * outer;
+    const int to_lower_cell = to_upper_cell + s;
+    // The boundary faces carry the boundary cell's value (zero-gradient ghost).
+    for (int f = face_row; f < face_row + s; ++f) {
+      flux[f] = courant[f] * value[f - to_upper_cell];
     }
-    for (int i = 1; i < n; ++i) {
-      const int faces = face_row + i * s;
-      const int lower = row + (i - 1) * s;
-      for (int inner = 0; inner < s; ++inner) {
-        const int l = lower + inner;
-        const int r = l + s;
-        const double nu = courant[faces + inner];
-        // The donor's profile at the centroid of the slab leaving through the face.
-        const double face_value = nu >= 0.0 ? q[l] + 0.5 * (1.0 - nu) * difference[l]
-                                            : q[r] - 0.5 * (1.0 + nu) * difference[r];
-        const double flux = nu * face_value;
-        change[l] -= flux;
-        change[r] += flux;
-      }
+    for (int f = face_row + s; f < face_row + n * s; ++f) {
+      const int l = f - to_lower_cell;
+      const int r = f - to_upper_cell;
+      const double nu = courant[f];
+      // The donor's profile at the centroid of the slab leaving through
+      // the face; both candidates computed, so the choice is a select.
+      const double from_lower = value[l] + 0.5 * (1.0 - nu) * difference[l];
+      const double from_upper = value[r] - 0.5 * (1.0 + nu) * difference[r];
+      flux[f] = nu * (nu >= 0.0 ? from_lower : from_upper);
     }
-    const int last = row + (n - 1) * s;
-    for (int inner = 0; inner < s; ++inner) {
-      change[last + inner] -= courant[face_row + n * s + inner] * q[last + inner];
+    for (int f = face_row + n * s; f < face_row + (n + 1) * s; ++f) {
+      flux[f] = courant[f] * value[f - to_lower_cell];
+    }
+    const int row = outer * s * n;
+    for (int c = row; c < row + n * s; ++c) {
+      const int lower = c + to_upper_cell;
+      change[c] += flux[lower] - flux[lower + s];
     }
   }
 }

@@ -78,6 +78,8 @@ class Advector {
   FaceField<Dim> courant_;
   // Per cell, the limited difference along the current direction.
   std::vector<double> difference_;
+  // Per face normal to the current direction, q_face U dt / dx_d.
+  std::vector<double> flux_;
   // Per cell, the net inflow over the step per unit volume.
   std::vector<double> change_;
 };
