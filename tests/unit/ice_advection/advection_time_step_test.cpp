@@ -1,9 +1,9 @@
+#include "ice/advection/advection_time_step.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
-
-#include "ice/advection/advection_time_step.hpp"
 
 namespace {
 
@@ -25,7 +25,8 @@ TEST(AdvectionTimeStep, IsUnboundedWhenNothingMoves) {
 }
 
 TEST(AdvectionTimeStep, RefusesFaceVelocitiesOfTheWrongSize) {
-  const ice::CellGrid<1> grid(Eigen::Matrix<double, 1, 1>(0.0), Eigen::Matrix<double, 1, 1>(1.0), {4});
+  const ice::CellGrid<1> grid(Eigen::Matrix<double, 1, 1>(0.0), Eigen::Matrix<double, 1, 1>(1.0),
+                              {4});
   ice::FaceField<1> u{std::vector<double>(4, 1.0)};
   EXPECT_THROW(ice::advection_rate(grid, u), std::invalid_argument);
 }

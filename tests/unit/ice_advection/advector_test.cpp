@@ -1,3 +1,5 @@
+#include "ice/advection/advector.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,7 +12,6 @@
 
 #include "cosim/error.hpp"
 #include "ice/advection/advection_time_step.hpp"
-#include "ice/advection/advector.hpp"
 #include "ice/grid/cell_grid.hpp"
 #include "ice/grid/grid_fields.hpp"
 
@@ -64,7 +65,7 @@ ice::FaceField<Dim> random_closed_box_velocity(const ice::CellGrid<Dim>& grid, s
 // fluid enters and leaves through the domain's faces.
 template <int Dim>
 ice::FaceField<Dim> random_divergence_free_velocity(const ice::CellGrid<Dim>& grid,
-                                                   std::mt19937& rng) {
+                                                    std::mt19937& rng) {
   static_assert(Dim >= 2);
   std::uniform_real_distribution<double> value(-1.0, 1.0);
   const auto& n = grid.cells();
@@ -121,10 +122,11 @@ void check_conservation_in_a_closed_box(const std::array<int, Dim>& cells, Limit
     worst = std::max(worst, std::abs(exact_sum(q) * grid.cell_volume() - start) / start);
   }
   const auto [lowest, highest] = std::minmax_element(q.begin(), q.end());
-  std::printf("  %dD %-11s: %d cells, 20 steps, worst relative change of the total %.2e "
-              "(tolerance 1e-14); q in [%.3f, %.3f]\n",
-              Dim, std::string(ice::to_string(limiter)).c_str(), grid.cell_count(), worst,
-              *lowest, *highest);
+  std::printf(
+      "  %dD %-11s: %d cells, 20 steps, worst relative change of the total %.2e "
+      "(tolerance 1e-14); q in [%.3f, %.3f]\n",
+      Dim, std::string(ice::to_string(limiter)).c_str(), grid.cell_count(), worst, *lowest,
+      *highest);
   EXPECT_LE(worst, 1e-14);
   EXPECT_GT(*lowest, 0.0);
 }
@@ -157,9 +159,10 @@ void check_uniform_field_stays_uniform(const std::array<int, Dim>& cells, Limite
   for (const double v : q) {
     worst = std::max(worst, std::abs(v - value) / value);
   }
-  std::printf("  %dD %-11s: 20 steps at Courant 0.5 through open boundaries, "
-              "max |q - q0| / q0 = %.2e (tolerance 1e-14)\n",
-              Dim, std::string(ice::to_string(limiter)).c_str(), worst);
+  std::printf(
+      "  %dD %-11s: 20 steps at Courant 0.5 through open boundaries, "
+      "max |q - q0| / q0 = %.2e (tolerance 1e-14)\n",
+      Dim, std::string(ice::to_string(limiter)).c_str(), worst);
   EXPECT_LE(worst, 1e-14);
 }
 
@@ -296,10 +299,10 @@ TEST(Advector, LimitedSchemesCreateNoNewExtremaAtAStep1D) {
       excess += q[static_cast<std::size_t>(c)] - 0.5;
       moment += (q[static_cast<std::size_t>(c)] - 0.5) * grid.cell_centre(c)[0];
     }
-    std::printf("  1D %-11s: 100 steps at Courant 0.9, q in [0.5 %+.1e, 2 %+.1e] "
-                "(initial [0.5, 2]), step centre %.4f (exact 0.8, tolerance dx/2)\n",
-                std::string(ice::to_string(limiter)).c_str(), lowest - 0.5, highest - 2.0,
-                moment / excess);
+    std::printf(
+        "  1D %-11s: 100 steps at Courant 0.9, q in [0.5 %+.1e, 2 %+.1e] "
+        "(initial [0.5, 2]), step centre %.4f (exact 0.8, tolerance dx/2)\n",
+        std::string(ice::to_string(limiter)).c_str(), lowest - 0.5, highest - 2.0, moment / excess);
     EXPECT_LE(highest, 2.0 * (1.0 + 1e-15));
     EXPECT_GE(lowest, 0.5 * (1.0 - 1e-15));
     EXPECT_NEAR(moment / excess, 0.8, 0.5 / cells);

@@ -1,14 +1,15 @@
+#include "ice/advection/limiter.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "cosim/error.hpp"
-#include "ice/advection/limiter.hpp"
 
 namespace {
 
-using ice::Limiter;
 using ice::limited_difference;
+using ice::Limiter;
 
 TEST(Limiter, ReadsEveryNameItWrites) {
   for (const std::string& name : ice::limiter_names()) {

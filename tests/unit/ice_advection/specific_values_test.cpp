@@ -1,9 +1,9 @@
+#include "ice/advection/specific_values.hpp"
+
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <vector>
-
-#include "ice/advection/specific_values.hpp"
 
 namespace {
 

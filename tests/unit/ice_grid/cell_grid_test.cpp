@@ -1,8 +1,9 @@
+#include "ice/grid/cell_grid.hpp"
+
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 
-#include "ice/grid/cell_grid.hpp"
 #include "ice/grid/grid_fields.hpp"
 
 namespace {
@@ -77,10 +78,18 @@ void check_indexing(const std::array<int, Dim>& cells) {
   }
 }
 
-TEST(CellGrid, IndexRoundTrips1D) { check_indexing<1>({7}); }
-TEST(CellGrid, IndexRoundTrips2D) { check_indexing<2>({5, 3}); }
-TEST(CellGrid, IndexRoundTrips3D) { check_indexing<3>({4, 3, 5}); }
-TEST(CellGrid, IndexRoundTripsWithOneCellAlongADirection) { check_indexing<3>({1, 4, 1}); }
+TEST(CellGrid, IndexRoundTrips1D) {
+  check_indexing<1>({7});
+}
+TEST(CellGrid, IndexRoundTrips2D) {
+  check_indexing<2>({5, 3});
+}
+TEST(CellGrid, IndexRoundTrips3D) {
+  check_indexing<3>({4, 3, 5});
+}
+TEST(CellGrid, IndexRoundTripsWithOneCellAlongADirection) {
+  check_indexing<3>({1, 4, 1});
+}
 
 TEST(CellGrid, CountsCellsAndFacesOfA3DBox) {
   const ice::CellGrid<3> grid = make_grid<3>({4, 3, 2});
@@ -103,8 +112,9 @@ TEST(CellGrid, RefusesBadSizes) {
                std::invalid_argument);
   EXPECT_THROW(ice::CellGrid<2>(Eigen::Vector2d::Zero(), Eigen::Vector2d(0.1, 0.1), {2, 0}),
                std::invalid_argument);
-  EXPECT_THROW(ice::CellGrid<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(), {2000, 2000, 2000}),
-               std::invalid_argument);
+  EXPECT_THROW(
+      ice::CellGrid<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(), {2000, 2000, 2000}),
+      std::invalid_argument);
   EXPECT_THROW(ice::CellGrid<1>(Eigen::Matrix<double, 1, 1>(std::nan("")),
                                 Eigen::Matrix<double, 1, 1>(1.0), {3}),
                std::invalid_argument);

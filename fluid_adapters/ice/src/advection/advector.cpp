@@ -11,7 +11,9 @@ namespace ice {
 
 namespace {
 
-std::size_t size_of(int count) { return static_cast<std::size_t>(count); }
+std::size_t size_of(int count) {
+  return static_cast<std::size_t>(count);
+}
 
 template <int Dim>
 int largest_face_count(const CellGrid<Dim>& grid) {

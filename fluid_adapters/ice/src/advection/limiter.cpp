@@ -7,7 +7,9 @@
 
 namespace ice {
 
-std::vector<std::string> limiter_names() { return {"first_order", "minmod", "van_leer"}; }
+std::vector<std::string> limiter_names() {
+  return {"first_order", "minmod", "van_leer"};
+}
 
 std::string_view to_string(Limiter limiter) {
   switch (limiter) {

@@ -22,7 +22,8 @@ void specific_values(std::span<const double> quantity_density, std::span<const d
   for (std::size_t c = 0; c < specific.size(); ++c) {
     specific[c] = bulk_density[c] > empty_density
                       ? quantity_density[c] / (bulk_density[c] * per_unit)
-                      : keep_previous ? specific[c] : 0.0;
+                  : keep_previous ? specific[c]
+                                  : 0.0;
   }
 }
 

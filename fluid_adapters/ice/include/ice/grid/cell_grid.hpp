@@ -1,8 +1,7 @@
 #pragma once
 
-#include <array>
-
 #include <Eigen/Dense>
+#include <array>
 
 namespace ice {
 
