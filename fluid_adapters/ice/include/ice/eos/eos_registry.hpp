@@ -1,13 +1,9 @@
 #pragma once
 
-#include <functional>
 #include <memory>
-#include <string>
-#include <utility>
-#include <vector>
 
 #include "cosim/config/node.hpp"
-#include "cosim/config/schema.hpp"
+#include "cosim/config/selection_table.hpp"
 #include "ice/eos/equation_of_state.hpp"
 
 namespace ice {
@@ -18,32 +14,12 @@ namespace ice {
 //     water: {eos: {type: linear_water, bulk_modulus: 2.15e9, reference_density: 999.8, ...}}
 //     air:   {eos: {type: ideal_gas, gas_constant: 287.05, heat_capacity_ratio: 1.4}}
 //
-// Each model registers its type name, the Schema of its parameters (its
-// `--help-config` documentation) and a maker. `make` validates the mapping
-// against the schema of its `type` first; physical checks the schema cannot
-// express throw cosim::InputError located at the offending key.
-class EosRegistry {
+// Physical checks the schema cannot express are the makers', thrown as
+// cosim::InputError at the key.
+class EosRegistry : public cosim::config::SelectionTable<EquationOfState> {
  public:
-  using Maker = std::function<std::unique_ptr<EquationOfState>(const cosim::config::Node& parameters)>;
-
+  EosRegistry() : SelectionTable("equation of state", "eos with type: {}") {}
   static EosRegistry& instance();
-
-  void add(std::string type, cosim::config::Schema schema, Maker maker);
-  std::vector<std::string> types() const;
-  const cosim::config::Schema& schema(const std::string& type) const;
-
-  // `node` is the model's mapping including its `type` key. Unknown types
-  // are refused with a did-you-mean suggestion.
-  std::unique_ptr<EquationOfState> make(const cosim::config::Node& node) const;
-
-  std::string help() const;
-
- private:
-  struct Entry {
-    cosim::config::Schema schema;
-    Maker maker;
-  };
-  std::vector<std::pair<std::string, Entry>> entries_;
 };
 
 // Adds ideal_gas and linear_water; instance() calls it once.
