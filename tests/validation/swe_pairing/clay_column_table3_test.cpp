@@ -25,7 +25,7 @@
 //     taken.
 // The soil is configs/mpm/clay_column_seed002.yaml: quadratic B-splines on
 // 0.025 m cells, the converged runout (the paper's 0.05 m GIMP grid is
-// ~10 % short; numbers in that file).
+// 7-8 % short at 0.5 and 1 s; numbers in that file).
 #include <gtest/gtest.h>
 #include <fmt/format.h>
 #include <hdf5.h>
