@@ -1,0 +1,275 @@
+#include "ice/pressure/pressure_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cosim/error.hpp"
+
+namespace ice {
+
+namespace {
+
+void require_size(std::size_t size, int expected, const std::string& what) {
+  if (size != static_cast<std::size_t>(expected)) {
+    throw std::invalid_argument("PressureSolver: " + what + " has " + std::to_string(size) +
+                                " values, the grid needs " + std::to_string(expected));
+  }
+}
+
+template <int Dim>
+void require_face_field_sizes(const CellGrid<Dim>& grid, const FaceField<Dim>& field,
+                              const std::string& what) {
+  for (int d = 0; d < Dim; ++d) {
+    require_size(field[d].size(), grid.face_count(d),
+                 what + " normal to direction " + std::to_string(d));
+  }
+}
+
+void require_positive_time_step(double dt) {
+  if (!(dt > 0.0) || !std::isfinite(dt)) {
+    throw std::invalid_argument("PressureSolver: dt must be positive and finite, got " +
+                                std::to_string(dt));
+  }
+}
+
+void require_positive_density(double rho, int direction, int face) {
+  if (!(rho > 0.0) || !std::isfinite(rho)) {
+    throw std::invalid_argument("PressureSolver: face density must be positive and finite, got " +
+                                std::to_string(rho) + " on face " + std::to_string(face) +
+                                " normal to direction " + std::to_string(direction));
+  }
+}
+
+}  // namespace
+
+PressureBoundary pressure_boundary_from_name(const std::string& name) {
+  if (name == "wall") return PressureBoundary::wall;
+  if (name == "fixed_pressure") return PressureBoundary::fixed_pressure;
+  throw std::invalid_argument("unknown pressure boundary '" + name +
+                              "' (known: wall, fixed_pressure)");
+}
+
+std::string to_string(PressureBoundary boundary) {
+  return boundary == PressureBoundary::wall ? "wall" : "fixed_pressure";
+}
+
+template <int Dim>
+PressureSolver<Dim>::PressureSolver(const CellGrid<Dim>& grid, const Boundaries& boundaries,
+                                    PressureSolverOptions options)
+    : grid_(grid), boundaries_(boundaries), options_(options) {
+  if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance)) {
+    throw std::invalid_argument("PressureSolver: tolerance must be positive and finite, got " +
+                                std::to_string(options.tolerance));
+  }
+  if (options.max_iterations < 1) {
+    throw std::invalid_argument("PressureSolver: max_iterations must be at least 1, got " +
+                                std::to_string(options.max_iterations));
+  }
+  const int n = grid.cell_count();
+  std::vector<Eigen::Triplet<double>> pattern;
+  pattern.reserve(static_cast<std::size_t>(n) * (2 * Dim + 1));
+  for (int c = 0; c < n; ++c) {
+    pattern.emplace_back(c, c, 0.0);
+  }
+  for (int d = 0; d < Dim; ++d) {
+    for (int f = 0; f < grid.face_count(d); ++f) {
+      const int lower = grid.lower_cell(d, f);
+      const int upper = grid.upper_cell(d, f);
+      if (lower >= 0 && upper >= 0) {
+        pattern.emplace_back(lower, upper, 0.0);
+        pattern.emplace_back(upper, lower, 0.0);
+      }
+    }
+  }
+  matrix_.resize(n, n);
+  matrix_.setFromTriplets(pattern.begin(), pattern.end());
+  matrix_.makeCompressed();
+
+  const double* values = matrix_.valuePtr();
+  const auto entry = [&](int row, int col) { return &matrix_.coeffRef(row, col) - values; };
+  diagonal_entry_.resize(static_cast<std::size_t>(n));
+  for (int c = 0; c < n; ++c) {
+    diagonal_entry_[c] = entry(c, c);
+  }
+  for (int d = 0; d < Dim; ++d) {
+    lower_upper_entry_[d].assign(static_cast<std::size_t>(grid.face_count(d)), -1);
+    upper_lower_entry_[d].assign(static_cast<std::size_t>(grid.face_count(d)), -1);
+    for (int f = 0; f < grid.face_count(d); ++f) {
+      const int lower = grid.lower_cell(d, f);
+      const int upper = grid.upper_cell(d, f);
+      if (lower >= 0 && upper >= 0) {
+        lower_upper_entry_[d][f] = entry(lower, upper);
+        upper_lower_entry_[d][f] = entry(upper, lower);
+      }
+    }
+  }
+  right_hand_side_.resize(n);
+  solution_.resize(n);
+  jacobi_cg_.analyzePattern(matrix_);
+  cholesky_cg_.analyzePattern(matrix_);
+}
+
+template <int Dim>
+bool PressureSolver<Dim>::is_fixed_pressure(int direction, int face) const {
+  const int side = grid_.lower_cell(direction, face) < 0 ? 2 * direction : 2 * direction + 1;
+  return boundaries_[side] == PressureBoundary::fixed_pressure;
+}
+
+// Tran et al., MPMICE, eq. 125 times V.
+template <int Dim>
+void PressureSolver<Dim>::assemble(std::span<const double> kappa,
+                                   const FaceField<Dim>& face_density, double dt) {
+  double* values = matrix_.valuePtr();
+  std::fill(values, values + matrix_.nonZeros(), 0.0);
+  const double volume = grid_.cell_volume();
+  for (int c = 0; c < grid_.cell_count(); ++c) {
+    if (!(kappa[c] > 0.0) || !std::isfinite(kappa[c])) {
+      throw std::invalid_argument("PressureSolver: kappa must be positive and finite, got " +
+                                  std::to_string(kappa[c]) + " in cell " + std::to_string(c));
+    }
+    values[diagonal_entry_[c]] = kappa[c] * volume / dt;
+  }
+  for (int d = 0; d < Dim; ++d) {
+    const double area_over_spacing_dt = grid_.face_area(d) / grid_.spacing()[d] * dt;
+    const std::vector<double>& rho = face_density[d];
+    for (int f = 0; f < grid_.face_count(d); ++f) {
+      const int lower = grid_.lower_cell(d, f);
+      const int upper = grid_.upper_cell(d, f);
+      if (lower >= 0 && upper >= 0) {
+        require_positive_density(rho[f], d, f);
+        const double t = area_over_spacing_dt / rho[f];
+        values[diagonal_entry_[lower]] += t;
+        values[diagonal_entry_[upper]] += t;
+        values[lower_upper_entry_[d][f]] -= t;
+        values[upper_lower_entry_[d][f]] -= t;
+      } else if (is_fixed_pressure(d, f)) {
+        require_positive_density(rho[f], d, f);
+        values[diagonal_entry_[lower >= 0 ? lower : upper]] += 2.0 * area_over_spacing_dt / rho[f];
+      }
+    }
+  }
+}
+
+// -V div_c U*_FC.
+template <int Dim>
+void PressureSolver<Dim>::set_right_hand_side(const FaceField<Dim>& predicted_velocity) {
+  right_hand_side_.setZero();
+  for (int d = 0; d < Dim; ++d) {
+    const double area = grid_.face_area(d);
+    const std::vector<double>& u = predicted_velocity[d];
+    for (int f = 0; f < grid_.face_count(d); ++f) {
+      if (!std::isfinite(u[f])) {
+        throw std::invalid_argument("PressureSolver: predicted face velocity is not finite on face " +
+                                    std::to_string(f) + " normal to direction " +
+                                    std::to_string(d));
+      }
+    }
+    for (int c = 0; c < grid_.cell_count(); ++c) {
+      right_hand_side_[c] -= area * (u[grid_.upper_face(d, c)] - u[grid_.lower_face(d, c)]);
+    }
+  }
+}
+
+template <int Dim>
+template <class Solver>
+PressureSolution PressureSolver<Dim>::run(Solver& solver, std::span<double> pressure_increment) {
+  solver.setTolerance(options_.tolerance);
+  solver.setMaxIterations(options_.max_iterations);
+  solver.factorize(matrix_);
+  if (solver.info() != Eigen::Success) {
+    throw cosim::NumericalError(
+        "PressureSolver: the preconditioner could not be built for the pressure matrix");
+  }
+  const Eigen::Map<Eigen::VectorXd> guess(pressure_increment.data(),
+                                          static_cast<Eigen::Index>(pressure_increment.size()));
+  solution_ = solver.solveWithGuess(right_hand_side_, guess);
+  PressureSolution result;
+  result.iterations = static_cast<int>(solver.iterations());
+  const double rhs_norm = right_hand_side_.norm();
+  result.relative_residual =
+      rhs_norm > 0.0 ? (right_hand_side_ - matrix_ * solution_).norm() / rhs_norm : 0.0;
+  const bool converged = solver.info() == Eigen::Success && std::isfinite(result.relative_residual);
+  if (!converged) {
+    std::ostringstream message;
+    message << "PressureSolver: conjugate gradients did not converge in " << result.iterations
+            << " iterations (max_iterations " << options_.max_iterations
+            << "): relative residual " << result.relative_residual << ", tolerance "
+            << options_.tolerance;
+    throw cosim::NumericalError(message.str());
+  }
+  std::copy(solution_.begin(), solution_.end(), pressure_increment.begin());
+  return result;
+}
+
+template <int Dim>
+PressureSolution PressureSolver<Dim>::solve(std::span<const double> kappa,
+                                            const FaceField<Dim>& face_density,
+                                            const FaceField<Dim>& predicted_velocity, double dt,
+                                            std::span<double> pressure_increment) {
+  require_size(kappa.size(), grid_.cell_count(), "kappa");
+  require_size(pressure_increment.size(), grid_.cell_count(), "pressure increment");
+  require_face_field_sizes(grid_, face_density, "face density");
+  require_face_field_sizes(grid_, predicted_velocity, "predicted face velocity");
+  require_positive_time_step(dt);
+  for (const double guess : pressure_increment) {
+    if (!std::isfinite(guess)) {
+      throw std::invalid_argument("PressureSolver: initial pressure increment is not finite");
+    }
+  }
+  assemble(kappa, face_density, dt);
+  set_right_hand_side(predicted_velocity);
+  return options_.preconditioner == PressurePreconditioner::jacobi
+             ? run(jacobi_cg_, pressure_increment)
+             : run(cholesky_cg_, pressure_increment);
+}
+
+template <int Dim>
+void PressureSolver<Dim>::correct_face_velocities(const FaceField<Dim>& face_density,
+                                                  std::span<const double> pressure_increment,
+                                                  double dt, FaceField<Dim>& face_velocity) const {
+  require_size(pressure_increment.size(), grid_.cell_count(), "pressure increment");
+  require_face_field_sizes(grid_, face_density, "face density");
+  require_face_field_sizes(grid_, face_velocity, "face velocity");
+  require_positive_time_step(dt);
+  for (int d = 0; d < Dim; ++d) {
+    const double dx = grid_.spacing()[d];
+    const std::vector<double>& rho = face_density[d];
+    std::vector<double>& u = face_velocity[d];
+    for (int f = 0; f < grid_.face_count(d); ++f) {
+      const int lower = grid_.lower_cell(d, f);
+      const int upper = grid_.upper_cell(d, f);
+      double gradient = 0.0;
+      if (lower >= 0 && upper >= 0) {
+        gradient = (pressure_increment[upper] - pressure_increment[lower]) / dx;
+      } else if (is_fixed_pressure(d, f)) {
+        gradient = lower >= 0 ? -pressure_increment[lower] / (0.5 * dx)
+                              : pressure_increment[upper] / (0.5 * dx);
+      } else {
+        continue;
+      }
+      require_positive_density(rho[f], d, f);
+      u[f] -= dt / rho[f] * gradient;
+    }
+  }
+}
+
+void add_pressure_increment(std::span<double> pressure, std::span<const double> increment) {
+  if (pressure.size() != increment.size()) {
+    throw std::invalid_argument("add_pressure_increment: pressure has " +
+                                std::to_string(pressure.size()) + " values, the increment " +
+                                std::to_string(increment.size()));
+  }
+  for (std::size_t c = 0; c < pressure.size(); ++c) {
+    pressure[c] += increment[c];
+  }
+}
+
+template class PressureSolver<1>;
+template class PressureSolver<2>;
+template class PressureSolver<3>;
+
+}  // namespace ice
