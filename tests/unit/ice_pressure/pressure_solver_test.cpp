@@ -116,10 +116,11 @@ void expect_discrete_consistency(const std::array<int, Dim>& cells,
   solver.correct_face_velocities(p.density, dp, p.dt, corrected);
   double max_relative = 0.0;
   const double relative = relative_discrete_residual(grid, p, dp, corrected, &max_relative);
-  std::printf("  %dD %s: %d iterations, CG relative residual %.2e; "
-              "||kappa dP/dt + div U^{n+1}|| / ||div U*|| = %.2e (tol %.0e), max-norm %.2e\n",
-              Dim, preconditioner == PressurePreconditioner::jacobi ? "jacobi" : "ichol",
-              s.iterations, s.relative_residual, relative, 2 * options.tolerance, max_relative);
+  std::printf(
+      "  %dD %s: %d iterations, CG relative residual %.2e; "
+      "||kappa dP/dt + div U^{n+1}|| / ||div U*|| = %.2e (tol %.0e), max-norm %.2e\n",
+      Dim, preconditioner == PressurePreconditioner::jacobi ? "jacobi" : "ichol", s.iterations,
+      s.relative_residual, relative, 2 * options.tolerance, max_relative);
   EXPECT_LE(s.relative_residual, options.tolerance);
   EXPECT_LE(relative, 2 * options.tolerance);
   EXPECT_LE(s.iterations, options.max_iterations);
@@ -136,7 +137,8 @@ void expect_discrete_consistency(const std::array<int, Dim>& cells,
 }
 
 TEST(PressureSolver, CorrectedVelocitiesSatisfyTheDiscreteVolumeBalance) {
-  for (const auto pc : {PressurePreconditioner::jacobi, PressurePreconditioner::incomplete_cholesky}) {
+  for (const auto pc :
+       {PressurePreconditioner::jacobi, PressurePreconditioner::incomplete_cholesky}) {
     expect_discrete_consistency<1>({40}, {fixed, wall}, pc);
     expect_discrete_consistency<2>({24, 17}, {fixed, wall, wall, fixed}, pc);
     expect_discrete_consistency<3>({10, 8, 6}, {wall, fixed, wall, wall, fixed, wall}, pc);
@@ -181,6 +183,32 @@ TEST(PressureSolver, MatrixIsSymmetricPositiveDefinite) {
     for (int c = 0; c < grid.cell_count(); ++c) x[c] = normal(rng);
     EXPECT_GT(x.dot(a * x), 0.0);
   }
+}
+
+// The pattern is built once and only the values are rewritten: a solver
+// that has solved another problem gives bit-for-bit the fresh solver's dP, and
+// the solution as initial guess needs no iteration.
+TEST(PressureSolver, ReusedSolverMatchesFreshOneAndUsesTheGuess) {
+  const auto grid = box_grid<3>({6, 5, 4});
+  const std::array<PressureBoundary, 6> sides{fixed, wall, wall, fixed, wall, wall};
+  const auto first = random_problem<3>(grid, sides, 41u);
+  const auto second = random_problem<3>(grid, sides, 43u);
+  ice::PressureSolver<3> reused(grid, sides);
+  ice::PressureSolver<3> fresh(grid, sides);
+  std::vector<double> dp_first(static_cast<std::size_t>(grid.cell_count()), 0.0);
+  reused.solve(first.kappa, first.density, first.velocity, first.dt, dp_first);
+  std::vector<double> dp_reused(dp_first.size(), 0.0);
+  std::vector<double> dp_fresh(dp_first.size(), 0.0);
+  reused.solve(second.kappa, second.density, second.velocity, second.dt, dp_reused);
+  fresh.solve(second.kappa, second.density, second.velocity, second.dt, dp_fresh);
+  EXPECT_EQ(dp_reused, dp_fresh);
+  EXPECT_EQ(reused.matrix().nonZeros(), fresh.matrix().nonZeros());
+  std::vector<double> dp_again = dp_fresh;
+  const auto s = fresh.solve(second.kappa, second.density, second.velocity, second.dt, dp_again);
+  std::printf("  re-solve from the solution: %d iterations (expect 0), relative residual %.2e\n",
+              s.iterations, s.relative_residual);
+  EXPECT_EQ(s.iterations, 0);
+  EXPECT_LE(s.relative_residual, 1e-10);
 }
 
 // dP = prod_d sin(pi x_d) on the unit box, dP = 0 on every side, constant
@@ -239,9 +267,10 @@ void expect_second_order(int n) {
   const double max_fine = manufactured_error<Dim>(2 * n, &l2_fine);
   const double order_max = std::log2(max_coarse / max_fine);
   const double order_l2 = std::log2(l2_coarse / l2_fine);
-  std::printf("  %dD N=%d: Linf %.3e -> %.3e (order %.3f), L2 %.3e -> %.3e (order %.3f), "
-              "need > 1.8\n",
-              Dim, n, max_coarse, max_fine, order_max, l2_coarse, l2_fine, order_l2);
+  std::printf(
+      "  %dD N=%d: Linf %.3e -> %.3e (order %.3f), L2 %.3e -> %.3e (order %.3f), "
+      "need > 1.8\n",
+      Dim, n, max_coarse, max_fine, order_max, l2_coarse, l2_fine, order_l2);
   EXPECT_GT(order_max, 1.8);
   EXPECT_GT(order_l2, 1.8);
 }
@@ -312,9 +341,10 @@ TEST(PressureSolver, ClosedBoxConvergesAndConservesVolume) {
     total += p.kappa[c] * dp[c];
     scale += std::abs(p.kappa[c] * dp[c]);
   }
-  std::printf("  closed 3D box: %d iterations, residual %.2e (tol 2e-10); "
-              "|sum kappa dP| / sum |kappa dP| = %.2e (tol 1e-9)\n",
-              s.iterations, relative, std::abs(total) / scale);
+  std::printf(
+      "  closed 3D box: %d iterations, residual %.2e (tol 2e-10); "
+      "|sum kappa dP| / sum |kappa dP| = %.2e (tol 1e-9)\n",
+      s.iterations, relative, std::abs(total) / scale);
   EXPECT_LE(relative, 2e-10);
   EXPECT_LE(std::abs(total) / scale, 1e-9);
 }
@@ -349,8 +379,7 @@ TEST(PressureSolver, RejectsBadInput) {
   std::vector<double> short_dp(3, 0.0);
   std::vector<double> short_kappa(5, 1.0);
   EXPECT_THROW(solver.solve(short_kappa, p.density, p.velocity, p.dt, dp), std::invalid_argument);
-  EXPECT_THROW(solver.solve(p.kappa, p.density, p.velocity, p.dt, short_dp),
-               std::invalid_argument);
+  EXPECT_THROW(solver.solve(p.kappa, p.density, p.velocity, p.dt, short_dp), std::invalid_argument);
   auto short_faces = p.density;
   short_faces[1].pop_back();
   EXPECT_THROW(solver.solve(p.kappa, short_faces, p.velocity, p.dt, dp), std::invalid_argument);
@@ -423,15 +452,16 @@ TEST(PressureSolver, PreconditionerMeasurement) {
         std::vector<double> dp(static_cast<std::size_t>(grid.cell_count()), 0.0);
         s = solver.solve(p->kappa, p->density, p->velocity, p->dt, dp);
       }
-      const double ms = std::chrono::duration<double, std::milli>(
-                            std::chrono::steady_clock::now() - start)
-                            .count() /
-                        solves;
-      std::printf("  2D %dx%d %s problem, %s: %d iterations, relative residual %.2e "
-                  "(tol 1e-10), %.1f ms per solve\n",
-                  n, n, p == &random ? "random" : "uniform",
-                  pc == PressurePreconditioner::jacobi ? "jacobi" : "incomplete_cholesky",
-                  s.iterations, s.relative_residual, ms);
+      const double ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+              .count() /
+          solves;
+      std::printf(
+          "  2D %dx%d %s problem, %s: %d iterations, relative residual %.2e "
+          "(tol 1e-10), %.1f ms per solve\n",
+          n, n, p == &random ? "random" : "uniform",
+          pc == PressurePreconditioner::jacobi ? "jacobi" : "incomplete_cholesky", s.iterations,
+          s.relative_residual, ms);
       EXPECT_LE(s.relative_residual, 1e-10);
     }
   }

@@ -163,9 +163,9 @@ void PressureSolver<Dim>::set_right_hand_side(const FaceField<Dim>& predicted_ve
     const std::vector<double>& u = predicted_velocity[d];
     for (int f = 0; f < grid_.face_count(d); ++f) {
       if (!std::isfinite(u[f])) {
-        throw std::invalid_argument("PressureSolver: predicted face velocity is not finite on face " +
-                                    std::to_string(f) + " normal to direction " +
-                                    std::to_string(d));
+        throw std::invalid_argument(
+            "PressureSolver: predicted face velocity is not finite on face " + std::to_string(f) +
+            " normal to direction " + std::to_string(d));
       }
     }
     for (int c = 0; c < grid_.cell_count(); ++c) {
@@ -196,9 +196,8 @@ PressureSolution PressureSolver<Dim>::run(Solver& solver, std::span<double> pres
   if (!converged) {
     std::ostringstream message;
     message << "PressureSolver: conjugate gradients did not converge in " << result.iterations
-            << " iterations (max_iterations " << options_.max_iterations
-            << "): relative residual " << result.relative_residual << ", tolerance "
-            << options_.tolerance;
+            << " iterations (max_iterations " << options_.max_iterations << "): relative residual "
+            << result.relative_residual << ", tolerance " << options_.tolerance;
     throw cosim::NumericalError(message.str());
   }
   std::copy(solution_.begin(), solution_.end(), pressure_increment.begin());

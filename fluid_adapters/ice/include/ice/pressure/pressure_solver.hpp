@@ -63,6 +63,10 @@ struct PressureSolution {
 // preconditioned conjugate gradients. The sparsity is built once; each solve
 // rewrites only the values.
 //
+// Several materials (eq. 52): pass U*_FC = sum_f phi_f,FC U*_f,FC and
+// 1 / rho_FC = sum_f phi_f,FC / rho_f,FC; then correct each material's face
+// velocities with its own rho_f,FC through correct_face_velocities.
+//
 // Sides are indexed 2 d (lower) and 2 d + 1 (upper) for direction d.
 template <int Dim>
 class PressureSolver {
