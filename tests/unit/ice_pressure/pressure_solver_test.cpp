@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -422,15 +421,13 @@ TEST(PressureSolver, RejectsBadInput) {
   EXPECT_EQ(pressure, (std::vector<double>{1.5, 0.0, 3.0}));
 }
 
-// The preconditioner measurement behind the default: 2D 256 x 256 (64 x 64
-// in unoptimised builds), a few solves each, on the random physical problem
-// and on a uniform one (air: rho 1.2, kappa 1 / (rho c^2) = 7.2e-6).
-TEST(PressureSolver, PreconditionerMeasurement) {
-#ifdef NDEBUG
-  const int n = 256;
-#else
+// Both preconditioners converge on a larger grid (2D 64 x 64) for the random
+// physical problem and a uniform one (air: rho 1.2, kappa 1 / (rho c^2) =
+// 7.2e-6); iteration counts are printed. Their timing, behind the Jacobi
+// default, belongs in a benchmark (the merge note of this file has the
+// 256 x 256 figures).
+TEST(PressureSolver, BothPreconditionersConvergeOnALargerGrid) {
   const int n = 64;
-#endif
   const auto grid = box_grid<2>({n, n});
   const std::array<PressureBoundary, 4> sides{wall, wall, wall, fixed};
   auto random = random_problem<2>(grid, sides, 37u);
@@ -445,23 +442,12 @@ TEST(PressureSolver, PreconditionerMeasurement) {
       options.max_iterations = 20000;
       options.preconditioner = pc;
       ice::PressureSolver<2> solver(grid, sides, options);
-      constexpr int solves = 3;
-      ice::PressureSolution s;
-      const auto start = std::chrono::steady_clock::now();
-      for (int i = 0; i < solves; ++i) {
-        std::vector<double> dp(static_cast<std::size_t>(grid.cell_count()), 0.0);
-        s = solver.solve(p->kappa, p->density, p->velocity, p->dt, dp);
-      }
-      const double ms =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-              .count() /
-          solves;
-      std::printf(
-          "  2D %dx%d %s problem, %s: %d iterations, relative residual %.2e "
-          "(tol 1e-10), %.1f ms per solve\n",
-          n, n, p == &random ? "random" : "uniform",
-          pc == PressurePreconditioner::jacobi ? "jacobi" : "incomplete_cholesky", s.iterations,
-          s.relative_residual, ms);
+      std::vector<double> dp(static_cast<std::size_t>(grid.cell_count()), 0.0);
+      const ice::PressureSolution s = solver.solve(p->kappa, p->density, p->velocity, p->dt, dp);
+      std::printf("  2D %dx%d %s problem, %s: %d iterations, relative residual %.2e (tol 1e-10)\n", n, n,
+                  p == &random ? "random" : "uniform",
+                  pc == PressurePreconditioner::jacobi ? "jacobi" : "incomplete_cholesky", s.iterations,
+                  s.relative_residual);
       EXPECT_LE(s.relative_residual, 1e-10);
     }
   }
