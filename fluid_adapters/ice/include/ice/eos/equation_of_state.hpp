@@ -45,6 +45,21 @@ class EquationOfState {
     return std::sqrt(dpressure_ddensity(density, temperature));
   }
 
+  // The adiabatic (isentropic) sound speed squared [m2/s2],
+  //   c_s^2 = (dP/drho)_s = c_T^2 + T (dP/dT)_rho^2 / (rho^2 c_v),
+  // with (dP/dT)_rho = rho alpha c_T^2: for an ideal gas gamma R T. The
+  // implicit pressure step takes the adiabatic compressibility, so that a
+  // compression heats the fluid through -P dV (eq. 60) as the EOS expects.
+  double adiabatic_sound_speed_squared(double density, double temperature) const {
+    const double c_t2 = dpressure_ddensity(density, temperature);
+    const double alpha = thermal_expansivity(density, temperature);
+    return c_t2 + temperature * c_t2 * c_t2 * alpha * alpha / specific_heat_;
+  }
+  // kappa_s = 1 / (rho c_s^2) [1/Pa].
+  double adiabatic_compressibility(double density, double temperature) const {
+    return 1.0 / (density * adiabatic_sound_speed_squared(density, temperature));
+  }
+
   // c_v [J/(kg K)] and e_f = c_v T_f [J/kg] (MPMICE, eqs. 63, 73).
   double specific_heat() const { return specific_heat_; }
   double specific_internal_energy(double temperature) const { return specific_heat_ * temperature; }

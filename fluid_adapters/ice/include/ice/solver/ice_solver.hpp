@@ -1,0 +1,181 @@
+#pragma once
+
+#include <Eigen/Dense>
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "ice/advection/advector.hpp"
+#include "ice/advection/limiter.hpp"
+#include "ice/eos/pressure_equilibration.hpp"
+#include "ice/grid/cell_grid.hpp"
+#include "ice/grid/grid_fields.hpp"
+#include "ice/pressure/pressure_solver.hpp"
+#include "ice/solver/fluid_material.hpp"
+#include "ice/solver/fluid_state.hpp"
+#include "ice/solver/side_condition.hpp"
+
+namespace ice {
+
+struct IceSolverOptions {
+  Limiter limiter = Limiter::van_leer;
+  PressureSolverOptions pressure;
+  EquilibrationOptions equilibration;
+  // A step whose final face velocities give some cell sum_d |U_d| dt / dx_d
+  // above this is rejected (the advection would not stay bounded) and must
+  // be retried with a shorter dt.
+  double max_courant = 1.0;
+  // Return the kinetic energy the advection dissipates to the internal
+  // energy, so that advection conserves each material's total energy (the
+  // internal-energy form otherwise under-heats shocks: Sod's post-shock
+  // density comes out 3 % high at 400 cells).
+  bool conserve_total_energy = true;
+};
+
+struct StepReport {
+  bool accepted = true;
+  double courant = 0.0;         // max over cells and materials of sum_d |U_FC,d| dt / dx_d
+  int pressure_iterations = 0;  // CG iterations of the implicit pressure
+  double pressure_residual = 0.0;
+  int equilibration_iterations = 0;  // most Newton iterations in a cell (end of step)
+  // max over cells of |sum_f rhobar_f v_f - n| after advection: how far the
+  // advected specific volumes (eqs. 75-84) drift from filling the pores.
+  double volume_closure = 0.0;
+};
+
+// Conserved totals of one material over the domain.
+struct MaterialTotals {
+  double mass = 0.0;                 // [kg] (per metre in 2D, per m2 in 1D)
+  std::array<double, 3> momentum{};  // [kg m/s]
+  double internal_energy = 0.0;      // sum rhobar c_v T V [J]
+  double kinetic_energy = 0.0;       // sum rhobar |U|^2 V / 2 [J]
+};
+
+// The native multi-material ICE solver: cell-centred, compressible, with
+// the implicit pressure of Tran et al., MPMICE ("Numerical implementation",
+// eqs. 42-84 and the appendix eqs. 120-131) on a uniform grid. One step is
+// the ordered list in advance(). Every material is present in every cell
+// (absent ones at a small volume fraction), so all specific quantities are
+// defined; the materials share one pressure.
+template <int Dim>
+class IceSolver {
+ public:
+  using Vector = Eigen::Matrix<double, Dim, 1>;
+  using Sides = std::array<SideCondition, 2 * Dim>;
+
+  // `state` needs bulk_density, velocity and temperature of every material
+  // (and porosity and solid_velocity, or empty for n = 1 and U_s = 0); the
+  // rest is computed by equilibrating the pressure with `state.pressure` as
+  // the guess (or one atmosphere when empty). Throws std::invalid_argument
+  // for sizes that do not fit and cosim::NumericalError (exit 4) for a state
+  // the equations of state cannot equilibrate (non-positive density or
+  // temperature, volume fractions that cannot fill the pores).
+  IceSolver(const CellGrid<Dim>& grid, std::vector<FluidMaterial> materials,
+            ExchangeCoefficients exchange, const Sides& sides, const Vector& gravity,
+            FluidState<Dim> state, IceSolverOptions options = {});
+
+  const CellGrid<Dim>& grid() const { return grid_; }
+  const std::vector<FluidMaterial>& materials() const { return materials_; }
+  const FluidState<Dim>& state() const { return state_; }
+  const Sides& sides() const { return sides_; }
+  const Vector& gravity() const { return gravity_; }
+  double time() const { return time_; }
+  long steps() const { return steps_; }
+
+  // Sets the porous medium of a coupled run (one value per cell each); the
+  // volume fractions are re-equilibrated to fill the new pores.
+  void set_porous_medium(
+      std::span<const double> porosity,
+      const std::array<CellField, static_cast<std::size_t>(Dim)>& solid_velocity);
+
+  // The time step the CFL rule allows: courant / max over cells of
+  // sum_d (|U_d| + c) / dx_d, with c the adiabatic sound speed of the
+  // materials filling at least 1 % of the cell when `acoustic`, else 0
+  // (the implicit pressure step does not need it for stability; shocks need
+  // it for accuracy). The face velocities of the last step count too.
+  // +infinity when nothing moves and acoustic is off.
+  double stable_time_step(double courant, bool acoustic) const;
+
+  // One step of length dt. When the step is rejected (report.accepted
+  // false: the face Courant number exceeded options.max_courant) the state
+  // is unchanged. Throws cosim::NumericalError (exit 4) for a pressure solve
+  // or equilibration that does not converge and non-finite or non-positive
+  // results.
+  StepReport advance(double dt);
+
+  std::vector<MaterialTotals> totals() const;
+
+  // The last accepted step's face velocities of material m (U^{n+1}_FC)
+  // and face pressures (eq. 54), for output and checks.
+  const FaceField<Dim>& face_velocity(std::size_t material) const {
+    return face_velocity_[material];
+  }
+  const FaceField<Dim>& face_pressure() const { return face_pressure_; }
+
+ private:
+  // The steps of advance(), in order.
+  void compute_face_velocities(double dt);                // eqs. 44-45
+  void exchange_face_momentum(double dt);                 // eq. 48
+  PressureSolution solve_pressure_increment(double dt);   // eqs. 52-53, 125
+  void compute_face_pressure();                           // eq. 54
+  void compute_lagrangian_values(double dt);              // eqs. 59, 61-62
+  void exchange_cell_momentum(double dt);                 // eqs. 67-68
+  void compute_lagrangian_energy(double dt);              // eqs. 60, 63
+  void exchange_cell_energy(double dt);                   // eqs. 69-70
+  void compute_lagrangian_specific_volume(double dt);     // eqs. 73-76
+  void advect_and_update(double dt, StepReport& report);  // eqs. 77-84
+  void equilibrate(StepReport* report);                   // eqs. 42-43
+
+  double face_courant(double dt) const;
+  double face_fraction(std::size_t material, int direction, int face) const;
+  void check_state(const FluidState<Dim>& state) const;
+  std::size_t count() const { return materials_.size(); }
+  bool has_exchange() const { return has_momentum_exchange_; }
+
+  CellGrid<Dim> grid_;
+  std::vector<FluidMaterial> materials_;
+  std::vector<const EquationOfState*> eos_;
+  ExchangeCoefficients exchange_;
+  bool has_momentum_exchange_ = false;
+  bool has_heat_exchange_ = false;
+  Sides sides_;
+  Vector gravity_;
+  IceSolverOptions options_;
+  FluidState<Dim> state_;
+  double time_ = 0.0;
+  long steps_ = 0;
+
+  PressureSolver<Dim> pressure_solver_;
+  Advector<Dim> advector_;
+  EquilibratedCells equilibrium_;
+
+  // Per material: adiabatic compressibility kappa_s per cell, face
+  // velocities (predicted, exchanged, corrected in place) and the face
+  // coefficients y of the pressure correction U -= dt y grad dP.
+  std::vector<CellField> kappa_;
+  std::vector<FaceField<Dim>> face_velocity_;
+  std::vector<FaceField<Dim>> face_correction_;
+  // Shared per step.
+  CellField mixture_kappa_;
+  FaceField<Dim> face_density_;      // rho_FC of the pressure solve
+  FaceField<Dim> mixture_velocity_;  // sum_f phi_f,FC U_f,FC + phi_s,FC U_s,FC
+  FaceField<Dim> face_pressure_;     // eq. 54
+  FaceField<Dim> scratch_face_;
+  CellField pressure_increment_;
+  CellField new_pressure_;
+  // Per material, per unit volume: Lagrangian mass, momentum, energy
+  // rhobar c_v T, specific volume rhobar v; then advected.
+  std::vector<CellField> mass_;
+  std::vector<std::array<CellField, static_cast<std::size_t>(Dim)>> momentum_;
+  std::vector<CellField> energy_;
+  std::vector<CellField> volume_;
+  std::vector<CellField> kinetic_;
+  std::vector<CellField> lagrangian_temperature_;
+  double last_face_rate_ = 0.0;
+};
+
+extern template class IceSolver<1>;
+extern template class IceSolver<2>;
+extern template class IceSolver<3>;
+
+}  // namespace ice

@@ -1,0 +1,281 @@
+#include "ice/solver/ice_solver.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <random>
+
+#include "cosim/error.hpp"
+#include "ice/eos/ideal_gas.hpp"
+#include "ice/eos/linear_water.hpp"
+#include "ice/solver/initial_state.hpp"
+
+namespace ice {
+namespace {
+
+std::shared_ptr<const EquationOfState> air() {
+  return std::make_shared<IdealGas>(287.0, 717.5);
+}
+std::shared_ptr<const EquationOfState> water() {
+  return std::make_shared<LinearWater>(LinearWaterParameters{});
+}
+
+template <int Dim>
+CellGrid<Dim> unit_grid(int cells_per_direction, double length = 1.0) {
+  typename CellGrid<Dim>::CellIndex cells;
+  cells.fill(cells_per_direction);
+  return CellGrid<Dim>(CellGrid<Dim>::Point::Zero(),
+                       CellGrid<Dim>::Point::Constant(length / cells_per_direction), cells);
+}
+
+// Two ideal gases with random densities, temperatures and velocities.
+template <int Dim>
+FluidState<Dim> random_gases(const CellGrid<Dim>& grid, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> density(0.3, 1.5);
+  std::uniform_real_distribution<double> temperature(250.0, 400.0);
+  std::uniform_real_distribution<double> velocity(-20.0, 20.0);
+  FluidState<Dim> state;
+  state.materials.resize(2);
+  for (MaterialState<Dim>& m : state.materials) {
+    m.bulk_density.resize(static_cast<std::size_t>(grid.cell_count()));
+    m.temperature.resize(m.bulk_density.size());
+    for (auto& u : m.velocity) u.resize(m.bulk_density.size());
+    for (std::size_t c = 0; c < m.bulk_density.size(); ++c) {
+      m.bulk_density[c] = 0.5 * density(random);
+      m.temperature[c] = temperature(random);
+      for (auto& u : m.velocity) u[c] = velocity(random);
+    }
+  }
+  return state;
+}
+
+std::vector<FluidMaterial> two_gases() {
+  return {{"light", air(), 0.0, 0.0},
+          {"heavy", std::make_shared<IdealGas>(188.9, 650.0), 0.0, 0.0}};
+}
+
+double total_energy(const std::vector<MaterialTotals>& totals) {
+  double energy = 0.0;
+  for (const MaterialTotals& t : totals) energy += t.internal_energy + t.kinetic_energy;
+  return energy;
+}
+
+template <int Dim>
+void run_steps(IceSolver<Dim>& solver, int steps, double courant) {
+  for (int s = 0; s < steps; ++s) {
+    const double dt = std::min(solver.stable_time_step(courant, true), 1.0);
+    const StepReport report = solver.advance(dt);
+    ASSERT_TRUE(report.accepted) << "step " << s;
+  }
+}
+
+template <int Dim>
+void expect_closed_box_conservation(double exchange_coefficient) {
+  const CellGrid<Dim> grid = unit_grid<Dim>(Dim == 3 ? 8 : 16);
+  ExchangeCoefficients exchange = ExchangeCoefficients::none(2);
+  exchange.set(0, 1, exchange_coefficient, 0.0);
+  IceSolver<Dim> solver(grid, two_gases(), exchange, {}, IceSolver<Dim>::Vector::Zero(),
+                        random_gases(grid, 7));
+  const auto before = solver.totals();
+  run_steps(solver, 40, 0.4);
+  const auto after = solver.totals();
+  for (std::size_t m = 0; m < 2; ++m) {
+    const double error = std::abs(after[m].mass - before[m].mass) / before[m].mass;
+    fmt::print("{}D K {:g}: material {} mass change {:.2e} (tolerance 1e-12)\n", Dim,
+               exchange_coefficient, m, error);
+    EXPECT_LE(error, 1e-12);
+  }
+  const double energy_change = (total_energy(after) - total_energy(before)) / total_energy(before);
+  fmt::print("{}D K {:g}: total energy change {:.2e}\n", Dim, exchange_coefficient, energy_change);
+  if (exchange_coefficient == 0.0) {
+    // Exact but for the pressure solve's tolerance (relative residual 1e-10).
+    EXPECT_LE(std::abs(energy_change), 1e-10);
+  } else {
+    // The drag dissipates kinetic energy, which this solver does not turn into heat.
+    EXPECT_LT(energy_change, 0.0);
+  }
+}
+
+TEST(IceSolver, ClosedBoxConservesMassAndTotalEnergy1D) {
+  expect_closed_box_conservation<1>(0.0);
+}
+TEST(IceSolver, ClosedBoxConservesMassAndTotalEnergy2D) {
+  expect_closed_box_conservation<2>(0.0);
+}
+TEST(IceSolver, ClosedBoxConservesMassAndTotalEnergy3D) {
+  expect_closed_box_conservation<3>(0.0);
+}
+TEST(IceSolver, ClosedBoxWithDragConservesMassAndDissipates) {
+  expect_closed_box_conservation<2>(1.0e3);
+}
+
+// Without gravity, the pressure on the walls is the only external force:
+// the momentum of all materials changes by exactly its impulse.
+TEST(IceSolver, MomentumChangesOnlyByTheWallImpulse) {
+  const CellGrid<2> grid = unit_grid<2>(12);
+  ExchangeCoefficients exchange = ExchangeCoefficients::none(2);
+  exchange.set(0, 1, 50.0, 0.0);
+  IceSolver<2> solver(grid, two_gases(), exchange, {}, IceSolver<2>::Vector::Zero(),
+                      random_gases(grid, 3));
+  for (int s = 0; s < 10; ++s) {
+    const auto before = solver.totals();
+    const double dt = solver.stable_time_step(0.4, true);
+    ASSERT_TRUE(solver.advance(dt).accepted);
+    const auto after = solver.totals();
+    for (int d = 0; d < 2; ++d) {
+      double impulse = 0.0;
+      const std::vector<double>& p = solver.face_pressure()[static_cast<std::size_t>(d)];
+      for (int f = 0; f < grid.face_count(d); ++f) {
+        if (grid.lower_cell(d, f) < 0) impulse += p[static_cast<std::size_t>(f)];
+        if (grid.upper_cell(d, f) < 0) impulse -= p[static_cast<std::size_t>(f)];
+      }
+      impulse *= grid.face_area(d) * dt;
+      const double change = after[0].momentum[static_cast<std::size_t>(d)] +
+                            after[1].momentum[static_cast<std::size_t>(d)] -
+                            before[0].momentum[static_cast<std::size_t>(d)] -
+                            before[1].momentum[static_cast<std::size_t>(d)];
+      EXPECT_NEAR(change, impulse, 1e-10 * (std::abs(impulse) + 1e-3))
+          << "step " << s << " d " << d;
+    }
+  }
+}
+
+// A uniform gas at rest stays exactly at rest.
+TEST(IceSolver, UniformGasAtRestStaysAtRest) {
+  const CellGrid<2> grid = unit_grid<2>(8);
+  FluidState<2> state;
+  state.materials.resize(1);
+  state.materials[0].bulk_density = make_cell_field(grid, 1.2);
+  state.materials[0].temperature = make_cell_field(grid, 300.0);
+  for (auto& u : state.materials[0].velocity) u = make_cell_field(grid, 0.0);
+  IceSolver<2> solver(grid, {{"air", air(), 0.0, 0.0}}, ExchangeCoefficients::none(1), {},
+                      IceSolver<2>::Vector::Zero(), state);
+  const double p0 = solver.state().pressure[0];
+  for (int s = 0; s < 20; ++s) ASSERT_TRUE(solver.advance(1e-3).accepted);
+  for (std::size_t c = 0; c < solver.state().pressure.size(); ++c) {
+    EXPECT_EQ(solver.state().pressure[c], p0);
+    EXPECT_EQ(solver.state().materials[0].velocity[0][c], 0.0);
+    EXPECT_EQ(solver.state().materials[0].velocity[1][c], 0.0);
+  }
+}
+
+// K -> inf: two gases with different velocities leave the step with one.
+TEST(IceSolver, StrongExchangeGivesOneVelocity) {
+  // The same gas twice with uniform, proportional densities: advection
+  // keeps the two materials' velocities and temperatures equal once the
+  // exchange has made them so.
+  const CellGrid<1> grid = unit_grid<1>(10);
+  FluidState<1> state = random_gases(grid, 11);
+  for (std::size_t c = 0; c < state.materials[0].bulk_density.size(); ++c) {
+    state.materials[0].bulk_density[c] = 0.4;
+    state.materials[1].bulk_density[c] = 0.8;
+    state.materials[0].temperature[c] = 300.0;
+  }
+  ExchangeCoefficients exchange = ExchangeCoefficients::none(2);
+  exchange.set(0, 1, 1.0e15, 1.0e15);
+  IceSolver<1> solver(grid, {{"a", air(), 0.0, 0.0}, {"b", air(), 0.0, 0.0}}, exchange, {},
+                      IceSolver<1>::Vector::Zero(), state);
+  ASSERT_TRUE(solver.advance(1e-5).accepted);
+  for (int c = 0; c < grid.cell_count(); ++c) {
+    const auto i = static_cast<std::size_t>(c);
+    EXPECT_NEAR(solver.state().materials[0].velocity[0][i],
+                solver.state().materials[1].velocity[0][i], 1e-6);
+    EXPECT_NEAR(solver.state().materials[0].temperature[i],
+                solver.state().materials[1].temperature[i], 1e-3);
+  }
+}
+
+// A step that would move material through more than a cell is refused and
+// leaves the state as it was.
+TEST(IceSolver, TooLongStepIsRejectedWithoutChangingTheState) {
+  const CellGrid<1> grid = unit_grid<1>(20);
+  IceSolver<1> solver(grid, two_gases(), ExchangeCoefficients::none(2), {},
+                      IceSolver<1>::Vector::Zero(), random_gases(grid, 5));
+  const FluidState<1> before = solver.state();
+  const StepReport report = solver.advance(1.0);
+  EXPECT_FALSE(report.accepted);
+  EXPECT_GT(report.courant, 1.0);
+  EXPECT_EQ(solver.state().pressure, before.pressure);
+  EXPECT_EQ(solver.state().materials[1].bulk_density, before.materials[1].bulk_density);
+  EXPECT_EQ(solver.steps(), 0);
+  EXPECT_TRUE(solver.advance(0.5 * solver.stable_time_step(0.4, true)).accepted);
+}
+
+// Water under air in a closed tank: the hydrostatic initial state stays at
+// rest (|u| <= 1e-6 m/s after 1000 steps) and its pressure is rho g h
+// (MPMICE's water-air setting with K = 1e15).
+TEST(IceSolver, HydrostaticWaterUnderAirStaysAtRest) {
+  const CellGrid<2> grid(CellGrid<2>::Point(0.0, 0.0), CellGrid<2>::Point(0.05, 0.05), {4, 20});
+  const std::vector<FluidMaterial> materials{{"water", water(), 0.0, 0.0},
+                                             {"air", air(), 0.0, 0.0}};
+  const Eigen::Vector2d gravity(0.0, -9.81);
+  const double minimum_fraction = 1e-6;
+  CellFill<2> fill;
+  const auto cells = static_cast<std::size_t>(grid.cell_count());
+  fill.material.resize(cells);
+  fill.temperature.assign(cells, 293.15);
+  for (auto& u : fill.velocity) u.assign(cells, 0.0);
+  for (int c = 0; c < grid.cell_count(); ++c) {
+    fill.material[static_cast<std::size_t>(c)] = grid.cell_centre(c)[1] < 0.5 ? 0 : 1;
+  }
+  fill.pressure = hydrostatic_pressure(grid, materials, fill.material, fill.temperature, gravity,
+                                       101325.0, minimum_fraction);
+  ExchangeCoefficients exchange = ExchangeCoefficients::none(2);
+  exchange.set(0, 1, 1.0e15, 0.0);
+  IceSolver<2>::Sides sides{};
+  sides[3].type = SideType::fixed_pressure;
+  sides[3].pressure = 101325.0;
+  IceSolver<2> solver(grid, materials, exchange, sides, gravity,
+                      make_initial_state(grid, materials, fill, minimum_fraction));
+  for (int s = 0; s < 1000; ++s) ASSERT_TRUE(solver.advance(1e-3).accepted);
+  double fastest = 0.0;
+  double worst = 0.0;
+  for (int c = 0; c < grid.cell_count(); ++c) {
+    const auto i = static_cast<std::size_t>(c);
+    for (const MaterialState<2>& m : solver.state().materials) {
+      fastest = std::max({fastest, std::abs(m.velocity[0][i]), std::abs(m.velocity[1][i])});
+    }
+    const double y = grid.cell_centre(c)[1];
+    if (y < 0.5) {
+      const double rho_air = 101325.0 / (287.0 * 293.15);
+      const double rho_water = materials[0].eos->density(101325.0, 293.15);
+      const double expected = 101325.0 + rho_air * 9.81 * 0.5 + rho_water * 9.81 * (0.5 - y);
+      worst =
+          std::max(worst, std::abs(solver.state().pressure[i] - expected) / (expected - 101325.0));
+    }
+  }
+  fmt::print(
+      "after 1000 steps: fastest {:.2e} m/s (tolerance 1e-6), pressure vs rho g h {:.2e} "
+      "(tolerance 1e-3)\n",
+      fastest, worst);
+  EXPECT_LE(fastest, 1e-6);
+  EXPECT_LE(worst, 1e-3);
+}
+
+TEST(IceSolver, RefusesAbsentMaterialsAndBadSizes) {
+  const CellGrid<1> grid = unit_grid<1>(4);
+  FluidState<1> state = random_gases(grid, 1);
+  state.materials[1].bulk_density[2] = 0.0;
+  EXPECT_THROW(IceSolver<1>(grid, two_gases(), ExchangeCoefficients::none(2), {},
+                            IceSolver<1>::Vector::Zero(), state),
+               cosim::NumericalError);
+  state = random_gases(grid, 1);
+  state.materials[0].temperature.pop_back();
+  EXPECT_THROW(IceSolver<1>(grid, two_gases(), ExchangeCoefficients::none(2), {},
+                            IceSolver<1>::Vector::Zero(), state),
+               std::invalid_argument);
+  state = random_gases(grid, 1);
+  EXPECT_THROW(IceSolver<1>(grid, two_gases(), ExchangeCoefficients::none(1), {},
+                            IceSolver<1>::Vector::Zero(), state),
+               std::invalid_argument);
+  IceSolver<1> solver(grid, two_gases(), ExchangeCoefficients::none(2), {},
+                      IceSolver<1>::Vector::Zero(), state);
+  EXPECT_THROW(solver.advance(-1.0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace ice
