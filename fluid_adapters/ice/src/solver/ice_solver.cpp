@@ -396,7 +396,7 @@ void IceSolver<Dim>::exchange_face_momentum(double dt) {
 // velocity corrected with its own coefficient y_f (see above).
 template <int Dim>
 PressureSolution IceSolver<Dim>::solve_pressure_increment(double dt) {
-  std::fill(pressure_increment_.begin(), pressure_increment_.end(), 0.0);
+  // Last step's increment is the initial guess: the pressure changes smoothly.
   const PressureSolution solution = pressure_solver_.solve(
       mixture_kappa_, face_density_, mixture_velocity_, dt, pressure_increment_);
   for (std::size_t m = 0; m < count(); ++m) {
