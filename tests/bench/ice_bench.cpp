@@ -53,8 +53,9 @@ void BM_IceStep2d(benchmark::State& state) {
   exchange.set(0, 1, 1.0e15, 0.0);
   ice::IceSolver<2>::Sides sides{};
   ice::IceSolverOptions options;
-  options.pressure.preconditioner = state.range(1) == 0 ? ice::PressurePreconditioner::jacobi
-                                                        : ice::PressurePreconditioner::incomplete_cholesky;
+  options.pressure.preconditioner = state.range(1) == 0
+                                        ? ice::PressurePreconditioner::jacobi
+                                        : ice::PressurePreconditioner::incomplete_cholesky;
   auto solver = std::make_unique<ice::IceSolver<2>>(d.grid, d.materials, exchange, sides,
                                                     Eigen::Vector2d(0.0, -9.81), d.state, options);
   const double dt = 0.4 * d.grid.spacing()[0] / 1.5;  // ~ the collapse's fastest 1.5 m/s

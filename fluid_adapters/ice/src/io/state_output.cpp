@@ -1,0 +1,144 @@
+#include "ice/io/state_output.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "cosim/error.hpp"
+
+namespace ice {
+
+namespace {
+
+constexpr const char* axis_name[] = {"x", "y", "z"};
+
+template <int Dim>
+std::vector<std::string> gauge_columns(const std::vector<GaugePoint>& gauges,
+                                       const IceSolver<Dim>& solver) {
+  std::vector<std::string> columns{cosim::column_name("time", "s")};
+  for (const GaugePoint& g : gauges) {
+    columns.push_back(cosim::column_name("p_" + g.name, "Pa"));
+    for (int d = 0; d < Dim; ++d) {
+      columns.push_back(cosim::column_name(fmt::format("u{}_{}", axis_name[d], g.name), "m/s"));
+    }
+    for (const FluidMaterial& m : solver.materials()) {
+      columns.push_back(cosim::column_name(fmt::format("phi_{}_{}", m.name, g.name), "1"));
+    }
+  }
+  return columns;
+}
+
+template <int Dim>
+int cell_holding(const CellGrid<Dim>& grid, const GaugePoint& gauge) {
+  typename CellGrid<Dim>::CellIndex ijk{};
+  for (int d = 0; d < Dim; ++d) {
+    const double offset =
+        (gauge.point[static_cast<std::size_t>(d)] - grid.origin()[d]) / grid.spacing()[d];
+    const int cells = grid.cells()[static_cast<std::size_t>(d)];
+    if (!(offset >= 0.0 && offset <= cells)) {
+      throw cosim::InputError(
+          fmt::format("gauge '{}' lies outside the grid along {}", gauge.name, axis_name[d]));
+    }
+    ijk[static_cast<std::size_t>(d)] = std::min(cells - 1, static_cast<int>(std::floor(offset)));
+  }
+  return grid.cell(ijk);
+}
+
+}  // namespace
+
+template <int Dim>
+cosim::Mesh cell_mesh(const CellGrid<Dim>& grid, const std::string& name) {
+  cosim::UniformGrid mesh;
+  mesh.dim = Dim;
+  for (int d = 0; d < Dim; ++d) {
+    mesh.origin[static_cast<std::size_t>(d)] = grid.origin()[d];
+    mesh.spacing[static_cast<std::size_t>(d)] = grid.spacing()[d];
+    mesh.cells[static_cast<std::size_t>(d)] = grid.cells()[static_cast<std::size_t>(d)];
+  }
+  mesh.location = cosim::GridLocation::cell;
+  return {name, mesh};
+}
+
+template <int Dim>
+const cosim::SnapshotFields& SnapshotFieldSet<Dim>::fields(const IceSolver<Dim>& solver) {
+  const FluidState<Dim>& state = solver.state();
+  const std::size_t cells = state.pressure.size();
+  const std::size_t n = state.materials.size();
+  const auto dim = static_cast<std::size_t>(Dim);
+  mixture_density_.assign(cells, 0.0);
+  mixture_velocity_.assign(cells * dim, 0.0);
+  velocity_.resize(n);
+  for (std::size_t m = 0; m < n; ++m) {
+    const MaterialState<Dim>& material = state.materials[m];
+    velocity_[m].resize(cells * dim);
+    for (std::size_t c = 0; c < cells; ++c) {
+      mixture_density_[c] += material.bulk_density[c];
+      for (std::size_t d = 0; d < dim; ++d) {
+        velocity_[m][c * dim + d] = material.velocity[d][c];
+        mixture_velocity_[c * dim + d] += material.bulk_density[c] * material.velocity[d][c];
+      }
+    }
+  }
+  for (std::size_t c = 0; c < cells; ++c) {
+    for (std::size_t d = 0; d < dim; ++d) mixture_velocity_[c * dim + d] /= mixture_density_[c];
+  }
+  fields_.clear();
+  const auto key = [](const std::string& name) { return name; };
+  fields_.emplace("pressure", cosim::FieldView{state.pressure, 1, "Pa"});
+  fields_.emplace("density", cosim::FieldView{mixture_density_, 1, "kg/m^3"});
+  fields_.emplace("velocity", cosim::FieldView{mixture_velocity_, Dim, "m/s"});
+  for (std::size_t m = 0; m < n; ++m) {
+    const MaterialState<Dim>& material = state.materials[m];
+    const std::string& name = solver.materials()[m].name;
+    fields_.emplace(key("volume_fraction_" + name),
+                    cosim::FieldView{material.volume_fraction, 1, "1"});
+    fields_.emplace(key("bulk_density_" + name),
+                    cosim::FieldView{material.bulk_density, 1, "kg/m^3"});
+    fields_.emplace(key("density_" + name), cosim::FieldView{material.density, 1, "kg/m^3"});
+    fields_.emplace(key("velocity_" + name), cosim::FieldView{velocity_[m], Dim, "m/s"});
+    fields_.emplace(key("temperature_" + name), cosim::FieldView{material.temperature, 1, "K"});
+  }
+  return fields_;
+}
+
+template <int Dim>
+GaugeRecorder<Dim>::GaugeRecorder(const std::filesystem::path& file,
+                                  const std::vector<GaugePoint>& gauges,
+                                  const IceSolver<Dim>& solver)
+    : writer_(file, gauge_columns(gauges, solver)) {
+  for (const GaugePoint& g : gauges) cells_.push_back(cell_holding(solver.grid(), g));
+  row_.resize(writer_.columns().size());
+}
+
+template <int Dim>
+void GaugeRecorder<Dim>::record(double time, const IceSolver<Dim>& solver) {
+  const FluidState<Dim>& state = solver.state();
+  std::size_t k = 0;
+  row_[k++] = time;
+  for (const int cell : cells_) {
+    const auto c = static_cast<std::size_t>(cell);
+    row_[k++] = state.pressure[c];
+    double mass = 0.0;
+    for (const MaterialState<Dim>& m : state.materials) mass += m.bulk_density[c];
+    for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
+      double momentum = 0.0;
+      for (const MaterialState<Dim>& m : state.materials)
+        momentum += m.bulk_density[c] * m.velocity[d][c];
+      row_[k++] = momentum / mass;
+    }
+    for (const MaterialState<Dim>& m : state.materials) row_[k++] = m.volume_fraction[c];
+  }
+  writer_.append(row_);
+}
+
+template cosim::Mesh cell_mesh<1>(const CellGrid<1>&, const std::string&);
+template cosim::Mesh cell_mesh<2>(const CellGrid<2>&, const std::string&);
+template cosim::Mesh cell_mesh<3>(const CellGrid<3>&, const std::string&);
+template class SnapshotFieldSet<1>;
+template class SnapshotFieldSet<2>;
+template class SnapshotFieldSet<3>;
+template class GaugeRecorder<1>;
+template class GaugeRecorder<2>;
+template class GaugeRecorder<3>;
+
+}  // namespace ice
