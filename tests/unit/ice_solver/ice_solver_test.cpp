@@ -256,6 +256,32 @@ TEST(IceSolver, HydrostaticWaterUnderAirStaysAtRest) {
   EXPECT_LE(worst, 1e-3);
 }
 
+TEST(IceSolver, AddedMomentumIsSharedByMassWithOneVelocityIncrement) {
+  const CellGrid<2> grid = unit_grid<2>(4);
+  IceSolver<2> solver(grid, two_gases(), ExchangeCoefficients::none(2), {},
+                      IceSolver<2>::Vector::Zero(), random_gases(grid, 9));
+  const auto before = solver.totals();
+  const FluidState<2> state = solver.state();
+  std::vector<double> impulse(2 * static_cast<std::size_t>(grid.cell_count()));
+  for (std::size_t k = 0; k < impulse.size(); ++k)
+    impulse[k] = 1e-3 * (static_cast<double>(k) - 7.0);
+  solver.add_momentum(impulse);
+  const auto after = solver.totals();
+  for (std::size_t d = 0; d < 2; ++d) {
+    double total = 0.0;
+    for (std::size_t c = d; c < impulse.size(); c += 2) total += impulse[c];
+    EXPECT_NEAR(
+        after[0].momentum[d] + after[1].momentum[d] - before[0].momentum[d] - before[1].momentum[d],
+        total, 1e-15);
+  }
+  for (std::size_t c = 0; c < 16; ++c) {
+    EXPECT_NEAR(solver.state().materials[0].velocity[1][c] - state.materials[0].velocity[1][c],
+                solver.state().materials[1].velocity[1][c] - state.materials[1].velocity[1][c],
+                1e-12);
+  }
+  EXPECT_THROW(solver.add_momentum(std::vector<double>(3, 0.0)), std::invalid_argument);
+}
+
 TEST(IceSolver, RefusesAbsentMaterialsAndBadSizes) {
   const CellGrid<1> grid = unit_grid<1>(4);
   FluidState<1> state = random_gases(grid, 1);

@@ -179,6 +179,28 @@ void IceSolver<Dim>::set_porous_medium(
 }
 
 template <int Dim>
+void IceSolver<Dim>::add_momentum(std::span<const double> momentum) {
+  const auto dim = static_cast<std::size_t>(Dim);
+  const std::size_t cells = at(grid_.cell_count());
+  require(momentum.size() == cells * dim, "momentum needs Dim values per cell");
+  const double volume = grid_.cell_volume();
+  for (std::size_t c = 0; c < cells; ++c) {
+    double mass = 0.0;
+    for (const MaterialState<Dim>& material : state_.materials) mass += material.bulk_density[c];
+    mass *= volume;
+    for (std::size_t d = 0; d < dim; ++d) {
+      const double impulse = momentum[c * dim + d];
+      if (!std::isfinite(impulse)) {
+        throw cosim::NumericalError(
+            fmt::format("ICE: momentum {} added to cell {} is not finite", impulse, c));
+      }
+      for (MaterialState<Dim>& material : state_.materials)
+        material.velocity[d][c] += impulse / mass;
+    }
+  }
+}
+
+template <int Dim>
 void IceSolver<Dim>::equilibrate(StepReport* report) {
   std::vector<MaterialCells> cells;
   cells.reserve(count());

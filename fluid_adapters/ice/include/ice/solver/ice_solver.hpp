@@ -88,6 +88,14 @@ class IceSolver {
       std::span<const double> porosity,
       const std::array<CellField, static_cast<std::size_t>(Dim)>& solid_velocity);
 
+  // Adds momentum [kg m/s] to each cell (Dim components per cell,
+  // cell-major), e.g. the impulse the coupler's implicit fluid-solid exchange
+  // gives the fluid over a window. It is shared among the materials in
+  // proportion to their mass, so all get the same velocity increment and the
+  // total grows by exactly the given amount. Throws std::invalid_argument for
+  // a wrong size and cosim::NumericalError for a non-finite value.
+  void add_momentum(std::span<const double> momentum);
+
   // The time step the CFL rule allows: courant / max over cells of
   // sum_d (|U_d| + c) / dx_d, with c the adiabatic sound speed of the
   // materials filling at least 1 % of the cell when `acoustic`, else 0
