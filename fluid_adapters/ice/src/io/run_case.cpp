@@ -1,0 +1,263 @@
+#include "ice/io/run_case.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+
+#include "cosim/error.hpp"
+#include "cosim/io/files.hpp"
+#include "cosim/io/output_schedule.hpp"
+#include "cosim/io/run_summary.hpp"
+#include "cosim/io/snapshot_writer.hpp"
+#include "cosim/io/time_series_writer.hpp"
+#include "ice/case/load_case.hpp"
+#include "ice/case/make_solver.hpp"
+#include "ice/io/state_output.hpp"
+
+namespace ice {
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr const char* cells_mesh = "ice_cells";
+constexpr const char* axis_name[] = {"x", "y", "z"};
+
+template <int Dim>
+class CaseRun {
+ public:
+  using Vector = Eigen::Matrix<double, Dim, 1>;
+
+  CaseRun(const CaseDescription& description, const RunOptions& options,
+          const cosim::CouplingEndpoint& endpoint, cosim::RunSummary& summary)
+      : c_(description),
+        options_(options),
+        summary_(summary),
+        participant_(endpoint.name_or(description.name), endpoint),
+        snapshots_(description.output_every, description.end_time),
+        gauge_times_(description.gauge_every, description.end_time),
+        tolerance_(1e-10 * description.end_time) {}
+
+  void run() {
+    try {
+      {
+        auto scope = summary_.phases().measure("setup");
+        build_solver();
+        if (participant_.is_coupled()) {
+          throw cosim::InputError(
+              "ice_fluid does not yet take part in coupled jobs (the MPM <-> ICE pairing is being "
+              "built)");
+        }
+        participant_.initialize(0.0, c_.end_time);
+        open_outputs();
+      }
+      record_conserved(true);
+      write_outputs(0.0, {});
+      summary_.write();
+      loop();
+      record_conserved(false);
+      participant_.finalize();
+    } catch (const std::exception& e) {
+      if (solver_) record_conserved(false);
+      participant_.abort(e.what());
+      throw;
+    }
+    spdlog::info("completed: t = {:.6g} s in {} steps ({} rejected), {} snapshots",
+                 participant_.time(), steps_, rejected_,
+                 snapshot_writer_ ? snapshot_writer_->snapshots_written() : 0);
+  }
+
+ private:
+  void build_solver() {
+    solver_ = make_solver<Dim>(c_);
+    const CellGrid<Dim>& grid = solver_->grid();
+    summary_.set_section("case", {{"name", c_.name},
+                                  {"dimension", Dim},
+                                  {"cells", grid.cell_count()},
+                                  {"materials", material_names()},
+                                  {"cfl", c_.numerics.cfl},
+                                  {"acoustic", c_.numerics.acoustic},
+                                  {"limiter", std::string(to_string(c_.numerics.limiter))},
+                                  {"end_time_s", c_.end_time}});
+    spdlog::info("case '{}': {}D, {} cells, materials {}, end time {} s", c_.name, Dim,
+                 grid.cell_count(), material_names().dump(), c_.end_time);
+  }
+
+  nlohmann::json material_names() const {
+    nlohmann::json names = nlohmann::json::array();
+    for (const FluidMaterial& m : c_.materials) names.push_back(m.name);
+    return names;
+  }
+
+  void open_outputs() {
+    if (c_.snapshots) {
+      snapshot_writer_.emplace(options_.output, "ice", cell_mesh(solver_->grid(), cells_mesh));
+    }
+    if (!c_.gauges.empty()) gauges_.emplace(options_.output / "gauges.csv", c_.gauges, *solver_);
+    steps_csv_.emplace(
+        options_.output / "steps.csv",
+        std::vector<std::string>{cosim::column_name("time", "s"), cosim::column_name("dt", "s"),
+                                 cosim::column_name("cg_iterations", "1"),
+                                 cosim::column_name("equilibration_iterations", "1"),
+                                 cosim::column_name("volume_closure", "1"),
+                                 cosim::column_name("courant", "1")});
+  }
+
+  void loop() {
+    using Clock = std::chrono::steady_clock;
+    auto last_progress = Clock::now();
+    double dt = c_.numerics.initial_time_step;
+    while (participant_.is_coupling_ongoing()) {
+      const double t = participant_.time();
+      double limit = solver_->stable_time_step(c_.numerics.cfl, c_.numerics.acoustic);
+      limit = std::min({limit, c_.numerics.max_step_growth * dt, participant_.max_time_step()});
+      if (c_.numerics.max_time_step > 0.0) limit = std::min(limit, c_.numerics.max_time_step);
+      const double next_output =
+          std::min(snapshots_.next(), c_.gauge_every > 0.0 ? gauge_times_.next() : infinity);
+      if (next_output > t + tolerance_) limit = std::min(limit, next_output - t);
+      dt = limit;
+      StepReport report;
+      for (;;) {
+        if (!(dt >= c_.numerics.min_time_step)) {
+          throw cosim::NumericalError(
+              fmt::format("the time step {:.4g} s fell below numerics.min_time_step = {:.4g} s at "
+                          "t = {:.9g} s (step {})",
+                          dt, c_.numerics.min_time_step, t, steps_));
+        }
+        auto scope = summary_.phases().measure("advance");
+        report = solver_->advance(dt);
+        if (report.accepted) break;
+        ++rejected_;
+        dt *= 0.5 * std::min(1.0, 1.0 / report.courant);
+      }
+      ++steps_;
+      min_dt_ = std::min(min_dt_, dt);
+      cg_iterations_ += report.pressure_iterations;
+      most_cg_iterations_ = std::max(most_cg_iterations_, report.pressure_iterations);
+      most_closure_ = std::max(most_closure_, report.volume_closure);
+      {
+        auto scope = summary_.phases().measure("coupling");
+        participant_.advance(dt);
+      }
+      const double now = participant_.time();
+      write_outputs(now, report, dt);
+      if (Clock::now() - last_progress > std::chrono::seconds(5)) {
+        last_progress = Clock::now();
+        spdlog::info("t = {:.6g} s / {:.6g} s, step {}, dt = {:.3g} s, CG iterations {}", now,
+                     c_.end_time, steps_, dt, report.pressure_iterations);
+        summary_.set_steps(static_cast<std::int64_t>(steps_));
+        summary_.write();
+      }
+    }
+  }
+
+  void write_outputs(double t, const StepReport& report, double dt = 0.0) {
+    if (gauges_ && (t == 0.0 || c_.gauge_every <= 0.0 || gauge_times_.due(t, tolerance_))) {
+      gauges_->record(t, *solver_);
+    }
+    if (t > 0.0) gauge_times_.passed(t, tolerance_);
+    if (t == 0.0 || snapshots_.due(t, tolerance_)) {
+      auto scope = summary_.phases().measure("output");
+      steps_csv_->append({t, dt, static_cast<double>(report.pressure_iterations),
+                          static_cast<double>(report.equilibration_iterations),
+                          report.volume_closure, report.courant});
+      if (snapshot_writer_) snapshot_writer_->write(t, fields_.fields(*solver_));
+      if (t > 0.0) snapshots_.passed(t, tolerance_);
+    }
+  }
+
+  void record_conserved(bool start) {
+    const auto totals = solver_->totals();
+    const bool line = Dim == 1;
+    const std::string mass_unit = Dim == 3 ? "kg" : Dim == 2 ? "kg/m" : "kg/m^2";
+    const std::string energy_unit = Dim == 3 ? "J" : Dim == 2 ? "J/m" : "J/m^2";
+    const std::string momentum_unit = Dim == 3 ? "kg m/s" : Dim == 2 ? "kg/s" : "kg/(m s)";
+    auto set = [&](const std::string& name, double value, const std::string& unit) {
+      if (start)
+        summary_.set_conserved_start(name, value, unit);
+      else
+        summary_.set_conserved_end(name, value, unit);
+    };
+    for (std::size_t m = 0; m < totals.size(); ++m) {
+      const std::string& name = c_.materials[m].name;
+      set("mass_" + name, totals[m].mass, mass_unit);
+      for (int d = 0; d < Dim; ++d) {
+        set(fmt::format("momentum_{}_{}", axis_name[d], name),
+            totals[m].momentum[static_cast<std::size_t>(d)], momentum_unit);
+      }
+      set("energy_" + name, totals[m].internal_energy + totals[m].kinetic_energy, energy_unit);
+    }
+    (void)line;
+    if (!start) {
+      summary_.set_steps(static_cast<std::int64_t>(steps_));
+      summary_.set_windows(static_cast<std::int64_t>(participant_.window_index()));
+      if (steps_ > 0) {
+        summary_.set_metric("min_time_step", min_dt_, "s");
+        summary_.set_metric("mean_cg_iterations",
+                            static_cast<double>(cg_iterations_) / static_cast<double>(steps_), "1");
+      }
+      summary_.set_metric("max_cg_iterations", most_cg_iterations_, "1");
+      summary_.set_metric("rejected_steps", static_cast<double>(rejected_), "1");
+      summary_.set_metric("max_volume_closure", most_closure_, "1");
+    }
+  }
+
+  const CaseDescription& c_;
+  const RunOptions& options_;
+  cosim::RunSummary& summary_;
+  cosim::Participant participant_;
+  std::unique_ptr<IceSolver<Dim>> solver_;
+  cosim::OutputSchedule snapshots_;
+  cosim::OutputSchedule gauge_times_;
+  double tolerance_;
+  std::size_t steps_ = 0;
+  std::size_t rejected_ = 0;
+  long cg_iterations_ = 0;
+  int most_cg_iterations_ = 0;
+  double most_closure_ = 0.0;
+  double min_dt_ = infinity;
+  SnapshotFieldSet<Dim> fields_;
+  std::optional<cosim::SnapshotWriter> snapshot_writer_;
+  std::optional<GaugeRecorder<Dim>> gauges_;
+  std::optional<cosim::TimeSeriesWriter> steps_csv_;
+};
+
+template <int Dim>
+void run_dimension(const CaseDescription& c, const RunOptions& options,
+                   const cosim::CouplingEndpoint& endpoint, cosim::RunSummary& summary) {
+  CaseRun<Dim> run(c, options, endpoint, summary);
+  run.run();
+}
+
+}  // namespace
+
+int run_case(const RunOptions& options, const cosim::CouplingEndpoint& endpoint) {
+  cosim::create_output_directory(options.output);
+  cosim::init_logging(options.output, "ice_fluid", options.verbosity);
+  cosim::RunSummary summary(options.output, "ice_fluid");
+  return cosim::run_and_finish(summary, [&] {
+    const CaseDescription description = [&] {
+      auto scope = summary.phases().measure("read_case");
+      return load_case(options.config);
+    }();
+    summary.set_config(options.config, description.config_hash);
+    switch (description.dimension) {
+      case 1:
+        run_dimension<1>(description, options, endpoint, summary);
+        break;
+      case 2:
+        run_dimension<2>(description, options, endpoint, summary);
+        break;
+      default:
+        run_dimension<3>(description, options, endpoint, summary);
+        break;
+    }
+  });
+}
+
+}  // namespace ice
