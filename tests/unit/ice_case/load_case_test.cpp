@@ -1,0 +1,136 @@
+#include "ice/case/load_case.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cosim/error.hpp"
+#include "ice/case/case_schema.hpp"
+#include "ice/case/make_solver.hpp"
+#include "replaced_text.hpp"
+
+using cosim::testing::replaced;
+
+namespace ice {
+namespace {
+
+const std::string dam_break = R"(kind: ice_case
+name: dam
+dimension: 2
+grid: {origin: [0.0, 0.0], upper: [0.4, 0.2], cells: [8, 4]}
+gravity: [0.0, -9.81]
+end_time: 0.3
+materials:
+  water:
+    eos: {type: linear_water, bulk_modulus: 2.15e9, reference_density: 999.8}
+    viscosity: 1.0e-3
+  air:
+    eos: {type: ideal_gas, gas_constant: 287.0, heat_capacity_ratio: 1.4}
+exchange:
+  - {materials: [water, air], momentum: 1.0e15, heat: 1.0e3}
+initial:
+  fill: air
+  temperature: 300
+  regions:
+    - {box: {lower: [0.0, 0.0], upper: [0.1, 0.1]}, fill: water}
+    - {sphere: {centre: [0.3, 0.15], radius: 0.03}, fill: water, velocity: [0.0, -1.0]}
+boundaries:
+  x_max: outflow
+  y_max: {type: fixed_pressure, pressure: 101325, temperature: 300}
+numerics:
+  cfl: 0.3
+  limiter: minmod
+  pressure: {tolerance: 1.0e-9, preconditioner: incomplete_cholesky}
+output:
+  every: 0.05
+  gauges: [{name: g1, point: [0.2, 0.01]}]
+)";
+
+std::string error_of(const std::string& text) {
+  try {
+    load_case_text(text, "case.yaml");
+  } catch (const cosim::InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(IceCase, ReadsEveryKeyAndTheDefaults) {
+  const CaseDescription c = load_case_text(dam_break, "case.yaml");
+  EXPECT_EQ(c.name, "dam");
+  EXPECT_EQ(c.dimension, 2);
+  EXPECT_EQ(c.cells[0], 8);
+  EXPECT_DOUBLE_EQ(c.gravity[1], -9.81);
+  ASSERT_EQ(c.materials.size(), 2u);
+  EXPECT_EQ(c.materials[0].name, "water");  // file order
+  EXPECT_EQ(c.materials[1].name, "air");
+  EXPECT_DOUBLE_EQ(c.materials[0].viscosity, 1e-3);
+  EXPECT_DOUBLE_EQ(c.exchange.momentum[1], 1e15);
+  EXPECT_DOUBLE_EQ(c.exchange.heat[2], 1e3);
+  EXPECT_EQ(c.initial.fill, 1);
+  EXPECT_FALSE(c.initial.pressure.has_value());  // hydrostatic by default
+  ASSERT_EQ(c.initial.regions.size(), 2u);
+  EXPECT_EQ(c.initial.regions[1].shape, Region::Shape::sphere);
+  EXPECT_DOUBLE_EQ((*c.initial.regions[1].velocity)[1], -1.0);
+  ASSERT_EQ(c.sides.size(), 4u);
+  EXPECT_EQ(c.sides[0].type, SideType::wall);
+  EXPECT_EQ(c.sides[1].type, SideType::outflow);
+  EXPECT_EQ(c.sides[3].type, SideType::fixed_pressure);
+  EXPECT_DOUBLE_EQ(*c.sides[3].temperature, 300.0);
+  EXPECT_DOUBLE_EQ(c.numerics.cfl, 0.3);
+  EXPECT_EQ(c.numerics.limiter, Limiter::minmod);
+  EXPECT_EQ(c.numerics.pressure.preconditioner, PressurePreconditioner::incomplete_cholesky);
+  EXPECT_DOUBLE_EQ(c.numerics.max_step_growth, 1.2);
+  EXPECT_DOUBLE_EQ(c.initial.minimum_volume_fraction, 1e-6);
+  ASSERT_EQ(c.gauges.size(), 1u);
+  EXPECT_NE(c.config_hash, 0u);
+  const auto solver = make_solver<2>(c);
+  EXPECT_GT(solver->state().materials[0].volume_fraction[0], 0.99);  // water in the corner
+  EXPECT_LT(solver->state().materials[0].volume_fraction[7], 1e-5);
+  EXPECT_THROW(make_solver<1>(c), std::invalid_argument);
+}
+
+TEST(IceCase, ErrorsNameTheKeyAndTheLine) {
+  const struct {
+    std::string from, to, expected;
+  } cases[] = {
+      {"dimension: 2", "dimension: 4", "dimension"},
+      {"upper: [0.4, 0.2]", "upper: [0.4]", "grid.upper"},
+      {"upper: [0.4, 0.2]", "upper: [-0.4, 0.2]", "not above the origin"},
+      {"cells: [8, 4]", "cells: [8, 0.5]", "whole number"},
+      {"fill: air\n", "fill: steam\n", "unknown material 'steam'"},
+      {"materials: [water, air]", "materials: [water, water]", "with itself"},
+      {"momentum: 1.0e15", "momentum: -1.0", "momentum"},
+      {"viscosity: 1.0e-3", "viscosity: -1.0e-3", "viscosity"},
+      {"bulk_modulus: 2.15e9", "bulk_modulu: 2.15e9", "bulk_modulu"},
+      {"upper: [0.1, 0.1]}", "upper: [-0.1, 0.1]}", "upper corner"},
+      {"lower: [0.0, 0.0], upper: [0.1, 0.1]", "lower: [1.0, 0.0], upper: [2.0, 0.1]",
+       "outside the domain"},
+      {"x_max: outflow", "z_max: outflow", "does not exist in a 2D case"},
+      {"type: fixed_pressure, pressure: 101325,", "type: fixed_pressure,", "needs `pressure`"},
+      {"x_max: outflow", "x_max: {type: inflow}", "needs `velocity`"},
+      {"cfl: 0.3", "cfl: 3.0", "cfl"},
+      {"point: [0.2, 0.01]", "point: [0.5, 0.01]", "outside the domain"},
+      {"end_time: 0.3", "end_time: 0.0", "end_time"},
+      {"temperature: 300\n", "temperature: 300\n  pressure: 1.0e5\n", "no error"},
+      {"fill: water, velocity", "fill: water, pressure: 2.0e5, velocity", "hydrostatic"},
+  };
+  for (const auto& c : cases) {
+    const std::string message = error_of(replaced(dam_break, c.from, c.to));
+    EXPECT_NE(message.find(c.expected), std::string::npos) << c.to << " -> " << message;
+    if (c.expected != "no error") {
+      EXPECT_NE(message.find("case.yaml:"), std::string::npos) << message;
+    }
+  }
+}
+
+TEST(IceCase, HelpListsEveryTopLevelKeyAndTheEquationsOfState) {
+  const std::string help = ice_case_help();
+  for (const char* key : {"grid", "gravity", "end_time", "materials", "exchange", "initial",
+                          "boundaries", "numerics", "output", "ideal_gas", "linear_water"}) {
+    EXPECT_NE(help.find(key), std::string::npos) << key;
+  }
+}
+
+}  // namespace
+}  // namespace ice
