@@ -1,5 +1,5 @@
 // Every YAML file shipped under configs/ loads: jobs through the coupler's
-// loader (schema and cross-references), MPM and shallow-water cases through
+// loader (schema and cross-references), MPM, shallow-water and ICE cases through
 // their solvers' loaders. A key renamed in a schema, or an example left
 // behind by a change, fails here rather than in a user's first run.
 // `kind: test_participant` files are read by the test participant, which
@@ -13,6 +13,7 @@
 #include <string>
 
 #include "cosim/job/job.hpp"
+#include "ice/case/load_case.hpp"
 #include "mpm/case/load_case.hpp"
 #include "swe/case/load_case.hpp"
 
@@ -34,6 +35,8 @@ TEST(ShippedConfigs, EveryJobAndCaseLoads) {
         (void)mpm::load_case(file);
       } else if (kind == "swe_case") {
         (void)swe::load_case(file);
+      } else if (kind == "ice_case") {
+        (void)ice::load_case(file);
       } else if (kind != "test_participant") {
         ADD_FAILURE() << "unknown kind '" << kind << "'";
         continue;
@@ -48,6 +51,7 @@ TEST(ShippedConfigs, EveryJobAndCaseLoads) {
   EXPECT_GE(loaded["job"], 9);
   EXPECT_GE(loaded["mpm_case"], 16);
   EXPECT_GE(loaded["swe_case"], 12);
+  EXPECT_GE(loaded["ice_case"], 3);
 }
 
 }  // namespace

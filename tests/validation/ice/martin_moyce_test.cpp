@@ -7,7 +7,7 @@
 // The simulated front leads the experiment from the start: +15-20 % at
 // T = 0.8-1.4, falling to +10 % at T = 3, while its speed over
 // 1.4 <= T <= 3 is within 4 % of the measured one. The lead is a constant
-// time offset of ~0.24 (13 ms), the signature of the experiment's finite
+// time offset of ~0.2 (11 ms), the signature of the experiment's finite
 // release (its column did not start from rest all at once), which inviscid
 // simulations share; with that offset fitted, the front follows the data
 // within 7 %. The test asserts the speed (10 %) and the fitted
