@@ -274,7 +274,10 @@ StepReport IceSolver<Dim>::advance(double dt) {
   compute_face_pressure();
   compute_lagrangian_values(dt);
   exchange_cell_momentum(dt);
-  compute_lagrangian_energy(dt);
+  if (!compute_lagrangian_energy(dt)) {
+    report.accepted = false;
+    return report;
+  }
   exchange_cell_energy(dt);
   compute_lagrangian_specific_volume(dt);
   advect_and_update(dt, report);
@@ -538,7 +541,7 @@ void IceSolver<Dim>::compute_lagrangian_values(double dt) {
 // exchange (the velocity the material actually reaches: a trace material
 // accelerated by the pressure and stopped by the drag does no work).
 template <int Dim>
-void IceSolver<Dim>::compute_lagrangian_energy(double dt) {
+bool IceSolver<Dim>::compute_lagrangian_energy(double dt) {
   for (std::size_t m = 0; m < count(); ++m) {
     const MaterialState<Dim>& material = state_.materials[m];
     const double c_v = eos_[m]->specific_heat();
@@ -567,14 +570,12 @@ void IceSolver<Dim>::compute_lagrangian_energy(double dt) {
       const double share =
           new_pressure_[i] * (phi * kappa_[m][i] * pressure_increment_[i] + dt * volume_flux);
       energy_[m][i] = rhobar * c_v * material.temperature[i] + dt * work + share;
-      if (!(energy_[m][i] > 0.0) || !std::isfinite(energy_[m][i])) {
-        throw cosim::NumericalError(fmt::format(
-            "ICE: material '{}' in cell {}: internal energy {} J/m3 after the pressure work "
-            "(pressure {} Pa, increment {} Pa); reduce the time step",
-            materials_[m].name, c, energy_[m][i], state_.pressure[i], pressure_increment_[i]));
-      }
+      // A compression too strong for the step (or work that empties a
+      // trace material) leaves no internal energy: the step is refused.
+      if (!(energy_[m][i] > 0.0) || !std::isfinite(energy_[m][i])) return false;
     }
   }
+  return true;
 }
 
 // Tran et al., MPMICE, eqs. 67-68: implicit momentum exchange of the

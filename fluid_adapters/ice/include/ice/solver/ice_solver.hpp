@@ -105,10 +105,10 @@ class IceSolver {
   double stable_time_step(double courant, bool acoustic) const;
 
   // One step of length dt. When the step is rejected (report.accepted
-  // false: the face Courant number exceeded options.max_courant) the state
-  // is unchanged. Throws cosim::NumericalError (exit 4) for a pressure solve
-  // or equilibration that does not converge and non-finite or non-positive
-  // results.
+  // false: the face Courant number exceeded options.max_courant, or the
+  // pressure work left a material without internal energy) the state is
+  // unchanged and a shorter step should be tried. Throws cosim::NumericalError (exit 4) for a
+  // pressure solve or equilibration that does not converge and non-finite or non-positive results.
   StepReport advance(double dt);
 
   std::vector<MaterialTotals> totals() const;
@@ -128,7 +128,7 @@ class IceSolver {
   void compute_face_pressure();                           // eq. 54
   void compute_lagrangian_values(double dt);              // eqs. 59, 61-62
   void exchange_cell_momentum(double dt);                 // eqs. 67-68
-  void compute_lagrangian_energy(double dt);              // eqs. 60, 63
+  bool compute_lagrangian_energy(double dt);              // eqs. 60, 63; false: the step is refused
   void exchange_cell_energy(double dt);                   // eqs. 69-70
   void compute_lagrangian_specific_volume(double dt);     // eqs. 73-76
   void advect_and_update(double dt, StepReport& report);  // eqs. 77-84
