@@ -57,6 +57,26 @@ std::string to_string(PressureBoundary boundary) {
   return boundary == PressureBoundary::wall ? "wall" : "fixed_pressure";
 }
 
+PressurePreconditioner pressure_preconditioner_from_name(const std::string& name) {
+  if (name == "jacobi") return PressurePreconditioner::jacobi;
+  if (name == "incomplete_cholesky") return PressurePreconditioner::incomplete_cholesky;
+  if (name == "multigrid") return PressurePreconditioner::multigrid;
+  throw std::invalid_argument("unknown pressure preconditioner '" + name +
+                              "' (known: jacobi, incomplete_cholesky, multigrid)");
+}
+
+std::string to_string(PressurePreconditioner preconditioner) {
+  switch (preconditioner) {
+    case PressurePreconditioner::jacobi:
+      return "jacobi";
+    case PressurePreconditioner::incomplete_cholesky:
+      return "incomplete_cholesky";
+    case PressurePreconditioner::multigrid:
+      return "multigrid";
+  }
+  return "unknown";
+}
+
 template <int Dim>
 PressureSolver<Dim>::PressureSolver(const CellGrid<Dim>& grid, const Boundaries& boundaries,
                                     PressureSolverOptions options)
@@ -109,8 +129,16 @@ PressureSolver<Dim>::PressureSolver(const CellGrid<Dim>& grid, const Boundaries&
   }
   right_hand_side_.resize(n);
   solution_.resize(n);
-  jacobi_cg_.analyzePattern(matrix_);
-  cholesky_cg_.analyzePattern(matrix_);
+  if (options.preconditioner == PressurePreconditioner::multigrid) {
+    multigrid_ = std::make_unique<MultigridPreconditioner<Dim>>(grid.cells(), options.multigrid);
+    for (Eigen::VectorXd* v : {&padded_rhs_, &padded_solution_, &padded_residual_,
+                               &padded_preconditioned_, &padded_direction_, &padded_product_}) {
+      *v = Eigen::VectorXd::Zero(multigrid_->padded_size());
+    }
+  } else {
+    jacobi_cg_.analyzePattern(matrix_);
+    cholesky_cg_.analyzePattern(matrix_);
+  }
 }
 
 template <int Dim>
@@ -193,14 +221,84 @@ PressureSolution PressureSolver<Dim>::run(Solver& solver, std::span<double> pres
   result.relative_residual =
       rhs_norm > 0.0 ? (right_hand_side_ - matrix_ * solution_).norm() / rhs_norm : 0.0;
   const bool converged = solver.info() == Eigen::Success && std::isfinite(result.relative_residual);
-  if (!converged) {
-    std::ostringstream message;
-    message << "PressureSolver: conjugate gradients did not converge in " << result.iterations
-            << " iterations (max_iterations " << options_.max_iterations << "): relative residual "
-            << result.relative_residual << ", tolerance " << options_.tolerance;
-    throw cosim::NumericalError(message.str());
-  }
+  if (!converged) throw_not_converged(result);
   std::copy(solution_.begin(), solution_.end(), pressure_increment.begin());
+  return result;
+}
+
+template <int Dim>
+void PressureSolver<Dim>::throw_not_converged(const PressureSolution& result) const {
+  std::ostringstream message;
+  message << "PressureSolver: conjugate gradients did not converge in " << result.iterations
+          << " iterations (max_iterations " << options_.max_iterations << "): relative residual "
+          << result.relative_residual << ", tolerance " << options_.tolerance;
+  throw cosim::NumericalError(message.str());
+}
+
+// Preconditioned conjugate gradients (as Eigen's, same stopping rule on the
+// recurrence residual) in the multigrid's padded layout; on reaching the
+// tolerance the residual is recomputed and the iteration restarted from it
+// if recurrence drift left it above the tolerance.
+template <int Dim>
+PressureSolution PressureSolver<Dim>::run_multigrid(std::span<double> pressure_increment) {
+  MultigridPreconditioner<Dim>& mg = *multigrid_;
+  const double* values = matrix_.valuePtr();
+  for (int c = 0; c < grid_.cell_count(); ++c) {
+    mg.diagonal(c) = values[diagonal_entry_[c]];
+  }
+  for (int d = 0; d < Dim; ++d) {
+    for (int f = 0; f < grid_.face_count(d); ++f) {
+      if (lower_upper_entry_[d][f] >= 0) {
+        mg.coupling(d, grid_.lower_cell(d, f)) = -values[lower_upper_entry_[d][f]];
+      }
+    }
+  }
+  mg.update();
+
+  const Eigen::Index n = grid_.cell_count();
+  const Eigen::Index p = mg.padding();
+  auto b = padded_rhs_.segment(p, n);
+  auto x = padded_solution_.segment(p, n);
+  auto r = padded_residual_.segment(p, n);
+  auto z = padded_preconditioned_.segment(p, n);
+  auto s = padded_direction_.segment(p, n);
+  auto q = padded_product_.segment(p, n);
+  b = right_hand_side_;
+  x = Eigen::Map<const Eigen::VectorXd>(pressure_increment.data(), n);
+  PressureSolution result;
+  const double rhs_norm2 = b.squaredNorm();
+  if (rhs_norm2 == 0.0) {
+    std::fill(pressure_increment.begin(), pressure_increment.end(), 0.0);
+    return result;
+  }
+  const double threshold2 = options_.tolerance * options_.tolerance * rhs_norm2;
+  const auto true_residual2 = [&] {
+    mg.multiply(padded_solution_, padded_product_);
+    r = b - q;
+    return r.squaredNorm();
+  };
+  double residual2 = true_residual2();
+  while (!(residual2 < threshold2) && result.iterations < options_.max_iterations) {
+    mg.apply(padded_residual_, padded_preconditioned_);
+    double rz = r.dot(z);
+    s = z;
+    while (result.iterations < options_.max_iterations) {
+      mg.multiply(padded_direction_, padded_product_);
+      const double step = rz / s.dot(q);
+      x += step * s;
+      r -= step * q;
+      ++result.iterations;
+      if (!(r.squaredNorm() >= threshold2)) break;
+      mg.apply(padded_residual_, padded_preconditioned_);
+      const double rz_next = r.dot(z);
+      s = z + (rz_next / rz) * s;
+      rz = rz_next;
+    }
+    residual2 = true_residual2();
+  }
+  result.relative_residual = std::sqrt(residual2 / rhs_norm2);
+  if (!(residual2 < threshold2)) throw_not_converged(result);
+  std::copy(x.begin(), x.end(), pressure_increment.begin());
   return result;
 }
 
@@ -221,9 +319,15 @@ PressureSolution PressureSolver<Dim>::solve(std::span<const double> kappa,
   }
   assemble(kappa, face_density, dt);
   set_right_hand_side(predicted_velocity);
-  return options_.preconditioner == PressurePreconditioner::jacobi
-             ? run(jacobi_cg_, pressure_increment)
-             : run(cholesky_cg_, pressure_increment);
+  switch (options_.preconditioner) {
+    case PressurePreconditioner::jacobi:
+      return run(jacobi_cg_, pressure_increment);
+    case PressurePreconditioner::incomplete_cholesky:
+      return run(cholesky_cg_, pressure_increment);
+    case PressurePreconditioner::multigrid:
+      break;
+  }
+  return run_multigrid(pressure_increment);
 }
 
 template <int Dim>

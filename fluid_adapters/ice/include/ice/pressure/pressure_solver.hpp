@@ -4,12 +4,14 @@
 #include <Eigen/SparseCore>
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "ice/grid/cell_grid.hpp"
 #include "ice/grid/grid_fields.hpp"
+#include "ice/pressure/multigrid_preconditioner.hpp"
 
 namespace ice {
 
@@ -25,19 +27,27 @@ PressureBoundary pressure_boundary_from_name(const std::string& name);
 std::string to_string(PressureBoundary boundary);
 
 // Preconditioner of the conjugate gradients. Measured on 2D 256x256, walls
-// and one fixed_pressure side, tolerance 1e-10 (PreconditionerMeasurement
-// test, one core): Jacobi 315 iterations / 92 ms per solve (random kappa and
-// rho over 3-4 decades) and 235 / 72 ms (uniform air); Eigen's incomplete
-// Cholesky (thresholded, AMD ordering) 218 / 282 ms and 106 / 154 ms: fewer
-// iterations, but its factorisation and triangular solves cost more than
-// they save, so Jacobi is the default.
-enum class PressurePreconditioner { jacobi, incomplete_cholesky };
+// and one fixed_pressure side, tolerance 1e-10 (one core): Jacobi 315
+// iterations / 92 ms per solve (random kappa and rho over 3-4 decades) and
+// 235 / 72 ms (uniform air); Eigen's incomplete Cholesky (thresholded, AMD
+// ordering) 218 / 282 ms and 106 / 154 ms: fewer iterations, but its
+// factorisation and triangular solves cost more than they save. Multigrid
+// (MultigridPreconditioner, one V-cycle per iteration) needs iterations
+// nearly independent of the grid size and of water-air density jumps.
+enum class PressurePreconditioner { jacobi, incomplete_cholesky, multigrid };
+
+// "jacobi", "incomplete_cholesky" or "multigrid"; throws
+// std::invalid_argument otherwise.
+PressurePreconditioner pressure_preconditioner_from_name(const std::string& name);
+std::string to_string(PressurePreconditioner preconditioner);
 
 struct PressureSolverOptions {
   // Relative residual ||b - A dP|| / ||b|| to reach.
   double tolerance = 1e-10;
   int max_iterations = 2000;
-  PressurePreconditioner preconditioner = PressurePreconditioner::jacobi;
+  PressurePreconditioner preconditioner = PressurePreconditioner::multigrid;
+  // Used with PressurePreconditioner::multigrid only.
+  MultigridOptions multigrid;
 };
 
 struct PressureSolution {
@@ -109,6 +119,8 @@ class PressureSolver {
   void set_right_hand_side(const FaceField<Dim>& predicted_velocity);
   template <class Solver>
   PressureSolution run(Solver& solver, std::span<double> pressure_increment);
+  PressureSolution run_multigrid(std::span<double> pressure_increment);
+  void throw_not_converged(const PressureSolution& result) const;
   bool is_fixed_pressure(int direction, int face) const;
 
   CellGrid<Dim> grid_;
@@ -128,6 +140,16 @@ class PressureSolver {
   Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper,
                            Eigen::IncompleteCholesky<double>>
       cholesky_cg_;
+  // Multigrid-preconditioned CG: the preconditioner and the CG vectors in
+  // its padded layout (right-hand side, solution, residual, preconditioned
+  // residual, search direction, operator times search direction).
+  std::unique_ptr<MultigridPreconditioner<Dim>> multigrid_;
+  Eigen::VectorXd padded_rhs_;
+  Eigen::VectorXd padded_solution_;
+  Eigen::VectorXd padded_residual_;
+  Eigen::VectorXd padded_preconditioned_;
+  Eigen::VectorXd padded_direction_;
+  Eigen::VectorXd padded_product_;
 };
 
 // P^{n+1} = P^n + dP, Tran et al., MPMICE, eq. 53. Throws

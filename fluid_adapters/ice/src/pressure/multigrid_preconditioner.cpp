@@ -1,0 +1,266 @@
+#include "ice/pressure/multigrid_preconditioner.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "cosim/error.hpp"
+
+namespace ice {
+
+namespace {
+
+void require_options(const MultigridOptions& options) {
+  if (options.smoothing_sweeps < 1 || options.cycle < 1 || options.cycle > 2 ||
+      options.coarsest_cells < 1 || !(options.coupling_scale > 0.0) ||
+      !(options.coupling_scale <= 1.0) || !(options.correction_scale > 0.0) ||
+      !std::isfinite(options.correction_scale)) {
+    throw std::invalid_argument(
+        "MultigridPreconditioner: need smoothing_sweeps >= 1, cycle 1 or 2, coarsest_cells >= 1, "
+        "0 < coupling_scale <= 1 and a positive finite correction_scale");
+  }
+}
+
+}  // namespace
+
+template <int Dim>
+typename MultigridPreconditioner<Dim>::Level MultigridPreconditioner<Dim>::make_level(
+    const CellCounts& cells) {
+  Level level;
+  level.cells = cells;
+  level.cell_count = 1;
+  for (int d = 0; d < Dim; ++d) {
+    if (cells[d] < 1) {
+      throw std::invalid_argument("MultigridPreconditioner: cell count " +
+                                  std::to_string(cells[d]) + " along direction " +
+                                  std::to_string(d) + " is below one");
+    }
+    level.stride[d] = level.cell_count;
+    level.cell_count *= cells[d];
+  }
+  level.padding = level.stride[Dim - 1];
+  const Eigen::Index size = level.cell_count + 2 * level.padding;
+  level.diagonal = Eigen::VectorXd::Zero(size);
+  level.inverse_diagonal = Eigen::VectorXd::Zero(size);
+  level.surplus = Eigen::VectorXd::Zero(size);
+  for (auto& coupling : level.coupling) coupling = Eigen::VectorXd::Zero(size);
+  level.solution = Eigen::VectorXd::Zero(size);
+  level.right_hand_side = Eigen::VectorXd::Zero(size);
+  level.residual = Eigen::VectorXd::Zero(size);
+  return level;
+}
+
+template <int Dim>
+MultigridPreconditioner<Dim>::MultigridPreconditioner(const CellCounts& cells,
+                                                      MultigridOptions options)
+    : options_(options) {
+  require_options(options);
+  levels_.push_back(make_level(cells));
+  while (levels_.back().cell_count > options.coarsest_cells) {
+    Level& fine = levels_.back();
+    CellCounts coarse_cells;
+    for (int d = 0; d < Dim; ++d) coarse_cells[d] = (fine.cells[d] + 1) / 2;
+    if (coarse_cells == fine.cells) break;
+    Level coarse = make_level(coarse_cells);
+    fine.aggregate.resize(static_cast<std::size_t>(fine.cell_count));
+    for (int c = 0; c < fine.cell_count; ++c) {
+      int coarse_cell = 0;
+      for (int d = 0; d < Dim; ++d) {
+        const int i = (c / fine.stride[d]) % fine.cells[d];
+        coarse_cell += (i / 2) * coarse.stride[d];
+      }
+      fine.aggregate[static_cast<std::size_t>(c)] = coarse_cell;
+    }
+    levels_.push_back(std::move(coarse));
+  }
+  const Eigen::Index m = levels_.back().cell_count;
+  coarsest_matrix_ = Eigen::MatrixXd::Zero(m, m);
+  coarsest_vector_ = Eigen::VectorXd::Zero(m);
+  coarsest_factor_ = Eigen::LLT<Eigen::MatrixXd>(m);
+}
+
+// P^T A P with P piecewise constant: the row sums (kappa V / dt and the
+// fixed-pressure ghosts) add up, couplings across an aggregate face add up
+// (then scaled), couplings inside an aggregate drop out.
+template <int Dim>
+void MultigridPreconditioner<Dim>::build_coarse_operator(int level) {
+  const Level& fine = levels_[static_cast<std::size_t>(level)];
+  Level& coarse = levels_[static_cast<std::size_t>(level) + 1];
+  const int pf = fine.padding;
+  const int pc = coarse.padding;
+  const int n = fine.cell_count;
+  const int* aggregate = fine.aggregate.data();
+  coarse.surplus.setZero();
+  for (int c = 0; c < n; ++c) coarse.surplus[pc + aggregate[c]] += fine.surplus[pf + c];
+  for (int d = 0; d < Dim; ++d) {
+    const int s = fine.stride[d];
+    const double* t = fine.coupling[d].data() + pf;
+    double* coarse_t = coarse.coupling[d].data() + pc;
+    coarse.coupling[d].setZero();
+    for (int c = 0; c + s < n; ++c) {
+      if (aggregate[c] != aggregate[c + s]) coarse_t[aggregate[c]] += t[c];
+    }
+    coarse.coupling[d] *= options_.coupling_scale;
+  }
+}
+
+template <int Dim>
+void MultigridPreconditioner<Dim>::set_diagonal_from_couplings(Level& level) {
+  const int p = level.padding;
+  const int n = level.cell_count;
+  auto diagonal = level.diagonal.segment(p, n);
+  diagonal = level.surplus.segment(p, n);
+  for (int d = 0; d < Dim; ++d) {
+    const int s = level.stride[d];
+    diagonal += level.coupling[d].segment(p, n) + level.coupling[d].segment(p - s, n);
+  }
+  level.inverse_diagonal.segment(p, n) = diagonal.cwiseInverse();
+}
+
+template <int Dim>
+void MultigridPreconditioner<Dim>::update() {
+  Level& finest = levels_.front();
+  const int p = finest.padding;
+  const int n = finest.cell_count;
+  finest.surplus.segment(p, n) = finest.diagonal.segment(p, n);
+  for (int d = 0; d < Dim; ++d) {
+    const int s = finest.stride[d];
+    finest.surplus.segment(p, n) -=
+        finest.coupling[d].segment(p, n) + finest.coupling[d].segment(p - s, n);
+  }
+  finest.inverse_diagonal.segment(p, n) = finest.diagonal.segment(p, n).cwiseInverse();
+  for (int level = 0; level + 1 < level_count(); ++level) {
+    build_coarse_operator(level);
+    set_diagonal_from_couplings(levels_[static_cast<std::size_t>(level) + 1]);
+  }
+  const Level& coarsest = levels_.back();
+  const int pc = coarsest.padding;
+  coarsest_matrix_.setZero();
+  for (int c = 0; c < coarsest.cell_count; ++c) {
+    coarsest_matrix_(c, c) = coarsest.diagonal[pc + c];
+    for (int d = 0; d < Dim; ++d) {
+      const double t = coarsest.coupling[d][pc + c];
+      if (t != 0.0) {
+        coarsest_matrix_(c, c + coarsest.stride[d]) = -t;
+        coarsest_matrix_(c + coarsest.stride[d], c) = -t;
+      }
+    }
+  }
+  coarsest_factor_.compute(coarsest_matrix_);
+  if (coarsest_factor_.info() != Eigen::Success) {
+    throw cosim::NumericalError(
+        "MultigridPreconditioner: the coarsest pressure operator is not positive definite");
+  }
+}
+
+template <int Dim>
+void MultigridPreconditioner<Dim>::multiply(const Level& level, const Eigen::VectorXd& x,
+                                            Eigen::VectorXd& y) {
+  const int p = level.padding;
+  const int n = level.cell_count;
+  auto out = y.segment(p, n);
+  out = level.diagonal.segment(p, n).cwiseProduct(x.segment(p, n));
+  for (int d = 0; d < Dim; ++d) {
+    const int s = level.stride[d];
+    out -= level.coupling[d].segment(p, n).cwiseProduct(x.segment(p + s, n)) +
+           level.coupling[d].segment(p - s, n).cwiseProduct(x.segment(p - s, n));
+  }
+}
+
+template <int Dim>
+void MultigridPreconditioner<Dim>::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  multiply(levels_.front(), x, y);
+}
+
+template <int Dim>
+void MultigridPreconditioner<Dim>::forward_gauss_seidel(const Level& level,
+                                                        const Eigen::VectorXd& b,
+                                                        Eigen::VectorXd& x) {
+  const int p = level.padding;
+  std::array<const double*, Dim> t;
+  for (int d = 0; d < Dim; ++d) t[d] = level.coupling[d].data();
+  const double* inverse_diagonal = level.inverse_diagonal.data();
+  double* v = x.data();
+  for (int c = p; c < p + level.cell_count; ++c) {
+    double sum = b[c];
+    for (int d = 0; d < Dim; ++d) {
+      const int s = level.stride[d];
+      sum += t[d][c] * v[c + s] + t[d][c - s] * v[c - s];
+    }
+    v[c] = sum * inverse_diagonal[c];
+  }
+}
+
+template <int Dim>
+void MultigridPreconditioner<Dim>::backward_gauss_seidel(const Level& level,
+                                                         const Eigen::VectorXd& b,
+                                                         Eigen::VectorXd& x) {
+  const int p = level.padding;
+  std::array<const double*, Dim> t;
+  for (int d = 0; d < Dim; ++d) t[d] = level.coupling[d].data();
+  const double* inverse_diagonal = level.inverse_diagonal.data();
+  double* v = x.data();
+  for (int c = p + level.cell_count - 1; c >= p; --c) {
+    double sum = b[c];
+    for (int d = 0; d < Dim; ++d) {
+      const int s = level.stride[d];
+      sum += t[d][c] * v[c + s] + t[d][c - s] * v[c - s];
+    }
+    v[c] = sum * inverse_diagonal[c];
+  }
+}
+
+// Solves level `level` approximately for its right_hand_side from a zero
+// solution: smoothing, coarse correction and smoothing, `cycle` times.
+template <int Dim>
+void MultigridPreconditioner<Dim>::cycle(int level) {
+  Level& fine = levels_[static_cast<std::size_t>(level)];
+  const int pf = fine.padding;
+  const int n = fine.cell_count;
+  if (level + 1 == level_count()) {
+    coarsest_vector_ = fine.right_hand_side.segment(pf, n);
+    coarsest_factor_.solveInPlace(coarsest_vector_);
+    fine.solution.segment(pf, n) = coarsest_vector_;
+    return;
+  }
+  Level& coarse = levels_[static_cast<std::size_t>(level) + 1];
+  const int pc = coarse.padding;
+  const int* aggregate = fine.aggregate.data();
+  fine.solution.setZero();
+  for (int visit = 0; visit < options_.cycle; ++visit) {
+    for (int sweep = 0; sweep < options_.smoothing_sweeps; ++sweep) {
+      forward_gauss_seidel(fine, fine.right_hand_side, fine.solution);
+    }
+    multiply(fine, fine.solution, fine.residual);
+    fine.residual.segment(pf, n) =
+        fine.right_hand_side.segment(pf, n) - fine.residual.segment(pf, n);
+    coarse.right_hand_side.setZero();
+    for (int c = 0; c < n; ++c) {
+      coarse.right_hand_side[pc + aggregate[c]] += fine.residual[pf + c];
+    }
+    cycle(level + 1);
+    const double scale = options_.correction_scale;
+    for (int c = 0; c < n; ++c) {
+      fine.solution[pf + c] += scale * coarse.solution[pc + aggregate[c]];
+    }
+    for (int sweep = 0; sweep < options_.smoothing_sweeps; ++sweep) {
+      backward_gauss_seidel(fine, fine.right_hand_side, fine.solution);
+    }
+  }
+}
+
+template <int Dim>
+void MultigridPreconditioner<Dim>::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+  Level& finest = levels_.front();
+  const int p = finest.padding;
+  const int n = finest.cell_count;
+  finest.right_hand_side.segment(p, n) = r.segment(p, n);
+  cycle(0);
+  z.segment(p, n) = finest.solution.segment(p, n);
+}
+
+template class MultigridPreconditioner<1>;
+template class MultigridPreconditioner<2>;
+template class MultigridPreconditioner<3>;
+
+}  // namespace ice
