@@ -42,6 +42,8 @@ typename MultigridPreconditioner<Dim>::Level MultigridPreconditioner<Dim>::make_
   const Eigen::Index size = level.cell_count + 2 * level.padding;
   level.diagonal = Eigen::VectorXd::Zero(size);
   level.inverse_diagonal = Eigen::VectorXd::Zero(size);
+  level.lower_weight = Eigen::VectorXd::Zero(size);
+  level.upper_weight = Eigen::VectorXd::Zero(size);
   level.surplus = Eigen::VectorXd::Zero(size);
   for (auto& coupling : level.coupling) coupling = Eigen::VectorXd::Zero(size);
   level.solution = Eigen::VectorXd::Zero(size);
@@ -114,7 +116,18 @@ void MultigridPreconditioner<Dim>::set_diagonal_from_couplings(Level& level) {
     const int s = level.stride[d];
     diagonal += level.coupling[d].segment(p, n) + level.coupling[d].segment(p - s, n);
   }
-  level.inverse_diagonal.segment(p, n) = diagonal.cwiseInverse();
+  set_inverse_diagonal(level);
+}
+
+template <int Dim>
+void MultigridPreconditioner<Dim>::set_inverse_diagonal(Level& level) {
+  const int p = level.padding;
+  const int n = level.cell_count;
+  level.inverse_diagonal.segment(p, n) = level.diagonal.segment(p, n).cwiseInverse();
+  level.lower_weight.segment(p, n) =
+      level.coupling[0].segment(p - 1, n).cwiseProduct(level.inverse_diagonal.segment(p, n));
+  level.upper_weight.segment(p, n) =
+      level.coupling[0].segment(p, n).cwiseProduct(level.inverse_diagonal.segment(p, n));
 }
 
 template <int Dim>
@@ -128,7 +141,7 @@ void MultigridPreconditioner<Dim>::update() {
     finest.surplus.segment(p, n) -=
         finest.coupling[d].segment(p, n) + finest.coupling[d].segment(p - s, n);
   }
-  finest.inverse_diagonal.segment(p, n) = finest.diagonal.segment(p, n).cwiseInverse();
+  set_inverse_diagonal(finest);
   for (int level = 0; level + 1 < level_count(); ++level) {
     build_coarse_operator(level);
     set_diagonal_from_couplings(levels_[static_cast<std::size_t>(level) + 1]);
@@ -172,41 +185,51 @@ void MultigridPreconditioner<Dim>::multiply(const Eigen::VectorXd& x, Eigen::Vec
   multiply(levels_.front(), x, y);
 }
 
+// Gauss-Seidel row by row along x: the terms of the neighbours off the row
+// (the previous rows already updated, the next ones not) and of the
+// not-yet-updated neighbour along the row are summed vectorised; what is
+// left is the recurrence x_c = y_c + (T_0,c-1 / D_c) x_c-1 along the row.
 template <int Dim>
-void MultigridPreconditioner<Dim>::forward_gauss_seidel(const Level& level,
-                                                        const Eigen::VectorXd& b,
+void MultigridPreconditioner<Dim>::forward_gauss_seidel(Level& level, const Eigen::VectorXd& b,
                                                         Eigen::VectorXd& x) {
   const int p = level.padding;
-  std::array<const double*, Dim> t;
-  for (int d = 0; d < Dim; ++d) t[d] = level.coupling[d].data();
-  const double* inverse_diagonal = level.inverse_diagonal.data();
+  const int nx = level.cells[0];
+  double* scratch = level.residual.data();
+  const double* weight = level.lower_weight.data();
   double* v = x.data();
-  for (int c = p; c < p + level.cell_count; ++c) {
-    double sum = b[c];
-    for (int d = 0; d < Dim; ++d) {
+  for (int row = p; row < p + level.cell_count; row += nx) {
+    auto y = level.residual.segment(row, nx);
+    y = b.segment(row, nx) +
+        level.coupling[0].segment(row, nx).cwiseProduct(x.segment(row + 1, nx));
+    for (int d = 1; d < Dim; ++d) {
       const int s = level.stride[d];
-      sum += t[d][c] * v[c + s] + t[d][c - s] * v[c - s];
+      y += level.coupling[d].segment(row, nx).cwiseProduct(x.segment(row + s, nx)) +
+           level.coupling[d].segment(row - s, nx).cwiseProduct(x.segment(row - s, nx));
     }
-    v[c] = sum * inverse_diagonal[c];
+    y = y.cwiseProduct(level.inverse_diagonal.segment(row, nx));
+    for (int c = row; c < row + nx; ++c) v[c] = scratch[c] + weight[c] * v[c - 1];
   }
 }
 
 template <int Dim>
-void MultigridPreconditioner<Dim>::backward_gauss_seidel(const Level& level,
-                                                         const Eigen::VectorXd& b,
+void MultigridPreconditioner<Dim>::backward_gauss_seidel(Level& level, const Eigen::VectorXd& b,
                                                          Eigen::VectorXd& x) {
   const int p = level.padding;
-  std::array<const double*, Dim> t;
-  for (int d = 0; d < Dim; ++d) t[d] = level.coupling[d].data();
-  const double* inverse_diagonal = level.inverse_diagonal.data();
+  const int nx = level.cells[0];
+  double* scratch = level.residual.data();
+  const double* weight = level.upper_weight.data();
   double* v = x.data();
-  for (int c = p + level.cell_count - 1; c >= p; --c) {
-    double sum = b[c];
-    for (int d = 0; d < Dim; ++d) {
+  for (int row = p + level.cell_count - nx; row >= p; row -= nx) {
+    auto y = level.residual.segment(row, nx);
+    y = b.segment(row, nx) +
+        level.coupling[0].segment(row - 1, nx).cwiseProduct(x.segment(row - 1, nx));
+    for (int d = 1; d < Dim; ++d) {
       const int s = level.stride[d];
-      sum += t[d][c] * v[c + s] + t[d][c - s] * v[c - s];
+      y += level.coupling[d].segment(row, nx).cwiseProduct(x.segment(row + s, nx)) +
+           level.coupling[d].segment(row - s, nx).cwiseProduct(x.segment(row - s, nx));
     }
-    v[c] = sum * inverse_diagonal[c];
+    y = y.cwiseProduct(level.inverse_diagonal.segment(row, nx));
+    for (int c = row + nx - 1; c >= row; --c) v[c] = scratch[c] + weight[c] * v[c + 1];
   }
 }
 
