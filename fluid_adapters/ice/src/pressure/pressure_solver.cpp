@@ -116,6 +116,10 @@ PressureSolver<Dim>::PressureSolver(const CellGrid<Dim>& grid, const Boundaries&
     diagonal_entry_[c] = entry(c, c);
   }
   for (int d = 0; d < Dim; ++d) {
+    face_cells_[d].resize(static_cast<std::size_t>(grid.face_count(d)));
+    for (int f = 0; f < grid.face_count(d); ++f) {
+      face_cells_[d][f] = {grid.lower_cell(d, f), grid.upper_cell(d, f)};
+    }
     lower_upper_entry_[d].assign(static_cast<std::size_t>(grid.face_count(d)), -1);
     upper_lower_entry_[d].assign(static_cast<std::size_t>(grid.face_count(d)), -1);
     for (int f = 0; f < grid.face_count(d); ++f) {
@@ -143,7 +147,7 @@ PressureSolver<Dim>::PressureSolver(const CellGrid<Dim>& grid, const Boundaries&
 
 template <int Dim>
 bool PressureSolver<Dim>::is_fixed_pressure(int direction, int face) const {
-  const int side = grid_.lower_cell(direction, face) < 0 ? 2 * direction : 2 * direction + 1;
+  const int side = face_cells_[direction][face][0] < 0 ? 2 * direction : 2 * direction + 1;
   return boundaries_[side] == PressureBoundary::fixed_pressure;
 }
 
@@ -165,8 +169,7 @@ void PressureSolver<Dim>::assemble(std::span<const double> kappa,
     const double area_over_spacing_dt = grid_.face_area(d) / grid_.spacing()[d] * dt;
     const std::vector<double>& rho = face_density[d];
     for (int f = 0; f < grid_.face_count(d); ++f) {
-      const int lower = grid_.lower_cell(d, f);
-      const int upper = grid_.upper_cell(d, f);
+      const auto [lower, upper] = face_cells_[d][f];
       if (lower >= 0 && upper >= 0) {
         require_positive_density(rho[f], d, f);
         const double t = area_over_spacing_dt / rho[f];
@@ -249,7 +252,7 @@ PressureSolution PressureSolver<Dim>::run_multigrid(std::span<double> pressure_i
   for (int d = 0; d < Dim; ++d) {
     for (int f = 0; f < grid_.face_count(d); ++f) {
       if (lower_upper_entry_[d][f] >= 0) {
-        mg.coupling(d, grid_.lower_cell(d, f)) = -values[lower_upper_entry_[d][f]];
+        mg.coupling(d, face_cells_[d][f][0]) = -values[lower_upper_entry_[d][f]];
       }
     }
   }
@@ -343,8 +346,7 @@ void PressureSolver<Dim>::correct_face_velocities(const FaceField<Dim>& face_den
     const std::vector<double>& rho = face_density[d];
     std::vector<double>& u = face_velocity[d];
     for (int f = 0; f < grid_.face_count(d); ++f) {
-      const int lower = grid_.lower_cell(d, f);
-      const int upper = grid_.upper_cell(d, f);
+      const auto [lower, upper] = face_cells_[d][f];
       double gradient = 0.0;
       if (lower >= 0 && upper >= 0) {
         gradient = (pressure_increment[upper] - pressure_increment[lower]) / dx;

@@ -127,6 +127,8 @@ class PressureSolver {
   Boundaries boundaries_;
   PressureSolverOptions options_;
   Eigen::SparseMatrix<double> matrix_;
+  // Per direction and face: its lower and upper cell (-1 outside).
+  std::array<std::vector<std::array<int, 2>>, static_cast<std::size_t>(Dim)> face_cells_;
   // Positions in matrix_.valuePtr(): per cell its diagonal; per interior
   // face the (lower, upper) and (upper, lower) entries, -1 on the boundary.
   std::vector<std::ptrdiff_t> diagonal_entry_;
