@@ -1,6 +1,8 @@
 #include "ice/pressure/multigrid_preconditioner.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -54,14 +56,33 @@ typename MultigridPreconditioner<Dim>::Level MultigridPreconditioner<Dim>::make_
 
 template <int Dim>
 MultigridPreconditioner<Dim>::MultigridPreconditioner(const CellCounts& cells,
+                                                      const Spacing& spacing,
                                                       MultigridOptions options)
     : options_(options) {
   require_options(options);
+  for (int d = 0; d < Dim; ++d) {
+    if (!(spacing[d] > 0.0) || !std::isfinite(spacing[d])) {
+      throw std::invalid_argument("MultigridPreconditioner: spacing " + std::to_string(spacing[d]) +
+                                  " along direction " + std::to_string(d) +
+                                  " is not positive and finite");
+    }
+  }
   levels_.push_back(make_level(cells));
+  Spacing h = spacing;
   while (levels_.back().cell_count > options.coarsest_cells) {
     Level& fine = levels_.back();
-    CellCounts coarse_cells;
-    for (int d = 0; d < Dim; ++d) coarse_cells[d] = (fine.cells[d] + 1) / 2;
+    double smallest = std::numeric_limits<double>::infinity();
+    for (int d = 0; d < Dim; ++d) {
+      if (fine.cells[d] > 1) smallest = std::min(smallest, h[d]);
+    }
+    CellCounts coarse_cells = fine.cells;
+    for (int d = 0; d < Dim; ++d) {
+      fine.coarsened[d] = fine.cells[d] > 1 && h[d] < 2.0 * smallest;
+      if (fine.coarsened[d]) {
+        coarse_cells[d] = (fine.cells[d] + 1) / 2;
+        h[d] *= 2.0;
+      }
+    }
     if (coarse_cells == fine.cells) break;
     Level coarse = make_level(coarse_cells);
     fine.aggregate.resize(static_cast<std::size_t>(fine.cell_count));
@@ -69,7 +90,7 @@ MultigridPreconditioner<Dim>::MultigridPreconditioner(const CellCounts& cells,
       int coarse_cell = 0;
       for (int d = 0; d < Dim; ++d) {
         const int i = (c / fine.stride[d]) % fine.cells[d];
-        coarse_cell += (i / 2) * coarse.stride[d];
+        coarse_cell += (fine.coarsened[d] ? i / 2 : i) * coarse.stride[d];
       }
       fine.aggregate[static_cast<std::size_t>(c)] = coarse_cell;
     }
@@ -102,7 +123,7 @@ void MultigridPreconditioner<Dim>::build_coarse_operator(int level) {
     for (int c = 0; c + s < n; ++c) {
       if (aggregate[c] != aggregate[c + s]) coarse_t[aggregate[c]] += t[c];
     }
-    coarse.coupling[d] *= options_.coupling_scale;
+    if (fine.coarsened[d]) coarse.coupling[d] *= options_.coupling_scale;
   }
 }
 
@@ -164,6 +185,25 @@ void MultigridPreconditioner<Dim>::update() {
     throw cosim::NumericalError(
         "MultigridPreconditioner: the coarsest pressure operator is not positive definite");
   }
+}
+
+template <int Dim>
+Eigen::SparseMatrix<double> MultigridPreconditioner<Dim>::level_operator(int level) const {
+  const Level& l = levels_.at(static_cast<std::size_t>(level));
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int c = 0; c < l.cell_count; ++c) {
+    entries.emplace_back(c, c, l.diagonal[l.padding + c]);
+    for (int d = 0; d < Dim; ++d) {
+      const double t = l.coupling[d][l.padding + c];
+      if (t != 0.0) {
+        entries.emplace_back(c, c + l.stride[d], -t);
+        entries.emplace_back(c + l.stride[d], c, -t);
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> a(l.cell_count, l.cell_count);
+  a.setFromTriplets(entries.begin(), entries.end());
+  return a;
 }
 
 template <int Dim>

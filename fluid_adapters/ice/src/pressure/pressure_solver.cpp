@@ -134,7 +134,10 @@ PressureSolver<Dim>::PressureSolver(const CellGrid<Dim>& grid, const Boundaries&
   right_hand_side_.resize(n);
   solution_.resize(n);
   if (options.preconditioner == PressurePreconditioner::multigrid) {
-    multigrid_ = std::make_unique<MultigridPreconditioner<Dim>>(grid.cells(), options.multigrid);
+    typename MultigridPreconditioner<Dim>::Spacing spacing;
+    for (int d = 0; d < Dim; ++d) spacing[d] = grid.spacing()[d];
+    multigrid_ =
+        std::make_unique<MultigridPreconditioner<Dim>>(grid.cells(), spacing, options.multigrid);
     for (Eigen::VectorXd* v : {&padded_rhs_, &padded_solution_, &padded_residual_,
                                &padded_preconditioned_, &padded_direction_, &padded_product_}) {
       *v = Eigen::VectorXd::Zero(multigrid_->padded_size());

@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 #include <array>
 #include <vector>
 
@@ -13,10 +14,11 @@ struct MultigridOptions {
   int smoothing_sweeps = 2;
   // Coarse-grid visits per level: 1 V-cycle, 2 W-cycle.
   int cycle = 1;
-  // The piecewise-constant Galerkin operator couples aggregates twice as
-  // strongly as the operator rediscretised on the coarse grid (the sum over
-  // two faces per aggregate face in place of their series coupling); the
-  // coarse couplings are multiplied by this factor (1 = pure Galerkin).
+  // Along a coarsened direction the piecewise-constant Galerkin operator
+  // couples aggregates twice as strongly as the operator rediscretised on
+  // the coarse grid (the sum over two faces per aggregate face in place of
+  // their series coupling); those coarse couplings are multiplied by this
+  // factor (1 = pure Galerkin).
   double coupling_scale = 0.5;
   // The coarse correction is multiplied by this factor (Braess's
   // over-correction; 1 = none).
@@ -34,11 +36,14 @@ struct MultigridOptions {
 // D the diagonal, T_d,c >= 0 the coupling of cell c with its upper
 // neighbour along d (stride s_d; 0 for the last cell of a row).
 //
-// Levels: aggregates of 2 cells per direction (the last aggregate of an odd
-// row holds one), piecewise-constant prolongation P, restriction P^T and
-// coarse operators P^T A P (Galerkin; robust to the 1000:1 density jumps at
-// a water-air interface), with the couplings scaled by
-// MultigridOptions::coupling_scale. One application is a symmetric V-cycle
+// Levels: aggregates of 2 cells along each coarsened direction (the last
+// aggregate of an odd row holds one), piecewise-constant prolongation P,
+// restriction P^T and coarse operators P^T A P (Galerkin; robust to the
+// 1000:1 density jumps at a water-air interface), with the couplings along
+// coarsened directions scaled by MultigridOptions::coupling_scale. A
+// direction is coarsened while its (level) spacing is below twice the
+// smallest one, so stretched cells are first coarsened along their short
+// sides (semi-coarsening) until the level is near isotropic. One application is a symmetric V-cycle
 // (forward Gauss-Seidel down, backward Gauss-Seidel up, the coarsest level
 // solved exactly), so it is a valid conjugate-gradient preconditioner.
 //
@@ -50,9 +55,12 @@ template <int Dim>
 class MultigridPreconditioner {
  public:
   using CellCounts = std::array<int, Dim>;
+  using Spacing = std::array<double, Dim>;
 
-  // Throws std::invalid_argument for a cell count below one or bad options.
-  explicit MultigridPreconditioner(const CellCounts& cells, MultigridOptions options = {});
+  // Throws std::invalid_argument for a cell count below one, a non-positive
+  // spacing or bad options.
+  MultigridPreconditioner(const CellCounts& cells, const Spacing& spacing,
+                          MultigridOptions options = {});
 
   int cell_count() const { return levels_.front().cell_count; }
   int padding() const { return levels_.front().padding; }
@@ -72,6 +80,10 @@ class MultigridPreconditioner {
   // finest operator. Throws cosim::NumericalError when the coarsest operator
   // is not positive definite.
   void update();
+
+  // The operator of `level` (0 finest) as last built by update(), in
+  // unpadded cell indices; for inspection (allocates).
+  Eigen::SparseMatrix<double> level_operator(int level) const;
 
   // y = A x on the finest level (padded vectors).
   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
@@ -100,8 +112,10 @@ class MultigridPreconditioner {
     Eigen::VectorXd right_hand_side;
     // Also the Gauss-Seidel sweeps' scratch.
     Eigen::VectorXd residual;
-    // The coarse cell of each cell (unpadded indices); empty on the coarsest.
+    // The coarse cell of each cell (unpadded indices) and the directions
+    // coarsened to the next level; empty and unused on the coarsest.
     std::vector<int> aggregate;
+    std::array<bool, Dim> coarsened{};
   };
 
   static Level make_level(const CellCounts& cells);
