@@ -97,9 +97,9 @@ MultigridPreconditioner<Dim>::MultigridPreconditioner(const CellCounts& cells,
     levels_.push_back(std::move(coarse));
   }
   const Eigen::Index m = levels_.back().cell_count;
-  coarsest_matrix_ = Eigen::MatrixXd::Zero(m, m);
+  coarsest_matrix_ = Eigen::MatrixXd::Identity(m, m);
   coarsest_vector_ = Eigen::VectorXd::Zero(m);
-  coarsest_factor_ = Eigen::LLT<Eigen::MatrixXd>(m);
+  coarsest_factor_.compute(coarsest_matrix_);  // sizes its storage once
 }
 
 // P^T A P with P piecewise constant: the row sums (kappa V / dt and the
