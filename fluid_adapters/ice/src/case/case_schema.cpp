@@ -109,7 +109,7 @@ Schema numerics_schema() {
                 "Relative residual of conjugate gradients.")
       .optional("max_iterations", Schema::integer().range(1, 1e6).default_value("2000"),
                 "Iterations before a numerical failure (exit 4).")
-      .optional("preconditioner", Schema::one_of({"jacobi", "incomplete_cholesky"}),
+      .optional("preconditioner", Schema::one_of({"multigrid", "jacobi", "incomplete_cholesky"}).default_value("multigrid"),
                 "Preconditioner of conjugate gradients.");
   Schema equilibration = Schema::object("The per-cell pressure equilibration (eqs. 42-43).");
   equilibration

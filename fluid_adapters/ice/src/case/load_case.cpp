@@ -245,9 +245,7 @@ class CaseReader {
       n.pressure.tolerance = p->get<double>("tolerance", n.pressure.tolerance);
       n.pressure.max_iterations = p->get<int>("max_iterations", n.pressure.max_iterations);
       if (auto pc = p->find("preconditioner")) {
-        n.pressure.preconditioner = pc->as<std::string>() == "jacobi"
-                                        ? PressurePreconditioner::jacobi
-                                        : PressurePreconditioner::incomplete_cholesky;
+        n.pressure.preconditioner = pressure_preconditioner_from_name(pc->as<std::string>());
       }
     }
     if (auto e = node->find("equilibration")) {
