@@ -18,6 +18,7 @@
 #include "cosim/io/time_series_writer.hpp"
 #include "ice/case/load_case.hpp"
 #include "ice/case/make_solver.hpp"
+#include "ice/coupling/porous_coupling.hpp"
 #include "ice/io/state_output.hpp"
 
 namespace ice {
@@ -48,11 +49,7 @@ class CaseRun {
       {
         auto scope = summary_.phases().measure("setup");
         build_solver();
-        if (participant_.is_coupled()) {
-          throw cosim::InputError(
-              "ice_fluid does not yet take part in coupled jobs (the MPM <-> ICE pairing is being "
-              "built)");
-        }
+        if (participant_.is_coupled()) coupling_.declare(participant_, *solver_);
         participant_.initialize(0.0, c_.end_time);
         open_outputs();
       }
@@ -112,8 +109,17 @@ class CaseRun {
     using Clock = std::chrono::steady_clock;
     auto last_progress = Clock::now();
     double dt = c_.numerics.initial_time_step;
+    const bool coupled = participant_.is_coupled();
+    std::size_t window_read = 0;
     while (participant_.is_coupling_ongoing()) {
       const double t = participant_.time();
+      if (coupled && participant_.window_index() != window_read) {
+        auto scope = summary_.phases().measure("porous_medium");
+        window_read = participant_.window_index();
+        coupling_.read_medium(participant_, *solver_, window_read == 1);
+        // The fluids laid into the pores are the run's starting totals.
+        if (window_read == 1) record_conserved(true);
+      }
       double limit = solver_->stable_time_step(c_.numerics.cfl, c_.numerics.acoustic);
       limit = std::min({limit, c_.numerics.max_step_growth * dt, participant_.max_time_step()});
       if (c_.numerics.max_time_step > 0.0) limit = std::min(limit, c_.numerics.max_time_step);
@@ -131,6 +137,7 @@ class CaseRun {
         }
         auto scope = summary_.phases().measure("advance");
         report = solver_->advance(dt);
+        if (report.accepted && coupled) coupling_.add_impulse(participant_, dt, *solver_);
         if (report.accepted) break;
         ++rejected_;
         dt *= 0.5 * std::min(1.0, 1.0 / report.courant);
@@ -142,6 +149,9 @@ class CaseRun {
       most_closure_ = std::max(most_closure_, report.volume_closure);
       {
         auto scope = summary_.phases().measure("coupling");
+        if (coupled && dt >= participant_.max_time_step() - tolerance_) {
+          coupling_.write_fields(participant_, *solver_);
+        }
         participant_.advance(dt);
       }
       const double now = participant_.time();
@@ -212,6 +222,7 @@ class CaseRun {
   cosim::RunSummary& summary_;
   cosim::Participant participant_;
   std::unique_ptr<IceSolver<Dim>> solver_;
+  PorousCoupling<Dim> coupling_;
   cosim::OutputSchedule snapshots_;
   cosim::OutputSchedule gauge_times_;
   double tolerance_;

@@ -166,11 +166,19 @@ void IceSolver<Dim>::check_state(const FluidState<Dim>& state) const {
 template <int Dim>
 void IceSolver<Dim>::set_porous_medium(
     std::span<const double> porosity,
-    const std::array<CellField, static_cast<std::size_t>(Dim)>& solid_velocity) {
+    const std::array<CellField, static_cast<std::size_t>(Dim)>& solid_velocity,
+    PorosityChange change) {
   const std::size_t cells = at(grid_.cell_count());
   require(porosity.size() == cells, "porosity needs one value per cell");
   for (const auto& component : solid_velocity) {
     require(component.size() == cells, "solid velocity needs one value per cell");
+  }
+  if (change == PorosityChange::fill_pores) {
+    for (std::size_t c = 0; c < cells; ++c) {
+      const double ratio = porosity[c] / state_.porosity[c];
+      if (!(ratio > 0.0) || !std::isfinite(ratio)) continue;  // check_state reports it
+      for (MaterialState<Dim>& material : state_.materials) material.bulk_density[c] *= ratio;
+    }
   }
   state_.porosity.assign(porosity.begin(), porosity.end());
   state_.solid_velocity = solid_velocity;
@@ -742,11 +750,41 @@ void IceSolver<Dim>::advect_and_update(double dt, StepReport& report) {
     closure = std::max(closure, std::abs(volume - state_.porosity[c]));
   }
   report.volume_closure = closure;
+  move_solid(dt);
   state_.pressure = new_pressure_;
   equilibrate(&report);
   for (std::size_t m = 0; m < n; ++m) {
     MaterialState<Dim>& material = state_.materials[m];
     for (std::size_t c = 0; c < cells; ++c) material.specific_volume[c] = 1.0 / material.density[c];
+  }
+}
+
+// The pores follow the solid within a step: its volume is conserved
+// (incompressible grains), so n_c changes by dt div(phi_s,FC U_s,FC) with the
+// same face fluxes the pressure equation's divergence took (Tran et al.,
+// MPMICE, eq. 107 in conservative form). Without a solid nothing changes.
+template <int Dim>
+void IceSolver<Dim>::move_solid(double dt) {
+  bool solid = false;
+  for (const double n : state_.porosity) solid = solid || n < 1.0;
+  if (!solid) return;
+  std::vector<double>& change = porosity_change_;
+  change.assign(at(grid_.cell_count()), 0.0);
+  for (int d = 0; d < Dim; ++d) {
+    const double factor = dt / grid_.spacing()[d];
+    const CellField& u = state_.solid_velocity[at(d)];
+    for (int f = 0; f < grid_.face_count(d); ++f) {
+      const int lower = grid_.lower_cell(d, f);
+      const int upper = grid_.upper_cell(d, f);
+      if (lower < 0 || upper < 0) continue;
+      const double flux = 0.5 * ((1.0 - state_.porosity[at(lower)]) * u[at(lower)] +
+                                 (1.0 - state_.porosity[at(upper)]) * u[at(upper)]);
+      change[at(lower)] += factor * flux;
+      change[at(upper)] -= factor * flux;
+    }
+  }
+  for (std::size_t c = 0; c < change.size(); ++c) {
+    state_.porosity[c] = std::clamp(state_.porosity[c] + change[c], 1e-3, 1.0);
   }
 }
 

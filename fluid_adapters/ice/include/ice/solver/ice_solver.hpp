@@ -32,6 +32,8 @@ struct IceSolverOptions {
   bool conserve_total_energy = true;
 };
 
+enum class PorosityChange { compress, fill_pores };
+
 struct StepReport {
   bool accepted = true;
   double courant = 0.0;         // max over cells and materials of sum_d |U_FC,d| dt / dx_d
@@ -82,11 +84,14 @@ class IceSolver {
   double time() const { return time_; }
   long steps() const { return steps_; }
 
-  // Sets the porous medium of a coupled run (one value per cell each); the
-  // volume fractions are re-equilibrated to fill the new pores.
-  void set_porous_medium(
-      std::span<const double> porosity,
-      const std::array<CellField, static_cast<std::size_t>(Dim)>& solid_velocity);
+  // Sets the porous medium of a coupled run (one value per cell each).
+  // compress: the fluids keep their mass and are re-equilibrated to fill the
+  // new pores (a solid moving in raises the pore pressure); fill_pores: each
+  // bulk density is scaled by n_new / n_old, keeping the pressure (a run's
+  // first window, when the soil is laid into the fluid).
+  void set_porous_medium(std::span<const double> porosity,
+                         const std::array<CellField, static_cast<std::size_t>(Dim)>& solid_velocity,
+                         PorosityChange change = PorosityChange::compress);
 
   // Adds momentum [kg m/s] to each cell (Dim components per cell,
   // cell-major), e.g. the impulse the coupler's implicit fluid-solid exchange
@@ -134,6 +139,7 @@ class IceSolver {
   void advect_and_update(double dt, StepReport& report);  // eqs. 77-84
   void equilibrate(StepReport* report);                   // eqs. 42-43
 
+  void move_solid(double dt);  // eq. 107
   double face_courant(double dt) const;
   double face_fraction(std::size_t material, int direction, int face) const;
   void check_state(const FluidState<Dim>& state) const;
@@ -179,6 +185,7 @@ class IceSolver {
   std::vector<CellField> volume_;
   std::vector<CellField> kinetic_;
   std::vector<CellField> lagrangian_temperature_;
+  CellField porosity_change_;
   double last_face_rate_ = 0.0;
 };
 
