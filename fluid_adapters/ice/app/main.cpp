@@ -14,14 +14,6 @@ int main(int argc, char** argv) {
        .description = "ice_fluid: multi-material compressible flow with implicit pressure (ICE)",
        .case_kind = "ice_case",
        .help_config = ice::ice_case_help,
-       .run =
-           [](const cosim::SolverCommandLine& line) {
-             ice::RunOptions options;
-             options.config = line.config;
-             options.output = line.output;
-             options.threads = line.threads;
-             options.verbosity = line.verbosity;
-             return ice::run_case(options, line.endpoint);
-           }},
+       .run = ice::run_case},
       argc, argv);
 }

@@ -34,7 +34,7 @@ class CaseRun {
  public:
   using Vector = Eigen::Matrix<double, Dim, 1>;
 
-  CaseRun(const CaseDescription& description, const RunOptions& options,
+  CaseRun(const CaseDescription& description, const cosim::SolverCommandLine& options,
           const cosim::CouplingEndpoint& endpoint, cosim::RunSummary& summary)
       : c_(description),
         options_(options),
@@ -218,7 +218,7 @@ class CaseRun {
   }
 
   const CaseDescription& c_;
-  const RunOptions& options_;
+  const cosim::SolverCommandLine& options_;
   cosim::RunSummary& summary_;
   cosim::Participant participant_;
   std::unique_ptr<IceSolver<Dim>> solver_;
@@ -239,7 +239,7 @@ class CaseRun {
 };
 
 template <int Dim>
-void run_dimension(const CaseDescription& c, const RunOptions& options,
+void run_dimension(const CaseDescription& c, const cosim::SolverCommandLine& options,
                    const cosim::CouplingEndpoint& endpoint, cosim::RunSummary& summary) {
   CaseRun<Dim> run(c, options, endpoint, summary);
   run.run();
@@ -247,7 +247,8 @@ void run_dimension(const CaseDescription& c, const RunOptions& options,
 
 }  // namespace
 
-int run_case(const RunOptions& options, const cosim::CouplingEndpoint& endpoint) {
+int run_case(const cosim::SolverCommandLine& options) {
+  const cosim::CouplingEndpoint& endpoint = options.endpoint;
   cosim::create_output_directory(options.output);
   cosim::init_logging(options.output, "ice_fluid", options.verbosity);
   cosim::RunSummary summary(options.output, "ice_fluid");

@@ -1,20 +1,12 @@
 #pragma once
 
-#include <filesystem>
-
-#include "cosim/io/logging.hpp"
-#include "cosim/participant.hpp"
+#include "cosim/solver_command_line.hpp"
 
 namespace ice {
 
-struct RunOptions {
-  std::filesystem::path config;
-  std::filesystem::path output;
-  int threads = -1;  // -1: the case's `threads`
-  cosim::Verbosity verbosity = cosim::Verbosity::normal;
-};
 
-// Runs an ice_case and writes into options.output (DESIGN.md §6):
+// Runs the ice_case of line.config, standalone or as a participant of a
+// coupled job (line.endpoint), and writes into line.output (DESIGN.md §6):
 //   summary.json   conserved totals per material (mass, momentum, total
 //                  energy) at start and end, steps, wall time by phase,
 //                  metrics (CG iterations, smallest step, rejected steps)
@@ -24,6 +16,6 @@ struct RunOptions {
 //   steps.csv               per snapshot: time, dt, CG iterations, most
 //                           equilibration iterations, volume closure
 // Returns the exit code.
-int run_case(const RunOptions& options, const cosim::CouplingEndpoint& endpoint);
+int run_case(const cosim::SolverCommandLine& line);
 
 }  // namespace ice
