@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <random>
 
 #include "cosim/error.hpp"
@@ -224,6 +225,56 @@ TEST(IceSolver, AddedMomentumIsSharedByMassWithOneVelocityIncrement) {
                 1e-12);
   }
   EXPECT_THROW(solver.add_momentum(std::vector<double>(3, 0.0)), std::invalid_argument);
+}
+
+// A slow shear wave u_x = U cos(pi y / L) between two walls in a viscous
+// gas decays as exp(-nu (pi / L)^2 t) (the flow is incompressible to
+// O(Ma^2)); heat conduction in a closed box keeps the total energy.
+TEST(IceSolver, ViscousShearWaveDecaysAndConductionKeepsTheEnergy) {
+  const int cells = 32;
+  const CellGrid<2> grid(CellGrid<2>::Point(0.0, 0.0), CellGrid<2>::Point(0.1, 1.0 / cells),
+                         {1, cells});
+  FluidState<2> state;
+  state.materials.resize(1);
+  MaterialState<2>& gas = state.materials[0];
+  gas.bulk_density = make_cell_field(grid, 1.2);
+  gas.temperature = make_cell_field(grid, 300.0);
+  gas.velocity = {make_cell_field(grid), make_cell_field(grid)};
+  for (int c = 0; c < cells; ++c) {
+    const double y = grid.cell_centre(c)[1];
+    gas.velocity[0][static_cast<std::size_t>(c)] = 0.1 * std::cos(std::numbers::pi * y);
+    gas.temperature[static_cast<std::size_t>(c)] = 300.0 + 20.0 * std::cos(std::numbers::pi * y);
+  }
+  const double mu = 0.012;  // nu = 0.01 m2/s
+  IceSolver<2> solver(grid, {{"air", air(), mu, 0.5}}, ExchangeCoefficients::none(1), {},
+                      IceSolver<2>::Vector::Zero(), state);
+  const auto before = solver.totals();
+  const double end = 2.0;
+  while (solver.time() < end - 1e-12) {
+    ASSERT_TRUE(
+        solver.advance(std::min(0.5 * solver.stable_time_step(0.4, false), end - solver.time()))
+            .accepted);
+  }
+  const auto after = solver.totals();
+  const double expected = std::exp(-mu / 1.2 * std::numbers::pi * std::numbers::pi * end);
+  double amplitude = 0.0;
+  for (int c = 0; c < cells; ++c) {
+    const double y = grid.cell_centre(c)[1];
+    amplitude += solver.state().materials[0].velocity[0][static_cast<std::size_t>(c)] *
+                 std::cos(std::numbers::pi * y);
+  }
+  amplitude *= 2.0 / cells / 0.1;
+  const double energy_change = std::abs(after[0].internal_energy + after[0].kinetic_energy -
+                                        before[0].internal_energy - before[0].kinetic_energy) /
+                               (before[0].internal_energy + before[0].kinetic_energy);
+  fmt::print(
+      "shear wave amplitude {:.5f} vs exp(-nu k^2 t) {:.5f}; energy change with conduction "
+      "{:.1e}\n",
+      amplitude, expected, energy_change);
+  EXPECT_NEAR(amplitude, expected, 0.01 * expected);
+  // Conduction and the viscous fluxes conserve; the viscous dissipation
+  // (kinetic energy ~1e-3 J/m of ~2e5) is not returned as heat.
+  EXPECT_LE(energy_change, 1e-7);
 }
 
 TEST(IceSolver, RefusesAbsentMaterialsAndBadSizes) {

@@ -75,6 +75,7 @@ std::unique_ptr<IceSolver<Dim>> make_solver(const CaseDescription& c) {
   options.limiter = c.numerics.limiter;
   options.pressure = c.numerics.pressure;
   options.equilibration = c.numerics.equilibration;
+  options.smagorinsky_constant = c.numerics.smagorinsky_constant;
   return std::make_unique<IceSolver<Dim>>(grid, c.materials, c.exchange, sides, gravity,
                                           initial_state<Dim>(c, grid, gravity), options);
 }

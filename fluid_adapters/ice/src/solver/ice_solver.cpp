@@ -62,7 +62,8 @@ IceSolver<Dim>::IceSolver(const CellGrid<Dim>& grid, std::vector<FluidMaterial> 
       options_(options),
       state_(std::move(state)),
       pressure_solver_(grid, pressure_boundaries<Dim>(sides), options.pressure),
-      advector_(grid, options.limiter) {
+      advector_(grid, options.limiter),
+      diffusion_(grid, sides) {
   const std::size_t n = materials_.size();
   const std::size_t cells = at(grid_.cell_count());
   require(n >= 1, "at least one material is needed");
@@ -85,6 +86,10 @@ IceSolver<Dim>::IceSolver(const CellGrid<Dim>& grid, std::vector<FluidMaterial> 
   }
   for (const FluidMaterial& material : materials_) {
     require(material.eos != nullptr, "material '" + material.name + "' has no equation of state");
+    require(material.viscosity >= 0.0 && material.thermal_conductivity >= 0.0,
+            "material '" + material.name + "' has a negative viscosity or conductivity");
+    viscous_ = viscous_ || material.viscosity > 0.0 || options_.smagorinsky_constant > 0.0;
+    conducting_ = conducting_ || material.thermal_conductivity > 0.0;
     eos_.push_back(material.eos.get());
   }
   if (state_.porosity.empty()) state_.porosity.assign(cells, 1.0);
@@ -259,7 +264,24 @@ double IceSolver<Dim>::stable_time_step(double courant, bool acoustic) const {
     }
     rate = std::max(rate, cell_rate);
   }
-  return rate > 0.0 ? courant / rate : std::numeric_limits<double>::infinity();
+  double step = rate > 0.0 ? courant / rate : std::numeric_limits<double>::infinity();
+  if (viscous_ || conducting_) {
+    // Explicit viscous and conductive fluxes: the largest kinematic viscosity
+    // and thermal diffusivity among the materials filling at least 1 % of a cell.
+    double diffusivity = 0.0;
+    for (std::size_t m = 0; m < count(); ++m) {
+      const MaterialState<Dim>& material = state_.materials[m];
+      for (std::size_t c = 0; c < material.density.size(); ++c) {
+        if (material.volume_fraction[c] < 0.01) continue;
+        const double rho = material.density[c];
+        diffusivity =
+            std::max({diffusivity, materials_[m].viscosity / rho,
+                      materials_[m].thermal_conductivity / (rho * eos_[m]->specific_heat())});
+      }
+    }
+    step = std::min(step, diffusion_time_step(grid_, diffusivity));
+  }
+  return step;
 }
 
 template <int Dim>
@@ -281,11 +303,13 @@ StepReport IceSolver<Dim>::advance(double dt) {
   last_face_rate_ = report.courant / dt;
   compute_face_pressure();
   compute_lagrangian_values(dt);
+  if (viscous_) add_viscous_stress(dt);
   exchange_cell_momentum(dt);
   if (!compute_lagrangian_energy(dt)) {
     report.accepted = false;
     return report;
   }
+  if (conducting_) add_heat_conduction(dt);
   exchange_cell_energy(dt);
   compute_lagrangian_specific_volume(dt);
   advect_and_update(dt, report);
@@ -785,6 +809,39 @@ void IceSolver<Dim>::move_solid(double dt) {
   }
   for (std::size_t c = 0; c < change.size(); ++c) {
     state_.porosity[c] = std::clamp(state_.porosity[c] + change[c], 1e-3, 1.0);
+  }
+}
+
+// Newtonian stress (molecular plus Smagorinsky's eddy viscosity) of each
+// material from its own velocity, as conservative face fluxes.
+template <int Dim>
+void IceSolver<Dim>::add_viscous_stress(double dt) {
+  for (std::size_t m = 0; m < count(); ++m) {
+    const MaterialState<Dim>& material = state_.materials[m];
+    if (options_.smagorinsky_constant > 0.0) {
+      viscosity_.resize(material.density.size());
+      smagorinsky_viscosity(grid_, material.velocity, material.density,
+                            options_.smagorinsky_constant, std::span<double>(viscosity_));
+      for (double& mu : viscosity_) mu += materials_[m].viscosity;
+    } else {
+      if (materials_[m].viscosity == 0.0) continue;
+      viscosity_.assign(material.density.size(), materials_[m].viscosity);
+    }
+    diffusion_.add_viscous_momentum(viscosity_, material.volume_fraction, material.velocity, dt,
+                                    momentum_[m]);
+  }
+}
+
+// Conduction of each material's heat, per unit volume (energy_ holds
+// rhobar c_v T).
+template <int Dim>
+void IceSolver<Dim>::add_heat_conduction(double dt) {
+  for (std::size_t m = 0; m < count(); ++m) {
+    if (materials_[m].thermal_conductivity == 0.0) continue;
+    const MaterialState<Dim>& material = state_.materials[m];
+    viscosity_.assign(material.density.size(), materials_[m].thermal_conductivity);
+    diffusion_.add_heat_conduction(viscosity_, material.volume_fraction, material.temperature, dt,
+                                   energy_[m]);
   }
 }
 

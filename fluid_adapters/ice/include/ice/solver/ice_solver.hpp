@@ -7,6 +7,7 @@
 
 #include "ice/advection/advector.hpp"
 #include "ice/advection/limiter.hpp"
+#include "ice/diffusion/diffusion.hpp"
 #include "ice/eos/pressure_equilibration.hpp"
 #include "ice/grid/cell_grid.hpp"
 #include "ice/grid/grid_fields.hpp"
@@ -30,6 +31,8 @@ struct IceSolverOptions {
   // internal-energy form otherwise under-heats shocks: Sod's post-shock
   // density comes out 3 % high at 400 cells).
   bool conserve_total_energy = true;
+  // Smagorinsky's C_s (Tran et al., MPMICE, eqs. 17-19); 0: no turbulence model.
+  double smagorinsky_constant = 0.0;
 };
 
 enum class PorosityChange { compress, fill_pores };
@@ -139,7 +142,9 @@ class IceSolver {
   void advect_and_update(double dt, StepReport& report);  // eqs. 77-84
   void equilibrate(StepReport* report);                   // eqs. 42-43
 
-  void move_solid(double dt);  // eq. 107
+  void move_solid(double dt);           // eq. 107
+  void add_viscous_stress(double dt);   // eq. 59's Delta(mU)_tau
+  void add_heat_conduction(double dt);  // eq. 60's div q
   double face_courant(double dt) const;
   double face_fraction(std::size_t material, int direction, int face) const;
   void check_state(const FluidState<Dim>& state) const;
@@ -161,6 +166,10 @@ class IceSolver {
 
   PressureSolver<Dim> pressure_solver_;
   Advector<Dim> advector_;
+  Diffusion<Dim> diffusion_;
+  bool viscous_ = false;
+  bool conducting_ = false;
+  CellField viscosity_;
   EquilibratedCells equilibrium_;
 
   // Per material: adiabatic compressibility kappa_s per cell, face
