@@ -91,22 +91,6 @@ typename CellGrid<Dim>::CellIndex CellGrid<Dim>::face_ijk(int normal, int face) 
 // i = (f / s) mod (n + 1), s = stride(d), n = cells[d]; the cell i of that
 // row is f - s outer.
 template <int Dim>
-int CellGrid<Dim>::lower_cell(int normal, int face) const {
-  const int s = stride_[normal];
-  const int n = cells_[normal];
-  const int i = (face / s) % (n + 1);
-  return i == 0 ? -1 : face - s * (face / (s * (n + 1))) - s;
-}
-
-template <int Dim>
-int CellGrid<Dim>::upper_cell(int normal, int face) const {
-  const int s = stride_[normal];
-  const int n = cells_[normal];
-  const int i = (face / s) % (n + 1);
-  return i == n ? -1 : face - s * (face / (s * (n + 1)));
-}
-
-template <int Dim>
 int CellGrid<Dim>::neighbour(int cell, int direction, int side) const {
   const int s = stride_[direction];
   const int i = (cell / s) % cells_[direction] + side;

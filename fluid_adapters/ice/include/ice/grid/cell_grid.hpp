@@ -50,8 +50,18 @@ class CellGrid {
   }
   int upper_face(int normal, int cell) const { return lower_face(normal, cell) + stride_[normal]; }
   // The cells on either side of a face; -1 outside the domain.
-  int lower_cell(int normal, int face) const;
-  int upper_cell(int normal, int face) const;
+  int lower_cell(int normal, int face) const {
+    const int s = stride_[normal];
+    const int n = cells_[normal];
+    const int i = (face / s) % (n + 1);
+    return i == 0 ? -1 : face - s * (face / (s * (n + 1))) - s;
+  }
+  int upper_cell(int normal, int face) const {
+    const int s = stride_[normal];
+    const int n = cells_[normal];
+    const int i = (face / s) % (n + 1);
+    return i == n ? -1 : face - s * (face / (s * (n + 1)));
+  }
   // The neighbour of `cell` one step along `direction` (side -1 or +1); -1
   // outside the domain.
   int neighbour(int cell, int direction, int side) const;
