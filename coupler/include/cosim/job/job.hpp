@@ -83,7 +83,24 @@ inline constexpr const char* fluid_bulk_density = "fluid_bulk_density";  // rho_
 // read by both: the momentum each receives over the window [kg m/s]
 // (extensive, window integral, one component per dimension)
 inline constexpr const char* impulse = "momentum_exchange_impulse";
+// read by the fluid when it solves the exchange inside its own steps
+// (`solved_by: fluid`): the law's K per cell [kg m^-3 s^-1]
+inline constexpr const char* drag_coefficient = "drag_coefficient";
 }  // namespace momentum_exchange_fields
+
+// The implicit energy exchange between a fluid and a solid (Tran et al.,
+// MPMICE, eq. 23), solved by the coupler once per window like the momentum
+// exchange.
+namespace energy_exchange_fields {
+// written by the solid and by the fluid
+inline constexpr const char* solid_temperature = "solid_temperature";      // T_s [K]
+inline constexpr const char* solid_heat_capacity = "solid_heat_capacity";  // rho_bar_s c_s [J/(m^3 K)]
+inline constexpr const char* fluid_temperature = "fluid_temperature";      // T_f [K]
+inline constexpr const char* fluid_heat_capacity = "fluid_heat_capacity";  // sum rho_bar_f c_v [J/(m^3 K)]
+// read by both: the heat each receives over the window [J] (extensive,
+// window integral, one component)
+inline constexpr const char* heat = "heat_exchange_energy";
+}  // namespace energy_exchange_fields
 
 struct Job {
   std::filesystem::path file;
