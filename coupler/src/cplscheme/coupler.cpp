@@ -4,10 +4,10 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <thread>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <numeric>
+#include <thread>
 
 #include "admission.hpp"
 #include "cosim/com/handshake.hpp"
@@ -344,8 +344,12 @@ struct Coupler::Impl {
     auto impulses = momentum_exchange->run(dt, side_of(spec.fluid), side_of(spec.solid), operators);
     max_momentum_balance_error =
         std::max(max_momentum_balance_error, impulses.momentum_balance_error);
-    out[spec.fluid][job::momentum_exchange_fields::impulse] =
-        std::make_shared<const std::vector<double>>(std::move(impulses.fluid));
+    if (spec.solved_by == job::ExchangeSolver::fluid)
+      out[spec.fluid][job::momentum_exchange_fields::drag_coefficient] =
+          std::make_shared<const std::vector<double>>(std::move(impulses.drag_coefficient));
+    else
+      out[spec.fluid][job::momentum_exchange_fields::impulse] =
+          std::make_shared<const std::vector<double>>(std::move(impulses.fluid));
     out[spec.solid][job::momentum_exchange_fields::impulse] =
         std::make_shared<const std::vector<double>>(std::move(impulses.solid));
   }

@@ -66,13 +66,22 @@ void MomentumExchangeStep::check_declarations(const job::Job& job, const com::He
     check(solid, solid.writes, f::permeability, 1, intensive, state);
   check(fluid, fluid.writes, f::fluid_velocity, dim, intensive, state);
   check(fluid, fluid.writes, f::fluid_bulk_density, 1, intensive, state);
-  for (const com::Hello* side : {&fluid, &solid})
-    check(*side, side->reads, f::impulse, dim, Quantity::extensive, TimeTreatment::integral);
+  const auto extensive = Quantity::extensive;
+  const auto integral = TimeTreatment::integral;
+  check(solid, solid.reads, f::impulse, dim, extensive, integral);
+  if (spec_.solved_by == job::ExchangeSolver::coupler) {
+    check(fluid, fluid.reads, f::impulse, dim, extensive, integral);
+  } else {
+    check(fluid, fluid.reads, f::drag_coefficient, 1, intensive, state);
+    check(fluid, fluid.writes, f::impulse, dim, extensive, integral);
+  }
 }
 
 MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const PhaseSide& fluid,
                                                          const PhaseSide& solid,
                                                          OperatorCache& operators) const {
+  if (spec_.solved_by == job::ExchangeSolver::fluid)
+    return run_in_fluid(window, fluid, solid, operators);
   const PhaseSide& owner = spec_.mesh_owner == spec_.fluid ? fluid : solid;
   const Mesh& exchange_mesh = mesh_of(owner, spec_.mesh);
   const std::size_t exchange_version = version_of(owner, spec_.mesh);
@@ -122,6 +131,76 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const Ph
   for (double j : out.fluid) {
     net += j;
     scale += std::abs(j);
+  }
+  for (double j : out.solid) net += j;
+  out.momentum_balance_error = scale > 0.0 ? std::abs(net) / scale : 0.0;
+  return out;
+}
+
+MomentumExchangeStep::Impulses MomentumExchangeStep::run_in_fluid(double window,
+                                                                  const PhaseSide& fluid,
+                                                                  const PhaseSide& solid,
+                                                                  OperatorCache& operators) const {
+  const PhaseSide& owner = spec_.mesh_owner == spec_.fluid ? fluid : solid;
+  const Mesh& exchange_mesh = mesh_of(owner, spec_.mesh);
+  const std::size_t exchange_version = version_of(owner, spec_.mesh);
+  const int dim = exchange_mesh.dimension();
+  const std::size_t cells = exchange_mesh.size();
+
+  auto consistent = [&](const std::string& key, const Mesh& from, std::size_t from_version,
+                        const Mesh& to, std::size_t to_version) -> const mapping::Operator& {
+    return operators.get(key, from, from_version, to, to_version, mapping::Constraint::consistent,
+                         mapping::Kernel::linear);
+  };
+  auto on_exchange_mesh = [&](const PhaseSide& side, const char* field, int components) {
+    const std::string& mesh = side.spec->writes.at(field);
+    return consistent(fmt::format("momentum:{}.{}->exchange", side.spec->name, mesh),
+                      mesh_of(side, mesh), version_of(side, mesh), exchange_mesh, exchange_version)
+        .apply(side.written->at(field), components);
+  };
+  const auto phi_s = on_exchange_mesh(solid, f::solid_fraction, 1);
+  const auto u_s = on_exchange_mesh(solid, f::solid_velocity, dim);
+  const auto rho_s = on_exchange_mesh(solid, f::solid_bulk_density, 1);
+  const auto u_f = on_exchange_mesh(fluid, f::fluid_velocity, dim);
+  const auto rho_f = on_exchange_mesh(fluid, f::fluid_bulk_density, 1);
+  std::vector<double> grain, permeability;
+  if (law_->cell_input() == exchange::CellInput::grain_size)
+    grain = on_exchange_mesh(solid, f::grain_size, 1);
+  if (law_->cell_input() == exchange::CellInput::permeability)
+    permeability = on_exchange_mesh(solid, f::permeability, 1);
+
+  // K from the law with the window-end fields (the exchange itself, whose
+  // increments are discarded, checks every input as in coupler mode).
+  std::vector<double> volume(cells);
+  for (std::size_t c = 0; c < cells; ++c) volume[c] = exchange_mesh.control_volume(c);
+  const std::size_t n = cells * static_cast<std::size_t>(dim);
+  std::vector<double> du_f(n), du_s(n), j_f(n), j_s(n), drag(cells);
+  exchange::exchange_two_phase(*law_, dim, window, volume, {rho_f, u_f}, {rho_s, u_s},
+                               {phi_s, grain, permeability}, {du_f, du_s, j_f, j_s, drag});
+  for (double& k : drag) k = std::min(k, impermeable_drag);
+
+  Impulses out;
+  const std::string& drag_mesh = fluid.spec->reads.at(f::drag_coefficient);
+  out.drag_coefficient =
+      consistent(fmt::format("momentum:exchange->{}.{}", fluid.spec->name, drag_mesh),
+                 exchange_mesh, exchange_version, mesh_of(fluid, drag_mesh),
+                 version_of(fluid, drag_mesh))
+          .apply(drag, 1);
+
+  const std::string& from_mesh = fluid.spec->writes.at(f::impulse);
+  const std::string& to_mesh = solid.spec->reads.at(f::impulse);
+  const std::vector<double>& given = fluid.written->at(f::impulse);
+  out.solid = operators
+                  .get(fmt::format("momentum:{}.{}->{}.{}", fluid.spec->name, from_mesh,
+                                   solid.spec->name, to_mesh),
+                       mesh_of(fluid, from_mesh), version_of(fluid, from_mesh),
+                       mesh_of(solid, to_mesh), version_of(solid, to_mesh),
+                       mapping::Constraint::conservative, mapping::Kernel::linear)
+                  .apply(given, dim);
+  double scale = 0.0, net = 0.0;
+  for (double j : given) {
+    scale += std::abs(j);
+    net -= j;
   }
   for (double j : out.solid) net += j;
   out.momentum_balance_error = scale > 0.0 ? std::abs(net) / scale : 0.0;

@@ -27,6 +27,10 @@ struct PhaseSide {
 // mapped consistently onto the exchange mesh, the 2x2 exchange is solved per
 // cell with beta = window K / rho_bar, and the momentum each phase receives
 // is mapped conservatively back to it. Momentum is conserved to round-off.
+// With `solved_by: fluid` the step only evaluates K on the exchange mesh for
+// the fluid (mapped consistently to its `drag_coefficient`) and hands the
+// momentum the fluid gave the solid over the window (its written
+// `momentum_exchange_impulse`) conservatively to the solid.
 class MomentumExchangeStep {
  public:
   MomentumExchangeStep(const job::MomentumExchangeSpec& spec, const std::string& job_file);
@@ -40,11 +44,23 @@ class MomentumExchangeStep {
     std::vector<double> fluid;            // on the fluid's impulse mesh, dim per element [kg m/s]
     std::vector<double> solid;            // on the solid's impulse mesh
     double momentum_balance_error = 0.0;  // |sum fluid + sum solid| / sum |fluid|
+    // solved_by fluid: K on the fluid's drag_coefficient mesh (`fluid` stays
+    // empty), and the balance error compares what the solid receives with what
+    // the fluid wrote.
+    std::vector<double> drag_coefficient;
   };
   Impulses run(double window, const PhaseSide& fluid, const PhaseSide& solid,
                OperatorCache& operators) const;
 
+  // The largest K the fluid is sent: the impermeable limit of Tran et al.,
+  // MPMICE (K = 1e15 for a solid without pores), which keeps every value
+  // finite where the law gives +infinity.
+  static constexpr double impermeable_drag = 1.0e15;
+
  private:
+  Impulses run_in_fluid(double window, const PhaseSide& fluid, const PhaseSide& solid,
+                        OperatorCache& operators) const;
+
   const job::MomentumExchangeSpec& spec_;
   std::string job_file_;
   std::unique_ptr<exchange::DragLaw> law_;

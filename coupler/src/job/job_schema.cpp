@@ -84,7 +84,12 @@ Schema momentum_exchange_schema() {
       .required("mesh", Schema::string().non_empty(),
                 "Exchange mesh, as <participant>.<mesh> (usually the fluid's grid).")
       .required("drag", Schema::any(),
-                "Drag law: {law: kozeny_carman | forchheimer | beetstra | constant, ...}.");
+                "Drag law: {law: kozeny_carman | forchheimer | beetstra | constant, ...}.")
+      .optional("solved_by", Schema::one_of({"coupler", "fluid"}).default_value("coupler"),
+                "coupler: the exchange is solved once per window and both phases read "
+                "momentum_exchange_impulse; fluid: the fluid solves it in each of its steps "
+                "with the drag_coefficient the coupler sends, and writes the momentum the "
+                "solid receives as momentum_exchange_impulse.");
   return Schema::any_of({Schema::one_of({"none"}), s});
 }
 

@@ -124,7 +124,9 @@ void check_exchanges(Job& job, const config::Node& root) {
 void check_reads_provided(const Job& job, const config::Node& root) {
   for (const auto& p : job.participants)
     for (const auto& [field, mesh] : p.reads) {
-      if (field == momentum_exchange_fields::impulse && job.momentum_exchange) continue;
+      if (job.momentum_exchange && (field == momentum_exchange_fields::impulse ||
+                                    field == momentum_exchange_fields::drag_coefficient))
+        continue;
       const bool provided = std::any_of(job.exchanges.begin(), job.exchanges.end(), [&](auto& x) {
         return x.to == p.name && x.field == field;
       });
@@ -159,6 +161,8 @@ MomentumExchangeSpec read_momentum_exchange(const Job& job, const config::Node& 
     m["mesh"].fail(fmt::format("participant '{}' has no mesh '{}'", spec.mesh_owner, spec.mesh));
   const int dim = exchange_mesh->second.dim;
   spec.drag = m["drag"].yaml();
+  if (auto by = m.find("solved_by"); by && by->as<std::string>() == "fluid")
+    spec.solved_by = ExchangeSolver::fluid;
   const auto law = exchange::make_drag_law(spec.drag, spec.drag_key_path, job.file.string());
 
   auto require = [&](const ParticipantSpec& p, const std::map<std::string, std::string>& fields,
@@ -181,8 +185,21 @@ MomentumExchangeSpec read_momentum_exchange(const Job& job, const config::Node& 
     require(*solid, solid->writes, f::permeability, "write");
   for (const char* field : {f::fluid_velocity, f::fluid_bulk_density})
     require(*fluid, fluid->writes, field, "write");
-  require(*fluid, fluid->reads, f::impulse, "read");
   require(*solid, solid->reads, f::impulse, "read");
+  if (spec.solved_by == ExchangeSolver::coupler) {
+    require(*fluid, fluid->reads, f::impulse, "read");
+    if (fluid->reads.count(f::drag_coefficient))
+      m.fail(fmt::format("participant '{}' reads '{}', which only `solved_by: fluid` sends",
+                         fluid->name, f::drag_coefficient));
+  } else {
+    require(*fluid, fluid->reads, f::drag_coefficient, "read");
+    require(*fluid, fluid->writes, f::impulse, "write");
+    if (fluid->reads.count(f::impulse))
+      m["solved_by"].fail(
+          fmt::format("with `solved_by: fluid` participant '{}' writes '{}' (the momentum the "
+                      "solid receives) and does not read it",
+                      fluid->name, f::impulse));
+  }
   return spec;
 }
 

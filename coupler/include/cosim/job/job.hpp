@@ -56,17 +56,30 @@ struct ZmqSpec {
   bool allow_non_loopback = false;
 };
 
-// The implicit momentum exchange between a fluid and a porous solid, solved
-// by the coupler once per window on the cells of one participant's mesh
-// (DESIGN.md §4). The phases' fields have fixed names (see
-// momentum_exchange_fields).
+// Who solves the implicit momentum exchange of a fluid and a porous solid:
+//   coupler  once per window on the exchange mesh; both phases read the
+//            momentum they receive (DESIGN.md §4);
+//   fluid    the fluid, inside each of its own steps (Tran et al., MPMICE,
+//            eqs. 48 and 67-68 with the solid as one of the materials): the
+//            coupler evaluates the drag law once per window and sends K as
+//            `drag_coefficient`; the fluid writes the momentum the solid
+//            receives as `momentum_exchange_impulse`, which the coupler maps
+//            conservatively to the solid. The drag is then implicit at the
+//            fluid's time step (Darcy flow and the pressure it needs are right
+//            at any window length) instead of once per window.
+enum class ExchangeSolver { coupler, fluid };
+
+// The implicit momentum exchange between a fluid and a porous solid on the
+// cells of one participant's mesh (DESIGN.md §4). The phases' fields have
+// fixed names (see momentum_exchange_fields).
 struct MomentumExchangeSpec {
   std::string fluid;
   std::string solid;
   std::string mesh_owner;  // participant whose mesh is the exchange mesh
   std::string mesh;
-  YAML::Node drag;         // the drag law's map, checked by exchange::make_drag_law
+  YAML::Node drag;  // the drag law's map, checked by exchange::make_drag_law
   std::string drag_key_path = "momentum_exchange.drag";
+  ExchangeSolver solved_by = ExchangeSolver::coupler;
   SourceLocation where;
 };
 
@@ -75,8 +88,8 @@ namespace momentum_exchange_fields {
 inline constexpr const char* solid_fraction = "solid_fraction";          // phi_s [1]
 inline constexpr const char* solid_velocity = "solid_velocity";          // U_s [m/s]
 inline constexpr const char* solid_bulk_density = "solid_bulk_density";  // rho_bar_s [kg/m^3]
-inline constexpr const char* grain_size = "grain_size";                  // [m], laws reading it per cell
-inline constexpr const char* permeability = "permeability";              // [m^2], idem
+inline constexpr const char* grain_size = "grain_size";      // [m], laws reading it per cell
+inline constexpr const char* permeability = "permeability";  // [m^2], idem
 // written by the fluid
 inline constexpr const char* fluid_velocity = "fluid_velocity";          // U_f [m/s]
 inline constexpr const char* fluid_bulk_density = "fluid_bulk_density";  // rho_bar_f [kg/m^3]
@@ -93,10 +106,12 @@ inline constexpr const char* drag_coefficient = "drag_coefficient";
 // exchange.
 namespace energy_exchange_fields {
 // written by the solid and by the fluid
-inline constexpr const char* solid_temperature = "solid_temperature";      // T_s [K]
-inline constexpr const char* solid_heat_capacity = "solid_heat_capacity";  // rho_bar_s c_s [J/(m^3 K)]
-inline constexpr const char* fluid_temperature = "fluid_temperature";      // T_f [K]
-inline constexpr const char* fluid_heat_capacity = "fluid_heat_capacity";  // sum rho_bar_f c_v [J/(m^3 K)]
+inline constexpr const char* solid_temperature = "solid_temperature";  // T_s [K]
+inline constexpr const char* solid_heat_capacity =
+    "solid_heat_capacity";                                             // rho_bar_s c_s [J/(m^3 K)]
+inline constexpr const char* fluid_temperature = "fluid_temperature";  // T_f [K]
+inline constexpr const char* fluid_heat_capacity =
+    "fluid_heat_capacity";  // sum rho_bar_f c_v [J/(m^3 K)]
 // read by both: the heat each receives over the window [J] (extensive,
 // window integral, one component)
 inline constexpr const char* heat = "heat_exchange_energy";
@@ -113,7 +128,7 @@ struct Job {
   ZmqSpec zmq;
   com::Extrapolation extrapolation = com::Extrapolation::constant;
   double window_timeout_s = 600.0;
-  double output_every = 0.0;  // 0: no snapshots of the exchanged fields
+  double output_every = 0.0;                  // 0: no snapshots of the exchanged fields
   std::vector<ParticipantSpec> participants;  // in file order
   std::vector<ExchangeSpec> exchanges;
   std::optional<MomentumExchangeSpec> momentum_exchange;
