@@ -120,7 +120,8 @@ Schema body_schema() {
                 "regular: cell-aligned lattice; r2: R2 quasi-random sequence.")
       .optional("initial_velocity", coordinates().unit("m/s").default_value("0"),
                 "Velocity at t = 0.")
-      .optional("porous", porous_schema(), "Porous medium (coupled with a fluid).")
+      .optional("porous", porous_schema(),
+                "Porous medium (coupled with a fluid); a rigid body's pores keep their porosity.")
       .optional("geostatic", geostatic_schema(), "Geostatic initial stress.");
   return body;
 }
@@ -223,8 +224,9 @@ Schema mpm_case_schema() {
                 "Gravity grows linearly from zero over this time.")
       .optional("damping", Schema::number().range(0.0, 1.0).default_value("0"),
                 "Local non-viscous damping coefficient.")
-      .required("materials", Schema::map_of(Schema::any()).length(1, unlimited),
-                "Named materials, each a mapping with a `type` (models listed below).")
+      .optional("materials", Schema::map_of(Schema::any()),
+                "Named materials, each a mapping with a `type` (models listed below); needed by "
+                "every deformable body.")
       .required("bodies", Schema::sequence(body_schema()).length(1, unlimited), "The bodies.")
       .optional("contact", contact_schema(), "Contact between bodies.")
       .optional("boundaries", boundaries_schema(), "Grid faces.")

@@ -106,7 +106,7 @@ class CaseReader {
     if (auto g = root_.find("gravity")) c_.gravity = read_vector(*g, dim_);
     c_.gravity_ramp_time = root_.get<double>("gravity_ramp_time", 0.0);
     c_.damping = root_.get<double>("damping", 0.0);
-    read_materials(root_["materials"]);
+    if (auto materials = root_.find("materials")) read_materials(*materials);
     const Node bodies = root_["bodies"];
     for (const Node& body : bodies.items()) read_body(body);
     if (auto contact = root_.find("contact")) read_contact(*contact);
@@ -197,7 +197,6 @@ class CaseReader {
       const auto density = node.find("density");
       if (!density) node.fail(fmt::format("rigid body '{}' needs a `density`", body.name));
       body.density_override = density->as<double>();
-      if (auto porous = node.find("porous")) porous->fail_at_key("a rigid body cannot be porous");
       if (auto geostatic = node.find("geostatic"))
         geostatic->fail_at_key("a rigid body has no geostatic stress");
     }

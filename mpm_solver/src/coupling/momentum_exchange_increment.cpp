@@ -15,7 +15,7 @@ ImpulseSplit<Dim> split_impulse(const ExchangeGrid<Dim>& grid, std::span<const d
   for (std::size_t p = 0; p < particles.size(); ++p) {
     const bool rigid = roles[particles.body[p]].rigid;
     const double m = particles.mass[p];
-    grid.for_each_conservative(particles.position[p], [&](std::size_t c, double w) {
+    grid.for_each_conservative(particles.position[p], particles.half_length[p], [&](std::size_t c, double w) {
       (rigid ? rigid_mass : mass)[c] += w * m;
     });
   }
@@ -68,7 +68,7 @@ ImpulseSplit<Dim> split_impulse(const ExchangeGrid<Dim>& grid, std::span<const d
     if (roles[particles.body[p]].rigid) continue;
     const double m = particles.mass[p];
     Vec<Dim>& j = particle_impulse[p];
-    grid.for_each_conservative(particles.position[p], [&](std::size_t c, double w) { j += (w * m) * per_mass[c]; });
+    grid.for_each_conservative(particles.position[p], particles.half_length[p], [&](std::size_t c, double w) { j += (w * m) * per_mass[c]; });
     split.applied += j;
   }
   return split;

@@ -73,10 +73,20 @@ template <int Dim>
 void MpmCoupling<Dim>::State::apply(double dt, Particles<Dim>& particles) {
   namespace n = names;
   force.assign(particles.size(), Vec<Dim>::Zero());
+  const bool cell_pressure_force = exchange_reads(n::pore_pressure_force);
   if (exchange_reads(n::pore_pressure)) {
     cell_values.resize(exchange->size());
     channel->read(n::pore_pressure, cell_values);
-    diagnostics.pore_pressure_force = pore_pressure_force(*exchange, cell_values, particles, roles, scratch);
+    const Vec<Dim> total = pore_pressure_force(*exchange, cell_values, particles, roles, scratch);
+    if (!cell_pressure_force) {
+      diagnostics.pore_pressure_force = total;
+      add_to_force(scratch, 1.0);
+    }
+  }
+  if (cell_pressure_force) {
+    cell_values.resize(exchange->size() * static_cast<std::size_t>(Dim));
+    channel->read(n::pore_pressure_force, cell_values);
+    diagnostics.pore_pressure_force = split_impulse(*exchange, cell_values, particles, roles, scratch).applied;
     add_to_force(scratch, 1.0);
   }
   if (exchange_reads(n::impulse)) {
@@ -146,6 +156,8 @@ void MpmCoupling<Dim>::declare() {
     if (s.exchange_reads(n::pore_pressure))
       s.channel->declare_read(field(n::pore_pressure, n::exchange_mesh, 1, "Pa"),
                               s.spec.exchange_grid->initial_pore_pressure);
+    if (s.exchange_reads(n::pore_pressure_force))
+      s.channel->declare_read(field(n::pore_pressure_force, n::exchange_mesh, Dim, "N", Quantity::extensive), 0.0);
     if (s.exchange_reads(n::impulse))
       s.channel->declare_read(
           field(n::impulse, n::exchange_mesh, Dim, "kg m/s", Quantity::extensive, TimeTreatment::integral), 0.0);

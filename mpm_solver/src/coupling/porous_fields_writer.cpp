@@ -25,7 +25,7 @@ PorousFields porous_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& 
     const double solid_volume = (1.0 - particles.porosity[p]) * particles.volume[p];
     const bool porous = roles[particles.body[p]].porous;
     const Vec<Dim>& v = particles.velocity[p];
-    grid.for_each_conservative(particles.position[p], [&](std::size_t c, double w) {
+    grid.for_each_conservative(particles.position[p], particles.half_length[p], [&](std::size_t c, double w) {
       out.solid_fraction[c] += w * solid_volume;
       out.solid_bulk_density[c] += w * m;
       volume[c] += w * solid_volume;

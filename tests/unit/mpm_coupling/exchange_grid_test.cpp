@@ -139,6 +139,48 @@ TEST(MpmCouplingExchangeGrid, ConservativeWeightsAreNonNegativePartitionOfUnity)
   }
 }
 
+TEST(MpmCouplingExchangeGrid, DomainWeightsAreTheOverlapOfTheParticleWithEachCell) {
+  const auto grid = unit_square_grid<2>(4, 1);
+  // A domain [0.2, 0.3] x [0.45, 0.55] over cells of 0.25: half in each of
+  // two cells per direction.
+  std::vector<double> weight(grid.size(), 0.0);
+  grid.for_each_conservative(Vec<2>(0.25, 0.5), Vec<2>(0.05, 0.05),
+                             [&](std::size_t c, double w) { weight[c] += w; });
+  EXPECT_NEAR(weight[grid.flat({0, 1})], 0.25, 1e-15);
+  EXPECT_NEAR(weight[grid.flat({1, 1})], 0.25, 1e-15);
+  EXPECT_NEAR(weight[grid.flat({0, 2})], 0.25, 1e-15);
+  EXPECT_NEAR(weight[grid.flat({1, 2})], 0.25, 1e-15);
+  // Past the grid's side the domain's share goes to the cell at the face.
+  std::fill(weight.begin(), weight.end(), 0.0);
+  grid.for_each_conservative(Vec<2>(0.98, 0.1), Vec<2>(0.05, 0.05),
+                             [&](std::size_t c, double w) { weight[c] += w; });
+  EXPECT_NEAR(weight[grid.flat({3, 0})], 1.0, 1e-15);
+  // A point without a domain takes the linear weights.
+  double sum = 0.0;
+  int cells = 0;
+  grid.for_each_conservative(Vec<2>(0.3, 0.3), Vec<2>::Zero(), [&](std::size_t, double w) {
+    sum += w;
+    ++cells;
+  });
+  EXPECT_NEAR(sum, 1.0, 1e-15);
+  EXPECT_EQ(cells, 4);
+}
+
+TEST(MpmCouplingExchangeGrid, ABoxBodyFillsExactlyTheCellsItCovers) {
+  // Two points per cell and direction: with linear weights a quarter of the
+  // surface row's volume would land in the empty row above.
+  const auto grid = unit_square_grid<2>(4, 1);
+  Particles<2> particles;
+  testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.5), 0.125, 0.4, 2650.0, 0);
+  const auto roles = testing::porous_roles(1);
+  const std::vector<std::uint8_t> held(particles.size(), 0);
+  const PorousFields f = porous_fields(grid, particles, roles, held, 1e30);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(f.solid_fraction[grid.flat({i, 1})], 0.6, 1e-12);
+    EXPECT_EQ(f.solid_fraction[grid.flat({i, 2})], 0.0);
+  }
+}
+
 TEST(MpmCouplingExchangeGrid, HeldSolidIsWrittenWithAnEffectivelyInfiniteBulkDensity) {
   const auto grid = unit_square_grid<2>(4, 1);
   Particles<2> particles;

@@ -51,11 +51,13 @@ TEST(MpmCouplingImpulse, CellsWithOnlyRigidSolidAbsorbTheirImpulseAndEmptyCellsP
     if (particles.body[p] == 0) {
       EXPECT_EQ(particle_impulse[p].norm(), 0.0);
     }
-  // Row 0 and cells (3, 1), (3, 2) hold only the floor's weight: absorbed.
-  // The empty cell (3, 3) passes its impulse to the soil's weight beside it.
+  // The particles' domains fill exactly their blocks: rows 0-1 hold only the
+  // floor's weight, and the empty cells (3, 2) and (3, 3) have no soil
+  // beside them: absorbed. The soil's cells (0..1, 2) keep theirs and the
+  // empty (2, 2), (0..2, 3) pass theirs to the soil beside them.
   EXPECT_NEAR(split.received[1], 16.0, 1e-12);
-  EXPECT_NEAR(split.absorbed[1], 4.0 + 2.0, 1e-12);
-  EXPECT_NEAR(split.applied[1], 10.0, 1e-12);
+  EXPECT_NEAR(split.absorbed[1], 8.0 + 2.0, 1e-12);
+  EXPECT_NEAR(split.applied[1], 6.0, 1e-12);
   Vec<2> sum = Vec<2>::Zero();
   for (const auto& j : particle_impulse) sum += j;
   EXPECT_LT((sum - split.applied).norm(), 1e-12);

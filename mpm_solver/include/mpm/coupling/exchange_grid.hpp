@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -13,10 +14,14 @@ namespace mpm::coupling {
 // The cell-centred grid the MPM exchanges porous-medium fields on (mesh
 // "mpm_grid"): the MPM cells, or blocks of `factor` x `factor` of them. Two
 // sets of weights tie a point to the cell centres:
-//  - conservative (particle -> cell): linear in each direction between the
-//    two nearest centres, all weight to the last centre beyond it (the half
-//    cell at a face). Non-negative and a partition of unity, so sums over
-//    cells equal sums over particles.
+//  - conservative (particle -> cell): the share of the particle's domain
+//    (centre x, half lengths h) inside each cell, the part beyond the grid
+//    going to the cell at that face; for a point without a domain, linear in
+//    each direction between the two nearest centres, all weight to the last
+//    centre beyond it. Non-negative and a partition of unity, so sums over
+//    cells equal sums over particles. With the domains a body's solid fills
+//    exactly the cells it covers (the linear weights put a quarter of a
+//    surface row's volume in the empty cell above it).
 //  - consistent (cell -> point): the same linear weights, extrapolated in the
 //    half cell at a face, so a linear field and its gradient are reproduced
 //    exactly everywhere.
@@ -68,6 +73,45 @@ struct ExchangeGrid {
     }
     m.location = cosim::GridLocation::cell;
     return m;
+  }
+
+  // f(flat cell, weight) for the cells a particle's domain overlaps.
+  template <class F>
+  void for_each_conservative(const Vec<Dim>& x, const Vec<Dim>& half_length, F&& f) const {
+    constexpr int most = 8;  // cells per direction a domain may span
+    std::array<int, Dim> first{};
+    std::array<int, Dim> count{};
+    double w[Dim][most];
+    for (int d = 0; d < Dim; ++d) {
+      const double h = half_length[d];
+      const int n = cells[static_cast<std::size_t>(d)];
+      const double lo = (x[d] - h - origin[d]) / spacing[d];
+      const double hi = (x[d] + h - origin[d]) / spacing[d];
+      const int i0 = std::clamp(static_cast<int>(std::floor(lo)), 0, n - 1);
+      const int i1 = std::clamp(static_cast<int>(std::floor(hi)), 0, n - 1);
+      if (!(h > 0.0) || i1 - i0 >= most) return for_each_conservative(x, f);
+      first[static_cast<std::size_t>(d)] = i0;
+      count[static_cast<std::size_t>(d)] = i1 - i0 + 1;
+      for (int i = i0; i <= i1; ++i) {
+        const double a = i == 0 ? std::min(lo, 0.0) : static_cast<double>(i);
+        const double b =
+            i == n - 1 ? std::max(hi, static_cast<double>(n)) : static_cast<double>(i + 1);
+        w[d][i - i0] = std::max(0.0, std::min(hi, b) - std::max(lo, a)) / (hi - lo);
+      }
+    }
+    int total = 1;
+    for (int d = 0; d < Dim; ++d) total *= count[static_cast<std::size_t>(d)];
+    for (int k = 0; k < total; ++k) {
+      std::array<int, Dim> index{};
+      double weight = 1.0;
+      for (int d = 0, rest = k; d < Dim; ++d) {
+        const int j = rest % count[static_cast<std::size_t>(d)];
+        rest /= count[static_cast<std::size_t>(d)];
+        index[static_cast<std::size_t>(d)] = first[static_cast<std::size_t>(d)] + j;
+        weight *= w[d][j];
+      }
+      if (weight > 0.0) f(flat(index), weight);
+    }
   }
 
   // f(flat cell, weight) for the 2^Dim cells a point gives its quantities to.

@@ -23,6 +23,11 @@ inline constexpr const char* grain_size = mx::grain_size;
 // the solid receives from the implicit exchange [kg m/s] (extensive window
 // integral, Dim components).
 inline constexpr const char* pore_pressure = "pore_pressure";
+// On mpm_grid, read instead of taking -phi_s grad p from pore_pressure: the
+// force the pore pressure exerts on the solid in each cell [N], as the fluid
+// solver discretises it (extensive state, Dim components), so that the solid
+// and the fluid share one pressure gradient.
+inline constexpr const char* pore_pressure_force = "pore_pressure_force";
 inline constexpr const char* impulse = mx::impulse;
 // On mpm_surface: bed elevation [m] written; bed traction [Pa], Dim
 // components (horizontal shear, then the vertical normal component), read.
