@@ -109,8 +109,10 @@ Schema numerics_schema() {
                 "Relative residual of conjugate gradients.")
       .optional("max_iterations", Schema::integer().range(1, 1e6).default_value("2000"),
                 "Iterations before a numerical failure (exit 4).")
-      .optional("preconditioner", Schema::one_of({"multigrid", "jacobi", "incomplete_cholesky"}).default_value("multigrid"),
-                "Preconditioner of conjugate gradients.");
+      .optional(
+          "preconditioner",
+          Schema::one_of({"multigrid", "jacobi", "incomplete_cholesky"}).default_value("multigrid"),
+          "Preconditioner of conjugate gradients.");
   Schema equilibration = Schema::object("The per-cell pressure equilibration (eqs. 42-43).");
   equilibration
       .optional("tolerance", Schema::number().range(1e-15, 1e-3).default_value("1e-12"),
@@ -162,6 +164,22 @@ Schema output_schema() {
   return output;
 }
 
+Schema coupling_schema() {
+  Schema coupling = Schema::object(
+      "How ice_fluid takes part in a coupled run with a porous solid on its mesh 'ice_cells' "
+      "(ignored standalone).");
+  coupling
+      .optional("drag", Schema::one_of({"coupler", "ice"}).default_value("coupler"),
+                "coupler: read the momentum the coupler's exchange gives the fluid "
+                "(momentum_exchange_impulse); ice: solve the fluid-solid drag in every step "
+                "with the solid as an exchange material (Tran et al., MPMICE, eqs. 48, 67-68), "
+                "reading drag_coefficient and solid_bulk_density and writing the solid's "
+                "momentum_exchange_impulse (the job's momentum_exchange.solved_by: fluid).")
+      .optional("minimum_porosity", Schema::number().range(1e-3, 1.0).default_value("0.05"),
+                "Floor of the porosity n = 1 - solid_fraction received.");
+  return coupling;
+}
+
 }  // namespace
 
 Schema ice_case_schema() {
@@ -185,7 +203,8 @@ Schema ice_case_schema() {
       .optional("numerics", numerics_schema(), "Time stepping and schemes.")
       .optional("output", output_schema(), "Outputs.")
       .optional("threads", Schema::integer().non_negative().default_value("0"),
-                "Threads; 0: the default.");
+                "Threads; 0: the default.")
+      .optional("coupling", coupling_schema(), "Coupling with a porous solid.");
   return file;
 }
 

@@ -45,6 +45,10 @@ class CaseReader {
     read_numerics(c);
     read_output(c);
     c.threads = root_.get<int>("threads", 0);
+    if (auto coupling = root_.find("coupling")) {
+      c.coupling.drag_in_solver = coupling->get<std::string>("drag", "coupler") == "ice";
+      c.coupling.minimum_porosity = coupling->get<double>("minimum_porosity", 0.05);
+    }
     return c;
   }
 

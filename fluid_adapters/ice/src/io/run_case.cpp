@@ -40,6 +40,7 @@ class CaseRun {
         options_(options),
         summary_(summary),
         participant_(endpoint.name_or(description.name), endpoint),
+        coupling_(description.coupling),
         snapshots_(description.output_every, description.end_time),
         gauge_times_(description.gauge_every, description.end_time),
         tolerance_(1e-10 * description.end_time) {}
@@ -51,6 +52,11 @@ class CaseRun {
         build_solver();
         if (participant_.is_coupled()) coupling_.declare(participant_, *solver_);
         participant_.initialize(0.0, c_.end_time);
+        // Coupled, the job's end time replaces the case's: the schedules end there.
+        const double end = participant_.end_time();
+        snapshots_ = cosim::OutputSchedule(c_.output_every, end);
+        gauge_times_ = cosim::OutputSchedule(c_.gauge_every, end);
+        tolerance_ = 1e-10 * end;
         open_outputs();
       }
       record_conserved(true);
@@ -109,6 +115,7 @@ class CaseRun {
     using Clock = std::chrono::steady_clock;
     auto last_progress = Clock::now();
     double dt = c_.numerics.initial_time_step;
+    double free_dt = dt;
     const bool coupled = participant_.is_coupled();
     std::size_t window_read = 0;
     while (participant_.is_coupling_ongoing()) {
@@ -120,9 +127,13 @@ class CaseRun {
         // The fluids laid into the pores are the run's starting totals.
         if (window_read == 1) record_conserved(true);
       }
+      // The growth limit applies to the last step the stability allowed, not
+      // to one cut short by a window end or an output time.
       double limit = solver_->stable_time_step(c_.numerics.cfl, c_.numerics.acoustic);
-      limit = std::min({limit, c_.numerics.max_step_growth * dt, participant_.max_time_step()});
+      limit = std::min(limit, c_.numerics.max_step_growth * free_dt);
       if (c_.numerics.max_time_step > 0.0) limit = std::min(limit, c_.numerics.max_time_step);
+      free_dt = limit;
+      limit = std::min(limit, participant_.max_time_step());
       const double next_output =
           std::min(snapshots_.next(), c_.gauge_every > 0.0 ? gauge_times_.next() : infinity);
       if (next_output > t + tolerance_) limit = std::min(limit, next_output - t);
@@ -137,10 +148,11 @@ class CaseRun {
         }
         auto scope = summary_.phases().measure("advance");
         report = solver_->advance(dt);
-        if (report.accepted && coupled) coupling_.add_impulse(participant_, dt, *solver_);
+        if (report.accepted && coupled) coupling_.exchange_step(participant_, dt, *solver_);
         if (report.accepted) break;
         ++rejected_;
         dt *= 0.5 * std::min(1.0, 1.0 / report.courant);
+        free_dt = std::min(free_dt, dt);
       }
       ++steps_;
       min_dt_ = std::min(min_dt_, dt);

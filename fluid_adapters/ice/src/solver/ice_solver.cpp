@@ -118,6 +118,10 @@ IceSolver<Dim>::IceSolver(const CellGrid<Dim>& grid, std::vector<FluidMaterial> 
   mixture_kappa_.assign(cells, 0.0);
   face_density_ = make_face_field(grid_, 1.0);
   mixture_velocity_ = make_face_field(grid_);
+  solid_face_velocity_ = make_face_field(grid_);
+  solid_face_fraction_ = make_face_field(grid_);
+  face_fraction_.assign(n, make_face_field(grid_));
+  previous_face_velocity_.assign(n, make_face_field(grid_));
   face_pressure_ = make_face_field(grid_);
   scratch_face_ = make_face_field(grid_, 1.0);
   pressure_increment_.assign(cells, 0.0);
@@ -187,8 +191,59 @@ void IceSolver<Dim>::set_porous_medium(
   }
   state_.porosity.assign(porosity.begin(), porosity.end());
   state_.solid_velocity = solid_velocity;
+  solid_exchange_velocity_ = solid_velocity;
   check_state(state_);
   equilibrate(nullptr);
+}
+
+template <int Dim>
+void IceSolver<Dim>::set_solid_drag(std::span<const double> drag_coefficient,
+                                    std::span<const double> solid_bulk_density) {
+  const std::size_t cells = at(grid_.cell_count());
+  if (drag_coefficient.empty() && solid_bulk_density.empty()) {
+    solid_drag_on_ = false;
+    return;
+  }
+  require(drag_coefficient.size() == cells && solid_bulk_density.size() == cells,
+          "drag coefficient and solid bulk density need one value per cell");
+  for (std::size_t c = 0; c < cells; ++c) {
+    if (!(drag_coefficient[c] >= 0.0) || !std::isfinite(drag_coefficient[c]) ||
+        !(solid_bulk_density[c] >= 0.0) || !std::isfinite(solid_bulk_density[c])) {
+      throw cosim::NumericalError(fmt::format(
+          "ICE: cell {} received drag coefficient {} kg/(m3 s) and solid bulk density {} kg/m3 "
+          "(both must be finite and >= 0)",
+          c, drag_coefficient[c], solid_bulk_density[c]));
+    }
+  }
+  solid_drag_.assign(drag_coefficient.begin(), drag_coefficient.end());
+  solid_bulk_density_.assign(solid_bulk_density.begin(), solid_bulk_density.end());
+  solid_impulse_.resize(cells * static_cast<std::size_t>(Dim), 0.0);
+  solid_drag_on_ = true;
+}
+
+template <int Dim>
+void IceSolver<Dim>::take_solid_impulse(std::span<double> impulse) {
+  const std::size_t size = at(grid_.cell_count()) * static_cast<std::size_t>(Dim);
+  require(impulse.size() == size, "the solid impulse needs Dim values per cell");
+  solid_impulse_.resize(size, 0.0);
+  std::copy(solid_impulse_.begin(), solid_impulse_.end(), impulse.begin());
+  std::fill(solid_impulse_.begin(), solid_impulse_.end(), 0.0);
+}
+
+template <int Dim>
+void IceSolver<Dim>::solid_pressure_force(std::span<double> force) const {
+  const auto dim = static_cast<std::size_t>(Dim);
+  require(force.size() == at(grid_.cell_count()) * dim, "the force needs Dim values per cell");
+  const double volume = grid_.cell_volume();
+  for (int c = 0; c < grid_.cell_count(); ++c) {
+    const double solid = 1.0 - state_.porosity[at(c)];
+    for (int d = 0; d < Dim; ++d) {
+      const double gradient = (face_pressure_[at(d)][at(grid_.upper_face(d, c))] -
+                               face_pressure_[at(d)][at(grid_.lower_face(d, c))]) /
+                              grid_.spacing()[d];
+      force[at(c) * dim + at(d)] = -solid * gradient * volume;
+    }
+  }
 }
 
 template <int Dim>
@@ -313,6 +368,7 @@ StepReport IceSolver<Dim>::advance(double dt) {
   exchange_cell_energy(dt);
   compute_lagrangian_specific_volume(dt);
   advect_and_update(dt, report);
+  if (solid_drag_on_) previous_face_velocity_ = face_velocity_;
   time_ += dt;
   ++steps_;
   return report;
@@ -348,7 +404,38 @@ void IceSolver<Dim>::compute_face_velocities(double dt) {
           const double v_face =
               (material.volume_fraction[at(lower)] + material.volume_fraction[at(upper)]) /
               (rb_l + rb_r);
-          const double mean_u = (rb_l * u[at(lower)] + rb_r * u[at(upper)]) / (rb_l + rb_r);
+          // In a porous solid the mass-weighted mean is taken of the
+          // superficial velocities n U and returned to the face's upwind
+          // pore space: a steady flow through a jump in porosity keeps its
+          // face velocity from step to step (the interstitial velocities'
+          // mean would differ from it by O(1) and act as a spurious inertia
+          // of (mean - U_FC) / dt, as large as the drag; Darcy flow through
+          // a column would come out 7 % fast at 10 cells). Without a solid
+          // this is eq. 44.
+          const double n_l = s.porosity[at(lower)];
+          const double n_r = s.porosity[at(upper)];
+          const double superficial =
+              (rb_l * n_l * u[at(lower)] + rb_r * n_r * u[at(upper)]) / (rb_l + rb_r);
+          double mean_u = superficial / (superficial >= 0.0 ? n_l : n_r);
+          // Where the drag on a solid holds the fluid, its face velocity
+          // starts from its own last value rather than from the cells' mean,
+          // in the proportion K / (K + rhobar |U| / dx) in which the drag
+          // outweighs the momentum the flow carries across a cell. The cell
+          // velocities there carry what advection brings them, not what the
+          // face fluxes hold (out of a porous column the free cell above
+          // takes the pores' interstitial velocity), and the difference
+          // (mean - U_FC) / dt would act as a force no physics gives: a
+          // checkerboard of pressure and cell velocity beside a drained side.
+          if (solid_drag_on_) {
+            const double porosity = 0.5 * (n_l + n_r);
+            const double fraction =
+                0.5 * (material.volume_fraction[at(lower)] + material.volume_fraction[at(upper)]);
+            const double k = face_drag(lower, upper, porosity, d, f, previous_face_velocity_) *
+                             fraction / porosity;
+            const double carried = 0.5 * (rb_l + rb_r) * std::abs(mean_u) / dx;
+            const double memory = k > 0.0 ? k / (k + carried) : 0.0;
+            mean_u += memory * (previous_face_velocity_[m][at(d)][at(f)] - mean_u);
+          }
           const double gradient = (s.pressure[at(upper)] - s.pressure[at(lower)]) / dx;
           face_u[at(f)] = mean_u + dt * (-v_face * gradient + g);
           face_v[at(f)] = v_face;
@@ -390,19 +477,31 @@ void IceSolver<Dim>::compute_face_velocities(double dt) {
 // sum_f phi_f / rho_f without exchange and 1 / rho_mixture when K -> inf,
 // and the corrected face velocities satisfy both the exchange and the
 // volume balance at the new time level.
+//
+// A coupled porous solid adds its volume flux phi_s U_s to the divergence
+// (eq. 75's mixture velocity), taken from the upwind cell (no solid flows
+// out of a cell that has none, nor in through a side of the domain). With
+// the drag solved here it is one more material of the exchange, with weight
+// rhobar_s, coefficient K phi_f / n to each fluid and no pressure term of
+// its own (v_s = 0: its share -phi_s grad P acts in the solid solver), so
+// y_s > 0 only through the drag: where K is large the pressure pushes fluid
+// and solid together, and the pressure equation is that of Darcy flow.
 template <int Dim>
 void IceSolver<Dim>::exchange_face_momentum(double dt) {
   const std::size_t n = count();
+  const bool drag = solid_drag_on_;
+  const std::size_t solid = n;  // the solid's index in the exchange
+  const std::size_t total = drag ? n + 1 : n;
   std::array<double, cosim::exchange::kMaxMaterials> weight{};
   std::array<double, cosim::exchange::kMaxMaterials> fraction{};
   std::array<double, cosim::exchange::kMaxMaterials> value{};
   std::array<double, cosim::exchange::kMaxMaterials> increment{};
   std::array<double, cosim::exchange::kMaxMaterials * cosim::exchange::kMaxMaterials> coefficient{};
-  const std::span<double> w(weight.data(), n);
-  const std::span<double> x(value.data(), n);
-  const std::span<double> dx(increment.data(), n);
-  const std::span<double> k(coefficient.data(), n * n);
-  const bool exchange = n >= 2 && has_momentum_exchange_;
+  const std::span<double> w(weight.data(), total);
+  const std::span<double> x(value.data(), total);
+  const std::span<double> dx(increment.data(), total);
+  const std::span<double> k(coefficient.data(), total * total);
+  const bool fluid_exchange = n >= 2 && has_momentum_exchange_;
 
   for (int d = 0; d < Dim; ++d) {
     for (int f = 0; f < grid_.face_count(d); ++f) {
@@ -420,28 +519,87 @@ void IceSolver<Dim>::exchange_face_momentum(double dt) {
         weight[m] = face_value(state_.materials[m].bulk_density);
         fraction[m] = face_value(state_.materials[m].volume_fraction);
       }
-      if (exchange && type == SideType::fixed_pressure) {
+      double& u_s = solid_face_velocity_[at(d)][at(f)];
+      double& phi_s = solid_face_fraction_[at(d)][at(f)];
+      // The solid's velocity on the face: mass-weighted with the drag
+      // solved here (its bulk density is known), else the mean.
+      const auto solid_face_value = [&](const CellField& u) {
+        if (!(interior && drag)) return face_value(u);
+        const double m_l = solid_bulk_density_[at(lower)];
+        const double m_r = solid_bulk_density_[at(upper)];
+        return m_l + m_r > 0.0 ? (m_l * u[at(lower)] + m_r * u[at(upper)]) / (m_l + m_r) : 0.0;
+      };
+      u_s = solid_face_value(state_.solid_velocity[at(d)]);
+      const bool open = type == SideType::fixed_pressure;
+      if (drag && open) {
+        weight[solid] = face_value(solid_bulk_density_);
+        const double porosity = face_value(state_.porosity);
+        const double drag_coefficient =
+            interior ? face_drag(lower, upper, porosity, d, f, face_velocity_)
+                     : solid_drag_[at(cell)];
+        for (std::size_t i = 0; i < total * total; ++i) coefficient[i] = 0.0;
+        if (fluid_exchange) {
+          for (std::size_t i = 0; i < n; ++i) {
+            for (std::size_t j = 0; j < n; ++j) {
+              coefficient[i * total + j] =
+                  exchange_.momentum[i * n + j] * fraction[i] * fraction[j];
+            }
+          }
+        }
+        for (std::size_t m = 0; m < n; ++m)
+          coefficient[m * total + solid] = drag_coefficient * fraction[m] / porosity;
+        for (std::size_t m = 0; m < n; ++m) value[m] = face_velocity_[m][at(d)][at(f)];
+        value[solid] = solid_face_value(solid_exchange_velocity_[at(d)]);
+        cosim::exchange::solve_implicit_exchange(w, x, 1, k, dt, dx);
+        for (std::size_t m = 0; m < n; ++m) face_velocity_[m][at(d)][at(f)] += increment[m];
+        // The pressure correction holds the solid (infinite weight): it
+        // answers the pressure in the solid solver, with its stresses.
+        weight[solid] = std::numeric_limits<double>::infinity();
+        for (std::size_t m = 0; m < n; ++m) value[m] = face_correction_[m][at(d)][at(f)];
+        value[solid] = 0.0;
+        cosim::exchange::solve_implicit_exchange(w, x, 1, k, dt, dx);
+        for (std::size_t m = 0; m < n; ++m) face_correction_[m][at(d)][at(f)] += increment[m];
+      } else if (fluid_exchange && open) {
+        const std::span<double> wn(weight.data(), n);
+        const std::span<double> xn(value.data(), n);
+        const std::span<double> dxn(increment.data(), n);
+        const std::span<double> kn(coefficient.data(), n * n);
         for (std::size_t i = 0; i < n; ++i) {
           for (std::size_t j = 0; j < n; ++j) {
             coefficient[i * n + j] = exchange_.momentum[i * n + j] * fraction[i] * fraction[j];
           }
         }
         for (std::size_t m = 0; m < n; ++m) value[m] = face_velocity_[m][at(d)][at(f)];
-        cosim::exchange::solve_implicit_exchange(w, x, 1, k, dt, dx);
+        cosim::exchange::solve_implicit_exchange(wn, xn, 1, kn, dt, dxn);
         for (std::size_t m = 0; m < n; ++m) face_velocity_[m][at(d)][at(f)] += increment[m];
         for (std::size_t m = 0; m < n; ++m) value[m] = face_correction_[m][at(d)][at(f)];
-        cosim::exchange::solve_implicit_exchange(w, x, 1, k, dt, dx);
+        cosim::exchange::solve_implicit_exchange(wn, xn, 1, kn, dt, dxn);
         for (std::size_t m = 0; m < n; ++m) face_correction_[m][at(d)][at(f)] += increment[m];
       }
-      double inverse_density = 0.0;
-      double mixture = 0.0;
-      for (std::size_t m = 0; m < n; ++m) {
-        inverse_density += fraction[m] * face_correction_[m][at(d)][at(f)];
-        mixture += fraction[m] * face_velocity_[m][at(d)][at(f)];
+      // The solid fraction of the upwind cell; through a side of the domain
+      // only outflow.
+      if (type == SideType::wall) {
+        phi_s = 0.0;
+      } else if (interior) {
+        phi_s = 1.0 - state_.porosity[at(u_s >= 0.0 ? lower : upper)];
+      } else {
+        const bool outflow = upper_side ? u_s > 0.0 : u_s < 0.0;
+        phi_s = outflow ? 1.0 - state_.porosity[at(cell)] : 0.0;
       }
-      const double solid_fraction = 1.0 - face_value(state_.porosity);
-      if (solid_fraction > 0.0 && type != SideType::wall) {
-        mixture += solid_fraction * face_value(state_.solid_velocity[at(d)]);
+      // Each fluid's volume flux takes its upwind cell's volume fraction, as
+      // the advection of its mass does (eqs. 77-80): with the mean of the two
+      // cells a steady flow through a jump in porosity would carry a volume
+      // the mass flux does not, and the pressure beside the jump would run
+      // away in a checkerboard.
+      double inverse_density = 0.0;
+      double mixture = phi_s * u_s;
+      for (std::size_t m = 0; m < n; ++m) {
+        const double u = face_velocity_[m][at(d)][at(f)];
+        const CellField& phi = state_.materials[m].volume_fraction;
+        const double carried = interior ? phi[at(u >= 0.0 ? lower : upper)] : phi[at(cell)];
+        face_fraction_[m][at(d)][at(f)] = carried;
+        inverse_density += carried * face_correction_[m][at(d)][at(f)];
+        mixture += carried * u;
       }
       face_density_[at(d)][at(f)] = type == SideType::wall ? 1.0 : 1.0 / inverse_density;
       mixture_velocity_[at(d)][at(f)] = type == SideType::wall ? 0.0 : mixture;
@@ -471,6 +629,31 @@ PressureSolution IceSolver<Dim>::solve_pressure_increment(double dt) {
   return solution;
 }
 
+// K on a face between two cells. Darcy's law in each half cell,
+// grad P = -(K / n^2) q with q = n U the superficial velocity, puts the two
+// halves in series, and the face equation K_FC U_FC = -n_FC grad P with
+// U_FC = q / n_up (the flux takes the upwind pore space) then needs
+//   K_FC = n_FC n_up (K_L / n_L^2 + K_R / n_R^2) / 2,
+// which is K inside a uniform medium. At a jump in porosity the mean of the
+// two K would leave the first and last faces of a porous column with a
+// tenth and a third of their resistance (Darcy flow through ten cells
+// 6 % fast).
+template <int Dim>
+double IceSolver<Dim>::face_drag(int lower, int upper, double face_porosity, int d, int f,
+                                 const std::vector<FaceField<Dim>>& velocity) const {
+  const double n_l = state_.porosity[at(lower)];
+  const double n_r = state_.porosity[at(upper)];
+  double momentum = 0.0;
+  for (std::size_t m = 0; m < count(); ++m) {
+    momentum += (state_.materials[m].bulk_density[at(lower)] +
+                 state_.materials[m].bulk_density[at(upper)]) *
+                velocity[m][at(d)][at(f)];
+  }
+  const double upwind = momentum >= 0.0 ? n_l : n_r;
+  return face_porosity * upwind * 0.5 *
+         (solid_drag_[at(lower)] / (n_l * n_l) + solid_drag_[at(upper)] / (n_r * n_r));
+}
+
 template <int Dim>
 double IceSolver<Dim>::face_courant(double dt) const {
   double rate = 0.0;
@@ -485,6 +668,17 @@ double IceSolver<Dim>::face_courant(double dt) const {
 // weight at rest, across a water-air interface too. On a side without a
 // fixed pressure the face takes the cell's pressure extrapolated
 // hydrostatically (zero dynamic pressure gradient).
+//
+// Where the fluids drag on a solid (a = K / n^2 > 0 on either side) the
+// face pressure instead balances each half cell by Darcy's law with the
+// same superficial flux: the pressure rises hydrostatically from each
+// centre and the rest of the difference drops in proportion to the halves'
+// resistances,
+//   P_FC = P_L + (dx/2) rho_L g + a_L / (a_L + a_R) (P_R - P_L - (dx/2)(rho_L + rho_R) g),
+// rho the fluids' intrinsic density. At rest this is eq. 54's hydrostatic
+// face pressure; at the inlet of a porous column it is the free fluid's
+// pressure, as it should be (eq. 54 there would pull the free cell into
+// the column with the column's first pressure drop).
 template <int Dim>
 void IceSolver<Dim>::compute_face_pressure() {
   const auto mixture_density = [&](int cell) {
@@ -502,8 +696,21 @@ void IceSolver<Dim>::compute_face_pressure() {
       if (lower >= 0 && upper >= 0) {
         const double rho_l = mixture_density(lower);
         const double rho_r = mixture_density(upper);
-        face_p[at(f)] =
-            (new_pressure_[at(lower)] * rho_r + new_pressure_[at(upper)] * rho_l) / (rho_l + rho_r);
+        const double p_l = new_pressure_[at(lower)];
+        const double p_r = new_pressure_[at(upper)];
+        if (solid_drag_on_) {
+          const double n_l = state_.porosity[at(lower)];
+          const double n_r = state_.porosity[at(upper)];
+          const double a_l = solid_drag_[at(lower)] / (n_l * n_l);
+          const double a_r = solid_drag_[at(upper)] / (n_r * n_r);
+          if (a_l + a_r > 0.0) {
+            const double rise_l = 0.5 * dx * rho_l / n_l * gravity_[d];
+            const double rise_r = 0.5 * dx * rho_r / n_r * gravity_[d];
+            face_p[at(f)] = p_l + rise_l + a_l / (a_l + a_r) * (p_r - p_l - rise_l - rise_r);
+            continue;
+          }
+        }
+        face_p[at(f)] = (p_l * rho_r + p_r * rho_l) / (rho_l + rho_r);
         continue;
       }
       const bool upper_side = upper < 0;
@@ -520,34 +727,12 @@ void IceSolver<Dim>::compute_face_pressure() {
 }
 
 // The volume fraction of material m on a face, as the pressure equation
-// takes it: the mean of the two cells, or the boundary cell's own.
+// took it (the upwind cell's).
 template <int Dim>
 double IceSolver<Dim>::face_fraction(std::size_t m, int d, int face) const {
-  const CellField& phi = state_.materials[m].volume_fraction;
-  const int lower = grid_.lower_cell(d, face);
-  const int upper = grid_.upper_cell(d, face);
-  if (lower < 0) return phi[at(upper)];
-  if (upper < 0) return phi[at(lower)];
-  return 0.5 * (phi[at(lower)] + phi[at(upper)]);
+  return face_fraction_[m][at(d)][at(face)];
 }
 
-// Tran et al., MPMICE, eqs. 59-63 per unit volume: the pressure force
-// -phi_f grad P_FC and gravity on the momentum; on the internal energy the
-// work of eq. 60, written in the compatible form
-//
-//   d(rhobar e)_f,c = dt sum_faces (P_face n A / V) . (phi_f,c U_mid,c - phi_f,face U_face)
-//                     + P_c (phi_f kappa_f dP + dt div(phi_f,FC U_FC)),
-//
-// U_mid the cell's velocity half way through the pressure impulse and U_face
-// the final face velocity. The first sum takes the kinetic energy that each
-// face's pressure gives the cells beside it out of their internal energy,
-// so the Lagrangian step conserves each material's kinetic plus internal
-// energy exactly (closed box, no gravity, no exchange); the second term
-// shares the volume work among the materials by their own compression and
-// sums to zero over them by the pressure equation. Shocks then meet the
-// Rankine-Hugoniot conditions (Sod's star states to 0.01 % at 400 cells;
-// the cell-wise P kappa dP of Uintah's ICE leaves the post-shock density
-// 2-3 % high). The sum is -dt P div(phi_f U_f) - P dphi_f + O(dx).
 template <int Dim>
 void IceSolver<Dim>::compute_lagrangian_values(double dt) {
   for (std::size_t m = 0; m < count(); ++m) {
@@ -612,34 +797,58 @@ bool IceSolver<Dim>::compute_lagrangian_energy(double dt) {
 
 // Tran et al., MPMICE, eqs. 67-68: implicit momentum exchange of the
 // Lagrangian cell velocities, with K_ij phi_i phi_j; eqs. 69-70 below do the
-// same for the temperatures with H_ij phi_i phi_j.
+// same for the temperatures with H_ij phi_i phi_j. With the drag solved here
+// the solid takes part as at the faces (weight rhobar_s, K phi_f / n to each
+// fluid); its velocity and the impulse it has received keep the increment.
 template <int Dim>
 void IceSolver<Dim>::exchange_cell_momentum(double dt) {
   const std::size_t n = count();
-  if (n < 2 || !has_momentum_exchange_) return;
+  const bool drag = solid_drag_on_;
+  const bool fluid_exchange = n >= 2 && has_momentum_exchange_;
+  if (!fluid_exchange && !drag) return;
+  const std::size_t solid = n;
+  const std::size_t total = drag ? n + 1 : n;
   std::array<double, cosim::exchange::kMaxMaterials> weight{};
   std::array<double, cosim::exchange::kMaxMaterials * 3> value{};
   std::array<double, cosim::exchange::kMaxMaterials * 3> increment{};
   std::array<double, cosim::exchange::kMaxMaterials * cosim::exchange::kMaxMaterials> coefficient{};
   const auto dim = static_cast<std::size_t>(Dim);
+  const double volume = grid_.cell_volume();
   for (std::size_t c = 0; c < at(grid_.cell_count()); ++c) {
     for (std::size_t m = 0; m < n; ++m) weight[m] = mass_[m][c];
-    {
-      for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < total * total; ++i) coefficient[i] = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (fluid_exchange) {
         for (std::size_t j = 0; j < n; ++j) {
-          coefficient[i * n + j] = exchange_.momentum[i * n + j] *
-                                   state_.materials[i].volume_fraction[c] *
-                                   state_.materials[j].volume_fraction[c];
+          coefficient[i * total + j] = exchange_.momentum[i * n + j] *
+                                       state_.materials[i].volume_fraction[c] *
+                                       state_.materials[j].volume_fraction[c];
         }
-        for (std::size_t d = 0; d < dim; ++d) value[i * dim + d] = momentum_[i][d][c] / mass_[i][c];
       }
-      cosim::exchange::solve_implicit_exchange(std::span<const double>(weight.data(), n),
-                                               std::span<const double>(value.data(), n * dim), Dim,
-                                               std::span<const double>(coefficient.data(), n * n),
-                                               dt, std::span<double>(increment.data(), n * dim));
-      for (std::size_t i = 0; i < n; ++i) {
-        for (std::size_t d = 0; d < dim; ++d)
-          momentum_[i][d][c] += mass_[i][c] * increment[i * dim + d];
+      for (std::size_t d = 0; d < dim; ++d) value[i * dim + d] = momentum_[i][d][c] / mass_[i][c];
+    }
+    if (drag) {
+      weight[solid] = solid_bulk_density_[c];
+      for (std::size_t m = 0; m < n; ++m) {
+        coefficient[m * total + solid] =
+            solid_drag_[c] * state_.materials[m].volume_fraction[c] / state_.porosity[c];
+      }
+      for (std::size_t d = 0; d < dim; ++d) value[solid * dim + d] = solid_exchange_velocity_[d][c];
+    }
+    cosim::exchange::solve_implicit_exchange(
+        std::span<const double>(weight.data(), total),
+        std::span<const double>(value.data(), total * dim), Dim,
+        std::span<const double>(coefficient.data(), total * total), dt,
+        std::span<double>(increment.data(), total * dim));
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t d = 0; d < dim; ++d)
+        momentum_[i][d][c] += mass_[i][c] * increment[i * dim + d];
+    }
+    if (drag) {
+      for (std::size_t d = 0; d < dim; ++d) {
+        const double du = increment[solid * dim + d];
+        solid_exchange_velocity_[d][c] += du;
+        solid_impulse_[c * dim + d] += solid_bulk_density_[c] * du * volume;
       }
     }
   }
@@ -796,15 +1005,15 @@ void IceSolver<Dim>::move_solid(double dt) {
   change.assign(at(grid_.cell_count()), 0.0);
   for (int d = 0; d < Dim; ++d) {
     const double factor = dt / grid_.spacing()[d];
-    const CellField& u = state_.solid_velocity[at(d)];
+    const std::vector<double>& u = solid_face_velocity_[at(d)];
+    const std::vector<double>& phi = solid_face_fraction_[at(d)];
     for (int f = 0; f < grid_.face_count(d); ++f) {
+      const double flux = factor * phi[at(f)] * u[at(f)];
+      if (flux == 0.0) continue;
       const int lower = grid_.lower_cell(d, f);
       const int upper = grid_.upper_cell(d, f);
-      if (lower < 0 || upper < 0) continue;
-      const double flux = 0.5 * ((1.0 - state_.porosity[at(lower)]) * u[at(lower)] +
-                                 (1.0 - state_.porosity[at(upper)]) * u[at(upper)]);
-      change[at(lower)] += factor * flux;
-      change[at(upper)] -= factor * flux;
+      if (lower >= 0) change[at(lower)] += flux;
+      if (upper >= 0) change[at(upper)] -= flux;
     }
   }
   for (std::size_t c = 0; c < change.size(); ++c) {

@@ -57,6 +57,16 @@ struct NumericsDescription {
   double smagorinsky_constant = 0.0;  // 0: no turbulence model
 };
 
+// How ice_fluid takes part in a coupled run with a porous solid (unused
+// standalone).
+struct CouplingDescription {
+  // true: the fluid-solid drag is solved in each step with the coupler's
+  // drag_coefficient (`drag: ice`; the job's momentum_exchange.solved_by:
+  // fluid); false: the coupler solves it and sends momentum_exchange_impulse.
+  bool drag_in_solver = false;
+  double minimum_porosity = 0.05;  // floor of n = 1 - phi_s received
+};
+
 struct CaseDescription {
   std::filesystem::path file;
   std::string name;
@@ -76,6 +86,7 @@ struct CaseDescription {
   double gauge_every = 0.0;  // 0: every step
   std::vector<GaugePoint> gauges;
   int threads = 0;
+  CouplingDescription coupling;
 };
 
 }  // namespace ice

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "ice/advection/advector.hpp"
@@ -96,6 +97,33 @@ class IceSolver {
                          const std::array<CellField, static_cast<std::size_t>(Dim)>& solid_velocity,
                          PorosityChange change = PorosityChange::compress);
 
+  // The fluid-solid drag of a coupled run solved inside each step (the
+  // coupler's `solved_by: fluid`): K per cell [kg m^-3 s^-1], the drag on
+  // the fluids per unit volume being K (U_s - U_f), shared among them by
+  // their volume fractions, and the solid's bulk density per cell [kg m^-3].
+  // The solid then takes part, with that inertia and the velocity of
+  // set_porous_medium, in the face exchange of the predicted velocities
+  // (Tran et al., MPMICE, eq. 48), held in that of the pressure correction
+  // (the pressure equation is then Darcy's where K is large: the solid
+  // answers the pressure in the solid solver, with its stresses), and in the
+  // cell exchange (eqs. 67-68); its exchange velocity changes only by the
+  // drag, its motion (porosity, divergence) is the received velocity. Empty spans switch the drag
+  // off. Throws std::invalid_argument for wrong sizes and cosim::NumericalError for a negative or
+  // non-finite value.
+  void set_solid_drag(std::span<const double> drag_coefficient,
+                      std::span<const double> solid_bulk_density);
+  bool has_solid_drag() const { return solid_drag_on_; }
+  // The momentum [kg m/s] the solid has received from the drag since the last
+  // call (Dim components per cell, cell-major); then starts again from zero.
+  void take_solid_impulse(std::span<double> impulse);
+
+  // The force [N] the pressure exerts on a coupled porous solid in each cell,
+  // -phi_s (P_FC,up - P_FC,low) / dx V per direction from the last step's
+  // face pressures (Dim components per cell, cell-major): the same gradient
+  // the fluids felt, so the mixture as a whole takes -grad P (Tran et al.,
+  // MPMICE, eq. 7).
+  void solid_pressure_force(std::span<double> force) const;
+
   // Adds momentum [kg m/s] to each cell (Dim components per cell,
   // cell-major), e.g. the impulse the coupler's implicit fluid-solid exchange
   // gives the fluid over a window. It is shared among the materials in
@@ -142,7 +170,9 @@ class IceSolver {
   void advect_and_update(double dt, StepReport& report);  // eqs. 77-84
   void equilibrate(StepReport* report);                   // eqs. 42-43
 
-  void move_solid(double dt);           // eq. 107
+  void move_solid(double dt);  // eq. 107
+  double face_drag(int lower, int upper, double face_porosity, int direction, int face,
+                   const std::vector<FaceField<Dim>>& velocity) const;
   void add_viscous_stress(double dt);   // eq. 59's Delta(mU)_tau
   void add_heat_conduction(double dt);  // eq. 60's div q
   double face_courant(double dt) const;
@@ -196,6 +226,24 @@ class IceSolver {
   std::vector<CellField> lagrangian_temperature_;
   CellField porosity_change_;
   double last_face_rate_ = 0.0;
+
+  // The porous solid: its face velocity and upwind fraction, whose product
+  // is the solid volume flux the pressure equation and move_solid share;
+  // with set_solid_drag, K and rhobar_s per cell, the velocity it has in the
+  // drag exchange (the received one changed by the drag alone; its motion
+  // stays the received one: the solid solver moves it) and the impulse it
+  // has received.
+  FaceField<Dim> solid_face_velocity_;
+  FaceField<Dim> solid_face_fraction_;
+  std::array<CellField, static_cast<std::size_t>(Dim)> solid_exchange_velocity_;
+  // Per fluid material, the volume fraction its face flux carries (the
+  // upwind cell's, as the advection of its mass takes it).
+  std::vector<FaceField<Dim>> face_fraction_;
+  std::vector<FaceField<Dim>> previous_face_velocity_;  // of the last accepted step
+  bool solid_drag_on_ = false;
+  CellField solid_drag_;
+  CellField solid_bulk_density_;
+  std::vector<double> solid_impulse_;
 };
 
 extern template class IceSolver<1>;
