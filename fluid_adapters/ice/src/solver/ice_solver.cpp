@@ -347,8 +347,23 @@ StepReport IceSolver<Dim>::advance(double dt) {
   StepReport report;
   compute_face_velocities(dt);
   exchange_face_momentum(dt);
-  const PressureSolution pressure = solve_pressure_increment(dt);
+  assemble_divergence(face_velocity_);
+  predicted_face_velocity_ = face_velocity_;
+  PressureSolution pressure = solve_pressure_increment(dt);
   report.pressure_iterations = pressure.iterations;
+  // Where the correction reversed a flow, the divergence is assembled again
+  // with the final directions, from the same predicted velocities (a flow
+  // whose upwind side flips from step to step would otherwise carry volume
+  // its mass flux does not, in a two-step cycle).
+  const std::vector<FaceField<Dim>>* assumed = &predicted_face_velocity_;
+  for (int pass = 0; pass < 2 && upwind_side_changed(*assumed, dt); ++pass) {
+    flow_direction_ = face_velocity_;
+    face_velocity_ = predicted_face_velocity_;
+    assemble_divergence(flow_direction_);
+    pressure = solve_pressure_increment(dt);
+    report.pressure_iterations += pressure.iterations;
+    assumed = &flow_direction_;
+  }
   report.pressure_residual = pressure.relative_residual;
   report.courant = face_courant(dt);
   if (report.courant > options_.max_courant) {
@@ -531,6 +546,16 @@ void IceSolver<Dim>::exchange_face_momentum(double dt) {
       };
       u_s = solid_face_value(state_.solid_velocity[at(d)]);
       const bool open = type == SideType::fixed_pressure;
+      // The solid fraction of the upwind cell; through a side of the domain
+      // only outflow.
+      if (type == SideType::wall) {
+        phi_s = 0.0;
+      } else if (interior) {
+        phi_s = 1.0 - state_.porosity[at(u_s >= 0.0 ? lower : upper)];
+      } else {
+        const bool outflow = upper_side ? u_s > 0.0 : u_s < 0.0;
+        phi_s = outflow ? 1.0 - state_.porosity[at(cell)] : 0.0;
+      }
       if (drag && open) {
         weight[solid] = face_value(solid_bulk_density_);
         const double porosity = face_value(state_.porosity);
@@ -549,7 +574,15 @@ void IceSolver<Dim>::exchange_face_momentum(double dt) {
         for (std::size_t m = 0; m < n; ++m)
           coefficient[m * total + solid] = drag_coefficient * fraction[m] / porosity;
         for (std::size_t m = 0; m < n; ++m) value[m] = face_velocity_[m][at(d)][at(f)];
-        value[solid] = solid_face_value(solid_exchange_velocity_[at(d)]);
+        // The drag acts on the fluids' flux relative to the solid,
+        // q = F - U_s with F the mixture's volume flux through the face: the
+        // solid's velocity as the fluids' partner is (1 - phi_s,FC) U_s / n_up.
+        // Inside a medium that is U_s; where the solid recedes from the face
+        // (a settling surface: phi_s,FC = 0) it is U_s / n_up, the relative
+        // velocity of the pore water that the surface's half cell resists.
+        const double n_up =
+            interior ? fluid_upwind_porosity(lower, upper, d, f, face_velocity_) : porosity;
+        value[solid] = (1.0 - phi_s) * solid_face_value(solid_exchange_velocity_[at(d)]) / n_up;
         cosim::exchange::solve_implicit_exchange(w, x, 1, k, dt, dx);
         for (std::size_t m = 0; m < n; ++m) face_velocity_[m][at(d)][at(f)] += increment[m];
         // The pressure correction holds the solid (infinite weight): it
@@ -576,35 +609,66 @@ void IceSolver<Dim>::exchange_face_momentum(double dt) {
         cosim::exchange::solve_implicit_exchange(wn, xn, 1, kn, dt, dxn);
         for (std::size_t m = 0; m < n; ++m) face_correction_[m][at(d)][at(f)] += increment[m];
       }
-      // The solid fraction of the upwind cell; through a side of the domain
-      // only outflow.
-      if (type == SideType::wall) {
-        phi_s = 0.0;
-      } else if (interior) {
-        phi_s = 1.0 - state_.porosity[at(u_s >= 0.0 ? lower : upper)];
-      } else {
-        const bool outflow = upper_side ? u_s > 0.0 : u_s < 0.0;
-        phi_s = outflow ? 1.0 - state_.porosity[at(cell)] : 0.0;
-      }
-      // Each fluid's volume flux takes its upwind cell's volume fraction, as
-      // the advection of its mass does (eqs. 77-80): with the mean of the two
-      // cells a steady flow through a jump in porosity would carry a volume
-      // the mass flux does not, and the pressure beside the jump would run
-      // away in a checkerboard.
-      double inverse_density = 0.0;
-      double mixture = phi_s * u_s;
-      for (std::size_t m = 0; m < n; ++m) {
-        const double u = face_velocity_[m][at(d)][at(f)];
-        const CellField& phi = state_.materials[m].volume_fraction;
-        const double carried = interior ? phi[at(u >= 0.0 ? lower : upper)] : phi[at(cell)];
-        face_fraction_[m][at(d)][at(f)] = carried;
-        inverse_density += carried * face_correction_[m][at(d)][at(f)];
-        mixture += carried * u;
-      }
-      face_density_[at(d)][at(f)] = type == SideType::wall ? 1.0 : 1.0 / inverse_density;
-      mixture_velocity_[at(d)][at(f)] = type == SideType::wall ? 0.0 : mixture;
     }
   }
+}
+
+// The divergence the pressure equation balances: each fluid's volume flux
+// takes its upwind cell's volume fraction, the upwind side read off
+// `direction`, as the advection of its mass does (eqs. 77-80): with the
+// mean of the two cells a steady flow through a jump in porosity would
+// carry a volume the mass flux does not, and the pressure beside the jump
+// would run away in a checkerboard. Plus the solid's flux.
+template <int Dim>
+void IceSolver<Dim>::assemble_divergence(const std::vector<FaceField<Dim>>& direction) {
+  for (int d = 0; d < Dim; ++d) {
+    for (int f = 0; f < grid_.face_count(d); ++f) {
+      const int lower = grid_.lower_cell(d, f);
+      const int upper = grid_.upper_cell(d, f);
+      const bool interior = lower >= 0 && upper >= 0;
+      const bool upper_side = upper < 0;
+      const int cell = upper_side ? lower : upper;
+      if (!interior && sides_[at(2 * d + (upper_side ? 1 : 0))].type == SideType::wall) {
+        face_density_[at(d)][at(f)] = 1.0;
+        mixture_velocity_[at(d)][at(f)] = 0.0;
+        continue;
+      }
+      double inverse_density = 0.0;
+      double mixture = solid_face_fraction_[at(d)][at(f)] * solid_face_velocity_[at(d)][at(f)];
+      for (std::size_t m = 0; m < count(); ++m) {
+        const CellField& phi = state_.materials[m].volume_fraction;
+        const double carried =
+            interior ? phi[at(direction[m][at(d)][at(f)] >= 0.0 ? lower : upper)] : phi[at(cell)];
+        face_fraction_[m][at(d)][at(f)] = carried;
+        inverse_density += carried * face_correction_[m][at(d)][at(f)];
+        mixture += carried * face_velocity_[m][at(d)][at(f)];
+      }
+      face_density_[at(d)][at(f)] = 1.0 / inverse_density;
+      mixture_velocity_[at(d)][at(f)] = mixture;
+    }
+  }
+}
+
+// Whether the pressure correction turned a face's flow against the upwind
+// side the divergence assumed, by more than a negligible volume.
+template <int Dim>
+bool IceSolver<Dim>::upwind_side_changed(const std::vector<FaceField<Dim>>& assumed,
+                                         double dt) const {
+  for (std::size_t m = 0; m < count(); ++m) {
+    const CellField& phi = state_.materials[m].volume_fraction;
+    for (int d = 0; d < Dim; ++d) {
+      const double factor = dt / grid_.spacing()[d];
+      for (int f = 0; f < grid_.face_count(d); ++f) {
+        const int lower = grid_.lower_cell(d, f);
+        const int upper = grid_.upper_cell(d, f);
+        if (lower < 0 || upper < 0) continue;
+        const double u = face_velocity_[m][at(d)][at(f)];
+        if ((u >= 0.0) == (assumed[m][at(d)][at(f)] >= 0.0)) continue;
+        if (std::abs(phi[at(lower)] - phi[at(upper)]) * std::abs(u) * factor > 1e-10) return true;
+      }
+    }
+  }
+  return false;
 }
 
 // Tran et al., MPMICE, eqs. 52-53 and 125, then each material's face
@@ -643,15 +707,21 @@ double IceSolver<Dim>::face_drag(int lower, int upper, double face_porosity, int
                                  const std::vector<FaceField<Dim>>& velocity) const {
   const double n_l = state_.porosity[at(lower)];
   const double n_r = state_.porosity[at(upper)];
+  return face_porosity * fluid_upwind_porosity(lower, upper, d, f, velocity) * 0.5 *
+         (solid_drag_[at(lower)] / (n_l * n_l) + solid_drag_[at(upper)] / (n_r * n_r));
+}
+
+// The pore space of the cell the fluids' momentum on a face comes from.
+template <int Dim>
+double IceSolver<Dim>::fluid_upwind_porosity(int lower, int upper, int d, int f,
+                                             const std::vector<FaceField<Dim>>& velocity) const {
   double momentum = 0.0;
   for (std::size_t m = 0; m < count(); ++m) {
     momentum += (state_.materials[m].bulk_density[at(lower)] +
                  state_.materials[m].bulk_density[at(upper)]) *
                 velocity[m][at(d)][at(f)];
   }
-  const double upwind = momentum >= 0.0 ? n_l : n_r;
-  return face_porosity * upwind * 0.5 *
-         (solid_drag_[at(lower)] / (n_l * n_l) + solid_drag_[at(upper)] / (n_r * n_r));
+  return state_.porosity[at(momentum >= 0.0 ? lower : upper)];
 }
 
 template <int Dim>

@@ -158,12 +158,13 @@ class IceSolver {
 
  private:
   // The steps of advance(), in order.
-  void compute_face_velocities(double dt);                // eqs. 44-45
-  void exchange_face_momentum(double dt);                 // eq. 48
-  PressureSolution solve_pressure_increment(double dt);   // eqs. 52-53, 125
-  void compute_face_pressure();                           // eq. 54
-  void compute_lagrangian_values(double dt);              // eqs. 59, 61-62
-  void exchange_cell_momentum(double dt);                 // eqs. 67-68
+  void compute_face_velocities(double dt);                                 // eqs. 44-45
+  void exchange_face_momentum(double dt);                                  // eq. 48
+  void assemble_divergence(const std::vector<FaceField<Dim>>& direction);  // eq. 75
+  PressureSolution solve_pressure_increment(double dt);                    // eqs. 52-53, 125
+  void compute_face_pressure();                                            // eq. 54
+  void compute_lagrangian_values(double dt);                               // eqs. 59, 61-62
+  void exchange_cell_momentum(double dt);                                  // eqs. 67-68
   bool compute_lagrangian_energy(double dt);              // eqs. 60, 63; false: the step is refused
   void exchange_cell_energy(double dt);                   // eqs. 69-70
   void compute_lagrangian_specific_volume(double dt);     // eqs. 73-76
@@ -173,9 +174,12 @@ class IceSolver {
   void move_solid(double dt);  // eq. 107
   double face_drag(int lower, int upper, double face_porosity, int direction, int face,
                    const std::vector<FaceField<Dim>>& velocity) const;
+  double fluid_upwind_porosity(int lower, int upper, int direction, int face,
+                               const std::vector<FaceField<Dim>>& velocity) const;
   void add_viscous_stress(double dt);   // eq. 59's Delta(mU)_tau
   void add_heat_conduction(double dt);  // eq. 60's div q
   double face_courant(double dt) const;
+  bool upwind_side_changed(const std::vector<FaceField<Dim>>& assumed, double dt) const;
   double face_fraction(std::size_t material, int direction, int face) const;
   void check_state(const FluidState<Dim>& state) const;
   std::size_t count() const { return materials_.size(); }
@@ -239,7 +243,9 @@ class IceSolver {
   // Per fluid material, the volume fraction its face flux carries (the
   // upwind cell's, as the advection of its mass takes it).
   std::vector<FaceField<Dim>> face_fraction_;
-  std::vector<FaceField<Dim>> previous_face_velocity_;  // of the last accepted step
+  std::vector<FaceField<Dim>> previous_face_velocity_;   // of the last accepted step
+  std::vector<FaceField<Dim>> predicted_face_velocity_;  // this step's, before the correction
+  std::vector<FaceField<Dim>> flow_direction_;           // the upwind sides the divergence took
   bool solid_drag_on_ = false;
   CellField solid_drag_;
   CellField solid_bulk_density_;

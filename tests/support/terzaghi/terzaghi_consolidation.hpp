@@ -1,0 +1,51 @@
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+// Terzaghi's one-dimensional consolidation of a column of height h, drained
+// at the top and impermeable at the bottom, for tests: the excess pore
+// pressure under a load p0 applied at once (Pan et al. 2021, eq. 82; Tran
+// et al., MPMICE, eq. 99 with z measured from the top), and under a load
+// ramped linearly from zero over t_ramp, by superposition of the first:
+//   p_ramp(z, t) = (1 / t_ramp) int_0^min(t, t_ramp) p(z, t - s) ds.
+namespace cosim::testing {
+
+struct TerzaghiColumn {
+  double height = 1.0;         // h [m]
+  double load = 1.0e4;         // p0 [Pa]
+  double consolidation = 1.0;  // c_v [m^2/s]
+  double ramp_time = 0.0;      // [s]; 0: the load at once
+
+  // z measured up from the impermeable bottom [m], t [s].
+  double excess_pressure_step(double z, double t) const {
+    if (t <= 0.0) return 0.0;
+    const double time_factor = consolidation * t / (height * height);
+    double sum = 0.0;
+    for (int m = 1; m <= 2000; ++m) {
+      const double k = (2 * m - 1) * std::numbers::pi / 2.0;
+      const double term = std::exp(-k * k * time_factor);
+      sum += (m % 2 == 1 ? 1.0 : -1.0) / (2 * m - 1) * std::cos(k * z / height) * term;
+      if (term < 1e-16) break;
+    }
+    return 4.0 * load / std::numbers::pi * sum;
+  }
+
+  double excess_pressure(double z, double t) const {
+    if (ramp_time <= 0.0) return excess_pressure_step(z, t);
+    const double span = std::min(t, ramp_time);
+    constexpr int intervals = 400;  // Simpson
+    double sum = 0.0;
+    for (int i = 0; i <= intervals; ++i) {
+      const double s = span * i / intervals;
+      const double w = i == 0 || i == intervals ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
+      sum += w * excess_pressure_step(z, t - s);
+    }
+    return sum * span / (3.0 * intervals) / ramp_time;
+  }
+
+  double time_of(double time_factor) const { return time_factor * height * height / consolidation; }
+};
+
+}  // namespace cosim::testing
