@@ -790,7 +790,10 @@ void IceSolver<Dim>::compute_face_pressure() {
         face_p[at(f)] = side.pressure;
       } else {
         const double offset = upper_side ? 0.5 * dx : -0.5 * dx;
-        face_p[at(f)] = new_pressure_[at(cell)] + mixture_density(cell) * gravity_[d] * offset;
+        // The fluids' intrinsic density: in a porous cell their weight
+        // rhobar g is carried by n grad P.
+        face_p[at(f)] = new_pressure_[at(cell)] +
+                        mixture_density(cell) / state_.porosity[at(cell)] * gravity_[d] * offset;
       }
     }
   }

@@ -1,0 +1,175 @@
+// The fluid-solid drag solved inside the ICE step (IceSolver::set_solid_drag,
+// the coupler's `solved_by: fluid`): the momentum the fluid loses is the
+// solid's impulse to round-off, uniform relaxation follows the implicit
+// two-material exchange (Tran et al., MPMICE, eq. 131) step by step,
+// steady flow through a held porous column is Darcy's whatever the step, the
+// pressure's force on the solid is its buoyancy at rest, and bad input is
+// refused.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "cosim/error.hpp"
+#include "ice/eos/linear_water.hpp"
+#include "ice/solver/ice_solver.hpp"
+
+namespace ice {
+namespace {
+
+std::vector<FluidMaterial> water() {
+  return {{"water", std::make_shared<LinearWater>(LinearWaterParameters{}), 0.0, 0.0}};
+}
+
+template <int Dim>
+CellGrid<Dim> strip(int cells, double length) {
+  typename CellGrid<Dim>::CellIndex count;
+  count.fill(1);
+  count[0] = cells;
+  typename CellGrid<Dim>::Point spacing = CellGrid<Dim>::Point::Constant(length / cells);
+  return CellGrid<Dim>(CellGrid<Dim>::Point::Zero(), spacing, count);
+}
+
+template <int Dim>
+FluidState<Dim> still_water(const CellGrid<Dim>& grid, double porosity, double velocity = 0.0) {
+  const auto cells = static_cast<std::size_t>(grid.cell_count());
+  FluidState<Dim> state;
+  state.materials.resize(1);
+  MaterialState<Dim>& m = state.materials[0];
+  m.bulk_density.assign(cells, 999.8 * porosity);
+  m.temperature.assign(cells, 283.15);
+  for (auto& u : m.velocity) u.assign(cells, 0.0);
+  m.velocity[0].assign(cells, velocity);
+  state.porosity.assign(cells, porosity);
+  state.pressure.assign(cells, 101325.0);
+  return state;
+}
+
+std::array<SideCondition, 2> open_ends(double inlet, double outlet) {
+  SideCondition a, b;
+  a.type = b.type = SideType::fixed_pressure;
+  a.pressure = inlet;
+  b.pressure = outlet;
+  return {a, b};
+}
+
+TEST(IceSolidDrag, UniformRelaxationIsTheImplicitExchangeAndKeepsMomentum) {
+  // One row of cells between walls, the water moving across the row (in y):
+  // nothing but the drag changes its y momentum.
+  const CellGrid<2> grid(CellGrid<2>::Point::Zero(), CellGrid<2>::Point(0.125, 0.125), {8, 1});
+  const double n = 0.4, v0 = 0.3, k = 2.0e5, solid_density = 1590.0, dt = 1e-3;
+  FluidState<2> state = still_water(grid, n);
+  state.materials[0].velocity[1].assign(8, v0);
+  IceSolver<2> solver(grid, water(), ExchangeCoefficients::none(1), {}, Eigen::Vector2d::Zero(),
+                      state);
+  const std::size_t cells = 8;
+  solver.set_porous_medium(std::vector<double>(cells, n),
+                           {CellField(cells, 0.0), CellField(cells, 0.0)});
+  solver.set_solid_drag(std::vector<double>(cells, k), std::vector<double>(cells, solid_density));
+  const double fluid_density = solver.state().materials[0].bulk_density[0];
+  const double volume = grid.cell_volume();
+  const double before = solver.totals()[0].momentum[1];
+  double impulse_total = 0.0, relative = v0, worst = 0.0;
+  std::vector<double> impulse(2 * cells);
+  for (int step = 0; step < 10; ++step) {
+    ASSERT_TRUE(solver.advance(dt).accepted);
+    solver.take_solid_impulse(impulse);
+    for (std::size_t c = 0; c < cells; ++c) impulse_total += impulse[2 * c + 1];
+    // eq. 131: U_f - U_s shrinks by 1 + dt K (1/rhobar_f + 1/rhobar_s) per step.
+    relative /= 1.0 + dt * k * (1.0 / fluid_density + 1.0 / solid_density);
+    const double solid_velocity = impulse_total / (solid_density * volume * cells);
+    const double fluid = solver.state().materials[0].velocity[1][3];
+    worst = std::max(worst, std::abs((fluid - solid_velocity) / relative - 1.0));
+  }
+  const double lost = before - solver.totals()[0].momentum[1];
+  fmt::print(
+      "momentum lost by the fluid {:.6e} vs impulse to the solid {:.6e}; relative velocity vs "
+      "eq. 131: worst {:.1e}\n",
+      lost, impulse_total, worst);
+  EXPECT_LT(std::abs(lost - impulse_total), 1e-12 * std::abs(lost));
+  EXPECT_LT(worst, 1e-9);
+}
+
+TEST(IceSolidDrag, SteadyFlowThroughAHeldColumnIsDarcysAtAnyStep) {
+  // 20 cells over 2 m, the middle 10 porous (n = 0.4), dp = 50 kPa.
+  const CellGrid<1> grid = strip<1>(20, 2.0);
+  const double n = 0.4, k = 1.62e5, dp = 5.0e4;
+  const double darcy = n * dp / (k * 1.0);  // n grad p = K U_f, interstitial
+  for (double dt : {1e-3, 2e-2}) {
+    FluidState<1> state = still_water(grid, 1.0);
+    IceSolver<1> solver(grid, water(), ExchangeCoefficients::none(1),
+                        open_ends(101325.0 + dp, 101325.0), Eigen::Matrix<double, 1, 1>::Zero(),
+                        state);
+    std::vector<double> porosity(20, 1.0), drag(20, 0.0), density(20, 0.0);
+    for (int c = 5; c < 15; ++c) {
+      porosity[static_cast<std::size_t>(c)] = n;
+      drag[static_cast<std::size_t>(c)] = k;
+      density[static_cast<std::size_t>(c)] = 1e30;  // held
+    }
+    solver.set_porous_medium(porosity, {CellField(20, 0.0)}, PorosityChange::fill_pores);
+    solver.set_solid_drag(drag, density);
+    for (double t = 0.0; t < 0.5; t += dt) ASSERT_TRUE(solver.advance(dt).accepted);
+    const double u = solver.state().materials[0].velocity[0][10];
+    const double flux = solver.face_velocity(0)[0][3];  // free water upstream
+    fmt::print("dt {:.0e}: U_f {:.6f} vs Darcy {:.6f} ({:+.2e}); upstream flux vs n U_f {:+.2e}\n",
+               dt, u, darcy, u / darcy - 1.0, flux / (n * darcy) - 1.0);
+    EXPECT_NEAR(u / darcy, 1.0, 2e-3);
+    EXPECT_NEAR(flux / (n * darcy), 1.0, 2e-3);
+  }
+}
+
+TEST(IceSolidDrag, PressureForceOnASolidAtRestIsItsBuoyancy) {
+  const CellGrid<2> grid(CellGrid<2>::Point::Zero(), CellGrid<2>::Point(0.1, 0.1), {2, 10});
+  const double n = 0.4, g = 9.81;
+  FluidState<2> state = still_water(grid, n);
+  // Hydrostatic: the water's density from its pressure, rho_ref (1 + (P - P_ref) / K).
+  for (int c = 0; c < grid.cell_count(); ++c) {
+    const auto i = static_cast<std::size_t>(c);
+    state.pressure[i] = 101325.0 + 999.8 * g * (1.0 - grid.cell_centre(c)[1]);
+    state.materials[0].bulk_density[i] = n * 999.8 * (1.0 + (state.pressure[i] - 101325.0) / 2.0e9);
+  }
+  std::array<SideCondition, 4> sides{};
+  sides[3].type = SideType::fixed_pressure;
+  sides[3].pressure = 101325.0;
+  IceSolver<2> solver(grid, water(), ExchangeCoefficients::none(1), sides, Eigen::Vector2d(0.0, -g),
+                      state);
+  std::vector<double> drag(20, 1e6), density(20, 1590.0);
+  solver.set_porous_medium(std::vector<double>(20, n), {CellField(20, 0.0), CellField(20, 0.0)});
+  solver.set_solid_drag(drag, density);
+  for (int step = 0; step < 5; ++step) ASSERT_TRUE(solver.advance(1e-3).accepted);
+  std::vector<double> force(40);
+  solver.solid_pressure_force(force);
+  const double rho = solver.state().materials[0].density[5];
+  const double buoyancy = (1.0 - n) * rho * g * grid.cell_volume();
+  double worst = 0.0;
+  for (int c = 0; c < 20; ++c) {
+    worst = std::max(worst, std::abs(force[2 * static_cast<std::size_t>(c) + 1] / buoyancy - 1.0));
+    EXPECT_NEAR(force[2 * static_cast<std::size_t>(c)], 0.0, 1e-9 * buoyancy);
+  }
+  fmt::print("pressure force on the solid vs its buoyancy: worst {:.1e}\n", worst);
+  EXPECT_LT(worst, 1e-4);
+}
+
+TEST(IceSolidDrag, BadDragInputIsRefused) {
+  const CellGrid<1> grid = strip<1>(4, 1.0);
+  SideCondition wall;
+  IceSolver<1> solver(grid, water(), ExchangeCoefficients::none(1), {wall, wall},
+                      Eigen::Matrix<double, 1, 1>::Zero(), still_water(grid, 1.0));
+  EXPECT_THROW(solver.set_solid_drag(std::vector<double>(3, 1.0), std::vector<double>(4, 1.0)),
+               std::invalid_argument);
+  EXPECT_THROW(
+      solver.set_solid_drag(std::vector<double>{1.0, -1.0, 1.0, 1.0}, std::vector<double>(4, 1.0)),
+      cosim::NumericalError);
+  EXPECT_THROW(
+      solver.set_solid_drag(std::vector<double>(4, 1.0), std::vector<double>{1.0, NAN, 1.0, 1.0}),
+      cosim::NumericalError);
+  std::vector<double> impulse(3);
+  EXPECT_THROW(solver.take_solid_impulse(impulse), std::invalid_argument);
+  solver.set_solid_drag({}, {});
+  EXPECT_FALSE(solver.has_solid_drag());
+}
+
+}  // namespace
+}  // namespace ice
