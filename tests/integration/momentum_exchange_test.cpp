@@ -115,5 +115,83 @@ TEST(MomentumExchange, JobMissingAPhaseFieldIsRefusedBeforeStarting) {
               ::testing::HasSubstr("needs participant 'soil' to write 'solid_bulk_density'"));
 }
 
+// solved_by: fluid. The "fluid" writes, as the rate of the window integral,
+// the momentum its own steps gave the solid (1.2 kg m/s per m^3 and second in
+// x); the coupler sends it K from the law (checked by the fluid at every
+// window) and hands the solid that momentum through a conservative map onto
+// the solid's other grid.
+void write_fluid_solved_case(const fs::path& dir) {
+  write_case(dir);
+  std::string job = read_text(dir / "job.yaml");
+  job.replace(job.find("    writes: {fluid_velocity: grid, fluid_bulk_density: grid}\n    reads: "
+                       "{momentum_exchange_impulse: grid}"),
+              std::string("    writes: {fluid_velocity: grid, fluid_bulk_density: grid}\n    "
+                          "reads: {momentum_exchange_impulse: grid}")
+                  .size(),
+              "    writes: {fluid_velocity: grid, fluid_bulk_density: grid, "
+              "momentum_exchange_impulse: grid}\n    reads: {drag_coefficient: grid}");
+  job += "  solved_by: fluid\n";
+  write_text(dir / "job.yaml", job);
+  write_text(dir / "water.yaml", R"(kind: test_participant
+dt: 1.0e-3
+mesh: {dim: 2, origin: [0.0, 0.0], spacing: [0.1, 0.1], cells: [10, 10]}
+writes:
+  - {name: fluid_velocity, unit: m/s, components: 2, function: [0.1, 0, 0, 0, 0]}
+  - {name: fluid_bulk_density, unit: kg/m^3, function: [600.0, 0, 0, 0, 0]}
+  - {name: momentum_exchange_impulse, unit: kg m/s, components: 2, quantity: extensive, time: integral, function: [1.2, 0, 0, 0, 0]}
+reads:
+  - {name: drag_coefficient, unit: kg/(m^3 s), function: [1.0e5, 0, 0, 0, 0], tolerance: 1.0e-6}
+)");
+}
+
+TEST(MomentumExchange, SolvedByTheFluidSendsKAndHandsTheSolidWhatTheFluidGave) {
+  const fs::path dir = fresh_directory("e2e_momentum_fluid");
+  write_fluid_solved_case(dir);
+  const auto r = run({binary("cosim").string(), "run", (dir / "job.yaml").string(), "--output",
+                      (dir / "run").string()},
+                     std::chrono::seconds(120));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto solid = read_csv(dir / "run" / "soil" / "momentum_exchange_impulse_applied.csv");
+  ASSERT_EQ(solid.size(), 10u);
+  // 1.2 per m^3 and second over the 1 m^2 domain, 2 components, one window.
+  const double expected = 2.0 * 1.2 * window;
+  double worst = 0.0;
+  for (std::size_t k = 1; k < solid.size(); ++k)
+    worst = std::max(worst, std::abs(solid[k][2] - expected) / expected);
+  std::printf(
+      "solved_by fluid: the solid receives %.12g kg m/s per window (fluid gave %.12g); "
+      "relative error %.3e\n",
+      solid[1][2], expected, worst);
+  EXPECT_LE(worst, 1e-12);
+  const auto summary = nlohmann::json::parse(read_text(dir / "run" / "summary.json"));
+  EXPECT_LE(summary["metrics"]["max_momentum_exchange_balance_error"]["value"].get<double>(),
+            1e-12);
+}
+
+TEST(MomentumExchange, SolvedByTheFluidNeedsItsFieldsTheOtherWayRound) {
+  const fs::path dir = fresh_directory("e2e_momentum_fluid_bad");
+  write_fluid_solved_case(dir);
+  const std::string good = read_text(dir / "job.yaml");
+  const auto refused = [&](const std::string& from, const std::string& to, const char* message) {
+    std::string job = good;
+    job.replace(job.find(from), from.size(), to);
+    write_text(dir / "job.yaml", job);
+    const auto r = run({binary("cosim").string(), "validate", (dir / "job.yaml").string()},
+                       std::chrono::seconds(30));
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_THAT(r.output, ::testing::HasSubstr(message)) << r.output;
+  };
+  refused("reads: {drag_coefficient: grid}", "reads: {}",
+          "needs participant 'water' to read 'drag_coefficient'");
+  refused(", momentum_exchange_impulse: grid}\n    reads: {drag_coefficient: grid}",
+          "}\n    reads: {drag_coefficient: grid}",
+          "needs participant 'water' to write 'momentum_exchange_impulse'");
+  refused(
+      "reads: {drag_coefficient: grid}",
+      "reads: {drag_coefficient: grid, momentum_exchange_impulse: grid}",
+      "writes 'momentum_exchange_impulse' (the momentum the solid receives) and does not read it");
+  refused("  solved_by: fluid\n", "  solved_by: fluids\n", "solved_by");
+}
+
 }  // namespace
 }  // namespace cosim::testing

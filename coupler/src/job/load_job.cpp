@@ -194,11 +194,6 @@ MomentumExchangeSpec read_momentum_exchange(const Job& job, const config::Node& 
   } else {
     require(*fluid, fluid->reads, f::drag_coefficient, "read");
     require(*fluid, fluid->writes, f::impulse, "write");
-    if (fluid->reads.count(f::impulse))
-      m["solved_by"].fail(
-          fmt::format("with `solved_by: fluid` participant '{}' writes '{}' (the momentum the "
-                      "solid receives) and does not read it",
-                      fluid->name, f::impulse));
   }
   return spec;
 }
