@@ -186,10 +186,9 @@ TEST(MomentumExchange, SolvedByTheFluidNeedsItsFieldsTheOtherWayRound) {
   refused(", momentum_exchange_impulse: grid}\n    reads: {drag_coefficient: grid}",
           "}\n    reads: {drag_coefficient: grid}",
           "needs participant 'water' to write 'momentum_exchange_impulse'");
-  refused(
-      "reads: {drag_coefficient: grid}",
-      "reads: {drag_coefficient: grid, momentum_exchange_impulse: grid}",
-      "writes 'momentum_exchange_impulse' (the momentum the solid receives) and does not read it");
+  refused("reads: {drag_coefficient: grid}",
+          "reads: {drag_coefficient: grid, momentum_exchange_impulse: grid}",
+          "both writes and reads 'momentum_exchange_impulse'");
   refused("  solved_by: fluid\n", "  solved_by: fluids\n", "solved_by");
 }
 
