@@ -16,6 +16,7 @@
 #include "cosim/io/tail_lines.hpp"
 #include "cosim/mapping/bounded_redistribution.hpp"
 #include "cosim/mapping/build_operator.hpp"
+#include "energy_exchange_step.hpp"
 #include "momentum_exchange_step.hpp"
 #include "operator_cache.hpp"
 #include "progress.hpp"
@@ -69,6 +70,8 @@ struct Coupler::Impl {
   OperatorCache operators;
   std::optional<MomentumExchangeStep> momentum_exchange;
   double max_momentum_balance_error = 0.0;
+  std::optional<EnergyExchangeStep> energy_exchange;
+  double max_energy_balance_error = 0.0;
   std::map<std::string, std::unique_ptr<SnapshotWriter>> snapshot_writers;
   std::size_t window = 0;
   double max_conservation_error = 0.0;
@@ -79,6 +82,7 @@ struct Coupler::Impl {
       : job(j), transport(t), supervisor(s), summary(sum), options(std::move(o)) {
     for (const auto& p : job.participants) peers[p.name].spec = &p;
     if (job.momentum_exchange) momentum_exchange.emplace(*job.momentum_exchange, job.file.string());
+    if (job.energy_exchange) energy_exchange.emplace(*job.energy_exchange, job.file.string());
   }
 
   double window_time(std::size_t w) const {
@@ -226,6 +230,9 @@ struct Coupler::Impl {
     if (momentum_exchange)
       momentum_exchange->check_declarations(job, peers.at(job.momentum_exchange->fluid).hello,
                                             peers.at(job.momentum_exchange->solid).hello);
+    if (energy_exchange)
+      energy_exchange->check_declarations(job, peers.at(job.energy_exchange->fluid).hello,
+                                          peers.at(job.energy_exchange->solid).hello);
   }
 
   void handle_window_message(const std::string& name, const com::Message& m) {
@@ -354,6 +361,19 @@ struct Coupler::Impl {
         std::make_shared<const std::vector<double>>(std::move(impulses.solid));
   }
 
+  void exchange_energy(FieldsByPeer& out) {
+    if (!energy_exchange) return;
+    auto scope = summary.phases().measure("exchange");
+    const job::EnergyExchangeSpec& spec = *job.energy_exchange;
+    const double dt = window == 0 ? 0.0 : job.window;
+    auto heat = energy_exchange->run(dt, side_of(spec.fluid), side_of(spec.solid), operators);
+    max_energy_balance_error = std::max(max_energy_balance_error, heat.energy_balance_error);
+    out[spec.fluid][job::energy_exchange_fields::heat] =
+        std::make_shared<const std::vector<double>>(std::move(heat.fluid));
+    out[spec.solid][job::energy_exchange_fields::heat] =
+        std::make_shared<const std::vector<double>>(std::move(heat.solid));
+  }
+
   void map_and_send() {
     const double t = window_time(window);
     FieldsByPeer received;
@@ -385,6 +405,7 @@ struct Coupler::Impl {
       }
     }
     exchange_momentum(received);
+    exchange_energy(received);
     for (const auto& [peer_name, fields] : received) {
       const Peer& to = peers.at(peer_name);
       for (const auto& [field, values] : fields) {
@@ -463,6 +484,8 @@ void Coupler::run() {
       if (s.momentum_exchange)
         s.summary.set_metric("max_momentum_exchange_balance_error", s.max_momentum_balance_error,
                              "1");
+      if (s.energy_exchange)
+        s.summary.set_metric("max_energy_exchange_balance_error", s.max_energy_balance_error, "1");
       progress.update(s.window, s.window_time(s.window));
       if (s.window % 100 == 0) s.summary.write();
     }

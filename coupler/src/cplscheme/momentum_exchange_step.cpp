@@ -19,15 +19,6 @@ const FieldSpec* find(const std::vector<FieldSpec>& fields, const std::string& n
   return it == fields.end() ? nullptr : &*it;
 }
 
-const Mesh& mesh_of(const PhaseSide& side, const std::string& mesh) {
-  return side.meshes->at(mesh);
-}
-
-std::size_t version_of(const PhaseSide& side, const std::string& mesh) {
-  auto it = side.mesh_versions->find(mesh);
-  return it == side.mesh_versions->end() ? 0 : it->second;
-}
-
 }  // namespace
 
 MomentumExchangeStep::MomentumExchangeStep(const job::MomentumExchangeSpec& spec,
@@ -83,8 +74,8 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const Ph
   if (spec_.solved_by == job::ExchangeSolver::fluid)
     return run_in_fluid(window, fluid, solid, operators);
   const PhaseSide& owner = spec_.mesh_owner == spec_.fluid ? fluid : solid;
-  const Mesh& exchange_mesh = mesh_of(owner, spec_.mesh);
-  const std::size_t exchange_version = version_of(owner, spec_.mesh);
+  const Mesh& exchange_mesh = owner.mesh(spec_.mesh);
+  const std::size_t exchange_version = owner.version(spec_.mesh);
   const int dim = exchange_mesh.dimension();
   const std::size_t cells = exchange_mesh.size();
 
@@ -93,7 +84,7 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const Ph
     const std::string& mesh = side.spec->writes.at(field);
     const auto& op =
         operators.get(fmt::format("momentum:{}.{}->exchange", side.spec->name, mesh),
-                      mesh_of(side, mesh), version_of(side, mesh), exchange_mesh, exchange_version,
+                      side.mesh(mesh), side.version(mesh), exchange_mesh, exchange_version,
                       mapping::Constraint::consistent, mapping::Kernel::linear);
     return op.apply(side.written->at(field), components);
   };
@@ -120,7 +111,7 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const Ph
     const std::string& mesh = side.spec->reads.at(f::impulse);
     const auto& op =
         operators.get(fmt::format("momentum:exchange->{}.{}", side.spec->name, mesh), exchange_mesh,
-                      exchange_version, mesh_of(side, mesh), version_of(side, mesh),
+                      exchange_version, side.mesh(mesh), side.version(mesh),
                       mapping::Constraint::conservative, mapping::Kernel::linear);
     return op.apply(impulse, dim);
   };
@@ -142,8 +133,8 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run_in_fluid(double window,
                                                                   const PhaseSide& solid,
                                                                   OperatorCache& operators) const {
   const PhaseSide& owner = spec_.mesh_owner == spec_.fluid ? fluid : solid;
-  const Mesh& exchange_mesh = mesh_of(owner, spec_.mesh);
-  const std::size_t exchange_version = version_of(owner, spec_.mesh);
+  const Mesh& exchange_mesh = owner.mesh(spec_.mesh);
+  const std::size_t exchange_version = owner.version(spec_.mesh);
   const int dim = exchange_mesh.dimension();
   const std::size_t cells = exchange_mesh.size();
 
@@ -155,7 +146,7 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run_in_fluid(double window,
   auto on_exchange_mesh = [&](const PhaseSide& side, const char* field, int components) {
     const std::string& mesh = side.spec->writes.at(field);
     return consistent(fmt::format("momentum:{}.{}->exchange", side.spec->name, mesh),
-                      mesh_of(side, mesh), version_of(side, mesh), exchange_mesh, exchange_version)
+                      side.mesh(mesh), side.version(mesh), exchange_mesh, exchange_version)
         .apply(side.written->at(field), components);
   };
   const auto phi_s = on_exchange_mesh(solid, f::solid_fraction, 1);
@@ -183,20 +174,19 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run_in_fluid(double window,
   const std::string& drag_mesh = fluid.spec->reads.at(f::drag_coefficient);
   out.drag_coefficient =
       consistent(fmt::format("momentum:exchange->{}.{}", fluid.spec->name, drag_mesh),
-                 exchange_mesh, exchange_version, mesh_of(fluid, drag_mesh),
-                 version_of(fluid, drag_mesh))
+                 exchange_mesh, exchange_version, fluid.mesh(drag_mesh), fluid.version(drag_mesh))
           .apply(drag, 1);
 
   const std::string& from_mesh = fluid.spec->writes.at(f::impulse);
   const std::string& to_mesh = solid.spec->reads.at(f::impulse);
   const std::vector<double>& given = fluid.written->at(f::impulse);
-  out.solid = operators
-                  .get(fmt::format("momentum:{}.{}->{}.{}", fluid.spec->name, from_mesh,
-                                   solid.spec->name, to_mesh),
-                       mesh_of(fluid, from_mesh), version_of(fluid, from_mesh),
-                       mesh_of(solid, to_mesh), version_of(solid, to_mesh),
-                       mapping::Constraint::conservative, mapping::Kernel::linear)
-                  .apply(given, dim);
+  out.solid =
+      operators
+          .get(fmt::format("momentum:{}.{}->{}.{}", fluid.spec->name, from_mesh, solid.spec->name,
+                           to_mesh),
+               fluid.mesh(from_mesh), fluid.version(from_mesh), solid.mesh(to_mesh),
+               solid.version(to_mesh), mapping::Constraint::conservative, mapping::Kernel::linear)
+          .apply(given, dim);
   double scale = 0.0, net = 0.0;
   for (double j : given) {
     scale += std::abs(j);

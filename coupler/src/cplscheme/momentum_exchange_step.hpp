@@ -9,18 +9,9 @@
 #include "cosim/exchange/drag_law.hpp"
 #include "cosim/job/job.hpp"
 #include "operator_cache.hpp"
+#include "phase_side.hpp"
 
 namespace cosim::cplscheme {
-
-// What the coupler knows of one participant in a window: its meshes (with
-// versions) and the fields it wrote.
-struct PhaseSide {
-  const job::ParticipantSpec* spec = nullptr;
-  const com::Hello* hello = nullptr;
-  const std::map<std::string, Mesh>* meshes = nullptr;
-  const std::map<std::string, std::size_t>* mesh_versions = nullptr;
-  const std::map<std::string, std::vector<double>>* written = nullptr;
-};
 
 // The coupler's implicit momentum exchange of a fluid and a porous solid
 // (DESIGN.md §4; Tran et al., MPMICE, eq. 131): the phases' fields are

@@ -93,6 +93,21 @@ Schema momentum_exchange_schema() {
   return Schema::any_of({Schema::one_of({"none"}), s});
 }
 
+Schema energy_exchange_schema() {
+  Schema s = Schema::object(
+      "Implicit energy exchange of a fluid and a solid sharing cells (Tran et al., MPMICE, eq. "
+      "23).");
+  s.required("fluid", Schema::string().non_empty(),
+             "Participant writing fluid_temperature and fluid_heat_capacity.")
+      .required("solid", Schema::string().non_empty(),
+                "Participant writing solid_temperature and solid_heat_capacity.")
+      .required("mesh", Schema::string().non_empty(),
+                "Exchange mesh, as <participant>.<mesh> (usually the fluid's grid).")
+      .required("coefficient", Schema::number().non_negative().unit("W/(m^3 K)"),
+                "Heat exchange coefficient H per unit volume of the mixture.");
+  return Schema::any_of({Schema::one_of({"none"}), s});
+}
+
 Schema make_job_schema() {
   Schema s = Schema::file("job",
                           "A coupled run: participants, the fields they exchange, and "
@@ -118,6 +133,9 @@ Schema make_job_schema() {
                 "Implicit drag exchange between a fluid and a porous solid, solved by the "
                 "coupler each window; both read the momentum they receive as "
                 "'momentum_exchange_impulse'.")
+      .optional("energy_exchange", energy_exchange_schema().default_value("none"),
+                "Implicit heat exchange between a fluid and a solid, solved by the coupler each "
+                "window; both read the heat they receive as 'heat_exchange_energy'.")
       .optional("output", output_schema(), "Coupler output.");
   return s;
 }

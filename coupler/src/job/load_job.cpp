@@ -127,6 +127,7 @@ void check_reads_provided(const Job& job, const config::Node& root) {
       if (job.momentum_exchange && (field == momentum_exchange_fields::impulse ||
                                     field == momentum_exchange_fields::drag_coefficient))
         continue;
+      if (job.energy_exchange && field == energy_exchange_fields::heat) continue;
       const bool provided = std::any_of(job.exchanges.begin(), job.exchanges.end(), [&](auto& x) {
         return x.to == p.name && x.field == field;
       });
@@ -198,6 +199,51 @@ MomentumExchangeSpec read_momentum_exchange(const Job& job, const config::Node& 
   return spec;
 }
 
+EnergyExchangeSpec read_energy_exchange(const Job& job, const config::Node& m) {
+  namespace f = energy_exchange_fields;
+  EnergyExchangeSpec spec;
+  spec.where = m.location();
+  spec.fluid = m["fluid"].as<std::string>();
+  spec.solid = m["solid"].as<std::string>();
+  spec.coefficient = m["coefficient"].as<double>();
+  const ParticipantSpec* fluid = job.participant(spec.fluid);
+  const ParticipantSpec* solid = job.participant(spec.solid);
+  if (!fluid) m["fluid"].fail(fmt::format("no participant named '{}'", spec.fluid));
+  if (!solid) m["solid"].fail(fmt::format("no participant named '{}'", spec.solid));
+  if (spec.fluid == spec.solid) m["solid"].fail("the fluid and the solid are the same participant");
+  const auto mesh = m["mesh"].as<std::string>();
+  const auto dot = mesh.find('.');
+  if (dot == std::string::npos)
+    m["mesh"].fail(fmt::format("'{}' is not <participant>.<mesh>", mesh));
+  spec.mesh_owner = mesh.substr(0, dot);
+  spec.mesh = mesh.substr(dot + 1);
+  if (spec.mesh_owner != spec.fluid && spec.mesh_owner != spec.solid)
+    m["mesh"].fail("the exchange mesh belongs to the fluid or the solid participant");
+  const ParticipantSpec* owner = spec.mesh_owner == spec.fluid ? fluid : solid;
+  auto exchange_mesh = owner->meshes.find(spec.mesh);
+  if (exchange_mesh == owner->meshes.end())
+    m["mesh"].fail(fmt::format("participant '{}' has no mesh '{}'", spec.mesh_owner, spec.mesh));
+  const int dim = exchange_mesh->second.dim;
+  auto require = [&](const ParticipantSpec& p, const std::map<std::string, std::string>& fields,
+                     const char* field, const char* verb) {
+    auto it = fields.find(field);
+    if (it == fields.end())
+      m.fail(fmt::format(
+          "the energy exchange needs participant '{}' to {} '{}' (add it to participants.{}.{}s)",
+          p.name, verb, field, p.name, verb));
+    if (p.meshes.at(it->second).dim != dim)
+      m.fail(fmt::format("'{}' of participant '{}' is on a {}D mesh, the exchange mesh is {}D",
+                         field, p.name, p.meshes.at(it->second).dim, dim));
+  };
+  for (const char* field : {f::solid_temperature, f::solid_heat_capacity})
+    require(*solid, solid->writes, field, "write");
+  for (const char* field : {f::fluid_temperature, f::fluid_heat_capacity})
+    require(*fluid, fluid->writes, field, "write");
+  require(*fluid, fluid->reads, f::heat, "read");
+  require(*solid, solid->reads, f::heat, "read");
+  return spec;
+}
+
 std::string hash_inputs(const config::Document& doc, const Job& job) {
   ContentHash h;
   h.update(doc.text());
@@ -257,6 +303,8 @@ Job load_job(const std::filesystem::path& file) {
   check_exchanges(job, root);
   if (auto m = root.find("momentum_exchange"); m && m->is_map())
     job.momentum_exchange = read_momentum_exchange(job, *m);
+  if (auto e = root.find("energy_exchange"); e && e->is_map())
+    job.energy_exchange = read_energy_exchange(job, *e);
   check_reads_provided(job, root);
   job.config_hash = hash_inputs(doc, job);
   return job;

@@ -83,6 +83,22 @@ struct MomentumExchangeSpec {
   SourceLocation where;
 };
 
+// The implicit energy exchange between a fluid and a solid sharing cells
+// (Tran et al., MPMICE, eq. 23), solved by the coupler once per window on
+// one participant's mesh with a heat exchange coefficient H: per unit
+// volume the fluid receives
+//   q = (T_s - T_f) / (1 / (dt H) + 1 / C_f + 1 / C_s),  C = rhobar c,
+// and the solid -q, so the phases' temperatures relax implicitly and the
+// energy is conserved to round-off. Field names in energy_exchange_fields.
+struct EnergyExchangeSpec {
+  std::string fluid;
+  std::string solid;
+  std::string mesh_owner;
+  std::string mesh;
+  double coefficient = 0.0;  // H [W m^-3 K^-1]
+  SourceLocation where;
+};
+
 namespace momentum_exchange_fields {
 // written by the solid
 inline constexpr const char* solid_fraction = "solid_fraction";          // phi_s [1]
@@ -132,6 +148,7 @@ struct Job {
   std::vector<ParticipantSpec> participants;  // in file order
   std::vector<ExchangeSpec> exchanges;
   std::optional<MomentumExchangeSpec> momentum_exchange;
+  std::optional<EnergyExchangeSpec> energy_exchange;
 
   const ParticipantSpec* participant(const std::string& name) const;
   std::size_t windows() const;  // number of coupling windows

@@ -1,0 +1,106 @@
+#include "energy_exchange_step.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "cosim/error.hpp"
+#include "cosim/exchange/implicit_exchange.hpp"
+
+namespace cosim::cplscheme {
+
+namespace f = job::energy_exchange_fields;
+
+EnergyExchangeStep::EnergyExchangeStep(const job::EnergyExchangeSpec& spec,
+                                       const std::string& job_file)
+    : spec_(spec), job_file_(job_file) {}
+
+void EnergyExchangeStep::check_declarations(const job::Job&, const com::Hello& fluid,
+                                            const com::Hello& solid) const {
+  auto fail = [&](const std::string& what) {
+    throw InputError(SourceLocation{job_file_, spec_.where.line, spec_.where.column},
+                     "energy_exchange", what);
+  };
+  auto check = [&](const com::Hello& hello, const std::vector<FieldSpec>& fields, const char* name,
+                   Quantity quantity, TimeTreatment time) {
+    auto it = std::find_if(fields.begin(), fields.end(), [&](auto& x) { return x.name == name; });
+    if (it == fields.end())
+      fail(fmt::format("participant '{}' does not declare '{}'", hello.participant, name));
+    if (it->components != 1 || it->quantity != quantity || it->time != time)
+      fail(fmt::format(
+          "participant '{}' declares '{}' as {} {} with {} components; the exchange needs {} {} "
+          "with 1",
+          hello.participant, name, to_string(it->quantity), to_string(it->time), it->components,
+          to_string(quantity), to_string(time)));
+  };
+  const auto intensive = Quantity::intensive;
+  const auto state = TimeTreatment::state;
+  check(solid, solid.writes, f::solid_temperature, intensive, state);
+  check(solid, solid.writes, f::solid_heat_capacity, intensive, state);
+  check(fluid, fluid.writes, f::fluid_temperature, intensive, state);
+  check(fluid, fluid.writes, f::fluid_heat_capacity, intensive, state);
+  for (const com::Hello* side : {&fluid, &solid})
+    check(*side, side->reads, f::heat, Quantity::extensive, TimeTreatment::integral);
+}
+
+EnergyExchangeStep::Heat EnergyExchangeStep::run(double window, const PhaseSide& fluid,
+                                                 const PhaseSide& solid,
+                                                 OperatorCache& operators) const {
+  const PhaseSide& owner = spec_.mesh_owner == spec_.fluid ? fluid : solid;
+  const Mesh& exchange_mesh = owner.mesh(spec_.mesh);
+  const std::size_t exchange_version = owner.version(spec_.mesh);
+  const std::size_t cells = exchange_mesh.size();
+  auto on_exchange_mesh = [&](const PhaseSide& side, const char* field) {
+    const std::string& mesh = side.spec->writes.at(field);
+    return operators
+        .get(fmt::format("energy:{}.{}->exchange", side.spec->name, mesh), side.mesh(mesh),
+             side.version(mesh), exchange_mesh, exchange_version, mapping::Constraint::consistent,
+             mapping::Kernel::linear)
+        .apply(side.written->at(field), 1);
+  };
+  const auto t_f = on_exchange_mesh(fluid, f::fluid_temperature);
+  const auto c_f = on_exchange_mesh(fluid, f::fluid_heat_capacity);
+  const auto t_s = on_exchange_mesh(solid, f::solid_temperature);
+  const auto c_s = on_exchange_mesh(solid, f::solid_heat_capacity);
+  std::vector<double> q_f(cells), q_s(cells);
+  for (std::size_t c = 0; c < cells; ++c) {
+    const auto bad = [&](const char* what, double value) {
+      throw NumericalError(fmt::format("energy exchange: cell {} of {}.{} has {} {}", c,
+                                       spec_.mesh_owner, spec_.mesh, what, value));
+    };
+    if (!(c_f[c] >= 0.0) || !std::isfinite(c_f[c])) bad("fluid heat capacity", c_f[c]);
+    if (!(c_s[c] >= 0.0) || !std::isfinite(c_s[c])) bad("solid heat capacity", c_s[c]);
+    const bool present = c_f[c] > 0.0 && c_s[c] > 0.0;
+    if (present && (!(t_f[c] > 0.0) || !std::isfinite(t_f[c]))) bad("fluid temperature", t_f[c]);
+    if (present && (!(t_s[c] > 0.0) || !std::isfinite(t_s[c]))) bad("solid temperature", t_s[c]);
+    // Tran et al., MPMICE, eq. 23 in closed form: the heat per unit volume
+    // the fluid receives; zero where either phase is absent.
+    const double q = present ? exchange::two_material_impulse(c_f[c], c_s[c], t_f[c], t_s[c],
+                                                              window * spec_.coefficient)
+                             : 0.0;
+    q_f[c] = q * exchange_mesh.control_volume(c);
+    q_s[c] = -q_f[c];
+  }
+  auto to_side = [&](const PhaseSide& side, const std::vector<double>& heat) {
+    const std::string& mesh = side.spec->reads.at(f::heat);
+    return operators
+        .get(fmt::format("energy:exchange->{}.{}", side.spec->name, mesh), exchange_mesh,
+             exchange_version, side.mesh(mesh), side.version(mesh),
+             mapping::Constraint::conservative, mapping::Kernel::linear)
+        .apply(heat, 1);
+  };
+  Heat out;
+  out.fluid = to_side(fluid, q_f);
+  out.solid = to_side(solid, q_s);
+  double net = 0.0, scale = 0.0;
+  for (double q : out.fluid) {
+    net += q;
+    scale += std::abs(q);
+  }
+  for (double q : out.solid) net += q;
+  out.energy_balance_error = scale > 0.0 ? std::abs(net) / scale : 0.0;
+  return out;
+}
+
+}  // namespace cosim::cplscheme
