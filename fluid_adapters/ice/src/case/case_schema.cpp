@@ -176,7 +176,10 @@ Schema coupling_schema() {
                 "reading drag_coefficient and solid_bulk_density and writing the solid's "
                 "momentum_exchange_impulse (the job's momentum_exchange.solved_by: fluid).")
       .optional("minimum_porosity", Schema::number().range(1e-3, 1.0).default_value("0.05"),
-                "Floor of the porosity n = 1 - solid_fraction received.");
+                "Floor of the porosity n = 1 - solid_fraction received.")
+      .optional("heat_exchange", Schema::boolean().default_value("false"),
+                "Take part in the coupler's energy exchange: write fluid_temperature and "
+                "fluid_heat_capacity, read heat_exchange_energy (Tran et al., MPMICE, eq. 23).");
   return coupling;
 }
 

@@ -48,6 +48,7 @@ class CaseReader {
     if (auto coupling = root_.find("coupling")) {
       c.coupling.drag_in_solver = coupling->get<std::string>("drag", "coupler") == "ice";
       c.coupling.minimum_porosity = coupling->get<double>("minimum_porosity", 0.05);
+      c.coupling.heat_exchange = coupling->get<bool>("heat_exchange", false);
     }
     return c;
   }

@@ -14,6 +14,7 @@ namespace ice {
 namespace {
 
 namespace mx = cosim::job::momentum_exchange_fields;
+namespace ex = cosim::job::energy_exchange_fields;
 constexpr const char* pore_pressure = "pore_pressure";
 constexpr const char* pore_pressure_force = "pore_pressure_force";
 constexpr double held_bulk_density = 1e20;  // [kg/m3]
@@ -63,6 +64,16 @@ void PorousCoupling<Dim>::declare(cosim::Participant& participant, IceSolver<Dim
   cosim::FieldSpec density = field(mx::fluid_bulk_density, 1, "kg/m^3");
   density.lower_bound = 0.0;
   participant.declare_write(density);
+  if (description_.heat_exchange) {
+    participant.declare_write(field(ex::fluid_temperature, 1, "K"));
+    cosim::FieldSpec capacity = field(ex::fluid_heat_capacity, 1, "J/(m^3 K)");
+    capacity.lower_bound = 0.0;
+    participant.declare_write(capacity);
+    cosim::FieldSpec heat = field(ex::heat, 1, "J");
+    heat.quantity = cosim::Quantity::extensive;
+    heat.time = cosim::TimeTreatment::integral;
+    participant.declare_read(heat, 0.0);
+  }
   write_fields(participant, solver);
 }
 
@@ -139,6 +150,11 @@ void PorousCoupling<Dim>::exchange_step(cosim::Participant& participant, double 
                                         IceSolver<Dim>& solver) {
   const std::size_t size =
       static_cast<std::size_t>(solver.grid().cell_count()) * static_cast<std::size_t>(Dim);
+  if (description_.heat_exchange) {
+    buffer_.resize(static_cast<std::size_t>(solver.grid().cell_count()));
+    participant.read_increment(ex::heat, dt, buffer_);
+    solver.add_heat(buffer_);
+  }
   buffer_.resize(size);
   if (!description_.drag_in_solver) {
     participant.read_increment(mx::impulse, dt, buffer_);
@@ -174,6 +190,22 @@ void PorousCoupling<Dim>::write_fields(cosim::Participant& participant, IceSolve
   participant.write(pore_pressure_force, force_);
   participant.write(mx::fluid_velocity, velocity_);
   participant.write(mx::fluid_bulk_density, density_);
+  if (description_.heat_exchange) {
+    // The fluids' heat capacity and their capacity-weighted temperature.
+    capacity_.assign(cells, 0.0);
+    temperature_.assign(cells, 0.0);
+    for (std::size_t m = 0; m < state.materials.size(); ++m) {
+      const double c_v = solver.materials()[m].eos->specific_heat();
+      for (std::size_t c = 0; c < cells; ++c) {
+        const double capacity = state.materials[m].bulk_density[c] * c_v;
+        capacity_[c] += capacity;
+        temperature_[c] += capacity * state.materials[m].temperature[c];
+      }
+    }
+    for (std::size_t c = 0; c < cells; ++c) temperature_[c] /= capacity_[c];
+    participant.write(ex::fluid_temperature, temperature_);
+    participant.write(ex::fluid_heat_capacity, capacity_);
+  }
 }
 
 template class PorousCoupling<1>;

@@ -247,6 +247,31 @@ void IceSolver<Dim>::solid_pressure_force(std::span<double> force) const {
 }
 
 template <int Dim>
+void IceSolver<Dim>::add_heat(std::span<const double> heat) {
+  const std::size_t cells = at(grid_.cell_count());
+  require(heat.size() == cells, "heat needs one value per cell");
+  const double volume = grid_.cell_volume();
+  for (std::size_t c = 0; c < cells; ++c) {
+    double capacity = 0.0;
+    for (std::size_t m = 0; m < count(); ++m)
+      capacity += state_.materials[m].bulk_density[c] * eos_[m]->specific_heat();
+    const double warming = heat[c] / (capacity * volume);
+    if (!std::isfinite(warming)) {
+      throw cosim::NumericalError(
+          fmt::format("ICE: heat {} J added to cell {} is not finite", heat[c], c));
+    }
+    for (MaterialState<Dim>& material : state_.materials) {
+      material.temperature[c] += warming;
+      if (!(material.temperature[c] > 0.0)) {
+        throw cosim::NumericalError(fmt::format("ICE: heat {} J leaves cell {} at temperature {} K",
+                                                heat[c], c, material.temperature[c]));
+      }
+    }
+  }
+  equilibrate(nullptr);
+}
+
+template <int Dim>
 void IceSolver<Dim>::add_momentum(std::span<const double> momentum) {
   const auto dim = static_cast<std::size_t>(Dim);
   const std::size_t cells = at(grid_.cell_count());

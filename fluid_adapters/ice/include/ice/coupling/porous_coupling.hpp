@@ -30,6 +30,9 @@ namespace ice {
 //           bulk density), for the soil and the exchange; with drag: ice
 //           also momentum_exchange_impulse, the momentum the solid received
 //           from the drag over the window (the coupler hands it to the solid).
+// With heat_exchange it also writes fluid_temperature [K] and
+// fluid_heat_capacity [J/(m3 K)] and reads heat_exchange_energy [J]
+// (extensive window integral), added step by step (IceSolver::add_heat).
 // The porosity is floored at the configured minimum so a cell packed with
 // soil keeps some pore volume.
 template <int Dim>
@@ -65,7 +68,7 @@ class PorousCoupling {
   std::vector<double> porosity_;
   std::array<std::vector<double>, static_cast<std::size_t>(Dim)> solid_velocity_;
   std::vector<double> drag_, solid_density_;
-  std::vector<double> pressure_, velocity_, density_, force_;
+  std::vector<double> pressure_, velocity_, density_, force_, capacity_, temperature_;
   bool warned_ = false;
 };
 

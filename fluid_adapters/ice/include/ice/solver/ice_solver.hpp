@@ -124,6 +124,15 @@ class IceSolver {
   // MPMICE, eq. 7).
   void solid_pressure_force(std::span<double> force) const;
 
+  // Adds heat [J] to each cell (one value per cell), e.g. what the coupler's
+  // energy exchange with a solid gives the fluids over a step: shared among
+  // the materials by their heat capacity rhobar c_v, so all warm by the same
+  // amount and the total energy grows by exactly the heat; the pressure is
+  // then equilibrated again. Throws std::invalid_argument for a wrong size
+  // and cosim::NumericalError for a non-finite value or a temperature that
+  // would not stay positive.
+  void add_heat(std::span<const double> heat);
+
   // Adds momentum [kg m/s] to each cell (Dim components per cell,
   // cell-major), e.g. the impulse the coupler's implicit fluid-solid exchange
   // gives the fluid over a window. It is shared among the materials in
