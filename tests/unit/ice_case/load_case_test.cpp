@@ -44,6 +44,7 @@ numerics:
 output:
   every: 0.05
   gauges: [{name: g1, point: [0.2, 0.01]}]
+coupling: {drag: ice, minimum_porosity: 0.1, heat_exchange: true}
 )";
 
 std::string error_of(const std::string& text) {
@@ -84,6 +85,11 @@ TEST(IceCase, ReadsEveryKeyAndTheDefaults) {
   EXPECT_DOUBLE_EQ(c.initial.minimum_volume_fraction, 1e-6);
   ASSERT_EQ(c.gauges.size(), 1u);
   EXPECT_NE(c.config_hash, 0u);
+  EXPECT_TRUE(c.coupling.drag_in_solver);
+  EXPECT_DOUBLE_EQ(c.coupling.minimum_porosity, 0.1);
+  EXPECT_TRUE(c.coupling.heat_exchange);
+  EXPECT_FALSE(load_case_text(replaced(dam_break, "drag: ice, ", ""), "case.yaml")
+                   .coupling.drag_in_solver);
   const auto solver = make_solver<2>(c);
   EXPECT_GT(solver->state().materials[0].volume_fraction[0], 0.99);  // water in the corner
   EXPECT_LT(solver->state().materials[0].volume_fraction[7], 1e-5);
@@ -114,6 +120,8 @@ TEST(IceCase, ErrorsNameTheKeyAndTheLine) {
       {"end_time: 0.3", "end_time: 0.0", "end_time"},
       {"temperature: 300\n", "temperature: 300\n  pressure: 1.0e5\n", "no error"},
       {"fill: water, velocity", "fill: water, pressure: 2.0e5, velocity", "hydrostatic"},
+      {"drag: ice", "drag: solid", "coupling.drag"},
+      {"minimum_porosity: 0.1", "minimum_porosity: 0.0", "coupling.minimum_porosity"},
   };
   for (const auto& c : cases) {
     const std::string message = error_of(replaced(dam_break, c.from, c.to));
