@@ -14,6 +14,7 @@
 
 #include <cmath>
 
+#include "darcy/darcy_column.hpp"
 #include "run_process.hpp"
 
 namespace cosim::testing {
@@ -26,12 +27,6 @@ constexpr double viscosity = 1.0e-3;   // mu [Pa s]
 constexpr double water_density = 1000.0;
 constexpr double atmosphere = 101325.0;
 constexpr double length = 1.0;  // L [m]
-
-double darcy_velocity(double phi_s, double dp) {
-  const double n = 1.0 - phi_s;
-  return (1.0 / n) * grain_size * grain_size * std::pow(1.0 - phi_s, 3) /
-         (180.0 * phi_s * phi_s * viscosity) * dp / length;  // Tran et al., eq. 98
-}
 
 double run_case(const fs::path& dir, double phi_s, double dp) {
   const double n = 1.0 - phi_s;
@@ -100,7 +95,7 @@ TEST(DarcyValidation, SteadyVelocityMatchesEquation98ForAllFifteenCases) {
       const fs::path dir = fresh_directory(fmt::format("darcy_{}_{}", phi_s, dp_atm));
       const double dp = dp_atm * atmosphere;
       const double u = run_case(dir, phi_s, dp);
-      const double expected = darcy_velocity(phi_s, dp);
+      const double expected = DarcyColumn{grain_size, viscosity, length}.pore_velocity(phi_s, dp);
       const double error = std::abs(u - expected) / expected;
       worst = std::max(worst, error);
       std::printf("%8.2f %8.2f %16.10g %16.10g %10.2e\n", phi_s, dp_atm, u, expected, error);

@@ -71,22 +71,25 @@ void MomentumExchangeStep::check_declarations(const job::Job& job, const com::He
 MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const PhaseSide& fluid,
                                                          const PhaseSide& solid,
                                                          OperatorCache& operators) const {
-  if (spec_.solved_by == job::ExchangeSolver::fluid)
-    return run_in_fluid(window, fluid, solid, operators);
   const PhaseSide& owner = spec_.mesh_owner == spec_.fluid ? fluid : solid;
   const Mesh& exchange_mesh = owner.mesh(spec_.mesh);
   const std::size_t exchange_version = owner.version(spec_.mesh);
   const int dim = exchange_mesh.dimension();
   const std::size_t cells = exchange_mesh.size();
+  auto map = [&](const std::string& key, const Mesh& from, std::size_t from_version, const Mesh& to,
+                 std::size_t to_version, mapping::Constraint constraint,
+                 const std::vector<double>& values, int components) {
+    return operators
+        .get(key, from, from_version, to, to_version, constraint, mapping::Kernel::linear)
+        .apply(values, components);
+  };
 
   // A phase's field, mapped consistently onto the exchange mesh.
   auto on_exchange_mesh = [&](const PhaseSide& side, const char* field, int components) {
     const std::string& mesh = side.spec->writes.at(field);
-    const auto& op =
-        operators.get(fmt::format("momentum:{}.{}->exchange", side.spec->name, mesh),
-                      side.mesh(mesh), side.version(mesh), exchange_mesh, exchange_version,
-                      mapping::Constraint::consistent, mapping::Kernel::linear);
-    return op.apply(side.written->at(field), components);
+    return map(fmt::format("momentum:{}.{}->exchange", side.spec->name, mesh), side.mesh(mesh),
+               side.version(mesh), exchange_mesh, exchange_version, mapping::Constraint::consistent,
+               side.written->at(field), components);
   };
   const auto phi_s = on_exchange_mesh(solid, f::solid_fraction, 1);
   const auto u_s = on_exchange_mesh(solid, f::solid_velocity, dim);
@@ -99,98 +102,48 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const Ph
   if (law_->cell_input() == exchange::CellInput::permeability)
     permeability = on_exchange_mesh(solid, f::permeability, 1);
 
-  std::vector<double> volume(cells);
-  for (std::size_t c = 0; c < cells; ++c) volume[c] = exchange_mesh.control_volume(c);
-  const std::size_t n = cells * static_cast<std::size_t>(dim);
-  std::vector<double> du_f(n), du_s(n), j_f(n), j_s(n);
-  exchange::exchange_two_phase(*law_, dim, window, volume, {rho_f, u_f}, {rho_s, u_s},
-                               {phi_s, grain, permeability}, {du_f, du_s, j_f, j_s, {}});
-
-  // The momentum each phase receives, mapped conservatively to it.
-  auto to_side = [&](const PhaseSide& side, const std::vector<double>& impulse) {
-    const std::string& mesh = side.spec->reads.at(f::impulse);
-    const auto& op =
-        operators.get(fmt::format("momentum:exchange->{}.{}", side.spec->name, mesh), exchange_mesh,
-                      exchange_version, side.mesh(mesh), side.version(mesh),
-                      mapping::Constraint::conservative, mapping::Kernel::linear);
-    return op.apply(impulse, dim);
-  };
-  Impulses out;
-  out.fluid = to_side(fluid, j_f);
-  out.solid = to_side(solid, j_s);
-  double net = 0.0, scale = 0.0;
-  for (double j : out.fluid) {
-    net += j;
-    scale += std::abs(j);
-  }
-  for (double j : out.solid) net += j;
-  out.momentum_balance_error = scale > 0.0 ? std::abs(net) / scale : 0.0;
-  return out;
-}
-
-MomentumExchangeStep::Impulses MomentumExchangeStep::run_in_fluid(double window,
-                                                                  const PhaseSide& fluid,
-                                                                  const PhaseSide& solid,
-                                                                  OperatorCache& operators) const {
-  const PhaseSide& owner = spec_.mesh_owner == spec_.fluid ? fluid : solid;
-  const Mesh& exchange_mesh = owner.mesh(spec_.mesh);
-  const std::size_t exchange_version = owner.version(spec_.mesh);
-  const int dim = exchange_mesh.dimension();
-  const std::size_t cells = exchange_mesh.size();
-
-  auto consistent = [&](const std::string& key, const Mesh& from, std::size_t from_version,
-                        const Mesh& to, std::size_t to_version) -> const mapping::Operator& {
-    return operators.get(key, from, from_version, to, to_version, mapping::Constraint::consistent,
-                         mapping::Kernel::linear);
-  };
-  auto on_exchange_mesh = [&](const PhaseSide& side, const char* field, int components) {
-    const std::string& mesh = side.spec->writes.at(field);
-    return consistent(fmt::format("momentum:{}.{}->exchange", side.spec->name, mesh),
-                      side.mesh(mesh), side.version(mesh), exchange_mesh, exchange_version)
-        .apply(side.written->at(field), components);
-  };
-  const auto phi_s = on_exchange_mesh(solid, f::solid_fraction, 1);
-  const auto u_s = on_exchange_mesh(solid, f::solid_velocity, dim);
-  const auto rho_s = on_exchange_mesh(solid, f::solid_bulk_density, 1);
-  const auto u_f = on_exchange_mesh(fluid, f::fluid_velocity, dim);
-  const auto rho_f = on_exchange_mesh(fluid, f::fluid_bulk_density, 1);
-  std::vector<double> grain, permeability;
-  if (law_->cell_input() == exchange::CellInput::grain_size)
-    grain = on_exchange_mesh(solid, f::grain_size, 1);
-  if (law_->cell_input() == exchange::CellInput::permeability)
-    permeability = on_exchange_mesh(solid, f::permeability, 1);
-
-  // K from the law with the window-end fields (the exchange itself, whose
-  // increments are discarded, checks every input as in coupler mode).
   std::vector<double> volume(cells);
   for (std::size_t c = 0; c < cells; ++c) volume[c] = exchange_mesh.control_volume(c);
   const std::size_t n = cells * static_cast<std::size_t>(dim);
   std::vector<double> du_f(n), du_s(n), j_f(n), j_s(n), drag(cells);
   exchange::exchange_two_phase(*law_, dim, window, volume, {rho_f, u_f}, {rho_s, u_s},
                                {phi_s, grain, permeability}, {du_f, du_s, j_f, j_s, drag});
-  for (double& k : drag) k = std::min(k, impermeable_drag);
 
+  // What each phase receives, mapped to it: the momentum (conservatively),
+  // or with solved_by fluid K for the fluid (consistently) and, for the
+  // solid, the momentum the fluid wrote that it gave it.
+  auto impulse_to = [&](const PhaseSide& side, const std::string& from_key, const Mesh& from,
+                        std::size_t from_version, const std::vector<double>& impulse) {
+    const std::string& mesh = side.spec->reads.at(f::impulse);
+    return map(fmt::format("momentum:{}->{}.{}", from_key, side.spec->name, mesh), from,
+               from_version, side.mesh(mesh), side.version(mesh), mapping::Constraint::conservative,
+               impulse, dim);
+  };
   Impulses out;
-  const std::string& drag_mesh = fluid.spec->reads.at(f::drag_coefficient);
-  out.drag_coefficient =
-      consistent(fmt::format("momentum:exchange->{}.{}", fluid.spec->name, drag_mesh),
-                 exchange_mesh, exchange_version, fluid.mesh(drag_mesh), fluid.version(drag_mesh))
-          .apply(drag, 1);
-
-  const std::string& from_mesh = fluid.spec->writes.at(f::impulse);
-  const std::string& to_mesh = solid.spec->reads.at(f::impulse);
-  const std::vector<double>& given = fluid.written->at(f::impulse);
-  out.solid =
-      operators
-          .get(fmt::format("momentum:{}.{}->{}.{}", fluid.spec->name, from_mesh, solid.spec->name,
-                           to_mesh),
-               fluid.mesh(from_mesh), fluid.version(from_mesh), solid.mesh(to_mesh),
-               solid.version(to_mesh), mapping::Constraint::conservative, mapping::Kernel::linear)
-          .apply(given, dim);
-  double scale = 0.0, net = 0.0;
-  for (double j : given) {
+  const std::vector<double>* given = &j_f;
+  if (spec_.solved_by == job::ExchangeSolver::coupler) {
+    out.fluid = impulse_to(fluid, "exchange", exchange_mesh, exchange_version, j_f);
+    out.solid = impulse_to(solid, "exchange", exchange_mesh, exchange_version, j_s);
+  } else {
+    // The law gives +infinity where no pore is left; the fluid gets a
+    // finite impermeable value.
+    for (double& k : drag) k = std::min(k, impermeable_drag);
+    const std::string& drag_mesh = fluid.spec->reads.at(f::drag_coefficient);
+    out.drag_coefficient = map(fmt::format("momentum:exchange->{}.{}", fluid.spec->name, drag_mesh),
+                               exchange_mesh, exchange_version, fluid.mesh(drag_mesh),
+                               fluid.version(drag_mesh), mapping::Constraint::consistent, drag, 1);
+    const std::string& from_mesh = fluid.spec->writes.at(f::impulse);
+    given = &fluid.written->at(f::impulse);
+    out.solid = impulse_to(solid, fluid.spec->name + "." + from_mesh, fluid.mesh(from_mesh),
+                           fluid.version(from_mesh), *given);
+  }
+  // The balance: coupler mode, what the two receive adds up to zero; fluid
+  // mode, the solid receives what the fluid gave (the fluid's loss is -given).
+  const double sign = spec_.solved_by == job::ExchangeSolver::coupler ? 1.0 : -1.0;
+  double net = 0.0, scale = 0.0;
+  for (double j : spec_.solved_by == job::ExchangeSolver::coupler ? out.fluid : *given) {
+    net += sign * j;
     scale += std::abs(j);
-    net -= j;
   }
   for (double j : out.solid) net += j;
   out.momentum_balance_error = scale > 0.0 ? std::abs(net) / scale : 0.0;

@@ -49,9 +49,6 @@ class MomentumExchangeStep {
   static constexpr double impermeable_drag = 1.0e15;
 
  private:
-  Impulses run_in_fluid(double window, const PhaseSide& fluid, const PhaseSide& solid,
-                        OperatorCache& operators) const;
-
   const job::MomentumExchangeSpec& spec_;
   std::string job_file_;
   std::unique_ptr<exchange::DragLaw> law_;

@@ -137,110 +137,113 @@ void check_reads_provided(const Job& job, const config::Node& root) {
     }
 }
 
+// The participants and mesh of a fluid-solid exchange block (`fluid`,
+// `solid`, `mesh: <participant>.<mesh>`), checked, and a way to demand the
+// fields the exchange needs of them on meshes of the exchange's dimension.
+class PhasePair {
+ public:
+  PhasePair(const Job& job, const config::Node& m, const char* exchange)
+      : node_(m), exchange_(exchange) {
+    fluid_name = m["fluid"].as<std::string>();
+    solid_name = m["solid"].as<std::string>();
+    fluid = job.participant(fluid_name);
+    solid = job.participant(solid_name);
+    if (!fluid) m["fluid"].fail(fmt::format("no participant named '{}'", fluid_name));
+    if (!solid) m["solid"].fail(fmt::format("no participant named '{}'", solid_name));
+    if (fluid_name == solid_name)
+      m["solid"].fail("the fluid and the solid are the same participant");
+    const auto mesh_key = m["mesh"].as<std::string>();
+    const auto dot = mesh_key.find('.');
+    if (dot == std::string::npos)
+      m["mesh"].fail(fmt::format("'{}' is not <participant>.<mesh>", mesh_key));
+    mesh_owner = mesh_key.substr(0, dot);
+    mesh = mesh_key.substr(dot + 1);
+    if (mesh_owner != fluid_name && mesh_owner != solid_name)
+      m["mesh"].fail("the exchange mesh belongs to the fluid or the solid participant");
+    const ParticipantSpec* owner = mesh_owner == fluid_name ? fluid : solid;
+    auto exchange_mesh = owner->meshes.find(mesh);
+    if (exchange_mesh == owner->meshes.end())
+      m["mesh"].fail(fmt::format("participant '{}' has no mesh '{}'", mesh_owner, mesh));
+    dim_ = exchange_mesh->second.dim;
+  }
+
+  void require(const ParticipantSpec& p, const std::map<std::string, std::string>& fields,
+               const char* field, const char* verb) const {
+    auto it = fields.find(field);
+    if (it == fields.end())
+      node_.fail(
+          fmt::format("the {} exchange needs participant '{}' to {} '{}' (add it to "
+                      "participants.{}.{}s)",
+                      exchange_, p.name, verb, field, p.name, verb));
+    if (p.meshes.at(it->second).dim != dim_)
+      node_.fail(fmt::format("'{}' of participant '{}' is on a {}D mesh, the exchange mesh is {}D",
+                             field, p.name, p.meshes.at(it->second).dim, dim_));
+  }
+
+  std::string fluid_name, solid_name, mesh_owner, mesh;
+  const ParticipantSpec* fluid = nullptr;
+  const ParticipantSpec* solid = nullptr;
+
+ private:
+  const config::Node& node_;
+  const char* exchange_;
+  int dim_ = 0;
+};
+
 MomentumExchangeSpec read_momentum_exchange(const Job& job, const config::Node& m) {
   namespace f = momentum_exchange_fields;
+  const PhasePair pair(job, m, "momentum");
   MomentumExchangeSpec spec;
   spec.where = m.location();
-  spec.fluid = m["fluid"].as<std::string>();
-  spec.solid = m["solid"].as<std::string>();
-  const ParticipantSpec* fluid = job.participant(spec.fluid);
-  const ParticipantSpec* solid = job.participant(spec.solid);
-  if (!fluid) m["fluid"].fail(fmt::format("no participant named '{}'", spec.fluid));
-  if (!solid) m["solid"].fail(fmt::format("no participant named '{}'", spec.solid));
-  if (spec.fluid == spec.solid) m["solid"].fail("the fluid and the solid are the same participant");
-  const auto mesh = m["mesh"].as<std::string>();
-  const auto dot = mesh.find('.');
-  if (dot == std::string::npos)
-    m["mesh"].fail(fmt::format("'{}' is not <participant>.<mesh>", mesh));
-  spec.mesh_owner = mesh.substr(0, dot);
-  spec.mesh = mesh.substr(dot + 1);
-  if (spec.mesh_owner != spec.fluid && spec.mesh_owner != spec.solid)
-    m["mesh"].fail("the exchange mesh belongs to the fluid or the solid participant");
-  const ParticipantSpec* owner = spec.mesh_owner == spec.fluid ? fluid : solid;
-  auto exchange_mesh = owner->meshes.find(spec.mesh);
-  if (exchange_mesh == owner->meshes.end())
-    m["mesh"].fail(fmt::format("participant '{}' has no mesh '{}'", spec.mesh_owner, spec.mesh));
-  const int dim = exchange_mesh->second.dim;
+  spec.fluid = pair.fluid_name;
+  spec.solid = pair.solid_name;
+  spec.mesh_owner = pair.mesh_owner;
+  spec.mesh = pair.mesh;
   spec.drag = m["drag"].yaml();
   if (auto by = m.find("solved_by"); by && by->as<std::string>() == "fluid")
     spec.solved_by = ExchangeSolver::fluid;
   const auto law = exchange::make_drag_law(spec.drag, spec.drag_key_path, job.file.string());
-
-  auto require = [&](const ParticipantSpec& p, const std::map<std::string, std::string>& fields,
-                     const char* field, const char* verb) {
-    auto it = fields.find(field);
-    if (it == fields.end())
-      m.fail(
-          fmt::format("the momentum exchange needs participant '{}' to {} '{}' (add it to "
-                      "participants.{}.{}s)",
-                      p.name, verb, field, p.name, verb));
-    if (p.meshes.at(it->second).dim != dim)
-      m.fail(fmt::format("'{}' of participant '{}' is on a {}D mesh, the exchange mesh is {}D",
-                         field, p.name, p.meshes.at(it->second).dim, dim));
-  };
+  const ParticipantSpec& fluid = *pair.fluid;
+  const ParticipantSpec& solid = *pair.solid;
   for (const char* field : {f::solid_fraction, f::solid_velocity, f::solid_bulk_density})
-    require(*solid, solid->writes, field, "write");
+    pair.require(solid, solid.writes, field, "write");
   if (law->cell_input() == exchange::CellInput::grain_size)
-    require(*solid, solid->writes, f::grain_size, "write");
+    pair.require(solid, solid.writes, f::grain_size, "write");
   if (law->cell_input() == exchange::CellInput::permeability)
-    require(*solid, solid->writes, f::permeability, "write");
+    pair.require(solid, solid.writes, f::permeability, "write");
   for (const char* field : {f::fluid_velocity, f::fluid_bulk_density})
-    require(*fluid, fluid->writes, field, "write");
-  require(*solid, solid->reads, f::impulse, "read");
+    pair.require(fluid, fluid.writes, field, "write");
+  pair.require(solid, solid.reads, f::impulse, "read");
   if (spec.solved_by == ExchangeSolver::coupler) {
-    require(*fluid, fluid->reads, f::impulse, "read");
-    if (fluid->reads.count(f::drag_coefficient))
+    pair.require(fluid, fluid.reads, f::impulse, "read");
+    if (fluid.reads.count(f::drag_coefficient))
       m.fail(fmt::format("participant '{}' reads '{}', which only `solved_by: fluid` sends",
-                         fluid->name, f::drag_coefficient));
+                         fluid.name, f::drag_coefficient));
   } else {
-    require(*fluid, fluid->reads, f::drag_coefficient, "read");
-    require(*fluid, fluid->writes, f::impulse, "write");
+    pair.require(fluid, fluid.reads, f::drag_coefficient, "read");
+    pair.require(fluid, fluid.writes, f::impulse, "write");
   }
   return spec;
 }
 
 EnergyExchangeSpec read_energy_exchange(const Job& job, const config::Node& m) {
   namespace f = energy_exchange_fields;
+  const PhasePair pair(job, m, "energy");
   EnergyExchangeSpec spec;
   spec.where = m.location();
-  spec.fluid = m["fluid"].as<std::string>();
-  spec.solid = m["solid"].as<std::string>();
+  spec.fluid = pair.fluid_name;
+  spec.solid = pair.solid_name;
+  spec.mesh_owner = pair.mesh_owner;
+  spec.mesh = pair.mesh;
   spec.coefficient = m["coefficient"].as<double>();
-  const ParticipantSpec* fluid = job.participant(spec.fluid);
-  const ParticipantSpec* solid = job.participant(spec.solid);
-  if (!fluid) m["fluid"].fail(fmt::format("no participant named '{}'", spec.fluid));
-  if (!solid) m["solid"].fail(fmt::format("no participant named '{}'", spec.solid));
-  if (spec.fluid == spec.solid) m["solid"].fail("the fluid and the solid are the same participant");
-  const auto mesh = m["mesh"].as<std::string>();
-  const auto dot = mesh.find('.');
-  if (dot == std::string::npos)
-    m["mesh"].fail(fmt::format("'{}' is not <participant>.<mesh>", mesh));
-  spec.mesh_owner = mesh.substr(0, dot);
-  spec.mesh = mesh.substr(dot + 1);
-  if (spec.mesh_owner != spec.fluid && spec.mesh_owner != spec.solid)
-    m["mesh"].fail("the exchange mesh belongs to the fluid or the solid participant");
-  const ParticipantSpec* owner = spec.mesh_owner == spec.fluid ? fluid : solid;
-  auto exchange_mesh = owner->meshes.find(spec.mesh);
-  if (exchange_mesh == owner->meshes.end())
-    m["mesh"].fail(fmt::format("participant '{}' has no mesh '{}'", spec.mesh_owner, spec.mesh));
-  const int dim = exchange_mesh->second.dim;
-  auto require = [&](const ParticipantSpec& p, const std::map<std::string, std::string>& fields,
-                     const char* field, const char* verb) {
-    auto it = fields.find(field);
-    if (it == fields.end())
-      m.fail(fmt::format(
-          "the energy exchange needs participant '{}' to {} '{}' (add it to participants.{}.{}s)",
-          p.name, verb, field, p.name, verb));
-    if (p.meshes.at(it->second).dim != dim)
-      m.fail(fmt::format("'{}' of participant '{}' is on a {}D mesh, the exchange mesh is {}D",
-                         field, p.name, p.meshes.at(it->second).dim, dim));
-  };
+  const ParticipantSpec& fluid = *pair.fluid;
+  const ParticipantSpec& solid = *pair.solid;
   for (const char* field : {f::solid_temperature, f::solid_heat_capacity})
-    require(*solid, solid->writes, field, "write");
+    pair.require(solid, solid.writes, field, "write");
   for (const char* field : {f::fluid_temperature, f::fluid_heat_capacity})
-    require(*fluid, fluid->writes, field, "write");
-  require(*fluid, fluid->reads, f::heat, "read");
-  require(*solid, solid->reads, f::heat, "read");
+    pair.require(fluid, fluid.writes, field, "write");
+  pair.require(fluid, fluid.reads, f::heat, "read");
+  pair.require(solid, solid.reads, f::heat, "read");
   return spec;
 }
 

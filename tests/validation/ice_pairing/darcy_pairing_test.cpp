@@ -13,6 +13,7 @@
 #include <cmath>
 #include <string>
 
+#include "darcy/darcy_column.hpp"
 #include "replaced_text.hpp"
 #include "run_process.hpp"
 
@@ -25,12 +26,6 @@ constexpr double grain_size = 1.0e-3;  // d [m]
 constexpr double viscosity = 1.0e-3;   // mu [Pa s]
 constexpr double atmosphere = 101325.0;
 constexpr double length = 1.0;  // L [m]
-
-double darcy_velocity(double phi_s, double dp) {
-  const double n = 1.0 - phi_s;
-  return (1.0 / n) * grain_size * grain_size * std::pow(1.0 - phi_s, 3) /
-         (180.0 * phi_s * phi_s * viscosity) * dp / length;  // Tran et al., eq. 98
-}
 
 struct Steady {
   double column_velocity = 0.0;  // ux at the column's centre [m/s]
@@ -74,7 +69,7 @@ TEST(DarcyPairing, PoreWaterVelocityMatchesEquation98ForAllFifteenCases) {
     for (double atmospheres : {0.25, 0.5, 1.0}) {
       const double dp = atmospheres * atmosphere;
       const Steady s = run_case(dir / fmt::format("phi{}_dp{}", phi_s, atmospheres), phi_s, dp);
-      const double exact = darcy_velocity(phi_s, dp);
+      const double exact = DarcyColumn{grain_size, viscosity, length}.pore_velocity(phi_s, dp);
       const double error = std::abs(s.column_velocity / exact - 1.0);
       const double flux_error = std::abs(s.inlet_velocity / ((1.0 - phi_s) * exact) - 1.0);
       worst = std::max(worst, error);
