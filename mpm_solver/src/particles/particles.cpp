@@ -31,7 +31,10 @@ void Particles<Dim>::resize(std::size_t n) {
   permeability.resize(n, 0.0);
   grain_size.resize(n, 0.0);
   pore_pressure.resize(n, 0.0);
+  temperature.resize(n, 0.0);
+  heat_capacity.resize(n, 0.0);
   external_force.resize(n, Vec<Dim>::Zero());
+  external_heat.resize(n, 0.0);
   body.resize(n, 0);
 }
 
@@ -40,12 +43,12 @@ double Particles<Dim>::bytes_per_particle() const {
   const auto bytes = [](const auto& v) {
     return static_cast<double>(v.capacity() * sizeof(typename std::decay_t<decltype(v)>::value_type));
   };
-  const double total = bytes(position) + bytes(velocity) + bytes(deformation_gradient) +
-                       bytes(half_length) + bytes(mass) + bytes(initial_volume) + bytes(volume) +
-                       bytes(stress) + bytes(plastic_strain) + bytes(damage) + bytes(internal) +
-                       bytes(porosity) + bytes(initial_porosity) + bytes(permeability) +
-                       bytes(grain_size) + bytes(pore_pressure) + bytes(external_force) +
-                       bytes(body);
+  const double total =
+      bytes(position) + bytes(velocity) + bytes(deformation_gradient) + bytes(half_length) +
+      bytes(mass) + bytes(initial_volume) + bytes(volume) + bytes(stress) + bytes(plastic_strain) +
+      bytes(damage) + bytes(internal) + bytes(porosity) + bytes(initial_porosity) +
+      bytes(permeability) + bytes(grain_size) + bytes(pore_pressure) + bytes(temperature) +
+      bytes(heat_capacity) + bytes(external_force) + bytes(external_heat) + bytes(body);
   return size() == 0 ? 0.0 : total / static_cast<double>(size());
 }
 
