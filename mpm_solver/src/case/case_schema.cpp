@@ -125,8 +125,8 @@ Schema body_schema() {
                 "Velocity at t = 0.")
       .optional("porous", porous_schema(), "Porous medium (coupled with a fluid).")
       .optional("geostatic", geostatic_schema(), "Geostatic initial stress.");
-  // A rigid body's own thermal properties (a deformable body's are its material's).
-  material_parameters::add_thermal_keys(body);
+  material_parameters::add_thermal_keys(body,
+                                        "Rigid body (a deformable body's are its material's). ");
   return body;
 }
 

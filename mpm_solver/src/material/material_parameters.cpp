@@ -30,16 +30,17 @@ Schema& add_elastic_keys(Schema& schema) {
                 "Poisson's ratio nu in [-1, 0.5); 0.5 (incompressible) is refused.");
 }
 
-Schema& add_thermal_keys(Schema& schema) {
+Schema& add_thermal_keys(Schema& schema, const std::string& whose) {
   return schema
       .optional("specific_heat", Schema::number().positive().unit("J/(kg K)"),
-                "Specific heat c (of the grains for a porous body); a body is thermal, with a "
-                "temperature that conducts and exchanges heat, when its material has one.")
-      .optional(
-          "thermal_conductivity",
-          Schema::number().non_negative().unit("W/(m K)").default_value("0"),
-          "Thermal conductivity k (of the grains: a porous skeleton conducts with (1 - n) k); "
-          "needs specific_heat.");
+                whose +
+                    "Specific heat c (of the grains for a porous body). A body with a specific "
+                    "heat is thermal: its temperature conducts and exchanges heat.")
+      .optional("thermal_conductivity",
+                Schema::number().non_negative().unit("W/(m K)").default_value("0"),
+                whose +
+                    "Thermal conductivity k (of the grains: a porous skeleton conducts with "
+                    "(1 - n) k); needs specific_heat.");
 }
 
 namespace {

@@ -22,8 +22,9 @@ cosim::config::Schema base_schema(const std::string& type, std::string doc, bool
 cosim::config::Schema& add_elastic_keys(cosim::config::Schema& schema);
 
 // Adds the optional `specific_heat` and `thermal_conductivity` (also the keys
-// of a rigid body's own thermal properties).
-cosim::config::Schema& add_thermal_keys(cosim::config::Schema& schema);
+// of a rigid body's own thermal properties); `whose` starts their docs.
+cosim::config::Schema& add_thermal_keys(cosim::config::Schema& schema,
+                                        const std::string& whose = "");
 
 // `density` > 0, refused at its key otherwise; and the thermal properties.
 CommonProperties read_common_properties(const cosim::config::Node& node);
