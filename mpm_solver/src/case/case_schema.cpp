@@ -249,8 +249,9 @@ Schema mpm_case_schema() {
                 "Gravity grows linearly from zero over this time.")
       .optional("damping", Schema::number().range(0.0, 1.0).default_value("0"),
                 "Local non-viscous damping coefficient.")
-      .required("materials", Schema::map_of(Schema::any()).length(1, unlimited),
-                "Named materials, each a mapping with a `type` (models listed below).")
+      .optional("materials", Schema::map_of(Schema::any()),
+                "Named materials, each a mapping with a `type` (models listed below); a case of "
+                "rigid bodies only needs none.")
       .required("bodies", Schema::sequence(body_schema()).length(1, unlimited), "The bodies.")
       .optional("contact", contact_schema(), "Contact between bodies.")
       .optional("boundaries", boundaries_schema(), "Grid faces.")

@@ -107,7 +107,7 @@ class CaseReader {
     if (auto g = root_.find("gravity")) c_.gravity = read_vector(*g, dim_);
     c_.gravity_ramp_time = root_.get<double>("gravity_ramp_time", 0.0);
     c_.damping = root_.get<double>("damping", 0.0);
-    read_materials(root_["materials"]);
+    if (auto materials = root_.find("materials")) read_materials(*materials);
     const Node bodies = root_["bodies"];
     for (const Node& body : bodies.items()) read_body(body);
     if (auto contact = root_.find("contact")) read_contact(*contact);
