@@ -133,15 +133,13 @@ MpmCoupling<Dim>::MpmCoupling(Solver<Dim>& solver, std::unique_ptr<CouplingChann
     s.surface = SurfaceGrid<Dim>::covering(solver.grid(), n);
   }
   if (s.spec.exchange_grid && !solver.conducts_heat()) {
-    for (const char* key : {"writes", "reads"}) {
-      const auto& list =
-          key == std::string("writes") ? s.spec.exchange_grid->writes : s.spec.exchange_grid->reads;
-      for (const auto& f : list)
+    const auto& g = *s.spec.exchange_grid;
+    for (const auto& [key, list] : {std::pair{"writes", &g.writes}, std::pair{"reads", &g.reads}})
+      for (const auto& f : *list)
         if (names::is_thermal(f))
           throw cosim::InputError(
               fmt::format("{}: key 'coupling.exchange_grid.{}': {} needs a case that conducts heat",
                           solver.description().file.string(), key, f));
-    }
   }
   std::shared_ptr<State> shared = state_;
   solver.add_particle_force_source(

@@ -37,11 +37,12 @@ namespace mpm::detail {
 // where faces meet) enter grad T_p at the face's temperature. Their change
 // over the step brings the points' value there to what a field through
 // T_face has at the points' mean position: T_i from the points is their
-// heat-capacity-weighted mean, which sits a distance d_i inside the face,
-// so its target is T_face + (d_i / D) (T_j - T_face) with T_j the value of
-// the next grid value inward at distance D. A linear profile through T_face
-// is then steady, where holding T_i itself at T_face would pull the points
-// of the face cells off it by O(h grad T).
+// heat-capacity-weighted mean, whose points sit on average a distance d_i
+// inside the face, so its target is T_face + (d_i / D) (T_j - T_face), with
+// T_j the value of the next grid value inward and D the distance of its
+// points' mean from the face. A linear profile through T_face is then
+// steady, where holding T_i itself at T_face would pull the points of the
+// face cells off it by O(h grad T) (first order instead of second).
 //
 // Left out: the heating by plastic work and by contact friction (Delta W
 // and Delta W_fric of eq. 55); the plastic dissipation is reported in the
