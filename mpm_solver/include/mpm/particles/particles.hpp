@@ -42,7 +42,7 @@ struct Particles {
   // Heat (Tran et al., MPMICE, eq. 9): temperature and heat capacity m c,
   // 0 for the points of bodies that are not thermal.
   std::vector<double> temperature;             // [K]
-  std::vector<Vec<Dim>> temperature_gradient;  // [K/m], from the grid at the end of the last step
+  std::vector<Vec<Dim>> temperature_gradient;  // [K/m], from the grid of the last step
   std::vector<double> heat_capacity;           // [J/K] (per unit depth in 2D)
   // Forces and heat applied from outside the grid solve: surface loads, coupling.
   std::vector<Vec<Dim>> external_force;  // [N] (per unit depth in 2D)
