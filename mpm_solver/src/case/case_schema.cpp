@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "mpm/coupling/coupling_spec.hpp"
+#include "mpm/material/material_parameters.hpp"
 #include "mpm/material/material_registry.hpp"
 
 namespace mpm {
@@ -110,12 +111,14 @@ Schema body_schema() {
       .optional("rigid", rigid_schema(), "Rigid body instead of a material.")
       .optional("density", Schema::number().positive().unit("kg/m^3"),
                 "Density of a rigid body (mass for contact and free motion).")
+      .optional("temperature", Schema::number().positive().unit("K").default_value("293.15"),
+                "Initial temperature.")
       .required("geometry", geometry_schema(), "Region the particles fill.")
-      .optional("particles_per_cell",
-                Schema::any_of({Schema::integer().positive(), Schema::vector(2, 3)})
-                    .default_value("2"),
-                "Particles per cell and direction (n gives n^dim per cell), or one count per "
-                "direction; with r2 seeding the product is the number per cell volume.")
+      .optional(
+          "particles_per_cell",
+          Schema::any_of({Schema::integer().positive(), Schema::vector(2, 3)}).default_value("2"),
+          "Particles per cell and direction (n gives n^dim per cell), or one count per "
+          "direction; with r2 seeding the product is the number per cell volume.")
       .optional("seeding", Schema::one_of({"regular", "r2"}).default_value("regular"),
                 "regular: cell-aligned lattice; r2: R2 quasi-random sequence.")
       .optional("initial_velocity", coordinates().unit("m/s").default_value("0"),
@@ -123,6 +126,8 @@ Schema body_schema() {
       .optional("porous", porous_schema(),
                 "Porous medium (coupled with a fluid); a rigid body's pores keep their porosity.")
       .optional("geostatic", geostatic_schema(), "Geostatic initial stress.");
+  material_parameters::add_thermal_keys(body,
+                                        "Rigid body (a deformable body's are its material's). ");
   return body;
 }
 
@@ -140,6 +145,12 @@ Schema contact_schema() {
   return contact;
 }
 
+// The grid faces, as keys of `boundaries` and `thermal`.
+const char* const grid_faces[][2] = {
+    {"x_min", "The face x = origin_x."},      {"x_max", "The face x = upper_x."},
+    {"y_min", "The face y = origin_y."},      {"y_max", "The face y = upper_y."},
+    {"z_min", "The face z = origin_z (3D)."}, {"z_max", "The face z = upper_z (3D)."}};
+
 Schema face_schema() {
   Schema frictional = Schema::object("Coulomb friction on the face.");
   frictional.required("frictional", Schema::number().non_negative(), "Coefficient mu.");
@@ -151,11 +162,26 @@ Schema boundaries_schema() {
   Schema boundaries = Schema::object(
       "Conditions on the grid values on each face: free | fixed (no motion) | slip (no normal "
       "motion) | {frictional: mu}.");
-  const char* const faces[][2] = {{"x_min", "The face x = origin_x."}, {"x_max", "The face x = upper_x."},
-                                  {"y_min", "The face y = origin_y."}, {"y_max", "The face y = upper_y."},
-                                  {"z_min", "The face z = origin_z (3D)."}, {"z_max", "The face z = upper_z (3D)."}};
-  for (const auto& [face, doc] : faces) boundaries.optional(face, face_schema(), doc);
+  for (const auto& [face, doc] : grid_faces) boundaries.optional(face, face_schema(), doc);
   return boundaries;
+}
+
+Schema thermal_schema() {
+  Schema face = Schema::object("Temperature condition of the grid values on the face.");
+  face.required("type", Schema::one_of({"insulated", "fixed_temperature"}),
+                "insulated: no heat crosses the face; fixed_temperature: the grid values on it "
+                "are held at `temperature`.")
+      .optional("temperature", Schema::number().positive().unit("K"),
+                "For type: fixed_temperature.");
+  Schema thermal = Schema::object(
+      "Heat conduction in the thermal bodies (Tran et al., MPMICE, eqs. 55-56, 92): one "
+      "temperature field on the grid shared by every thermal body; the explicit step is also "
+      "limited to safety_factor h^2 / (2 dim max k_eff / (rho c)).");
+  thermal.optional("enabled", Schema::boolean().default_value("true when a body is thermal"),
+                   "false: temperatures stay at their initial values.");
+  for (const auto& [name, doc] : grid_faces)
+    thermal.optional(name, Schema(face).default_value("{type: insulated}"), doc);
+  return thermal;
 }
 
 Schema load_schema() {
@@ -225,11 +251,13 @@ Schema mpm_case_schema() {
       .optional("damping", Schema::number().range(0.0, 1.0).default_value("0"),
                 "Local non-viscous damping coefficient.")
       .optional("materials", Schema::map_of(Schema::any()),
-                "Named materials, each a mapping with a `type` (models listed below); needed by "
-                "every deformable body.")
+                "Named materials, each a mapping with a `type` (models listed below); a case of "
+                "rigid bodies only needs none.")
       .required("bodies", Schema::sequence(body_schema()).length(1, unlimited), "The bodies.")
       .optional("contact", contact_schema(), "Contact between bodies.")
       .optional("boundaries", boundaries_schema(), "Grid faces.")
+      .optional("thermal", thermal_schema(),
+                "Heat conduction and the faces' temperature conditions.")
       .optional("loads", Schema::sequence(load_schema()), "Surface loads.")
       .optional("probes", Schema::sequence(probe_schema()), "Particles recorded to probes.csv.")
       .optional("output", output_schema(), "Output.")

@@ -12,6 +12,7 @@
 #include "cosim/error.hpp"
 #include "mpm/case/case_schema.hpp"
 #include "mpm/case/velocity_history.hpp"
+#include "mpm/material/material_parameters.hpp"
 #include "mpm/material/material_registry.hpp"
 
 namespace mpm {
@@ -111,6 +112,7 @@ class CaseReader {
     for (const Node& body : bodies.items()) read_body(body);
     if (auto contact = root_.find("contact")) read_contact(*contact);
     if (auto boundaries = root_.find("boundaries")) read_boundaries(*boundaries);
+    read_thermal(root_.find("thermal"));
     if (auto loads = root_.find("loads"))
       for (const Node& load : loads->items()) read_load(load);
     if (auto probes = root_.find("probes"))
@@ -192,11 +194,16 @@ class CaseReader {
       body.material = index_of(c_.material_names, *material, "material");
       if (auto density = node.find("density"))
         density->fail_at_key("a deformable body takes its density from its material");
+      for (const char* key : {"specific_heat", "thermal_conductivity"})
+        if (auto thermal = node.find(key))
+          thermal->fail_at_key(
+              fmt::format("a deformable body takes its {} from its material", key));
     } else {
       body.rigid = read_rigid(*rigid);
       const auto density = node.find("density");
       if (!density) node.fail(fmt::format("rigid body '{}' needs a `density`", body.name));
       body.density_override = density->as<double>();
+      body.thermal_override = material_parameters::read_thermal_properties(node);
       if (auto geostatic = node.find("geostatic"))
         geostatic->fail_at_key("a rigid body has no geostatic stress");
     }
@@ -222,6 +229,7 @@ class CaseReader {
     body.half_lengths = std::move(seeded.half_lengths);
 
     if (auto v = node.find("initial_velocity")) body.initial_velocity = read_vector(*v, dim_);
+    body.initial_temperature = node.get<double>("temperature", body.initial_temperature);
     if (auto porous = node.find("porous")) body.porous = read_porous(*porous);
     if (auto geostatic = node.find("geostatic")) {
       GeostaticStress g;
@@ -316,6 +324,33 @@ class CaseReader {
                                           : FaceCondition::Kind::free;
       }
       c_.boundaries[static_cast<std::size_t>(f)] = condition;
+    }
+  }
+
+  // After the bodies: heat conduction is on when a body is thermal, unless
+  // `enabled` says otherwise.
+  void read_thermal(const std::optional<Node>& thermal) {
+    const bool thermal_body = has_thermal_body(c_);
+    c_.thermal.enabled = thermal_body;
+    if (!thermal) return;
+    if (auto enabled = thermal->find("enabled")) {
+      c_.thermal.enabled = enabled->as<bool>();
+      if (c_.thermal.enabled && !thermal_body)
+        enabled->fail("no body is thermal: give a material (or a rigid body) a `specific_heat`");
+    }
+    for (const auto& [face, node] : thermal->entries()) {
+      const int f = face_index(face);
+      if (f < 0) continue;  // `enabled`
+      if (dim_ == 2 && f >= 4) node.fail_at_key("a 2D case has no z faces");
+      FaceTemperature& condition = c_.thermal.faces[static_cast<std::size_t>(f)];
+      const auto temperature = node.find("temperature");
+      if (node["type"].as<std::string>() == "fixed_temperature") {
+        if (!temperature) node.fail("type: fixed_temperature needs a `temperature` [K]");
+        condition.kind = FaceTemperature::Kind::fixed;
+        condition.temperature = temperature->as<double>();
+      } else if (temperature) {
+        temperature->fail_at_key("an insulated face has no temperature");
+      }
     }
   }
 

@@ -18,7 +18,7 @@ CouplingSpec coupling_spec_of(const CaseDescription& description) {
   const auto document = cosim::config::Document::load_file(description.file);
   const auto block = document.root().find("coupling");
   if (!block || block->is_null()) return {};
-  return read_coupling(*block, description.dimension);
+  return read_coupling(*block, description.dimension, description.thermal.enabled);
 }
 
 }  // namespace
@@ -76,7 +76,10 @@ nlohmann::json CouplingObserver<Dim>::summary() const {
           {"capped_solid_fraction_cells", d.capped_solid_fraction_cells},
           {"impulse_received", vector_json<Dim>(d.impulse_total.received)},
           {"impulse_applied", vector_json<Dim>(d.impulse_total.applied)},
-          {"impulse_absorbed", vector_json<Dim>(d.impulse_total.absorbed)}};
+          {"impulse_absorbed", vector_json<Dim>(d.impulse_total.absorbed)},
+          {"heat_received", d.heat_total.received},
+          {"heat_applied", d.heat_total.applied},
+          {"heat_absorbed", d.heat_total.absorbed}};
 }
 
 StepObservers coupling_observers(const cosim::CouplingEndpoint& endpoint, const std::string& default_name) {

@@ -29,16 +29,24 @@ Schema exchange_grid_schema() {
              "MPM cells per exchange cell in each direction.")
       .optional("writes",
                 field_list({names::solid_fraction, names::solid_velocity, names::solid_bulk_density,
-                            names::permeability, names::grain_size})
+                            names::permeability, names::grain_size, names::solid_temperature,
+                            names::solid_heat_capacity})
                     .default_value("[solid_fraction, solid_velocity, solid_bulk_density, "
-                                   "permeability, grain_size]"),
-                "Fields written per cell at every window end.")
+                                   "permeability, grain_size], and solid_temperature, "
+                                   "solid_heat_capacity when the case conducts heat"),
+                "Fields written per cell at every window end; the thermal ones need heat "
+                "conduction.")
       .optional("reads",
-                field_list({names::pore_pressure, names::pore_pressure_force, names::impulse})
-                    .default_value("[pore_pressure, momentum_exchange_impulse]"),
-                "Fields read; the job must send each of them. With pore_pressure_force the solid "
-                "takes the fluid solver's pressure force per cell (split by mass) instead of "
-                "-phi_s grad p from pore_pressure, which then only sets the points' pore pressure.")
+                field_list({names::pore_pressure, names::pore_pressure_force, names::impulse,
+                            names::heat})
+                    .default_value("[pore_pressure, momentum_exchange_impulse], and "
+                                   "heat_exchange_energy when the case conducts heat"),
+                "Fields read; the job must send each of them (a thermal soil coupled without an "
+                "energy exchange lists its reads). With pore_pressure_force the solid takes the "
+                "fluid solver's pressure force per cell (split by mass) instead of -phi_s grad p "
+                "from pore_pressure, which then only sets the points' pore pressure. "
+                "heat_exchange_energy needs heat conduction and is shared over the particles by "
+                "heat capacity.")
       .optional("held_density_factor", Schema::number().range(1.0, 1e100).default_value("1e30"),
                 "Factor on solid_bulk_density in cells whose solid cannot take the exchange "
                 "impulse (rigid bodies, held bodies, fixed faces).")
@@ -72,6 +80,18 @@ std::vector<std::string> strings_or(const Node& n, const char* key, std::vector<
   return child ? child->as<std::vector<std::string>>() : fallback;
 }
 
+// The exchange grid's thermal fields need a case that conducts heat.
+void refuse_thermal_fields(const Node& exchange_grid, const char* key) {
+  const auto list = exchange_grid.find(key);
+  if (!list) return;
+  for (const Node& item : list->items())
+    if (names::is_thermal(item.as<std::string>()))
+      item.fail(
+          fmt::format("{} needs a case that conducts heat (a material with specific_heat, "
+                      "thermal.enabled not false)",
+                      item.as<std::string>()));
+}
+
 }  // namespace
 
 bool ExchangeGridSpec::writes_field(const std::string& f) const { return contains(writes, f); }
@@ -88,16 +108,26 @@ Schema coupling_schema() {
   return s;
 }
 
-CouplingSpec read_coupling(const Node& node, int dimension) {
+CouplingSpec read_coupling(const Node& node, int dimension, bool heat_conduction) {
   coupling_schema().validate(node);
   CouplingSpec spec;
   if (auto g = node.find("exchange_grid")) {
+    if (!heat_conduction) {
+      refuse_thermal_fields(*g, "writes");
+      refuse_thermal_fields(*g, "reads");
+    }
+    std::vector<std::string> writes{names::solid_fraction, names::solid_velocity,
+                                    names::solid_bulk_density, names::permeability,
+                                    names::grain_size};
+    std::vector<std::string> reads{names::pore_pressure, names::impulse};
+    if (heat_conduction) {
+      writes.insert(writes.end(), {names::solid_temperature, names::solid_heat_capacity});
+      reads.push_back(names::heat);
+    }
     ExchangeGridSpec e;
     e.factor = g->get<int>("factor", 1);
-    e.writes = strings_or(*g, "writes",
-                          {names::solid_fraction, names::solid_velocity, names::solid_bulk_density,
-                           names::permeability, names::grain_size});
-    e.reads = strings_or(*g, "reads", {names::pore_pressure, names::impulse});
+    e.writes = strings_or(*g, "writes", writes);
+    e.reads = strings_or(*g, "reads", reads);
     e.held_density_factor = g->get<double>("held_density_factor", 1e30);
     e.hold_at_fixed_faces = g->get<bool>("hold_at_fixed_faces", true);
     e.held_bodies = strings_or(*g, "held_bodies", {});

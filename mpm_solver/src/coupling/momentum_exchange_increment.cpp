@@ -1,77 +1,16 @@
 #include "mpm/coupling/momentum_exchange_increment.hpp"
 
-#include <array>
-#include <cmath>
-
 namespace mpm::coupling {
 
 template <int Dim>
 ImpulseSplit<Dim> split_impulse(const ExchangeGrid<Dim>& grid, std::span<const double> cell_impulse,
                                 const Particles<Dim>& particles, const std::vector<BodyRole>& roles,
                                 std::vector<Vec<Dim>>& particle_impulse) {
-  const std::size_t n = grid.size();
-  const auto dim = static_cast<std::size_t>(Dim);
-  std::vector<double> mass(n, 0.0), rigid_mass(n, 0.0);
-  for (std::size_t p = 0; p < particles.size(); ++p) {
-    const bool rigid = roles[particles.body[p]].rigid;
-    const double m = particles.mass[p];
-    grid.for_each_conservative(particles.position[p], particles.half_length[p], [&](std::size_t c, double w) {
-      (rigid ? rigid_mass : mass)[c] += w * m;
-    });
-  }
-  std::vector<Vec<Dim>> impulse(n);
-  for (std::size_t c = 0; c < n; ++c) impulse[c] = Eigen::Map<const Vec<Dim>>(cell_impulse.data() + c * dim);
-  ImpulseSplit<Dim> split;
-  for (const auto& j : impulse) split.received += j;
-  // An impulse in a cell without any solid is a smear of the coupler's
-  // mappings next to the solid's edge: it goes to the neighbouring cells
-  // (3^Dim block) by their deformable mass, so it is not lost.
-  for (std::size_t c = 0; c < n; ++c) {
-    if (mass[c] > 0.0 || rigid_mass[c] > 0.0 || impulse[c].isZero(0.0)) continue;
-    std::array<int, Dim> centre{};
-    std::size_t rest = c;
-    for (std::size_t d = 0; d < dim; ++d) {
-      centre[d] = static_cast<int>(rest % static_cast<std::size_t>(grid.cells[d]));
-      rest /= static_cast<std::size_t>(grid.cells[d]);
-    }
-    std::vector<std::size_t> neighbours;
-    double neighbour_mass = 0.0;
-    for (int k = 0; k < static_cast<int>(std::pow(3, Dim)); ++k) {
-      std::array<int, Dim> index{};
-      bool inside = true;
-      for (std::size_t d = 0, code = static_cast<std::size_t>(k); d < dim; ++d, code /= 3) {
-        index[d] = centre[d] + static_cast<int>(code % 3) - 1;
-        inside = inside && index[d] >= 0 && index[d] < grid.cells[d];
-      }
-      if (!inside) continue;
-      const std::size_t f = grid.flat(index);
-      if (mass[f] > 0.0) {
-        neighbours.push_back(f);
-        neighbour_mass += mass[f];
-      }
-    }
-    if (neighbours.empty()) continue;
-    const Vec<Dim> moved = impulse[c];
-    for (std::size_t f : neighbours) impulse[f] += moved * (mass[f] / neighbour_mass);
-    impulse[c].setZero();
-  }
-  // Impulse per unit of mass weight in each cell.
-  std::vector<Vec<Dim>> per_mass(n, Vec<Dim>::Zero());
-  for (std::size_t c = 0; c < n; ++c) {
-    if (mass[c] > 0.0)
-      per_mass[c] = impulse[c] / mass[c];
-    else
-      split.absorbed += impulse[c];
-  }
-  particle_impulse.assign(particles.size(), Vec<Dim>::Zero());
-  for (std::size_t p = 0; p < particles.size(); ++p) {
-    if (roles[particles.body[p]].rigid) continue;
-    const double m = particles.mass[p];
-    Vec<Dim>& j = particle_impulse[p];
-    grid.for_each_conservative(particles.position[p], particles.half_length[p], [&](std::size_t c, double w) { j += (w * m) * per_mass[c]; });
-    split.applied += j;
-  }
-  return split;
+  std::vector<double> deformable(particles.size(), 0.0), rigid(particles.size(), 0.0);
+  for (std::size_t p = 0; p < particles.size(); ++p)
+    (roles[particles.body[p]].rigid ? rigid : deformable)[p] = particles.mass[p];
+  return share_over_particles<Dim, Dim>(grid, cell_impulse, particles, deformable, rigid,
+                                        particle_impulse);
 }
 
 template ImpulseSplit<2> split_impulse<2>(const ExchangeGrid<2>&, std::span<const double>, const Particles<2>&,

@@ -13,6 +13,7 @@
 #include "mpm/coupling/field_names.hpp"
 #include "mpm/coupling/pore_pressure_force.hpp"
 #include "mpm/coupling/porous_fields_writer.hpp"
+#include "mpm/coupling/thermal_fields_writer.hpp"
 
 namespace mpm::coupling {
 
@@ -51,6 +52,7 @@ struct MpmCoupling<Dim>::State {
   std::vector<double> cell_values;     // scratch for reads
   std::vector<Vec<Dim>> scratch;       // per particle
   std::vector<Vec<Dim>> force;         // per particle [N]
+  std::vector<double> particle_heat;   // per particle, this step [J]
 
   State(Solver<Dim>& s, std::unique_ptr<CouplingChannel> c, CouplingSpec sp)
       : solver(s), channel(std::move(c)), spec(std::move(sp)) {}
@@ -67,7 +69,23 @@ struct MpmCoupling<Dim>::State {
   // The solver's particle force source: reads what the partner sent for
   // this step of dt and adds it to the particles' external force.
   void apply(double dt, Particles<Dim>& particles);
+  // The solver's heat source: the step's share of the exchanged heat, as
+  // the heat rate E_p / dt of each particle.
+  void apply_heat(double dt, Particles<Dim>& particles);
 };
+
+template <int Dim>
+void MpmCoupling<Dim>::State::apply_heat(double dt, Particles<Dim>& particles) {
+  cell_values.resize(exchange->size());
+  channel->read_increment(names::heat, dt, cell_values);
+  const HeatSplit split = split_heat(*exchange, cell_values, particles, particle_heat);
+  diagnostics.heat_step = split;
+  diagnostics.heat_total.received += split.received;
+  diagnostics.heat_total.applied += split.applied;
+  diagnostics.heat_total.absorbed += split.absorbed;
+  for (std::size_t p = 0; p < particles.size(); ++p)
+    particles.external_heat[p] += particle_heat[p] / dt;
+}
 
 template <int Dim>
 void MpmCoupling<Dim>::State::apply(double dt, Particles<Dim>& particles) {
@@ -124,9 +142,22 @@ MpmCoupling<Dim>::MpmCoupling(Solver<Dim>& solver, std::unique_ptr<CouplingChann
     for (std::size_t d = 0; d + 1 < Dim; ++d) n[d] = cells[d];
     s.surface = SurfaceGrid<Dim>::covering(solver.grid(), n);
   }
+  if (s.spec.exchange_grid && !solver.conducts_heat()) {
+    const auto& g = *s.spec.exchange_grid;
+    for (const auto& [key, list] : {std::pair{"writes", &g.writes}, std::pair{"reads", &g.reads}})
+      for (const auto& f : *list)
+        if (names::is_thermal(f))
+          throw cosim::InputError(
+              fmt::format("{}: key 'coupling.exchange_grid.{}': {} needs a case that conducts heat",
+                          solver.description().file.string(), key, f));
+  }
   std::shared_ptr<State> shared = state_;
   solver.add_particle_force_source(
       [shared](double, double dt, Particles<Dim>& particles) { shared->apply(dt, particles); });
+  if (s.exchange_reads(names::heat))
+    solver.add_particle_heat_source([shared](double, double dt, Particles<Dim>& particles) {
+      shared->apply_heat(dt, particles);
+    });
 }
 
 template <int Dim>
@@ -153,6 +184,8 @@ void MpmCoupling<Dim>::declare() {
     write(n::solid_bulk_density, 1, "kg/m^3", 0.0);
     write(n::permeability, 1, "m^2", 0.0);
     write(n::grain_size, 1, "m", 0.0);
+    write(n::solid_temperature, 1, "K", 0.0);
+    write(n::solid_heat_capacity, 1, "J/(m^3 K)", 0.0);
     if (s.exchange_reads(n::pore_pressure))
       s.channel->declare_read(field(n::pore_pressure, n::exchange_mesh, 1, "Pa"),
                               s.spec.exchange_grid->initial_pore_pressure);
@@ -161,6 +194,10 @@ void MpmCoupling<Dim>::declare() {
     if (s.exchange_reads(n::impulse))
       s.channel->declare_read(
           field(n::impulse, n::exchange_mesh, Dim, "kg m/s", Quantity::extensive, TimeTreatment::integral), 0.0);
+    if (s.exchange_reads(n::heat))
+      s.channel->declare_read(
+          field(n::heat, n::exchange_mesh, 1, "J", Quantity::extensive, TimeTreatment::integral),
+          0.0);
   }
   if (s.surface) {
     s.channel->declare_mesh({n::surface_mesh, s.surface->mesh()});
@@ -188,7 +225,11 @@ void MpmCoupling<Dim>::write_fields() {
   State& s = *state_;
   namespace n = names;
   const Particles<Dim>& particles = s.solver.particles();
-  if (s.exchange && !s.spec.exchange_grid->writes.empty()) {
+  const bool porous = s.exchange_writes(n::solid_fraction) ||
+                      s.exchange_writes(n::solid_velocity) ||
+                      s.exchange_writes(n::solid_bulk_density) ||
+                      s.exchange_writes(n::permeability) || s.exchange_writes(n::grain_size);
+  if (porous) {
     const auto& g = *s.spec.exchange_grid;
     const auto held = held_particles(particles, s.solver.grid(), s.roles, s.solver.description().boundaries,
                                      g.hold_at_fixed_faces);
@@ -203,6 +244,13 @@ void MpmCoupling<Dim>::write_fields() {
     if (s.exchange_writes(n::solid_bulk_density)) s.channel->write(n::solid_bulk_density, f.solid_bulk_density);
     if (s.exchange_writes(n::permeability)) s.channel->write(n::permeability, f.permeability);
     if (s.exchange_writes(n::grain_size)) s.channel->write(n::grain_size, f.grain_size);
+  }
+  if (s.exchange_writes(n::solid_temperature) || s.exchange_writes(n::solid_heat_capacity)) {
+    const ThermalFields f = thermal_fields(*s.exchange, particles);
+    if (s.exchange_writes(n::solid_temperature))
+      s.channel->write(n::solid_temperature, f.solid_temperature);
+    if (s.exchange_writes(n::solid_heat_capacity))
+      s.channel->write(n::solid_heat_capacity, f.solid_heat_capacity);
   }
   if (s.surface && s.surface_writes(n::bed_elevation))
     s.channel->write(n::bed_elevation, bed_elevation(*s.surface, particles, s.roles, s.spec.surface->strips));

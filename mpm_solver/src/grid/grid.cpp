@@ -101,6 +101,12 @@ void Grid<Dim>::allocate(int field_count) {
 }
 
 template <int Dim>
+void Grid<Dim>::allocate_heat() {
+  for (auto* array : {&heat_capacity, &temperature, &heat_rate, &temperature_change})
+    array->assign(size(), 0.0);
+}
+
+template <int Dim>
 void Grid<Dim>::clear() {
   std::fill(mass.begin(), mass.end(), 0.0);
   std::fill(momentum.begin(), momentum.end(), Vec<Dim>::Zero());

@@ -72,6 +72,7 @@ void ParticleSnapshotWriter<Dim>::write(const Solver<Dim>& solver) {
   scalar("damage", p.damage, "1");
   scalar("porosity", p.porosity, "1");
   scalar("pore_pressure", p.pore_pressure, "Pa");
+  if (solver.conducts_heat()) scalar("temperature", p.temperature, "K");
   writer_.write(solver.time(), point_cloud(p), fields);
 }
 

@@ -23,7 +23,8 @@ std::vector<std::size_t> stress_components() {
 }  // namespace
 
 template <int Dim>
-std::vector<std::string> ProbeRecorder<Dim>::columns(const std::vector<ProbeSpec>& probes) {
+std::vector<std::string> ProbeRecorder<Dim>::columns(const std::vector<ProbeSpec>& probes,
+                                                     bool thermal) {
   std::vector<std::string> names{cosim::column_name("time", "s")};
   for (const auto& probe : probes) {
     for (int d = 0; d < Dim; ++d)
@@ -34,6 +35,7 @@ std::vector<std::string> ProbeRecorder<Dim>::columns(const std::vector<ProbeSpec
       names.push_back(cosim::column_name(probe.name + "_stress_" + voigt_names[c], "Pa"));
     names.push_back(cosim::column_name(probe.name + "_pore_pressure", "Pa"));
     names.push_back(cosim::column_name(probe.name + "_plastic_strain", "-"));
+    if (thermal) names.push_back(cosim::column_name(probe.name + "_temperature", "K"));
   }
   return names;
 }
@@ -41,7 +43,8 @@ std::vector<std::string> ProbeRecorder<Dim>::columns(const std::vector<ProbeSpec
 template <int Dim>
 ProbeRecorder<Dim>::ProbeRecorder(const std::filesystem::path& file, const Solver<Dim>& solver)
     : probes_(solver.description().probes),
-      writer_(file, columns(probes_)) {
+      thermal_(solver.conducts_heat()),
+      writer_(file, columns(probes_, thermal_)) {
   for (const auto& probe : probes_) initial_position_.push_back(solver.particles().position[probe.particle]);
 }
 
@@ -59,6 +62,7 @@ void ProbeRecorder<Dim>::record(const Solver<Dim>& solver) {
     for (const std::size_t c : stress_components<Dim>()) row_.push_back(sigma[c]);
     row_.push_back(i < p.pore_pressure.size() ? p.pore_pressure[i] : 0.0);
     row_.push_back(i < p.plastic_strain.size() ? p.plastic_strain[i] : 0.0);
+    if (thermal_) row_.push_back(p.temperature[i]);
   }
   writer_.append(row_);
 }

@@ -28,7 +28,8 @@ namespace {
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
 template <int Dim>
-void record_conserved(cosim::RunSummary& summary, const Totals<Dim>& totals, bool start) {
+void record_conserved(cosim::RunSummary& summary, const Totals<Dim>& totals, bool thermal,
+                      bool start) {
   const char* per_depth = Dim == 2 ? "/m" : "";
   auto set = [&](const std::string& name, double value, const std::string& unit) {
     const std::string u = unit + per_depth;
@@ -55,6 +56,14 @@ void record_conserved(cosim::RunSummary& summary, const Totals<Dim>& totals, boo
           totals.contact_dissipation + totals.boundary_dissipation + totals.plastic_dissipation -
           totals.external_work,
       "J");
+  if (!thermal) return;
+  // sum m c T, the heat put in by sources (coupling) and through
+  // fixed-temperature faces, and their balance, constant to round-off.
+  set("thermal_energy", totals.thermal_energy, "J");
+  set("external_heat", totals.external_heat, "J");
+  set("heat_through_faces", totals.heat_through_faces, "J");
+  set("thermal_energy_balance",
+      totals.thermal_energy - totals.external_heat - totals.heat_through_faces, "J");
 }
 
 nlohmann::json case_section(const CaseDescription& c) {
@@ -72,6 +81,7 @@ nlohmann::json case_section(const CaseDescription& c) {
           {"shape", std::string(to_string(c.shape))},
           {"scheme", c.scheme == UpdateScheme::usl ? "usl" : "musl"},
           {"grid_cells", cells},
+          {"heat_conduction", c.thermal.enabled},
           {"particles", particles},
           {"bodies", bodies},
           {"end_time_s", c.time.end_time}};
@@ -101,7 +111,7 @@ class CaseRun {
         if (observer_) observer_->initialize(solver_);
         open_outputs();
       }
-      record_conserved(summary_, solver_.totals(), true);
+      record_conserved(summary_, solver_.totals(), solver_.conducts_heat(), true);
       solver_.check_state();
       write_snapshot();
       record_probes();
@@ -217,7 +227,7 @@ class CaseRun {
 
   void record_end() noexcept {
     try {
-      record_conserved(summary_, solver_.totals(), false);
+      record_conserved(summary_, solver_.totals(), solver_.conducts_heat(), false);
       const auto steps = solver_.step_count();
       summary_.set_steps(static_cast<std::int64_t>(steps));
       const double advance = summary_.phases().seconds("advance");

@@ -91,16 +91,16 @@ cosim::config::Schema DruckerPrager::schema() {
 std::unique_ptr<Material> DruckerPrager::make(const cosim::config::Node& parameters) {
   const std::string match = parameters.get("match", "plane_strain");
   return std::make_unique<DruckerPrager>(
-      material_parameters::read_density(parameters), material_parameters::read_objective_rate(parameters),
-      FrictionalParameters::read(parameters),
-      match == "compression_cone"   ? DruckerPragerMatch::compression_cone
+      material_parameters::read_common_properties(parameters),
+      material_parameters::read_objective_rate(parameters), FrictionalParameters::read(parameters),
+      match == "compression_cone" ? DruckerPragerMatch::compression_cone
       : match == "extension_cone" ? DruckerPragerMatch::extension_cone
                                   : DruckerPragerMatch::plane_strain);
 }
 
-DruckerPrager::DruckerPrager(double density, ObjectiveRate rate, FrictionalParameters parameters,
-                             DruckerPragerMatch match)
-    : Material(density, rate), parameters_(std::move(parameters)), match_(match) {
+DruckerPrager::DruckerPrager(CommonProperties common, ObjectiveRate rate,
+                             FrictionalParameters parameters, DruckerPragerMatch match)
+    : Material(common, rate), parameters_(std::move(parameters)), match_(match) {
   if (parameters_.friction.softening_rate() == 0.0 && !parameters_.degradation.enabled())
     fixed_cone_ = cone(MaterialState{});
 }

@@ -10,7 +10,7 @@ cosim::config::Schema LinearElastic::schema() {
 }
 
 std::unique_ptr<Material> LinearElastic::make(const cosim::config::Node& parameters) {
-  return std::make_unique<LinearElastic>(material_parameters::read_density(parameters),
+  return std::make_unique<LinearElastic>(material_parameters::read_common_properties(parameters),
                                          material_parameters::read_objective_rate(parameters),
                                          material_parameters::read_elastic_constants(parameters));
 }

@@ -14,6 +14,7 @@ Schema base_schema(const std::string& type, std::string doc, bool hypoelastic) {
   schema.required("type", Schema::one_of({type}), "The constitutive model.")
       .required("density", Schema::number().positive().unit("kg/m3"),
                 "Density of the material: the grain density of a porous body, else the bulk density.");
+  add_thermal_keys(schema);
   if (hypoelastic) {
     schema.optional("objective_rate", Schema::one_of({"jaumann", "polar_rotation"}).default_value("jaumann"),
                     "How the stress is kept objective under rotation: the Jaumann rate (Zheng et al., eq. 5) "
@@ -29,6 +30,19 @@ Schema& add_elastic_keys(Schema& schema) {
                 "Poisson's ratio nu in [-1, 0.5); 0.5 (incompressible) is refused.");
 }
 
+Schema& add_thermal_keys(Schema& schema, const std::string& whose) {
+  return schema
+      .optional("specific_heat", Schema::number().positive().unit("J/(kg K)"),
+                whose +
+                    "Specific heat c (of the grains for a porous body). A body with a specific "
+                    "heat is thermal: its temperature conducts and exchanges heat.")
+      .optional("thermal_conductivity",
+                Schema::number().non_negative().unit("W/(m K)").default_value("0"),
+                whose +
+                    "Thermal conductivity k (of the grains: a porous skeleton conducts with "
+                    "(1 - n) k); needs specific_heat.");
+}
+
 namespace {
 
 double positive(const Node& node, std::string_view key) {
@@ -40,7 +54,22 @@ double positive(const Node& node, std::string_view key) {
 
 }  // namespace
 
-double read_density(const Node& node) { return positive(node, "density"); }
+CommonProperties read_common_properties(const Node& node) {
+  return {.density = positive(node, "density"), .thermal = read_thermal_properties(node)};
+}
+
+std::optional<ThermalProperties> read_thermal_properties(const Node& node) {
+  const auto specific_heat = node.find("specific_heat");
+  const auto conductivity = node.find("thermal_conductivity");
+  if (!specific_heat) {
+    if (conductivity)
+      conductivity->fail_at_key(
+          "thermal_conductivity needs specific_heat (only a body that stores heat conducts it)");
+    return std::nullopt;
+  }
+  return ThermalProperties{.specific_heat = positive(node, "specific_heat"),
+                           .conductivity = conductivity ? conductivity->as<double>() : 0.0};
+}
 
 ObjectiveRate read_objective_rate(const Node& node) {
   return node.get("objective_rate", "jaumann") == "polar_rotation" ? ObjectiveRate::polar_rotation

@@ -35,13 +35,14 @@ cosim::config::Schema MohrCoulomb::schema() {
 }
 
 std::unique_ptr<Material> MohrCoulomb::make(const cosim::config::Node& parameters) {
-  return std::make_unique<MohrCoulomb>(material_parameters::read_density(parameters),
+  return std::make_unique<MohrCoulomb>(material_parameters::read_common_properties(parameters),
                                        material_parameters::read_objective_rate(parameters),
                                        FrictionalParameters::read(parameters));
 }
 
-MohrCoulomb::MohrCoulomb(double density, ObjectiveRate rate, FrictionalParameters parameters)
-    : Material(density, rate), parameters_(std::move(parameters)) {
+MohrCoulomb::MohrCoulomb(CommonProperties common, ObjectiveRate rate,
+                         FrictionalParameters parameters)
+    : Material(common, rate), parameters_(std::move(parameters)) {
   if (parameters_.friction.softening_rate() == 0.0 && !parameters_.degradation.enabled())
     fixed_surface_ = surface(MaterialState{});
 }

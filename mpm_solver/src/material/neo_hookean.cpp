@@ -16,7 +16,7 @@ cosim::config::Schema NeoHookean::schema() {
 }
 
 std::unique_ptr<Material> NeoHookean::make(const cosim::config::Node& parameters) {
-  return std::make_unique<NeoHookean>(material_parameters::read_density(parameters),
+  return std::make_unique<NeoHookean>(material_parameters::read_common_properties(parameters),
                                       material_parameters::read_elastic_constants(parameters));
 }
 

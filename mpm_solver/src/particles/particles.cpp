@@ -31,7 +31,11 @@ void Particles<Dim>::resize(std::size_t n) {
   permeability.resize(n, 0.0);
   grain_size.resize(n, 0.0);
   pore_pressure.resize(n, 0.0);
+  temperature.resize(n, 0.0);
+  temperature_gradient.resize(n, Vec<Dim>::Zero());
+  heat_capacity.resize(n, 0.0);
   external_force.resize(n, Vec<Dim>::Zero());
+  external_heat.resize(n, 0.0);
   body.resize(n, 0);
 }
 
@@ -44,8 +48,9 @@ double Particles<Dim>::bytes_per_particle() const {
                        bytes(half_length) + bytes(mass) + bytes(initial_volume) + bytes(volume) +
                        bytes(stress) + bytes(plastic_strain) + bytes(damage) + bytes(internal) +
                        bytes(porosity) + bytes(initial_porosity) + bytes(permeability) +
-                       bytes(grain_size) + bytes(pore_pressure) + bytes(external_force) +
-                       bytes(body);
+                       bytes(grain_size) + bytes(pore_pressure) + bytes(temperature) +
+                       bytes(temperature_gradient) + bytes(heat_capacity) + bytes(external_force) +
+                       bytes(external_heat) + bytes(body);
   return size() == 0 ? 0.0 : total / static_cast<double>(size());
 }
 

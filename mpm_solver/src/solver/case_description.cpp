@@ -14,6 +14,20 @@ Vec3d TimeSeries::at(double t) const {
   return (1.0 - s) * value[i - 1] + s * value[i];
 }
 
+const ThermalProperties* thermal_properties(const CaseDescription& description,
+                                            const BodySpec& body) {
+  if (body.rigid) return body.thermal_override ? &*body.thermal_override : nullptr;
+  const auto& thermal =
+      description.materials.at(static_cast<std::size_t>(body.material))->thermal();
+  return thermal ? &*thermal : nullptr;
+}
+
+bool has_thermal_body(const CaseDescription& description) {
+  return std::any_of(description.bodies.begin(), description.bodies.end(), [&](const BodySpec& b) {
+    return thermal_properties(description, b) != nullptr;
+  });
+}
+
 double ContactSpec::friction_between(int a, int b) const {
   const auto it = pair_friction.find({std::min(a, b), std::max(a, b)});
   return it == pair_friction.end() ? friction : it->second;

@@ -6,12 +6,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "body_state.hpp"
 #include "cosim/error.hpp"
 #include "geostatic_stress.hpp"
 #include "grid_boundaries.hpp"
 #include "grid_contact.hpp"
+#include "heat_conduction.hpp"
 #include "mpm/shape/grid_geometry.hpp"
 #include "mpm/shape/shape_dispatch.hpp"
 #include "mpm/shape/stencil.hpp"
@@ -33,6 +35,8 @@ struct Solver<Dim>::Impl {
   detail::ParticleBins bins;
   std::vector<ParticleForceSource> force_sources;
   std::vector<GridVelocityCorrection> grid_corrections;
+  std::vector<ParticleHeatSource> heat_sources;
+  std::optional<detail::HeatConduction<Dim>> heat;  // when the case conducts heat
   std::vector<Vec<Dim>> impulse_on_field;
   // Cell sums for the volumetric locking mitigation (value, weight).
   std::vector<double> cell_sum;
@@ -46,6 +50,8 @@ struct Solver<Dim>::Impl {
   double external_work = 0.0;
   double internal_work = 0.0;
   double initial_strain_energy = 0.0;
+  double external_heat = 0.0;
+  double heat_through_faces = 0.0;
   // Faces with a wall keep the points inside; free faces let them leave (an error).
   Vec<Dim> wall_lower;
   Vec<Dim> wall_upper;
@@ -67,6 +73,14 @@ struct Solver<Dim>::Impl {
   void integrate_grid_momentum(double dt);
   void apply_grid_corrections(double dt);
   void apply_contact_and_boundaries(double dt);
+  void apply_heat_sources(double dt);
+  template <class Kernel>
+  void interpolate_heat_to_grid();
+  template <class Kernel>
+  void conduct_heat();
+  void integrate_grid_temperature(double dt);
+  template <class Kernel>
+  void interpolate_temperature_change_to_particles();
   template <class Kernel>
   void interpolate_grid_to_particles(double dt);
   template <class Kernel>
@@ -117,6 +131,7 @@ Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
   for (const BodySpec& b : d.bodies) total += b.positions.size();
   particles.resize(total);
   std::size_t next = 0;
+  std::vector<double> body_conductivity;
   int deformable_field = -1;
   int field_count = 0;
   for (std::size_t b = 0; b < d.bodies.size(); ++b) {
@@ -140,6 +155,8 @@ Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
     }
     const double density = spec.rigid ? spec.density_override : state.material->density();
     const double solid_fraction = spec.porous ? 1.0 - spec.porous->porosity : 1.0;
+    const ThermalProperties* thermal = thermal_properties(d, spec);
+    body_conductivity.push_back(thermal ? thermal->conductivity : 0.0);
     for (std::size_t k = 0; k < spec.positions.size(); ++k, ++next) {
       const std::size_t p = next;
       particles.position[p] = shrink<Dim>(spec.positions[k]);
@@ -149,6 +166,8 @@ Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
       particles.volume[p] = spec.volumes[k];
       particles.mass[p] = (std::isfinite(density) ? density : 0.0) * solid_fraction * spec.volumes[k];
       particles.body[p] = static_cast<std::uint32_t>(b);
+      particles.temperature[p] = spec.initial_temperature;
+      if (thermal) particles.heat_capacity[p] = particles.mass[p] * thermal->specific_heat;
       if (spec.porous) {
         particles.porosity[p] = spec.porous->porosity;
         particles.initial_porosity[p] = spec.porous->porosity;
@@ -188,6 +207,10 @@ Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
   impulse_on_field.assign(static_cast<std::size_t>(field_count), Vec<Dim>::Zero());
   if (d.gimp_domain == GimpDomain::deformed) initial_half_length = particles.half_length;
   faces = detail::face_values(grid);
+  if (d.thermal.enabled) {
+    grid.allocate_heat();
+    heat.emplace(d.thermal, std::move(body_conductivity), faces, grid);
+  }
   for (std::size_t p = 0; p < particles.size(); ++p)
     if (bodies[particles.body[p]].is_rigid()) particles.velocity[p] = bodies[particles.body[p]].rigid_velocity;
 
@@ -222,6 +245,13 @@ void Solver<Dim>::Impl::step(double dt) {
     apply_surface_loads(dt);
     set_rigid_velocities(dt);
     interpolate_particles_to_grid<Kernel>(dt);
+    if (heat) {
+      apply_heat_sources(dt);
+      interpolate_heat_to_grid<Kernel>();
+      conduct_heat<Kernel>();
+      integrate_grid_temperature(dt);
+      interpolate_temperature_change_to_particles<Kernel>();
+    }
     integrate_grid_momentum(dt);
     apply_grid_corrections(dt);
     apply_contact_and_boundaries(dt);
@@ -375,6 +405,43 @@ void Solver<Dim>::Impl::apply_contact_and_boundaries(double /*dt*/) {
     if (grid.mass[i] <= 1e-300) continue;
     grid.velocity_change[i] = grid.velocity[i] - grid.velocity_change[i];  // v^{n+1} - v^n
   }
+}
+
+template <int Dim>
+void Solver<Dim>::Impl::apply_heat_sources(double dt) {
+  std::fill(particles.external_heat.begin(), particles.external_heat.end(), 0.0);
+  if (heat_sources.empty()) return;
+  for (auto& source : heat_sources) source(time, dt, particles);
+  double heat_in = 0.0;
+  for (const double q : particles.external_heat) heat_in += q * dt;
+  external_heat += heat_in;
+}
+
+// Tran et al., MPMICE, eq. 39: heat capacity and temperature of the grid.
+template <int Dim>
+template <class Kernel>
+void Solver<Dim>::Impl::interpolate_heat_to_grid() {
+  heat->template interpolate_to_grid<Kernel>(particles, bins, geometry, grid);
+}
+
+// Tran et al., MPMICE, eq. 55: the conduction rate at the grid values.
+template <int Dim>
+template <class Kernel>
+void Solver<Dim>::Impl::conduct_heat() {
+  heat->template conduct<Kernel>(particles, bins, geometry, grid);
+}
+
+// Tran et al., MPMICE, eq. 56, with the fixed-temperature faces.
+template <int Dim>
+void Solver<Dim>::Impl::integrate_grid_temperature(double dt) {
+  heat_through_faces += heat->integrate(dt, grid);
+}
+
+// Tran et al., MPMICE, eqs. 87 and 92.
+template <int Dim>
+template <class Kernel>
+void Solver<Dim>::Impl::interpolate_temperature_change_to_particles() {
+  heat->template interpolate_to_particles<Kernel>(particles, bins, geometry, grid);
 }
 
 template <int Dim>
@@ -568,8 +635,11 @@ double Solver<Dim>::Impl::stable_time_step() const {
   }
   // Zheng et al., eq. 23.
   const double denominator = wave + speed;
-  const double dt = denominator > 0.0 ? description.time.safety_factor * grid.min_spacing() / denominator
-                                      : description.time.max_time_step;
+  double dt = denominator > 0.0 ? description.time.safety_factor * grid.min_spacing() / denominator
+                                : description.time.max_time_step;
+  if (heat)
+    dt = std::min(
+        dt, heat->stable_time_step(particles, grid.min_spacing(), description.time.safety_factor));
   return std::min(dt, description.time.max_time_step);
 }
 
@@ -598,6 +668,12 @@ Totals<Dim> Solver<Dim>::Impl::totals() const {
   t.external_work = external_work;
   t.internal_work = internal_work;
   t.plastic_dissipation = internal_work - (t.strain_energy - initial_strain_energy);
+  if (heat) {
+    for (std::size_t p = 0; p < particles.size(); ++p)
+      t.thermal_energy += particles.heat_capacity[p] * particles.temperature[p];
+    t.external_heat = external_heat;
+    t.heat_through_faces = heat_through_faces;
+  }
   return t;
 }
 
@@ -606,14 +682,17 @@ void Solver<Dim>::Impl::check_state() const {
   for (std::size_t p = 0; p < particles.size(); ++p) {
     const auto& body = body_of(p);
     const Voigt& s = particles.stress[p];
-    const bool finite = particles.position[p].allFinite() && particles.velocity[p].allFinite() &&
-                        std::all_of(s.begin(), s.end(), [](double x) { return std::isfinite(x); }) &&
-                        std::isfinite(particles.volume[p]) && particles.volume[p] > 0.0;
+    const bool finite =
+        particles.position[p].allFinite() && particles.velocity[p].allFinite() &&
+        std::all_of(s.begin(), s.end(), [](double x) { return std::isfinite(x); }) &&
+        std::isfinite(particles.volume[p]) && particles.volume[p] > 0.0 &&
+        std::isfinite(particles.temperature[p]);
     if (!finite) {
       throw cosim::NumericalError(fmt::format(
           "particle {} of body '{}' has a non-finite or collapsed state at t = {:.9g} s "
-          "(position {}, volume {:.6g} m^{})",
-          p, body.name, time, fmt::join(particles.position[p], ", "), particles.volume[p], Dim));
+          "(position {}, volume {:.6g} m^{}, temperature {:.6g} K)",
+          p, body.name, time, fmt::join(particles.position[p], ", "), particles.volume[p], Dim,
+          particles.temperature[p]));
     }
     if (!grid.contains(particles.position[p])) {
       throw cosim::NumericalError(fmt::format(
@@ -653,6 +732,14 @@ void Solver<Dim>::add_particle_force_source(ParticleForceSource source) {
 template <int Dim>
 void Solver<Dim>::add_grid_velocity_correction(GridVelocityCorrection correction) {
   impl_->grid_corrections.push_back(std::move(correction));
+}
+template <int Dim>
+void Solver<Dim>::add_particle_heat_source(ParticleHeatSource source) {
+  impl_->heat_sources.push_back(std::move(source));
+}
+template <int Dim>
+bool Solver<Dim>::conducts_heat() const {
+  return impl_->heat.has_value();
 }
 template <int Dim>
 Particles<Dim>& Solver<Dim>::particles() {

@@ -93,7 +93,8 @@ struct RigidMotion {
 
 // Particle mass is the material density times the particle volume; for a
 // porous body the material density is the grain density and the mass is
-// rho_s (1 - n0) V (the solid phase only, as in mixture theory).
+// rho_s (1 - n0) V (the solid phase only, as in mixture theory). A body is
+// thermal when it has thermal properties (thermal_properties below).
 struct BodySpec {
   std::string name;
   int material = -1;  // index into CaseDescription::materials; -1 for rigid bodies
@@ -105,6 +106,8 @@ struct BodySpec {
   std::optional<PorousSpec> porous;
   std::optional<GeostaticStress> geostatic;
   double density_override = std::numeric_limits<double>::quiet_NaN();  // rigid bodies: their density
+  std::optional<ThermalProperties> thermal_override;  // rigid bodies: their thermal properties
+  double initial_temperature = 293.15;                // [K]
 };
 
 struct ContactSpec {
@@ -133,6 +136,21 @@ struct ProbeSpec {
   int body = 0;
   Vec3d position = Vec3d::Zero();
   std::size_t particle = 0;  // resolved by the loader
+};
+
+// Temperature condition of one grid face, on the grid values that lie on it.
+struct FaceTemperature {
+  enum class Kind { insulated, fixed };
+  Kind kind = Kind::insulated;
+  double temperature = 0.0;  // [K], for `fixed`
+};
+
+// Heat conduction in the thermal bodies (Tran et al., MPMICE, eqs. 55-56,
+// 92). The loader enables it when a body is thermal, unless the case says
+// otherwise; faces in the order of FaceConditions.
+struct ThermalSpec {
+  bool enabled = false;
+  std::array<FaceTemperature, 6> faces;
 };
 
 struct TimeSpec {
@@ -167,10 +185,17 @@ struct CaseDescription {
   std::vector<BodySpec> bodies;
   ContactSpec contact;
   FaceConditions boundaries;
+  ThermalSpec thermal;
   std::vector<LoadSpec> loads;
   std::vector<ProbeSpec> probes;
   OutputSpec output;
   int threads = 0;  // 0: OpenMP default
 };
+
+// The thermal properties of a body: its material's, or a rigid body's own;
+// null when the body is not thermal.
+const ThermalProperties* thermal_properties(const CaseDescription& description,
+                                            const BodySpec& body);
+bool has_thermal_body(const CaseDescription& description);
 
 }  // namespace mpm

@@ -15,6 +15,8 @@
 //       factor: 1                    # MPM cells per exchange cell and direction
 //       writes: [solid_fraction, solid_velocity, solid_bulk_density, permeability]
 //       reads: [pore_pressure, momentum_exchange_impulse]
+//                                    # thermal cases: also solid_temperature,
+//                                    # solid_heat_capacity / heat_exchange_energy
 //       held_density_factor: 1.0e30
 //       hold_at_fixed_faces: true
 //       held_bodies: []
@@ -68,6 +70,10 @@ cosim::config::Schema coupling_schema();
 
 // Validates and reads a `coupling` block; with a dimension (2 or 3) also
 // checks the surface cell count against it (attach_coupling checks again).
-CouplingSpec read_coupling(const cosim::config::Node& node, int dimension = 0);
+// `heat_conduction` (the case's thermal.enabled) adds the thermal fields to
+// the exchange grid's default writes and reads; without it they are
+// refused at their keys.
+CouplingSpec read_coupling(const cosim::config::Node& node, int dimension = 0,
+                           bool heat_conduction = false);
 
 }  // namespace mpm::coupling

@@ -63,6 +63,28 @@ struct ExchangeGrid {
     return x;
   }
 
+  // f(flat cell) for the cells of the 3^Dim block around `cell` (itself
+  // included) that lie inside the grid.
+  template <class F>
+  void for_each_neighbour(std::size_t cell, F&& f) const {
+    std::array<int, Dim> centre{};
+    for (std::size_t d = 0, rest = cell; d < Dim; ++d) {
+      centre[d] = static_cast<int>(rest % static_cast<std::size_t>(cells[d]));
+      rest /= static_cast<std::size_t>(cells[d]);
+    }
+    int block = 1;
+    for (int d = 0; d < Dim; ++d) block *= 3;
+    for (int k = 0; k < block; ++k) {
+      std::array<int, Dim> index{};
+      bool inside = true;
+      for (std::size_t d = 0, code = static_cast<std::size_t>(k); d < Dim; ++d, code /= 3) {
+        index[d] = centre[d] + static_cast<int>(code % 3) - 1;
+        inside = inside && index[d] >= 0 && index[d] < cells[d];
+      }
+      if (inside) f(flat(index));
+    }
+  }
+
   cosim::UniformGrid mesh() const {
     cosim::UniformGrid m;
     m.dim = Dim;

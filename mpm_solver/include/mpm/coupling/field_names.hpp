@@ -1,10 +1,13 @@
 #pragma once
 
+#include <string_view>
+
 #include "cosim/job/job.hpp"
 
 // The meshes the MPM declares and the fields it exchanges on them. The
-// porous-medium fields keep the names the coupler's momentum exchange
-// expects (cosim::job::momentum_exchange_fields).
+// porous-medium and thermal fields keep the names the coupler's momentum
+// and energy exchanges expect (cosim::job::momentum_exchange_fields,
+// cosim::job::energy_exchange_fields).
 namespace mpm::coupling::names {
 
 // Cell-centred Dim-D grid over the MPM grid (exchange grid).
@@ -29,6 +32,17 @@ inline constexpr const char* pore_pressure = "pore_pressure";
 // and the fluid share one pressure gradient.
 inline constexpr const char* pore_pressure_force = "pore_pressure_force";
 inline constexpr const char* impulse = mx::impulse;
+namespace ex = cosim::job::energy_exchange_fields;
+// On mpm_grid, for thermal cases: written [K, J/(m^3 K)] (intensive state),
+// and the heat the solid receives from the implicit energy exchange [J]
+// read (extensive window integral, 1 component).
+inline constexpr const char* solid_temperature = ex::solid_temperature;
+inline constexpr const char* solid_heat_capacity = ex::solid_heat_capacity;
+inline constexpr const char* heat = ex::heat;
+// The exchange grid's fields that need a case that conducts heat.
+inline bool is_thermal(std::string_view field) {
+  return field == solid_temperature || field == solid_heat_capacity || field == heat;
+}
 // On mpm_surface: bed elevation [m] written; bed traction [Pa], Dim
 // components (horizontal shear, then the vertical normal component), read.
 inline constexpr const char* bed_elevation = "bed_elevation";

@@ -5,21 +5,19 @@
 
 #include "mpm/coupling/body_roles.hpp"
 #include "mpm/coupling/exchange_grid.hpp"
+#include "mpm/coupling/share_over_particles.hpp"
 #include "mpm/particles/particles.hpp"
 
 namespace mpm::coupling {
 
-// Totals of one split [kg m/s] (per unit depth in 2D).
+// Totals of one split [kg m/s] (per unit depth in 2D); absorbed: by cells
+// with only rigid solid, or empty with no solid around.
 template <int Dim>
-struct ImpulseSplit {
-  Vec<Dim> received = Vec<Dim>::Zero();  // sum over the cells
-  Vec<Dim> applied = Vec<Dim>::Zero();   // sum over the particles
-  Vec<Dim> absorbed = Vec<Dim>::Zero();  // cells with only rigid solid, or empty with no solid around
-};
+using ImpulseSplit = ShareTotals<Dim>;
 
 // The momentum the implicit exchange gives the solid in a step (the step's
 // share of the window's impulse, DESIGN.md §4), cell by cell, split over the
-// deformable particles by their mass weight in the cell:
+// deformable particles by their mass weight in the cell (share_over_particles):
 //   J_p = sum_c J_c m_p w_pc / sum_q m_q w_qc
 // with the conservative weights w_pc of the fields written, so
 // sum_p J_p = sum_c J_c to round-off over the cells that hold deformable

@@ -9,6 +9,7 @@
 #include "mpm/coupling/coupling_channel.hpp"
 #include "mpm/coupling/coupling_spec.hpp"
 #include "mpm/coupling/exchange_grid.hpp"
+#include "mpm/coupling/heat_exchange_increment.hpp"
 #include "mpm/coupling/momentum_exchange_increment.hpp"
 #include "mpm/coupling/surface_grid.hpp"
 #include "mpm/coupling/surface_traction.hpp"
@@ -31,7 +32,8 @@ class Participant;
 //     const double dt = std::min(solver.stable_time_step(), coupling->max_time_step());
 //     solver.step(dt);                        // the coupling's force source reads the pore
 //                                             // pressure, the step's impulse share and the bed
-//                                             // traction, and applies them
+//                                             // traction, and applies them; its heat source
+//                                             // the step's share of the exchanged heat
 //     coupling->after_step(dt);               // writes, when this step ends the window
 //     participant.advance(dt);                // exchanges, when the window is complete
 //   }
@@ -40,7 +42,11 @@ class Participant;
 // solid_velocity, solid_bulk_density, permeability, grain_size (see
 // porous_fields_writer.hpp); reads pore_pressure (applied as -phi_s grad p,
 // pore_pressure_force.hpp) and momentum_exchange_impulse (split over the
-// particles, momentum_exchange_increment.hpp). Surface (mesh "mpm_surface",
+// particles, momentum_exchange_increment.hpp). When the case conducts heat
+// it also writes solid_temperature and solid_heat_capacity
+// (thermal_fields_writer.hpp) and reads heat_exchange_energy (shared over
+// the particles by heat capacity, heat_exchange_increment.hpp, as a heat
+// rate E_p / dt over the step). Surface (mesh "mpm_surface",
 // cell-centred, (Dim-1)-D): writes bed_elevation (bed_elevation.hpp), reads
 // bed_traction (surface_traction.hpp).
 //
@@ -61,13 +67,17 @@ struct CouplingDiagnostics {
   ImpulseSplit<Dim> impulse_step;                   // last step [kg m/s]
   ImpulseSplit<Dim> impulse_total;                  // whole run
   TractionTotals<Dim> traction_step;                // last step [N]
+  HeatSplit heat_step;                              // last step [J]
+  HeatSplit heat_total;                             // whole run
 };
 
 template <int Dim>
 class MpmCoupling {
  public:
-  // Registers the particle force source on the solver. The coupling state it
-  // uses is shared with the solver, so the solver may outlive this object.
+  // Registers the particle force source (and, when it reads heat, the heat
+  // source) on the solver. The coupling state they use is shared with the
+  // solver, so the solver may outlive this object. Thermal fields on a
+  // solver that does not conduct heat are an InputError.
   MpmCoupling(Solver<Dim>& solver, std::unique_ptr<CouplingChannel> channel, CouplingSpec spec);
   ~MpmCoupling();
   MpmCoupling(const MpmCoupling&) = delete;

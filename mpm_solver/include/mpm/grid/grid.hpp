@@ -37,6 +37,14 @@ struct Grid {
   std::vector<Vec<Dim>> mass_gradient;
   // MUSL: the velocity re-mapped from the updated particle velocities.
   std::vector<Vec<Dim>> remapped_velocity;
+  // Heat conduction, one field shared by every thermal body (empty unless
+  // allocate_heat): heat capacity sum N m c [J/K], temperature [K], heat
+  // rate of conduction and external sources [W], and the temperature
+  // change over the step [K].
+  std::vector<double> heat_capacity;
+  std::vector<double> temperature;
+  std::vector<double> heat_rate;
+  std::vector<double> temperature_change;
 
   // Grid values per field.
   std::size_t size() const { return values; }
@@ -56,6 +64,8 @@ struct Grid {
 
   // Sizes the arrays for `fields` velocity fields (values from dofs).
   void allocate(int field_count);
+  // Sizes the heat arrays (one field).
+  void allocate_heat();
   // Zeroes every array before a particle-to-grid pass.
   void clear();
 };

@@ -12,7 +12,8 @@ namespace mpm {
 // the loader chose for it) `<probe>_displacement_x [m]` ..,
 // `<probe>_velocity_x [m/s]` .., total stress `<probe>_stress_xx [Pa]`
 // (xx yy zz xy, and yz xz in 3D; tension positive), `<probe>_pore_pressure [Pa]`
-// and `<probe>_plastic_strain [-]`.
+// and `<probe>_plastic_strain [-]`, and `<probe>_temperature [K]` when the
+// case conducts heat.
 template <int Dim>
 class ProbeRecorder {
  public:
@@ -20,10 +21,12 @@ class ProbeRecorder {
   void record(const Solver<Dim>& solver);
   std::size_t rows_written() const { return writer_.rows_written(); }
 
-  static std::vector<std::string> columns(const std::vector<ProbeSpec>& probes);
+  static std::vector<std::string> columns(const std::vector<ProbeSpec>& probes,
+                                          bool thermal = false);
 
  private:
   std::vector<ProbeSpec> probes_;
+  bool thermal_;
   std::vector<Vec<Dim>> initial_position_;  // per probe
   cosim::TimeSeriesWriter writer_;
   std::vector<double> row_;

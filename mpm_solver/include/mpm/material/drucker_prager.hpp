@@ -60,7 +60,8 @@ class DruckerPrager final : public Material {
   static cosim::config::Schema schema();
   static std::unique_ptr<Material> make(const cosim::config::Node& parameters);
 
-  DruckerPrager(double density, ObjectiveRate rate, FrictionalParameters parameters, DruckerPragerMatch match);
+  DruckerPrager(CommonProperties common, ObjectiveRate rate, FrictionalParameters parameters,
+                DruckerPragerMatch match);
 
   std::string_view type() const override { return name; }
   double bulk_modulus() const override { return parameters_.elastic.bulk; }

@@ -17,8 +17,8 @@ class LinearElastic final : public Material {
   static cosim::config::Schema schema();
   static std::unique_ptr<Material> make(const cosim::config::Node& parameters);
 
-  LinearElastic(double density, ObjectiveRate rate, ElasticConstants elastic)
-      : Material(density, rate), elastic_(elastic) {}
+  LinearElastic(CommonProperties common, ObjectiveRate rate, ElasticConstants elastic)
+      : Material(common, rate), elastic_(elastic) {}
 
   std::string_view type() const override { return name; }
   double bulk_modulus() const override { return elastic_.bulk; }

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -36,6 +37,20 @@ enum class ObjectiveRate {
   polar_rotation,   // Tran et al., MPMICE, eqs. 11-14
 };
 
+// What a material needs to store and conduct heat (Tran et al., MPMICE,
+// eq. 9). For a porous body both are the grains': the skeleton stores
+// m_s c with its solid mass m_s and conducts with (1 - n) k (eq. 55).
+struct ThermalProperties {
+  double specific_heat = 0.0;  // c [J/(kg K)]
+  double conductivity = 0.0;   // k [W/(m K)]
+};
+
+// The properties every model has, whatever its constitutive law.
+struct CommonProperties {
+  double density = 0.0;                      // [kg/m3]
+  std::optional<ThermalProperties> thermal;  // none: the material takes no part in heat conduction
+};
+
 // A constitutive model with its parameters. Materials are immutable once
 // built (by the registry, from a validated YAML mapping) and shared by all
 // points of the bodies that use them; all per-point data is in MaterialState.
@@ -46,7 +61,9 @@ class Material {
   // The registry name of the model ("mohr_coulomb").
   virtual std::string_view type() const = 0;
 
-  double density() const { return density_; }  // solid grain density or bulk density as configured [kg/m3]
+  // Solid grain density or bulk density as configured [kg/m3].
+  double density() const { return common_.density; }
+  const std::optional<ThermalProperties>& thermal() const { return common_.thermal; }
   // Moduli for the critical time step (Zheng et al., eq. 22) [Pa].
   virtual double bulk_modulus() const = 0;
   virtual double shear_modulus() const = 0;
@@ -78,10 +95,10 @@ class Material {
   }
 
  protected:
-  Material(double density, ObjectiveRate rate) : density_(density), objective_rate_(rate) {}
+  Material(CommonProperties common, ObjectiveRate rate) : common_(common), objective_rate_(rate) {}
 
  private:
-  double density_;
+  CommonProperties common_;
   ObjectiveRate objective_rate_;
 };
 

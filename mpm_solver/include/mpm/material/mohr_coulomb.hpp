@@ -25,7 +25,7 @@ class MohrCoulomb final : public Material {
   static cosim::config::Schema schema();
   static std::unique_ptr<Material> make(const cosim::config::Node& parameters);
 
-  MohrCoulomb(double density, ObjectiveRate rate, FrictionalParameters parameters);
+  MohrCoulomb(CommonProperties common, ObjectiveRate rate, FrictionalParameters parameters);
 
   std::string_view type() const override { return name; }
   double bulk_modulus() const override { return parameters_.elastic.bulk; }

@@ -20,8 +20,8 @@ class NeoHookean final : public Material {
   static cosim::config::Schema schema();
   static std::unique_ptr<Material> make(const cosim::config::Node& parameters);
 
-  NeoHookean(double density, ElasticConstants elastic)
-      : Material(density, ObjectiveRate::jaumann), elastic_(elastic) {}
+  NeoHookean(CommonProperties common, ElasticConstants elastic)
+      : Material(common, ObjectiveRate::jaumann), elastic_(elastic) {}
 
   std::string_view type() const override { return name; }
   // The moduli at F = I.

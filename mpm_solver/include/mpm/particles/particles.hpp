@@ -39,8 +39,14 @@ struct Particles {
   std::vector<double> permeability;  // intrinsic [m^2]
   std::vector<double> grain_size;    // D50 [m]
   std::vector<double> pore_pressure;  // received from the fluid [Pa]
-  // Forces applied from outside the grid solve: surface loads, coupling.
+  // Heat (Tran et al., MPMICE, eq. 9): temperature and heat capacity m c,
+  // 0 for the points of bodies that are not thermal.
+  std::vector<double> temperature;             // [K]
+  std::vector<Vec<Dim>> temperature_gradient;  // [K/m], from the grid of the last step
+  std::vector<double> heat_capacity;           // [J/K] (per unit depth in 2D)
+  // Forces and heat applied from outside the grid solve: surface loads, coupling.
   std::vector<Vec<Dim>> external_force;  // [N] (per unit depth in 2D)
+  std::vector<double> external_heat;     // [W] (per unit depth in 2D)
   // Owner.
   std::vector<std::uint32_t> body;
 

@@ -82,8 +82,10 @@ struct GimpKernel {
   [[gnu::noinline]] static void clipped(double xi, double lp, int first, double last, double* N, double* dN) {
     const double a_free = xi - lp, b_free = xi + lp;
     const double a = std::max(a_free, 0.0), b = std::min(b_free, last);
-    const double da = a_free > 0.0 ? 1.0 : 0.0;  // d a / d xi
-    const double db = b_free < last ? 1.0 : 0.0;
+    // d a / d xi and d b / d xi; a domain that ends exactly on the face is
+    // not clipped (its weights reproduce x and so must its derivatives).
+    const double da = a_free >= 0.0 ? 1.0 : 0.0;
+    const double db = b_free <= last ? 1.0 : 0.0;
     const double length = b - a, dlength = db - da;
     const double mid = 0.5 * (a + b), dmid = 0.5 * (da + db);
     for (int k = 0; k < support; ++k) {

@@ -26,6 +26,13 @@ struct Totals {
   double internal_work = 0.0;         // stress work sum V sigma : d eps since the start
   // Internal work not stored as elastic energy: plastic (and numerical) dissipation.
   double plastic_dissipation = 0.0;
+  // Heat conduction (zero unless the case conducts heat): sum_p m_p c_p T_p,
+  // and the heat that came from external sources and through fixed-temperature
+  // faces since the start; thermal_energy - external_heat - heat_through_faces
+  // stays constant to round-off.
+  double thermal_energy = 0.0;
+  double external_heat = 0.0;
+  double heat_through_faces = 0.0;
 };
 
 // The explicit MPM of Zheng et al. (eqs. 13-23) with the USL/MUSL variants
@@ -40,7 +47,8 @@ class Solver {
   Solver& operator=(const Solver&) = delete;
 
   // Zheng et al., eq. 23: alpha h / (max_p c_p + max |v_i|), bounded by the
-  // case's max_time_step.
+  // case's max_time_step; when the case conducts heat, also by the explicit
+  // conduction limit alpha h^2 / (2 Dim max_p k_eff / (rho c)).
   double stable_time_step() const;
   // Advances by dt (<= stable_time_step() for stability; not enforced).
   void step(double dt);
@@ -53,10 +61,14 @@ class Solver {
   // particles().external_force; grid corrections run after the grid
   // velocity update and before boundary conditions and grid-to-particle
   // (e.g. the velocity increment of a momentum exchange).
+  // Heat sources run each step before the heat conduction when the case
+  // conducts heat and add their heat rate [W] to particles().external_heat.
   using ParticleForceSource = std::function<void(double time, double dt, Particles<Dim>&)>;
   using GridVelocityCorrection = std::function<void(double time, double dt, Grid<Dim>&)>;
+  using ParticleHeatSource = std::function<void(double time, double dt, Particles<Dim>&)>;
   void add_particle_force_source(ParticleForceSource source);
   void add_grid_velocity_correction(GridVelocityCorrection correction);
+  void add_particle_heat_source(ParticleHeatSource source);
 
   Particles<Dim>& particles();
   const Particles<Dim>& particles() const;
@@ -65,6 +77,9 @@ class Solver {
   Totals<Dim> totals() const;
   // Total Cauchy stress sigma' - p I of a particle (Tran et al., MPMICE, eq. 3).
   Tensor total_stress(std::size_t particle) const;
+
+  // description().thermal.enabled: temperatures conduct.
+  bool conducts_heat() const;
 
   // Throws NumericalError naming the particle id, body and time when a
   // particle's state is not finite or a particle has left the grid.
