@@ -10,6 +10,7 @@
 #include "cosim/error.hpp"
 #include "cosim/exchange/implicit_exchange.hpp"
 #include "ice/advection/advection_time_step.hpp"
+#include "ice/grid/face_walk.hpp"
 
 namespace ice {
 
@@ -339,23 +340,19 @@ void IceSolver<Dim>::compute_face_velocities(double dt) {
       const CellField& u = material.velocity[at(d)];
       std::vector<double>& face_u = face_velocity_[m][at(d)];
       std::vector<double>& face_v = face_correction_[m][at(d)];
-      for (int f = 0; f < grid_.face_count(d); ++f) {
-        const int lower = grid_.lower_cell(d, f);
-        const int upper = grid_.upper_cell(d, f);
-        if (lower >= 0 && upper >= 0) {
-          const double rb_l = material.bulk_density[at(lower)];
-          const double rb_r = material.bulk_density[at(upper)];
-          const double v_face =
-              (material.volume_fraction[at(lower)] + material.volume_fraction[at(upper)]) /
-              (rb_l + rb_r);
-          const double mean_u = (rb_l * u[at(lower)] + rb_r * u[at(upper)]) / (rb_l + rb_r);
-          const double gradient = (s.pressure[at(upper)] - s.pressure[at(lower)]) / dx;
-          face_u[at(f)] = mean_u + dt * (-v_face * gradient + g);
-          face_v[at(f)] = v_face;
-          continue;
-        }
-        const bool upper_side = upper < 0;
-        const int cell = upper_side ? lower : upper;
+      const double* rhobar = material.bulk_density.data();
+      const double* phi = material.volume_fraction.data();
+      const double* p = s.pressure.data();
+      const auto interior = [&](int f, int lower, int upper) {
+        const double rb_l = rhobar[lower];
+        const double rb_r = rhobar[upper];
+        const double v_face = (phi[lower] + phi[upper]) / (rb_l + rb_r);
+        const double mean_u = (rb_l * u[at(lower)] + rb_r * u[at(upper)]) / (rb_l + rb_r);
+        const double gradient = (p[upper] - p[lower]) / dx;
+        face_u[at(f)] = mean_u + dt * (-v_face * gradient + g);
+        face_v[at(f)] = v_face;
+      };
+      const auto boundary = [&](int f, int cell, bool upper_side) {
         const SideCondition& side = sides_[at(2 * d + (upper_side ? 1 : 0))];
         const double v_cell = 1.0 / material.density[at(cell)];
         face_v[at(f)] = v_cell;
@@ -370,13 +367,14 @@ void IceSolver<Dim>::compute_face_velocities(double dt) {
             face_u[at(f)] = side.velocity[at(d)];
             break;
           case SideType::fixed_pressure: {
-            const double difference = upper_side ? side.pressure - s.pressure[at(cell)]
-                                                 : s.pressure[at(cell)] - side.pressure;
+            const double difference =
+                upper_side ? side.pressure - p[cell] : p[cell] - side.pressure;
             face_u[at(f)] = u[at(cell)] + dt * (-v_cell * difference / (0.5 * dx) + g);
             break;
           }
         }
-      }
+      };
+      for_each_face(grid_, d, interior, boundary);
     }
   }
 }
@@ -487,35 +485,31 @@ double IceSolver<Dim>::face_courant(double dt) const {
 // hydrostatically (zero dynamic pressure gradient).
 template <int Dim>
 void IceSolver<Dim>::compute_face_pressure() {
-  const auto mixture_density = [&](int cell) {
-    double rho = 0.0;
-    for (const MaterialState<Dim>& material : state_.materials)
-      rho += material.bulk_density[at(cell)];
-    return rho;
-  };
+  CellField& rho = mixture_density_;
+  rho.assign(at(grid_.cell_count()), 0.0);
+  for (const MaterialState<Dim>& material : state_.materials) {
+    for (std::size_t c = 0; c < rho.size(); ++c) rho[c] += material.bulk_density[c];
+  }
+  const double* p = new_pressure_.data();
   for (int d = 0; d < Dim; ++d) {
     const double dx = grid_.spacing()[d];
-    std::vector<double>& face_p = face_pressure_[at(d)];
-    for (int f = 0; f < grid_.face_count(d); ++f) {
-      const int lower = grid_.lower_cell(d, f);
-      const int upper = grid_.upper_cell(d, f);
-      if (lower >= 0 && upper >= 0) {
-        const double rho_l = mixture_density(lower);
-        const double rho_r = mixture_density(upper);
-        face_p[at(f)] =
-            (new_pressure_[at(lower)] * rho_r + new_pressure_[at(upper)] * rho_l) / (rho_l + rho_r);
-        continue;
-      }
-      const bool upper_side = upper < 0;
-      const int cell = upper_side ? lower : upper;
-      const SideCondition& side = sides_[at(2 * d + (upper_side ? 1 : 0))];
-      if (side.type == SideType::fixed_pressure) {
-        face_p[at(f)] = side.pressure;
-      } else {
-        const double offset = upper_side ? 0.5 * dx : -0.5 * dx;
-        face_p[at(f)] = new_pressure_[at(cell)] + mixture_density(cell) * gravity_[d] * offset;
-      }
-    }
+    double* face_p = face_pressure_[at(d)].data();
+    for_each_face(
+        grid_, d,
+        [&](int f, int lower, int upper) {
+          const double rho_l = rho[at(lower)];
+          const double rho_r = rho[at(upper)];
+          face_p[f] = (p[lower] * rho_r + p[upper] * rho_l) / (rho_l + rho_r);
+        },
+        [&](int f, int cell, bool upper_side) {
+          const SideCondition& side = sides_[at(2 * d + (upper_side ? 1 : 0))];
+          if (side.type == SideType::fixed_pressure) {
+            face_p[f] = side.pressure;
+          } else {
+            const double offset = upper_side ? 0.5 * dx : -0.5 * dx;
+            face_p[f] = p[cell] + rho[at(cell)] * gravity_[d] * offset;
+          }
+        });
   }
 }
 
@@ -552,18 +546,23 @@ template <int Dim>
 void IceSolver<Dim>::compute_lagrangian_values(double dt) {
   for (std::size_t m = 0; m < count(); ++m) {
     const MaterialState<Dim>& material = state_.materials[m];
-    for (int c = 0; c < grid_.cell_count(); ++c) {
-      const std::size_t i = at(c);
-      const double rhobar = material.bulk_density[i];
-      const double phi = material.volume_fraction[i];
-      mass_[m][i] = rhobar;
-      for (int d = 0; d < Dim; ++d) {
-        const double gradient = (face_pressure_[at(d)][at(grid_.upper_face(d, c))] -
-                                 face_pressure_[at(d)][at(grid_.lower_face(d, c))]) /
-                                grid_.spacing()[d];
-        momentum_[m][at(d)][i] =
-            rhobar * material.velocity[at(d)][i] + dt * (-phi * gradient + rhobar * gravity_[d]);
-      }
+    const double* rhobar = material.bulk_density.data();
+    const double* phi = material.volume_fraction.data();
+    std::copy(material.bulk_density.begin(), material.bulk_density.end(), mass_[m].begin());
+    for (int d = 0; d < Dim; ++d) {
+      const double dx = grid_.spacing()[d];
+      const double g = gravity_[d];
+      const double* u = material.velocity[at(d)].data();
+      double* momentum = momentum_[m][at(d)].data();
+      for_each_row(grid_, [&](int first, int length) {
+        // The cell's lower and upper faces normal to d.
+        const double* p_low = face_pressure_[at(d)].data() + lower_face_offset(grid_, d, first);
+        const double* p_up = p_low + grid_.stride(d);
+        for (int c = first; c < first + length; ++c) {
+          const double gradient = (p_up[c] - p_low[c]) / dx;
+          momentum[c] = rhobar[c] * u[c] + dt * (-phi[c] * gradient + rhobar[c] * g);
+        }
+      });
     }
   }
 }
@@ -574,38 +573,58 @@ void IceSolver<Dim>::compute_lagrangian_values(double dt) {
 // accelerated by the pressure and stopped by the drag does no work).
 template <int Dim>
 bool IceSolver<Dim>::compute_lagrangian_energy(double dt) {
+  FaceField<Dim>& face_flux = scratch_face_;  // phi_f,FC U_f,FC per face
   for (std::size_t m = 0; m < count(); ++m) {
     const MaterialState<Dim>& material = state_.materials[m];
     const double c_v = eos_[m]->specific_heat();
-    for (int c = 0; c < grid_.cell_count(); ++c) {
-      const std::size_t i = at(c);
-      const double rhobar = material.bulk_density[i];
-      const double phi = material.volume_fraction[i];
-      double work = 0.0;
-      double volume_flux = 0.0;
-      for (int d = 0; d < Dim; ++d) {
-        const int low = grid_.lower_face(d, c);
-        const int up = grid_.upper_face(d, c);
-        const double p_low = face_pressure_[at(d)][at(low)];
-        const double p_up = face_pressure_[at(d)][at(up)];
-        const double u_mid = material.velocity[at(d)][i] +
-                             0.5 * (momentum_[m][at(d)][i] / rhobar - material.velocity[at(d)][i]);
-        const double flux_low = face_fraction(m, d, low) * face_velocity_[m][at(d)][at(low)];
-        const double flux_up = face_fraction(m, d, up) * face_velocity_[m][at(d)][at(up)];
-        work += (phi * (p_up - p_low) * u_mid - (p_up * flux_up - p_low * flux_low)) /
-                grid_.spacing()[d];
-        volume_flux += (flux_up - flux_low) / grid_.spacing()[d];
-      }
-      // The material's share of the volume work: its own compression
-      // -phi_f kappa_f dP instead of its volume outflow dt div(phi_f U_f);
-      // the difference sums to zero over the materials by eq. 125.
-      const double share =
-          new_pressure_[i] * (phi * kappa_[m][i] * pressure_increment_[i] + dt * volume_flux);
-      energy_[m][i] = rhobar * c_v * material.temperature[i] + dt * work + share;
-      // A compression too strong for the step (or work that empties a
-      // trace material) leaves no internal energy: the step is refused.
-      if (!(energy_[m][i] > 0.0) || !std::isfinite(energy_[m][i])) return false;
+    const CellField& phi_cell = material.volume_fraction;
+    for (int d = 0; d < Dim; ++d) {
+      const double* u = face_velocity_[m][at(d)].data();
+      double* flux = face_flux[at(d)].data();
+      // face_fraction(m, d, f) times U_f,FC, walked without index divisions.
+      for_each_face(
+          grid_, d,
+          [&](int f, int lower, int upper) {
+            flux[f] = 0.5 * (phi_cell[at(lower)] + phi_cell[at(upper)]) * u[f];
+          },
+          [&](int f, int cell, bool) { flux[f] = phi_cell[at(cell)] * u[f]; });
     }
+    bool refused = false;
+    for_each_row(grid_, [&](int first, int length) {
+      std::array<int, static_cast<std::size_t>(Dim)> offset{};
+      for (int d = 0; d < Dim; ++d) offset[at(d)] = lower_face_offset(grid_, d, first);
+      for (int c = first; c < first + length; ++c) {
+        const std::size_t i = at(c);
+        const double rhobar = material.bulk_density[i];
+        const double phi = phi_cell[i];
+        double work = 0.0;
+        double volume_flux = 0.0;
+        for (int d = 0; d < Dim; ++d) {
+          const std::size_t low = at(c + offset[at(d)]);
+          const std::size_t up = low + at(grid_.stride(d));
+          const double p_low = face_pressure_[at(d)][low];
+          const double p_up = face_pressure_[at(d)][up];
+          const double u_mid =
+              material.velocity[at(d)][i] +
+              0.5 * (momentum_[m][at(d)][i] / rhobar - material.velocity[at(d)][i]);
+          const double flux_low = face_flux[at(d)][low];
+          const double flux_up = face_flux[at(d)][up];
+          work += (phi * (p_up - p_low) * u_mid - (p_up * flux_up - p_low * flux_low)) /
+                  grid_.spacing()[d];
+          volume_flux += (flux_up - flux_low) / grid_.spacing()[d];
+        }
+        // The material's share of the volume work: its own compression
+        // -phi_f kappa_f dP instead of its volume outflow dt div(phi_f U_f);
+        // the difference sums to zero over the materials by eq. 125.
+        const double share =
+            new_pressure_[i] * (phi * kappa_[m][i] * pressure_increment_[i] + dt * volume_flux);
+        energy_[m][i] = rhobar * c_v * material.temperature[i] + dt * work + share;
+        // A compression too strong for the step (or work that empties a
+        // trace material) leaves no internal energy: the step is refused.
+        refused = refused || !(energy_[m][i] > 0.0) || !std::isfinite(energy_[m][i]);
+      }
+    });
+    if (refused) return false;
   }
   return true;
 }

@@ -196,6 +196,9 @@ class IceSolver {
   std::vector<CellField> lagrangian_temperature_;
   CellField porosity_change_;
   double last_face_rate_ = 0.0;
+
+  // ---- ice-perf: scratch of the restructured loops (sized on first use) ----
+  CellField mixture_density_;  // sum_f rhobar_f per cell, eq. 54's weights
 };
 
 extern template class IceSolver<1>;
