@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cosim/error.hpp"
+#include "ice/grid/face_walk.hpp"
 
 namespace ice {
 
@@ -36,12 +37,15 @@ void require_positive_time_step(double dt) {
   }
 }
 
-void require_positive_density(double rho, int direction, int face) {
-  if (!(rho > 0.0) || !std::isfinite(rho)) {
-    throw std::invalid_argument("PressureSolver: face density must be positive and finite, got " +
-                                std::to_string(rho) + " on face " + std::to_string(face) +
-                                " normal to direction " + std::to_string(direction));
-  }
+[[noreturn]] void throw_bad_density(double rho, int direction, int face) {
+  throw std::invalid_argument("PressureSolver: face density must be positive and finite, got " +
+                              std::to_string(rho) + " on face " + std::to_string(face) +
+                              " normal to direction " + std::to_string(direction));
+}
+
+// Per face: the message is built out of line.
+inline void require_positive_density(double rho, int direction, int face) {
+  if (!(rho > 0.0) || !std::isfinite(rho)) throw_bad_density(rho, direction, face);
 }
 
 }  // namespace
@@ -171,20 +175,21 @@ void PressureSolver<Dim>::assemble(std::span<const double> kappa,
   for (int d = 0; d < Dim; ++d) {
     const double area_over_spacing_dt = grid_.face_area(d) / grid_.spacing()[d] * dt;
     const std::vector<double>& rho = face_density[d];
-    for (int f = 0; f < grid_.face_count(d); ++f) {
-      const auto [lower, upper] = face_cells_[d][f];
-      if (lower >= 0 && upper >= 0) {
-        require_positive_density(rho[f], d, f);
-        const double t = area_over_spacing_dt / rho[f];
-        values[diagonal_entry_[lower]] += t;
-        values[diagonal_entry_[upper]] += t;
-        values[lower_upper_entry_[d][f]] -= t;
-        values[upper_lower_entry_[d][f]] -= t;
-      } else if (is_fixed_pressure(d, f)) {
-        require_positive_density(rho[f], d, f);
-        values[diagonal_entry_[lower >= 0 ? lower : upper]] += 2.0 * area_over_spacing_dt / rho[f];
-      }
-    }
+    for_each_face(
+        grid_, d,
+        [&](int f, int lower, int upper) {
+          require_positive_density(rho[f], d, f);
+          const double t = area_over_spacing_dt / rho[f];
+          values[diagonal_entry_[lower]] += t;
+          values[diagonal_entry_[upper]] += t;
+          values[lower_upper_entry_[d][f]] -= t;
+          values[upper_lower_entry_[d][f]] -= t;
+        },
+        [&](int f, int cell, bool upper_side) {
+          if (boundaries_[2 * d + (upper_side ? 1 : 0)] != PressureBoundary::fixed_pressure) return;
+          require_positive_density(rho[f], d, f);
+          values[diagonal_entry_[cell]] += 2.0 * area_over_spacing_dt / rho[f];
+        });
   }
 }
 
@@ -348,20 +353,20 @@ void PressureSolver<Dim>::correct_face_velocities(const FaceField<Dim>& face_den
     const double dx = grid_.spacing()[d];
     const std::vector<double>& rho = face_density[d];
     std::vector<double>& u = face_velocity[d];
-    for (int f = 0; f < grid_.face_count(d); ++f) {
-      const auto [lower, upper] = face_cells_[d][f];
-      double gradient = 0.0;
-      if (lower >= 0 && upper >= 0) {
-        gradient = (pressure_increment[upper] - pressure_increment[lower]) / dx;
-      } else if (is_fixed_pressure(d, f)) {
-        gradient = lower >= 0 ? -pressure_increment[lower] / (0.5 * dx)
-                              : pressure_increment[upper] / (0.5 * dx);
-      } else {
-        continue;
-      }
-      require_positive_density(rho[f], d, f);
-      u[f] -= dt / rho[f] * gradient;
-    }
+    const double* dp = pressure_increment.data();
+    for_each_face(
+        grid_, d,
+        [&](int f, int lower, int upper) {
+          const double gradient = (dp[upper] - dp[lower]) / dx;
+          require_positive_density(rho[f], d, f);
+          u[f] -= dt / rho[f] * gradient;
+        },
+        [&](int f, int cell, bool upper_side) {
+          if (boundaries_[2 * d + (upper_side ? 1 : 0)] != PressureBoundary::fixed_pressure) return;
+          const double gradient = upper_side ? -dp[cell] / (0.5 * dx) : dp[cell] / (0.5 * dx);
+          require_positive_density(rho[f], d, f);
+          u[f] -= dt / rho[f] * gradient;
+        });
   }
 }
 
