@@ -7,6 +7,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "ice/eos/model_dispatch.hpp"
+
 namespace ice {
 
 PressureEquilibrationError::PressureEquilibrationError(const std::string& what, int iterations,
@@ -30,38 +32,58 @@ constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 // The fluid materials of one cell, checked.
 class PoreFilling {
  public:
-  PoreFilling(std::span<const EquationOfState* const> materials, std::span<const double> bulk_density,
-              std::span<const double> temperature, double porosity)
-      : materials_(materials), bulk_density_(bulk_density), temperature_(temperature), porosity_(porosity) {
+  // `kinds` holds model_kind() of each material.
+  PoreFilling(std::span<const EquationOfState* const> materials, std::span<const ModelKind> kinds,
+              std::span<const double> bulk_density, std::span<const double> temperature,
+              double porosity)
+      : materials_(materials),
+        kinds_(kinds),
+        bulk_density_(bulk_density),
+        temperature_(temperature),
+        porosity_(porosity) {
     if (materials.empty()) throw std::invalid_argument("pressure equilibration: no fluid material");
     if (bulk_density.size() != materials.size() || temperature.size() != materials.size()) {
       throw std::invalid_argument(fmt::format(
           "pressure equilibration: {} materials but {} bulk densities and {} temperatures",
           materials.size(), bulk_density.size(), temperature.size()));
     }
-    if (!(porosity > 0.0 && porosity <= 1.0)) fail(fmt::format("porosity n = {} is outside (0, 1]", porosity));
+    if (!(porosity > 0.0 && porosity <= 1.0))
+      fail(fmt::format("porosity n = {} is outside (0, 1]", porosity));
     bool any_present = false;
     for (std::size_t f = 0; f < materials.size(); ++f) {
       if (materials[f] == nullptr) {
-        throw std::invalid_argument(fmt::format("pressure equilibration: material {} has no model", f));
+        throw std::invalid_argument(
+            fmt::format("pressure equilibration: material {} has no model", f));
       }
       if (!(bulk_density[f] >= 0.0 && std::isfinite(bulk_density[f]))) {
-        fail(fmt::format("{}: bulk density {} kg/m3 is negative or not finite", name(f), bulk_density[f]));
+        fail(fmt::format("{}: bulk density {} kg/m3 is negative or not finite", name(f),
+                         bulk_density[f]));
       }
       if (!(temperature[f] > 0.0 && std::isfinite(temperature[f]))) {
-        fail(fmt::format("{}: temperature {} K is not positive and finite", name(f), temperature[f]));
+        fail(fmt::format("{}: temperature {} K is not positive and finite", name(f),
+                         temperature[f]));
       }
       any_present = any_present || bulk_density[f] > 0.0;
     }
     if (!any_present) fail("no fluid material has a positive bulk density");
   }
 
+  // f(eos) with material f's model as its own type (calls inlined).
+  template <class F>
+  decltype(auto) model(std::size_t f, F&& function) const {
+    return visit_model(*materials_[f], kinds_[f], function);
+  }
+
   std::size_t size() const { return materials_.size(); }
   double porosity() const { return porosity_; }
   bool present(std::size_t f) const { return bulk_density_[f] > 0.0; }
-  double minimum_pressure(std::size_t f) const { return materials_[f]->minimum_pressure(temperature_[f]); }
+  double minimum_pressure(std::size_t f) const {
+    return model(f, [&](const auto& eos) { return eos.minimum_pressure(temperature_[f]); });
+  }
 
-  std::string name(std::size_t f) const { return fmt::format("material {} ({})", f, materials_[f]->type()); }
+  std::string name(std::size_t f) const {
+    return fmt::format("material {} ({})", f, materials_[f]->type());
+  }
 
   // sum_f phi_f(P) - n (Tran et al., MPMICE, eq. 43 with the sign flipped)
   // and its derivative in P, -sum_f phi_f kappa_f.
@@ -73,11 +95,12 @@ class PoreFilling {
     Value value{-porosity_, 0.0};
     for (std::size_t f = 0; f < size(); ++f) {
       if (!present(f)) continue;
-      const EquationOfState& eos = *materials_[f];
-      const double rho = eos.density(pressure, temperature_[f]);
-      const double phi = bulk_density_[f] / rho;
-      value.residual += phi;
-      value.slope -= phi * eos.compressibility(rho, temperature_[f]);
+      model(f, [&](const auto& eos) {
+        const double rho = eos.density(pressure, temperature_[f]);
+        const double phi = bulk_density_[f] / rho;
+        value.residual += phi;
+        value.slope -= phi * eos.compressibility(rho, temperature_[f]);
+      });
     }
     return value;
   }
@@ -86,18 +109,21 @@ class PoreFilling {
   template <class Store>
   void state_at(double pressure, Store&& store) const {
     for (std::size_t f = 0; f < size(); ++f) {
-      const EquationOfState& eos = *materials_[f];
-      const double rho = eos.density(pressure, temperature_[f]);
-      store(f, rho, bulk_density_[f] / rho, eos.compressibility(rho, temperature_[f]));
+      model(f, [&](const auto& eos) {
+        const double rho = eos.density(pressure, temperature_[f]);
+        store(f, rho, bulk_density_[f] / rho, eos.compressibility(rho, temperature_[f]));
+      });
     }
   }
 
   [[noreturn]] static void fail(const std::string& what) {
-    throw PressureEquilibrationError("pressure equilibration: " + what, 0, not_a_number, not_a_number);
+    throw PressureEquilibrationError("pressure equilibration: " + what, 0, not_a_number,
+                                     not_a_number);
   }
 
  private:
   std::span<const EquationOfState* const> materials_;
+  std::span<const ModelKind> kinds_;
   std::span<const double> bulk_density_;
   std::span<const double> temperature_;
   double porosity_;
@@ -111,9 +137,10 @@ struct Root {
 
 void check(const EquilibrationOptions& options) {
   if (!(options.tolerance > 0.0) || options.max_iterations < 0) {
-    throw std::invalid_argument(fmt::format("pressure equilibration: tolerance {} must be > 0 and "
-                                            "max_iterations {} >= 0",
-                                            options.tolerance, options.max_iterations));
+    throw std::invalid_argument(
+        fmt::format("pressure equilibration: tolerance {} must be > 0 and "
+                    "max_iterations {} >= 0",
+                    options.tolerance, options.max_iterations));
   }
 }
 
@@ -153,7 +180,8 @@ Root solve(const PoreFilling& cell, double pressure_guess, const EquilibrationOp
     if (!(at_bound > 0.0)) {
       throw PressureEquilibrationError(
           fmt::format("pressure equilibration: the materials present cannot fill the pores at any "
-                      "pressure above {} Pa, where {} (absent) reaches zero density: sum phi_f - n = {:.6e}",
+                      "pressure above {} Pa, where {} (absent) reaches zero density: sum phi_f - n "
+                      "= {:.6e}",
                       lowest, cell.name(bounding), at_bound),
           0, lowest, at_bound);
     }
@@ -162,10 +190,12 @@ Root solve(const PoreFilling& cell, double pressure_guess, const EquilibrationOp
   const double tolerance = options.tolerance * cell.porosity();
   double low = lowest;
   double high = std::numeric_limits<double>::infinity();
-  double pressure = std::isfinite(pressure_guess) && pressure_guess > low ? pressure_guess : low + one_atmosphere;
+  double pressure =
+      std::isfinite(pressure_guess) && pressure_guess > low ? pressure_guess : low + one_atmosphere;
   for (int iterations = 0;; ++iterations) {
     const auto [residual, slope] = cell.at(pressure);
-    const double newton = pressure - residual / slope * ((residual + cell.porosity()) / cell.porosity());
+    const double newton =
+        pressure - residual / slope * ((residual + cell.porosity()) / cell.porosity());
     if (std::abs(residual) <= tolerance) {
       // One last Newton correction, uncounted: it squares the remaining
       // error, leaving P and sum phi_f - n at round-off.
@@ -192,7 +222,11 @@ CellEquilibrium equilibrate_pressure(std::span<const EquationOfState* const> mat
                                      std::span<const double> temperature, double porosity,
                                      double pressure_guess, const EquilibrationOptions& options) {
   check(options);
-  const PoreFilling cell(materials, bulk_density, temperature, porosity);
+  std::vector<ModelKind> kinds;
+  for (const EquationOfState* eos : materials) {
+    kinds.push_back(eos != nullptr ? model_kind(*eos) : ModelKind::other);
+  }
+  const PoreFilling cell(materials, kinds, bulk_density, temperature, porosity);
   const Root root = solve(cell, pressure_guess, options);
 
   CellEquilibrium result;
@@ -210,25 +244,28 @@ CellEquilibrium equilibrate_pressure(std::span<const EquationOfState* const> mat
   return result;
 }
 
-void equilibrate_pressure(std::span<const MaterialCells> materials, std::span<const double> porosity,
-                          std::span<const double> pressure_guess, const EquilibrationOptions& options,
-                          EquilibratedCells& result) {
+void equilibrate_pressure(std::span<const MaterialCells> materials,
+                          std::span<const double> porosity, std::span<const double> pressure_guess,
+                          const EquilibrationOptions& options, EquilibratedCells& result) {
   check(options);
   const std::size_t cells = porosity.size();
   if (!pressure_guess.empty() && pressure_guess.size() != cells) {
-    throw std::invalid_argument(fmt::format("pressure equilibration: {} cells but {} pressure guesses",
-                                            cells, pressure_guess.size()));
+    throw std::invalid_argument(fmt::format(
+        "pressure equilibration: {} cells but {} pressure guesses", cells, pressure_guess.size()));
   }
   const std::size_t count = materials.size();
   std::vector<const EquationOfState*> models(count);
+  std::vector<ModelKind> kinds(count, ModelKind::other);
   for (std::size_t f = 0; f < count; ++f) {
     const MaterialCells& material = materials[f];
     if (material.bulk_density.size() != cells || material.temperature.size() != cells) {
-      throw std::invalid_argument(fmt::format(
-          "pressure equilibration: {} cells but material {} has {} bulk densities and {} temperatures",
-          cells, f, material.bulk_density.size(), material.temperature.size()));
+      throw std::invalid_argument(
+          fmt::format("pressure equilibration: {} cells but material {} has {} bulk densities and "
+                      "{} temperatures",
+                      cells, f, material.bulk_density.size(), material.temperature.size()));
     }
     models[f] = material.eos;
+    if (material.eos != nullptr) kinds[f] = model_kind(*material.eos);
   }
 
   result.pressure.resize(cells);
@@ -247,7 +284,7 @@ void equilibrate_pressure(std::span<const MaterialCells> materials, std::span<co
     }
     const double guess = pressure_guess.empty() ? one_atmosphere : pressure_guess[c];
     try {
-      const PoreFilling cell(models, bulk_density, temperature, porosity[c]);
+      const PoreFilling cell(models, kinds, bulk_density, temperature, porosity[c]);
       const Root root = solve(cell, guess, options);
       result.pressure[c] = root.pressure;
       result.most_iterations = std::max(result.most_iterations, root.iterations);
@@ -262,7 +299,8 @@ void equilibrate_pressure(std::span<const MaterialCells> materials, std::span<co
   }
 }
 
-EquilibratedCells equilibrate_pressure(std::span<const MaterialCells> materials, std::span<const double> porosity,
+EquilibratedCells equilibrate_pressure(std::span<const MaterialCells> materials,
+                                       std::span<const double> porosity,
                                        std::span<const double> pressure_guess,
                                        const EquilibrationOptions& options) {
   EquilibratedCells result;
@@ -271,7 +309,8 @@ EquilibratedCells equilibrate_pressure(std::span<const MaterialCells> materials,
 }
 
 // Tran et al., MPMICE, eq. 52
-double mixture_compressibility(std::span<const double> volume_fraction, std::span<const double> compressibility) {
+double mixture_compressibility(std::span<const double> volume_fraction,
+                               std::span<const double> compressibility) {
   if (volume_fraction.size() != compressibility.size()) {
     throw std::invalid_argument("mixture compressibility: one compressibility per volume fraction");
   }

@@ -105,8 +105,7 @@ EquilibratedCells equilibrate_pressure(std::span<const MaterialCells> materials,
                                        std::span<const double> pressure_guess,
                                        const EquilibrationOptions& options = {});
 void equilibrate_pressure(std::span<const MaterialCells> materials,
-                          std::span<const double> porosity,
-                          std::span<const double> pressure_guess,
+                          std::span<const double> porosity, std::span<const double> pressure_guess,
                           const EquilibrationOptions& options, EquilibratedCells& result);
 
 // The mixture compressibility of MPMICE eq. 52,

@@ -99,19 +99,14 @@ class MultigridPreconditioner {
     int padding = 0;
     Eigen::VectorXd diagonal;
     Eigen::VectorXd inverse_diagonal;
-    // T_0,c-1 / D_c and T_0,c / D_c: the couplings along x scaled for the
-    // Gauss-Seidel recurrences along a row.
-    Eigen::VectorXd lower_weight;
-    Eigen::VectorXd upper_weight;
     // Row sums of the operator (kappa V / dt plus the fixed-pressure ghost
     // couplings): kept apart so that the coarse diagonals do not come from
     // cancelling the large couplings inside an aggregate.
     Eigen::VectorXd surplus;
     std::array<Eigen::VectorXd, Dim> coupling;
+    // b and x of the coarse levels (the finest uses the caller's vectors).
     Eigen::VectorXd solution;
     Eigen::VectorXd right_hand_side;
-    // Also the Gauss-Seidel sweeps' scratch.
-    Eigen::VectorXd residual;
     // The coarse cell of each cell (unpadded indices) and the directions
     // coarsened to the next level; empty and unused on the coarsest.
     std::vector<int> aggregate;
@@ -120,12 +115,17 @@ class MultigridPreconditioner {
 
   static Level make_level(const CellCounts& cells);
   static void multiply(const Level& level, const Eigen::VectorXd& x, Eigen::VectorXd& y);
-  static void forward_gauss_seidel(Level& level, const Eigen::VectorXd& b, Eigen::VectorXd& x);
-  static void backward_gauss_seidel(Level& level, const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  template <bool from_zero>
+  static void forward_gauss_seidel(const Level& level, const Eigen::VectorXd& b,
+                                   Eigen::VectorXd& x);
+  static void backward_gauss_seidel(const Level& level, const Eigen::VectorXd& b,
+                                    Eigen::VectorXd& x);
+  static void restrict_residual(const Level& fine, const Eigen::VectorXd& b,
+                                const Eigen::VectorXd& x, Level& coarse);
   static void set_diagonal_from_couplings(Level& level);
   static void set_inverse_diagonal(Level& level);
   void build_coarse_operator(int level);
-  void cycle(int level);
+  void cycle(int level, const Eigen::VectorXd& b, Eigen::VectorXd& x);
 
   MultigridOptions options_;
   std::vector<Level> levels_;
