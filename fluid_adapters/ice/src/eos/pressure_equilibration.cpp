@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -151,6 +152,49 @@ double next_pressure(double pressure, double newton, double low, double high) {
   return std::isfinite(high) ? 0.5 * (low + high) : pressure + (pressure - low);
 }
 
+// The iteration of solve() below for one cell, as a state: step() takes the
+// residual sum phi_f - n and its slope at `pressure` and either accepts it
+// (converged: `pressure` is the root; corrected: one last Newton correction,
+// uncounted, was inside the bracket and `pressure` is now that corrected
+// value, which squares the remaining error and leaves P and sum phi_f - n at
+// round-off), gives up (failed) or moves `pressure` on (next). The cells of
+// the batched solve run exactly these decisions.
+struct NewtonIteration {
+  enum Result { converged, corrected, failed, next };
+
+  NewtonIteration(double lowest, double pressure_guess, double n,
+                  const EquilibrationOptions& options)
+      : low(lowest),
+        pressure(std::isfinite(pressure_guess) && pressure_guess > lowest
+                     ? pressure_guess
+                     : lowest + one_atmosphere),
+        porosity(n),
+        tolerance(options.tolerance * n),
+        max_iterations(options.max_iterations) {}
+
+  Result step(double residual, double slope) {
+    const double newton = pressure - residual / slope * ((residual + porosity) / porosity);
+    if (std::abs(residual) <= tolerance) {
+      if (!(newton > low && newton < high)) return converged;
+      pressure = newton;
+      return corrected;
+    }
+    if (iterations == max_iterations || !std::isfinite(residual)) return failed;
+    (residual > 0.0 ? low : high) = pressure;
+    pressure = next_pressure(pressure, newton, low, high);
+    ++iterations;
+    return next;
+  }
+
+  double low;
+  double high = std::numeric_limits<double>::infinity();
+  double pressure;
+  double porosity;
+  double tolerance;
+  int max_iterations;
+  int iterations = 0;
+};
+
 // Tran et al., MPMICE, eqs. 42-43, sum_f phi_f(P) = n, solved by Newton's
 // method on G(P) = 1 / sum_f phi_f - 1 / n. Both models here have rho_f affine in
 // P, so phi_f = rhobar_f / rho_f is the reciprocal of an affine function and
@@ -187,32 +231,219 @@ Root solve(const PoreFilling& cell, double pressure_guess, const EquilibrationOp
     }
   }
 
-  const double tolerance = options.tolerance * cell.porosity();
-  double low = lowest;
-  double high = std::numeric_limits<double>::infinity();
-  double pressure =
-      std::isfinite(pressure_guess) && pressure_guess > low ? pressure_guess : low + one_atmosphere;
-  for (int iterations = 0;; ++iterations) {
-    const auto [residual, slope] = cell.at(pressure);
-    const double newton =
-        pressure - residual / slope * ((residual + cell.porosity()) / cell.porosity());
-    if (std::abs(residual) <= tolerance) {
-      // One last Newton correction, uncounted: it squares the remaining
-      // error, leaving P and sum phi_f - n at round-off.
-      if (!(newton > low && newton < high)) return {pressure, iterations, residual};
-      return {newton, iterations, cell.at(newton).residual};
+  NewtonIteration newton(lowest, pressure_guess, cell.porosity(), options);
+  for (;;) {
+    const auto [residual, slope] = cell.at(newton.pressure);
+    switch (newton.step(residual, slope)) {
+      case NewtonIteration::converged:
+        return {newton.pressure, newton.iterations, residual};
+      case NewtonIteration::corrected:
+        return {newton.pressure, newton.iterations, cell.at(newton.pressure).residual};
+      case NewtonIteration::failed:
+        throw PressureEquilibrationError(
+            fmt::format("pressure equilibration did not converge in {} iteration{}: P = {} Pa, "
+                        "sum phi_f - n = {:.6e} (tolerance {:.1e} n), bracket ({}, {}) Pa",
+                        newton.iterations, newton.iterations == 1 ? "" : "s", newton.pressure,
+                        residual, options.tolerance, newton.low, newton.high),
+            newton.iterations, newton.pressure, residual);
+      case NewtonIteration::next:
+        break;
     }
-    if (iterations == options.max_iterations || !std::isfinite(residual)) {
-      throw PressureEquilibrationError(
-          fmt::format("pressure equilibration did not converge in {} iteration{}: P = {} Pa, "
-                      "sum phi_f - n = {:.6e} (tolerance {:.1e} n), bracket ({}, {}) Pa",
-                      iterations, iterations == 1 ? "" : "s", pressure, residual, options.tolerance,
-                      low, high),
-          iterations, pressure, residual);
-    }
-    (residual > 0.0 ? low : high) = pressure;
-    pressure = next_pressure(pressure, newton, low, high);
   }
+}
+
+// The batched solve's per-cell path (cells with an absent material, or
+// all of them when the batch gives up): PoreFilling and solve() as for one
+// cell, the error rethrown with the cell's index.
+void equilibrate_one(std::span<const MaterialCells> materials,
+                     std::span<const EquationOfState* const> models,
+                     std::span<const ModelKind> kinds, std::span<const double> porosity,
+                     std::span<const double> pressure_guess, const EquilibrationOptions& options,
+                     std::size_t c, EquilibratedCells& result) {
+  constexpr std::size_t most = 16;
+  const std::size_t count = materials.size();
+  std::array<double, most> small_bulk{};
+  std::array<double, most> small_temperature{};
+  std::vector<double> large_bulk;
+  std::vector<double> large_temperature;
+  std::span<double> bulk_density(small_bulk.data(), std::min(count, most));
+  std::span<double> temperature(small_temperature.data(), std::min(count, most));
+  if (count > most) {
+    large_bulk.resize(count);
+    large_temperature.resize(count);
+    bulk_density = large_bulk;
+    temperature = large_temperature;
+  }
+  for (std::size_t f = 0; f < count; ++f) {
+    bulk_density[f] = materials[f].bulk_density[c];
+    temperature[f] = materials[f].temperature[c];
+  }
+  const double guess = pressure_guess.empty() ? one_atmosphere : pressure_guess[c];
+  try {
+    const PoreFilling cell(models, kinds, bulk_density, temperature, porosity[c]);
+    const Root root = solve(cell, guess, options);
+    result.pressure[c] = root.pressure;
+    result.most_iterations = std::max(result.most_iterations, root.iterations);
+    cell.state_at(root.pressure, [&](std::size_t f, double rho, double phi, double kappa) {
+      result.density[f][c] = rho;
+      result.volume_fraction[f][c] = phi;
+      result.compressibility[f][c] = kappa;
+    });
+  } catch (const PressureEquilibrationError& error) {
+    throw error.in_cell(c);
+  }
+}
+
+// All cells at once, for the cells whose materials are all present (every
+// cell of an ICE run): per Newton round, sum phi_f - n and its slope are
+// evaluated material by material over the cells, the models called as their
+// own types (inlined; loops the compiler vectorises), and each cell then
+// takes NewtonIteration's decision, so every cell gets the operations of
+// solve(). The few cells still iterating after the first rounds are
+// evaluated one by one. Cells with an absent material go through
+// equilibrate_one. Returns false, leaving the result to be recomputed,
+// when any input is bad or a cell fails: the cell-by-cell path then reports
+// the first failing cell as it always has.
+bool equilibrate_batch(std::span<const MaterialCells> materials,
+                       std::span<const EquationOfState* const> models,
+                       std::span<const ModelKind> kinds, std::span<const double> porosity,
+                       std::span<const double> pressure_guess, const EquilibrationOptions& options,
+                       EquilibratedCells& result) {
+  const std::size_t cells = porosity.size();
+  const std::size_t count = materials.size();
+  if (count == 0) return false;
+  for (const EquationOfState* eos : models) {
+    if (eos == nullptr) return false;
+  }
+  EquilibratedCells::Workspace& w = result.workspace;
+  w.active.clear();
+  w.one_by_one.clear();
+  // PoreFilling's checks, and which cells have every material present.
+  for (std::size_t c = 0; c < cells; ++c) {
+    if (!(porosity[c] > 0.0 && porosity[c] <= 1.0)) return false;
+    bool any_present = false;
+    bool all_present = true;
+    for (std::size_t f = 0; f < count; ++f) {
+      const double rhobar = materials[f].bulk_density[c];
+      const double t = materials[f].temperature[c];
+      if (!(rhobar >= 0.0 && std::isfinite(rhobar)) || !(t > 0.0 && std::isfinite(t))) {
+        return false;
+      }
+      any_present = any_present || rhobar > 0.0;
+      all_present = all_present && rhobar > 0.0;
+    }
+    if (!any_present) return false;
+    (all_present ? w.active : w.one_by_one).push_back(c);
+  }
+  for (auto* field : {&w.lowest, &w.low, &w.high, &w.pressure, &w.residual, &w.slope}) {
+    field->resize(cells);
+  }
+  w.iterations.resize(cells);
+
+  // solve()'s lower bound (every material present: no absent-material test)
+  // and starting point.
+  std::fill(w.lowest.begin(), w.lowest.end(), -std::numeric_limits<double>::infinity());
+  for (std::size_t f = 0; f < count; ++f) {
+    const double* t = materials[f].temperature.data();
+    double* lowest = w.lowest.data();
+    visit_model(*models[f], kinds[f], [&](const auto& eos) {
+      for (std::size_t c = 0; c < cells; ++c) {
+        lowest[c] = std::max(lowest[c], eos.minimum_pressure(t[c]));
+      }
+    });
+  }
+  for (std::size_t c = 0; c < cells; ++c) {
+    const double guess = pressure_guess.empty() ? one_atmosphere : pressure_guess[c];
+    const NewtonIteration start(w.lowest[c], guess, porosity[c], options);
+    w.low[c] = start.low;
+    w.high[c] = start.high;
+    w.pressure[c] = start.pressure;
+    w.iterations[c] = 0;
+  }
+
+  // PoreFilling::at over all cells (contiguous) or the active ones.
+  const auto evaluate = [&](bool all) {
+    const double* n = porosity.data();
+    const double* pressure = w.pressure.data();
+    double* residual = w.residual.data();
+    double* slope = w.slope.data();
+    if (all) {
+      for (std::size_t c = 0; c < cells; ++c) {
+        residual[c] = -n[c];
+        slope[c] = 0.0;
+      }
+    } else {
+      for (const std::size_t c : w.active) {
+        residual[c] = -n[c];
+        slope[c] = 0.0;
+      }
+    }
+    for (std::size_t f = 0; f < count; ++f) {
+      const double* rhobar = materials[f].bulk_density.data();
+      const double* t = materials[f].temperature.data();
+      visit_model(*models[f], kinds[f], [&](const auto& eos) {
+        const auto add = [&](std::size_t c) {
+          const double rho = eos.density(pressure[c], t[c]);
+          const double phi = rhobar[c] / rho;
+          residual[c] += phi;
+          slope[c] -= phi * eos.compressibility(rho, t[c]);
+        };
+        if (all) {
+          for (std::size_t c = 0; c < cells; ++c) add(c);
+        } else {
+          for (const std::size_t c : w.active) add(c);
+        }
+      });
+    }
+  };
+  while (!w.active.empty()) {
+    // While most cells iterate, evaluating every cell costs less than
+    // gathering the active ones.
+    evaluate(2 * w.active.size() > cells);
+    std::size_t still = 0;
+    for (const std::size_t c : w.active) {
+      NewtonIteration newton(w.lowest[c], w.pressure[c], porosity[c], options);
+      newton.low = w.low[c];
+      newton.high = w.high[c];
+      newton.pressure = w.pressure[c];
+      newton.iterations = w.iterations[c];
+      const NewtonIteration::Result step = newton.step(w.residual[c], w.slope[c]);
+      if (step == NewtonIteration::failed) return false;
+      w.low[c] = newton.low;
+      w.high[c] = newton.high;
+      w.pressure[c] = newton.pressure;
+      w.iterations[c] = newton.iterations;
+      if (step == NewtonIteration::next) w.active[still++] = c;
+    }
+    w.active.resize(still);
+  }
+
+  // PoreFilling::state_at at each root; the one-by-one cells overwrite theirs.
+  result.most_iterations = 0;
+  for (std::size_t c = 0; c < cells; ++c) {
+    result.pressure[c] = w.pressure[c];
+    result.most_iterations = std::max(result.most_iterations, w.iterations[c]);
+  }
+  for (std::size_t f = 0; f < count; ++f) {
+    const double* rhobar = materials[f].bulk_density.data();
+    const double* t = materials[f].temperature.data();
+    double* density = result.density[f].data();
+    double* fraction = result.volume_fraction[f].data();
+    double* compressibility = result.compressibility[f].data();
+    const double* pressure = w.pressure.data();
+    visit_model(*models[f], kinds[f], [&](const auto& eos) {
+      for (std::size_t c = 0; c < cells; ++c) {
+        const double rho = eos.density(pressure[c], t[c]);
+        density[c] = rho;
+        fraction[c] = rhobar[c] / rho;
+        compressibility[c] = eos.compressibility(rho, t[c]);
+      }
+    });
+  }
+  for (const std::size_t c : w.one_by_one) {
+    equilibrate_one(materials, models, kinds, porosity, pressure_guess, options, c, result);
+  }
+  return true;
 }
 
 }  // namespace
@@ -275,26 +506,10 @@ void equilibrate_pressure(std::span<const MaterialCells> materials,
   }
   result.most_iterations = 0;
 
-  std::vector<double> bulk_density(count);
-  std::vector<double> temperature(count);
-  for (std::size_t c = 0; c < cells; ++c) {
-    for (std::size_t f = 0; f < count; ++f) {
-      bulk_density[f] = materials[f].bulk_density[c];
-      temperature[f] = materials[f].temperature[c];
-    }
-    const double guess = pressure_guess.empty() ? one_atmosphere : pressure_guess[c];
-    try {
-      const PoreFilling cell(models, kinds, bulk_density, temperature, porosity[c]);
-      const Root root = solve(cell, guess, options);
-      result.pressure[c] = root.pressure;
-      result.most_iterations = std::max(result.most_iterations, root.iterations);
-      cell.state_at(root.pressure, [&](std::size_t f, double rho, double phi, double kappa) {
-        result.density[f][c] = rho;
-        result.volume_fraction[f][c] = phi;
-        result.compressibility[f][c] = kappa;
-      });
-    } catch (const PressureEquilibrationError& error) {
-      throw error.in_cell(c);
+  if (!equilibrate_batch(materials, models, kinds, porosity, pressure_guess, options, result)) {
+    result.most_iterations = 0;
+    for (std::size_t c = 0; c < cells; ++c) {
+      equilibrate_one(materials, models, kinds, porosity, pressure_guess, options, c, result);
     }
   }
 }

@@ -95,6 +95,14 @@ struct EquilibratedCells {
   std::vector<std::vector<double>> volume_fraction;  // [material][cell]
   std::vector<std::vector<double>> compressibility;  // [material][cell]
   int most_iterations = 0;                           // over all cells
+
+  // Work arrays of the batched solve, kept so that repeated calls into the
+  // same result allocate nothing; not part of the result.
+  struct Workspace {
+    std::vector<double> lowest, low, high, pressure, residual, slope;
+    std::vector<int> iterations;
+    std::vector<std::size_t> active, one_by_one;
+  } workspace;
 };
 
 // equilibrate_pressure() in every cell. `pressure_guess` has one entry per
