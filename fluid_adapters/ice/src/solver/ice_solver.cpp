@@ -10,6 +10,7 @@
 #include "cosim/error.hpp"
 #include "cosim/exchange/implicit_exchange.hpp"
 #include "ice/advection/advection_time_step.hpp"
+#include "ice/eos/model_dispatch.hpp"
 #include "ice/grid/face_walk.hpp"
 
 namespace ice {
@@ -223,20 +224,28 @@ void IceSolver<Dim>::equilibrate(StepReport* report) {
   }
   equilibrate_pressure(cells, state_.porosity, state_.pressure, options_.equilibration,
                        equilibrium_);
-  state_.pressure = equilibrium_.pressure;
+  // The results move into the state (swapped: equilibrium_ keeps the old
+  // vectors as storage for the next call, which overwrites them).
+  state_.pressure.swap(equilibrium_.pressure);
   std::fill(mixture_kappa_.begin(), mixture_kappa_.end(), 0.0);
   for (std::size_t m = 0; m < count(); ++m) {
     MaterialState<Dim>& material = state_.materials[m];
-    material.density = equilibrium_.density[m];
-    material.volume_fraction = equilibrium_.volume_fraction[m];
-    for (std::size_t c = 0; c < material.density.size(); ++c) {
-      kappa_[m][c] =
-          eos_[m]->adiabatic_compressibility(material.density[c], material.temperature[c]);
-      // The fluids' volume changes by -sum_f phi_f kappa_f dP V; with the
-      // solid in the divergence this sum (not eq. 52's average over the
-      // fluids) is the mixture's compressibility per cell volume.
-      mixture_kappa_[c] += material.volume_fraction[c] * kappa_[m][c];
-    }
+    material.density.swap(equilibrium_.density[m]);
+    material.volume_fraction.swap(equilibrium_.volume_fraction[m]);
+    const double* rho = material.density.data();
+    const double* t = material.temperature.data();
+    const double* phi = material.volume_fraction.data();
+    double* kappa = kappa_[m].data();
+    double* mixture = mixture_kappa_.data();
+    visit_model(*eos_[m], [&](const auto& eos) {  // inlined for the built-in models
+      for (std::size_t c = 0; c < material.density.size(); ++c) {
+        kappa[c] = eos.adiabatic_compressibility(rho[c], t[c]);
+        // The fluids' volume changes by -sum_f phi_f kappa_f dP V; with the
+        // solid in the divergence this sum (not eq. 52's average over the
+        // fluids) is the mixture's compressibility per cell volume.
+        mixture[c] += phi[c] * kappa[c];
+      }
+    });
   }
   if (report != nullptr) report->equilibration_iterations = equilibrium_.most_iterations;
 }
@@ -485,7 +494,7 @@ double IceSolver<Dim>::face_courant(double dt) const {
 // hydrostatically (zero dynamic pressure gradient).
 template <int Dim>
 void IceSolver<Dim>::compute_face_pressure() {
-  CellField& rho = mixture_density_;
+  CellField& rho = scratch_cell_;  // the mixture densities
   rho.assign(at(grid_.cell_count()), 0.0);
   for (const MaterialState<Dim>& material : state_.materials) {
     for (std::size_t c = 0; c < rho.size(); ++c) rho[c] += material.bulk_density[c];
@@ -707,24 +716,32 @@ void IceSolver<Dim>::exchange_cell_energy(double dt) {
 template <int Dim>
 void IceSolver<Dim>::compute_lagrangian_specific_volume(double /*dt*/) {
   const std::size_t n = count();
-  for (std::size_t c = 0; c < at(grid_.cell_count()); ++c) {
-    double thermal_mixture = 0.0;
-    for (std::size_t m = 0; m < n; ++m) {
-      const MaterialState<Dim>& material = state_.materials[m];
-      const double alpha =
-          eos_[m]->thermal_expansivity(material.density[c], material.temperature[c]);
-      thermal_mixture += material.volume_fraction[c] * alpha *
-                         (lagrangian_temperature_[m][c] - material.temperature[c]);
-    }
-    for (std::size_t m = 0; m < n; ++m) {
-      const MaterialState<Dim>& material = state_.materials[m];
+  const std::size_t cells = at(grid_.cell_count());
+  // Each material's thermal expansivity alpha_f(rho_f, T_f) per cell (kept
+  // in volume_, which is written below) and their sum weighted by the
+  // temperature change.
+  CellField& thermal_mixture = scratch_cell_;
+  thermal_mixture.assign(cells, 0.0);
+  for (std::size_t m = 0; m < n; ++m) {
+    const MaterialState<Dim>& material = state_.materials[m];
+    double* alpha = volume_[m].data();
+    visit_model(*eos_[m], [&](const auto& eos) {  // inlined for the built-in models
+      for (std::size_t c = 0; c < cells; ++c) {
+        alpha[c] = eos.thermal_expansivity(material.density[c], material.temperature[c]);
+        thermal_mixture[c] += material.volume_fraction[c] * alpha[c] *
+                              (lagrangian_temperature_[m][c] - material.temperature[c]);
+      }
+    });
+  }
+  for (std::size_t m = 0; m < n; ++m) {
+    const MaterialState<Dim>& material = state_.materials[m];
+    for (std::size_t c = 0; c < cells; ++c) {
       const double phi = material.volume_fraction[c];
-      const double alpha =
-          eos_[m]->thermal_expansivity(material.density[c], material.temperature[c]);
+      const double alpha = volume_[m][c];
       const double share = phi * kappa_[m][c] / mixture_kappa_[c];
       volume_[m][c] = phi - phi * kappa_[m][c] * pressure_increment_[c] +
                       phi * alpha * (lagrangian_temperature_[m][c] - material.temperature[c]) -
-                      share * thermal_mixture;
+                      share * thermal_mixture[c];
     }
   }
 }

@@ -198,7 +198,9 @@ class IceSolver {
   double last_face_rate_ = 0.0;
 
   // ---- ice-perf: scratch of the restructured loops (sized on first use) ----
-  CellField mixture_density_;  // sum_f rhobar_f per cell, eq. 54's weights
+  // Per cell: eq. 54's mixture densities sum_f rhobar_f (compute_face_pressure),
+  // the thermal mixture expansion (compute_lagrangian_specific_volume).
+  CellField scratch_cell_;
 };
 
 extern template class IceSolver<1>;
