@@ -47,6 +47,7 @@ typename MultigridPreconditioner<Dim>::Level MultigridPreconditioner<Dim>::make_
   level.surplus = Eigen::VectorXd::Zero(size);
   for (auto& coupling : level.coupling) coupling = Eigen::VectorXd::Zero(size);
   level.solution = Eigen::VectorXd::Zero(size);
+  level.row = Eigen::VectorXd::Zero(cells[0]);
   level.right_hand_side = Eigen::VectorXd::Zero(size);
   return level;
 }
@@ -351,28 +352,65 @@ void MultigridPreconditioner<Dim>::backward_gauss_seidel(const Level& level,
 }
 
 // The residual b - A x restricted to the coarse level (the sum over each
-// aggregate), in one pass; the same operations as multiply() and a
-// separate subtraction and restriction.
+// aggregate) in one pass, row by row along x: a row's residuals (the same
+// operations as multiply() and a subtraction), then added to the coarse row
+// its cells aggregate into, in cell order as a cell-by-cell sum would.
 template <int Dim>
-void MultigridPreconditioner<Dim>::restrict_residual(const Level& fine, const Eigen::VectorXd& b,
+void MultigridPreconditioner<Dim>::restrict_residual(Level& fine, const Eigen::VectorXd& b,
                                                      const Eigen::VectorXd& x, Level& coarse) {
   const int pf = fine.padding;
   const int n = fine.cell_count;
+  const int nx = fine.cells[0];
   const int* aggregate = fine.aggregate.data();
   const double* diagonal = fine.diagonal.data() + pf;
   const double* rhs = b.data() + pf;
   const double* v = x.data() + pf;
   std::array<const double*, Dim> t{};
   for (int d = 0; d < Dim; ++d) t[d] = fine.coupling[d].data() + pf;
+  double* r = fine.row.data();
   coarse.right_hand_side.setZero();
   double* coarse_rhs = coarse.right_hand_side.data() + coarse.padding;
-  for (int c = 0; c < n; ++c) {
-    double product = diagonal[c] * v[c];
-    for (int d = 0; d < Dim; ++d) {
-      const int s = fine.stride[d];
-      product -= t[d][c] * v[c + s] + t[d][c - s] * v[c - s];
+  for (int first = 0; first < n; first += nx) {
+    for (int i = 0; i < nx; ++i) {
+      const int c = first + i;
+      double product = diagonal[c] * v[c];
+      for (int d = 0; d < Dim; ++d) {
+        const int s = fine.stride[d];
+        product -= t[d][c] * v[c + s] + t[d][c - s] * v[c - s];
+      }
+      r[i] = rhs[c] - product;
     }
-    coarse_rhs[aggregate[c]] += rhs[c] - product;
+    double* target = coarse_rhs + aggregate[first];
+    if (fine.coarsened[0]) {
+      for (int k = 0; k < nx / 2; ++k) target[k] = target[k] + r[2 * k] + r[2 * k + 1];
+      if (nx % 2 != 0) target[nx / 2] += r[nx - 1];
+    } else {
+      for (int i = 0; i < nx; ++i) target[i] += r[i];
+    }
+  }
+}
+
+// x += scale P x_coarse: each cell takes its aggregate's correction.
+template <int Dim>
+void MultigridPreconditioner<Dim>::prolong(const Level& fine, const Level& coarse, double scale,
+                                           Eigen::VectorXd& x) {
+  const int n = fine.cell_count;
+  const int nx = fine.cells[0];
+  const int* aggregate = fine.aggregate.data();
+  double* v = x.data() + fine.padding;
+  const double* correction = coarse.solution.data() + coarse.padding;
+  for (int first = 0; first < n; first += nx) {
+    const double* source = correction + aggregate[first];
+    double* row = v + first;
+    if (fine.coarsened[0]) {
+      for (int k = 0; k < nx / 2; ++k) {
+        row[2 * k] += scale * source[k];
+        row[2 * k + 1] += scale * source[k];
+      }
+      if (nx % 2 != 0) row[nx - 1] += scale * source[nx / 2];
+    } else {
+      for (int i = 0; i < nx; ++i) row[i] += scale * source[i];
+    }
   }
 }
 
@@ -391,8 +429,6 @@ void MultigridPreconditioner<Dim>::cycle(int level, const Eigen::VectorXd& b, Ei
     return;
   }
   Level& coarse = levels_[static_cast<std::size_t>(level) + 1];
-  const int pc = coarse.padding;
-  const int* aggregate = fine.aggregate.data();
   for (int visit = 0; visit < options_.cycle; ++visit) {
     for (int sweep = 0; sweep < options_.smoothing_sweeps; ++sweep) {
       // x starts at 0 (the first sweep writes every cell).
@@ -404,10 +440,7 @@ void MultigridPreconditioner<Dim>::cycle(int level, const Eigen::VectorXd& b, Ei
     }
     restrict_residual(fine, b, x, coarse);
     cycle(level + 1, coarse.right_hand_side, coarse.solution);
-    const double scale = options_.correction_scale;
-    double* v = x.data() + pf;
-    const double* correction = coarse.solution.data() + pc;
-    for (int c = 0; c < n; ++c) v[c] += scale * correction[aggregate[c]];
+    prolong(fine, coarse, options_.correction_scale, x);
     for (int sweep = 0; sweep < options_.smoothing_sweeps; ++sweep) {
       backward_gauss_seidel(fine, b, x);
     }

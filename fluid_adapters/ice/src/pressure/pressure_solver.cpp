@@ -296,8 +296,15 @@ PressureSolution PressureSolver<Dim>::run_multigrid(std::span<double> pressure_i
     while (result.iterations < options_.max_iterations) {
       mg.multiply(padded_direction_, padded_product_);
       const double step = rz / s.dot(q);
-      x += step * s;
-      r -= step * q;
+      // x += step s and r -= step q in one pass.
+      double* xv = x.data();
+      double* rv = r.data();
+      const double* sv = s.data();
+      const double* qv = q.data();
+      for (Eigen::Index c = 0; c < n; ++c) {
+        xv[c] += step * sv[c];
+        rv[c] -= step * qv[c];
+      }
       ++result.iterations;
       if (!(r.squaredNorm() >= threshold2)) break;
       mg.apply(padded_residual_, padded_preconditioned_);

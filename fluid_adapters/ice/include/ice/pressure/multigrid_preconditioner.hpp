@@ -107,6 +107,8 @@ class MultigridPreconditioner {
     // b and x of the coarse levels (the finest uses the caller's vectors).
     Eigen::VectorXd solution;
     Eigen::VectorXd right_hand_side;
+    // One row of residuals (restrict_residual's scratch).
+    Eigen::VectorXd row;
     // The coarse cell of each cell (unpadded indices) and the directions
     // coarsened to the next level; empty and unused on the coarsest.
     std::vector<int> aggregate;
@@ -120,8 +122,9 @@ class MultigridPreconditioner {
                                    Eigen::VectorXd& x);
   static void backward_gauss_seidel(const Level& level, const Eigen::VectorXd& b,
                                     Eigen::VectorXd& x);
-  static void restrict_residual(const Level& fine, const Eigen::VectorXd& b,
-                                const Eigen::VectorXd& x, Level& coarse);
+  static void restrict_residual(Level& fine, const Eigen::VectorXd& b, const Eigen::VectorXd& x,
+                                Level& coarse);
+  static void prolong(const Level& fine, const Level& coarse, double scale, Eigen::VectorXd& x);
   static void set_diagonal_from_couplings(Level& level);
   static void set_inverse_diagonal(Level& level);
   void build_coarse_operator(int level);
