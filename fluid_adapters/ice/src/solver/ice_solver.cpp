@@ -773,15 +773,23 @@ void IceSolver<Dim>::advect_and_update(double dt, StepReport& report) {
     advector_.advance(
         face_velocity_[m], dt,
         std::span<const std::span<double>>(fields.data(), total_energy ? dim + 4 : dim + 3));
-    if (total_energy) {
-      for (std::size_t c = 0; c < cells; ++c) {
-        if (mass_[m][c] > 0.0) energy_[m][c] += kinetic_[m][c] - kinetic_energy(m, c);
-      }
-    }
-  }
-  for (std::size_t m = 0; m < n; ++m) {
+    // The kinetic energy the advection dissipated back into the internal
+    // energy, then the primitive variables, in one pass; a bad cell is
+    // reported by the checking pass below.
     MaterialState<Dim>& material = state_.materials[m];
     const double c_v = eos_[m]->specific_heat();
+    bool bad = false;
+    for (std::size_t c = 0; c < cells; ++c) {
+      const double mass = mass_[m][c];
+      if (total_energy && mass > 0.0) energy_[m][c] += kinetic_[m][c] - kinetic_energy(m, c);
+      material.bulk_density[c] = mass;
+      for (std::size_t d = 0; d < dim; ++d) material.velocity[d][c] = momentum_[m][d][c] / mass;
+      material.temperature[c] = energy_[m][c] / (mass * c_v);
+      material.specific_volume[c] = volume_[m][c] / mass;
+      bad = bad || !(mass > 0.0) || !std::isfinite(mass) || !(material.temperature[c] > 0.0) ||
+            !std::isfinite(material.temperature[c]);
+    }
+    if (!bad) continue;
     for (std::size_t c = 0; c < cells; ++c) {
       const double mass = mass_[m][c];
       if (!(mass > 0.0) || !std::isfinite(mass)) {
@@ -790,12 +798,6 @@ void IceSolver<Dim>::advect_and_update(double dt, StepReport& report) {
                         "(time {} s, dt {} s)",
                         materials_[m].name, c, mass, time_, dt));
       }
-      material.bulk_density[c] = mass;
-      for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
-        material.velocity[d][c] = momentum_[m][d][c] / mass;
-      }
-      material.temperature[c] = energy_[m][c] / (mass * c_v);
-      material.specific_volume[c] = volume_[m][c] / mass;
       if (!(material.temperature[c] > 0.0) || !std::isfinite(material.temperature[c])) {
         throw cosim::NumericalError(fmt::format(
             "ICE: material '{}' in cell {}: temperature {} K after advection (time {} s, dt {} s)",
