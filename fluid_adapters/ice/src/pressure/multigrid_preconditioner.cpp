@@ -203,14 +203,25 @@ Eigen::SparseMatrix<double> MultigridPreconditioner<Dim>::level_operator(int lev
 template <int Dim>
 void MultigridPreconditioner<Dim>::multiply(const Level& level, const Eigen::VectorXd& x,
                                             Eigen::VectorXd& y) {
+  // One pass: D_c x_c, then minus each direction's pair of couplings.
   const int p = level.padding;
   const int n = level.cell_count;
-  auto out = y.segment(p, n);
-  out = level.diagonal.segment(p, n).cwiseProduct(x.segment(p, n));
+  const double* diagonal = level.diagonal.data() + p;
+  const double* v = x.data() + p;
+  double* out = y.data() + p;
+  std::array<const double*, Dim> t{};
+  std::array<int, Dim> stride{};
   for (int d = 0; d < Dim; ++d) {
-    const int s = level.stride[d];
-    out -= level.coupling[d].segment(p, n).cwiseProduct(x.segment(p + s, n)) +
-           level.coupling[d].segment(p - s, n).cwiseProduct(x.segment(p - s, n));
+    t[d] = level.coupling[d].data() + p;
+    stride[d] = level.stride[d];
+  }
+  for (int c = 0; c < n; ++c) {
+    double product = diagonal[c] * v[c];
+    for (int d = 0; d < Dim; ++d) {
+      const int s = stride[d];
+      product -= t[d][c] * v[c + s] + t[d][c - s] * v[c - s];
+    }
+    out[c] = product;
   }
 }
 
@@ -366,7 +377,11 @@ void MultigridPreconditioner<Dim>::restrict_residual(Level& fine, const Eigen::V
   const double* rhs = b.data() + pf;
   const double* v = x.data() + pf;
   std::array<const double*, Dim> t{};
-  for (int d = 0; d < Dim; ++d) t[d] = fine.coupling[d].data() + pf;
+  std::array<int, Dim> stride{};
+  for (int d = 0; d < Dim; ++d) {
+    t[d] = fine.coupling[d].data() + pf;
+    stride[d] = fine.stride[d];
+  }
   double* r = fine.row.data();
   coarse.right_hand_side.setZero();
   double* coarse_rhs = coarse.right_hand_side.data() + coarse.padding;
@@ -375,7 +390,7 @@ void MultigridPreconditioner<Dim>::restrict_residual(Level& fine, const Eigen::V
       const int c = first + i;
       double product = diagonal[c] * v[c];
       for (int d = 0; d < Dim; ++d) {
-        const int s = fine.stride[d];
+        const int s = stride[d];
         product -= t[d][c] * v[c + s] + t[d][c - s] * v[c - s];
       }
       r[i] = rhs[c] - product;

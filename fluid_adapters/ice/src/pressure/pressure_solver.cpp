@@ -158,20 +158,49 @@ bool PressureSolver<Dim>::is_fixed_pressure(int direction, int face) const {
   return boundaries_[side] == PressureBoundary::fixed_pressure;
 }
 
-// Tran et al., MPMICE, eq. 125 times V.
+// Tran et al., MPMICE, eq. 125 times V: into the sparse matrix, or for the
+// multigrid straight into its diagonal and couplings (T = -A_c,c+s), with the
+// diagonal summed in the same order; matrix() then fills the sparse values
+// from those when asked.
 template <int Dim>
 void PressureSolver<Dim>::assemble(std::span<const double> kappa,
                                    const FaceField<Dim>& face_density, double dt) {
-  double* values = matrix_.valuePtr();
-  std::fill(values, values + matrix_.nonZeros(), 0.0);
   const double volume = grid_.cell_volume();
   for (int c = 0; c < grid_.cell_count(); ++c) {
     if (!(kappa[c] > 0.0) || !std::isfinite(kappa[c])) {
       throw std::invalid_argument("PressureSolver: kappa must be positive and finite, got " +
                                   std::to_string(kappa[c]) + " in cell " + std::to_string(c));
     }
-    values[diagonal_entry_[c]] = kappa[c] * volume / dt;
   }
+  if (multigrid_) {
+    MultigridPreconditioner<Dim>& mg = *multigrid_;
+    for (int c = 0; c < grid_.cell_count(); ++c) mg.diagonal(c) = kappa[c] * volume / dt;
+    for (int d = 0; d < Dim; ++d) {
+      const double area_over_spacing_dt = grid_.face_area(d) / grid_.spacing()[d] * dt;
+      const std::vector<double>& rho = face_density[d];
+      for_each_face(
+          grid_, d,
+          [&](int f, int lower, int upper) {
+            require_positive_density(rho[f], d, f);
+            const double t = area_over_spacing_dt / rho[f];
+            mg.diagonal(lower) += t;
+            mg.diagonal(upper) += t;
+            mg.coupling(d, lower) = t;
+          },
+          [&](int f, int cell, bool upper_side) {
+            if (boundaries_[2 * d + (upper_side ? 1 : 0)] != PressureBoundary::fixed_pressure) {
+              return;
+            }
+            require_positive_density(rho[f], d, f);
+            mg.diagonal(cell) += 2.0 * area_over_spacing_dt / rho[f];
+          });
+    }
+    matrix_current_ = false;
+    return;
+  }
+  double* values = matrix_.valuePtr();
+  std::fill(values, values + matrix_.nonZeros(), 0.0);
+  for (int c = 0; c < grid_.cell_count(); ++c) values[diagonal_entry_[c]] = kappa[c] * volume / dt;
   for (int d = 0; d < Dim; ++d) {
     const double area_over_spacing_dt = grid_.face_area(d) / grid_.spacing()[d] * dt;
     const std::vector<double>& rho = face_density[d];
@@ -193,6 +222,27 @@ void PressureSolver<Dim>::assemble(std::span<const double> kappa,
   }
 }
 
+template <int Dim>
+const Eigen::SparseMatrix<double>& PressureSolver<Dim>::matrix() const {
+  if (!matrix_current_) {
+    // The multigrid's operator as the sparse values: A_cc = D_c,
+    // A_c,c+s = A_c+s,c = -T (0 - T, as the sparse assembly forms it).
+    const MultigridPreconditioner<Dim>& mg = *multigrid_;
+    double* values = matrix_.valuePtr();
+    for (int c = 0; c < grid_.cell_count(); ++c) values[diagonal_entry_[c]] = mg.diagonal(c);
+    for (int d = 0; d < Dim; ++d) {
+      for (int f = 0; f < grid_.face_count(d); ++f) {
+        if (lower_upper_entry_[d][f] < 0) continue;
+        const double t = mg.coupling(d, face_cells_[d][f][0]);
+        values[lower_upper_entry_[d][f]] = 0.0 - t;
+        values[upper_lower_entry_[d][f]] = 0.0 - t;
+      }
+    }
+    matrix_current_ = true;
+  }
+  return matrix_;
+}
+
 // -V div_c U*_FC.
 template <int Dim>
 void PressureSolver<Dim>::set_right_hand_side(const FaceField<Dim>& predicted_velocity) {
@@ -207,9 +257,13 @@ void PressureSolver<Dim>::set_right_hand_side(const FaceField<Dim>& predicted_ve
             " normal to direction " + std::to_string(d));
       }
     }
-    for (int c = 0; c < grid_.cell_count(); ++c) {
-      right_hand_side_[c] -= area * (u[grid_.upper_face(d, c)] - u[grid_.lower_face(d, c)]);
-    }
+    for_each_row(grid_, [&](int first, int length) {
+      const double* lower = u.data() + lower_face_offset(grid_, d, first);
+      const double* upper = lower + grid_.stride(d);
+      for (int c = first; c < first + length; ++c) {
+        right_hand_side_[c] -= area * (upper[c] - lower[c]);
+      }
+    });
   }
 }
 
@@ -253,18 +307,7 @@ void PressureSolver<Dim>::throw_not_converged(const PressureSolution& result) co
 template <int Dim>
 PressureSolution PressureSolver<Dim>::run_multigrid(std::span<double> pressure_increment) {
   MultigridPreconditioner<Dim>& mg = *multigrid_;
-  const double* values = matrix_.valuePtr();
-  for (int c = 0; c < grid_.cell_count(); ++c) {
-    mg.diagonal(c) = values[diagonal_entry_[c]];
-  }
-  for (int d = 0; d < Dim; ++d) {
-    for (int f = 0; f < grid_.face_count(d); ++f) {
-      if (lower_upper_entry_[d][f] >= 0) {
-        mg.coupling(d, face_cells_[d][f][0]) = -values[lower_upper_entry_[d][f]];
-      }
-    }
-  }
-  mg.update();
+  mg.update();  // assemble() wrote its finest operator
 
   const Eigen::Index n = grid_.cell_count();
   const Eigen::Index p = mg.padding();

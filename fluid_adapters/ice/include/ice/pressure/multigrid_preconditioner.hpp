@@ -75,6 +75,10 @@ class MultigridPreconditioner {
   double& coupling(int direction, int cell) {
     return levels_.front().coupling[direction][padding() + cell];
   }
+  double diagonal(int cell) const { return levels_.front().diagonal[padding() + cell]; }
+  double coupling(int direction, int cell) const {
+    return levels_.front().coupling[direction][padding() + cell];
+  }
 
   // Builds the coarse operators and factorises the coarsest one from the
   // finest operator. Throws cosim::NumericalError when the coarsest operator
