@@ -362,6 +362,30 @@ void MultigridPreconditioner<Dim>::backward_gauss_seidel(const Level& level,
   for (; row >= 0; --row) sweep_rows<Dim, false, false, 1>(a, b.data(), x.data(), p + row * nx, nx);
 }
 
+namespace {
+
+// r_i = b_c - (A x)_c for the nx cells c = first + i of a row (pointers at
+// the row's first cell; the couplings' arrays at cell 0), the operations of
+// multiply(). Apart so that the row loop vectorises.
+template <int Dim>
+inline void row_residual(const double* __restrict diagonal,
+                         const std::array<const double*, Dim>& coupling,
+                         const std::array<int, Dim>& stride, int first, const double* __restrict b,
+                         const double* __restrict x, int nx, double* __restrict r) {
+  std::array<const double*, Dim> t{};
+  for (int d = 0; d < Dim; ++d) t[d] = coupling[d] + first;
+  for (int i = 0; i < nx; ++i) {
+    double product = diagonal[i] * x[i];
+    for (int d = 0; d < Dim; ++d) {
+      const int s = stride[d];
+      product -= t[d][i] * x[i + s] + t[d][i - s] * x[i - s];
+    }
+    r[i] = b[i] - product;
+  }
+}
+
+}  // namespace
+
 // The residual b - A x restricted to the coarse level (the sum over each
 // aggregate) in one pass, row by row along x: a row's residuals (the same
 // operations as multiply() and a subtraction), then added to the coarse row
@@ -386,15 +410,7 @@ void MultigridPreconditioner<Dim>::restrict_residual(Level& fine, const Eigen::V
   coarse.right_hand_side.setZero();
   double* coarse_rhs = coarse.right_hand_side.data() + coarse.padding;
   for (int first = 0; first < n; first += nx) {
-    for (int i = 0; i < nx; ++i) {
-      const int c = first + i;
-      double product = diagonal[c] * v[c];
-      for (int d = 0; d < Dim; ++d) {
-        const int s = stride[d];
-        product -= t[d][c] * v[c + s] + t[d][c - s] * v[c - s];
-      }
-      r[i] = rhs[c] - product;
-    }
+    row_residual<Dim>(diagonal + first, t, stride, first, rhs + first, v + first, nx, r);
     double* target = coarse_rhs + aggregate[first];
     if (fine.coarsened[0]) {
       for (int k = 0; k < nx / 2; ++k) target[k] = target[k] + r[2 * k] + r[2 * k + 1];
