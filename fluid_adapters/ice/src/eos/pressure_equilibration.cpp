@@ -173,6 +173,14 @@ struct NewtonIteration {
         max_iterations(options.max_iterations) {}
 
   Result step(double residual, double slope) {
+    return step(residual, slope, porosity, tolerance, max_iterations, pressure, low, high,
+                iterations);
+  }
+
+  // The same on a state held elsewhere (the batched solve's arrays).
+  static Result step(double residual, double slope, double porosity, double tolerance,
+                     int max_iterations, double& pressure, double& low, double& high,
+                     int& iterations) {
     const double newton = pressure - residual / slope * ((residual + porosity) / porosity);
     if (std::abs(residual) <= tolerance) {
       if (!(newton > low && newton < high)) return converged;
@@ -294,6 +302,22 @@ void equilibrate_one(std::span<const MaterialCells> materials,
   }
 }
 
+// PoreFilling::state_at over cells: rho_f, phi_f and kappa_f at each
+// cell's pressure (apart, with restrict-qualified outputs, so that the loop
+// vectorises).
+template <class Model>
+void store_state(const Model& eos, std::size_t cells, const double* __restrict pressure,
+                 const double* __restrict temperature, const double* __restrict bulk_density,
+                 double* __restrict density, double* __restrict fraction,
+                 double* __restrict compressibility) {
+  for (std::size_t c = 0; c < cells; ++c) {
+    const double rho = eos.density(pressure[c], temperature[c]);
+    density[c] = rho;
+    fraction[c] = bulk_density[c] / rho;
+    compressibility[c] = eos.compressibility(rho, temperature[c]);
+  }
+}
+
 // All cells at once, for the cells whose materials are all present (every
 // cell of an ICE run): per Newton round, sum phi_f - n and its slope are
 // evaluated material by material over the cells, the models called as their
@@ -335,18 +359,16 @@ bool equilibrate_batch(std::span<const MaterialCells> materials,
     if (!any_present) return false;
     (all_present ? w.active : w.one_by_one).push_back(c);
   }
-  for (auto* field : {&w.lowest, &w.low, &w.high, &w.pressure, &w.residual, &w.slope}) {
-    field->resize(cells);
-  }
+  for (auto* field : {&w.low, &w.high, &w.pressure, &w.residual, &w.slope}) field->resize(cells);
   w.iterations.resize(cells);
 
-  // solve()'s lower bound (every material present: no absent-material test)
-  // and starting point.
-  std::fill(w.lowest.begin(), w.lowest.end(), -std::numeric_limits<double>::infinity());
+  // solve()'s lower bound (every material present: no absent-material
+  // test), the bracket's lower end, and the starting point.
+  std::fill(w.low.begin(), w.low.end(), -std::numeric_limits<double>::infinity());
   for (std::size_t f = 0; f < count; ++f) {
     const double* t = materials[f].temperature.data();
-    double* lowest = w.lowest.data();
-    visit_model(*models[f], kinds[f], [&](const auto& eos) {
+    double* lowest = w.low.data();
+    visit_model_copy(*models[f], [&](const auto& eos) {
       for (std::size_t c = 0; c < cells; ++c) {
         lowest[c] = std::max(lowest[c], eos.minimum_pressure(t[c]));
       }
@@ -354,8 +376,7 @@ bool equilibrate_batch(std::span<const MaterialCells> materials,
   }
   for (std::size_t c = 0; c < cells; ++c) {
     const double guess = pressure_guess.empty() ? one_atmosphere : pressure_guess[c];
-    const NewtonIteration start(w.lowest[c], guess, porosity[c], options);
-    w.low[c] = start.low;
+    const NewtonIteration start(w.low[c], guess, porosity[c], options);
     w.high[c] = start.high;
     w.pressure[c] = start.pressure;
     w.iterations[c] = 0;
@@ -381,7 +402,7 @@ bool equilibrate_batch(std::span<const MaterialCells> materials,
     for (std::size_t f = 0; f < count; ++f) {
       const double* rhobar = materials[f].bulk_density.data();
       const double* t = materials[f].temperature.data();
-      visit_model(*models[f], kinds[f], [&](const auto& eos) {
+      visit_model_copy(*models[f], [&](const auto& eos) {
         const auto add = [&](std::size_t c) {
           const double rho = eos.density(pressure[c], t[c]);
           const double phi = rhobar[c] / rho;
@@ -402,17 +423,10 @@ bool equilibrate_batch(std::span<const MaterialCells> materials,
     evaluate(2 * w.active.size() > cells);
     std::size_t still = 0;
     for (const std::size_t c : w.active) {
-      NewtonIteration newton(w.lowest[c], w.pressure[c], porosity[c], options);
-      newton.low = w.low[c];
-      newton.high = w.high[c];
-      newton.pressure = w.pressure[c];
-      newton.iterations = w.iterations[c];
-      const NewtonIteration::Result step = newton.step(w.residual[c], w.slope[c]);
+      const NewtonIteration::Result step = NewtonIteration::step(
+          w.residual[c], w.slope[c], porosity[c], options.tolerance * porosity[c],
+          options.max_iterations, w.pressure[c], w.low[c], w.high[c], w.iterations[c]);
       if (step == NewtonIteration::failed) return false;
-      w.low[c] = newton.low;
-      w.high[c] = newton.high;
-      w.pressure[c] = newton.pressure;
-      w.iterations[c] = newton.iterations;
       if (step == NewtonIteration::next) w.active[still++] = c;
     }
     w.active.resize(still);
@@ -431,13 +445,8 @@ bool equilibrate_batch(std::span<const MaterialCells> materials,
     double* fraction = result.volume_fraction[f].data();
     double* compressibility = result.compressibility[f].data();
     const double* pressure = w.pressure.data();
-    visit_model(*models[f], kinds[f], [&](const auto& eos) {
-      for (std::size_t c = 0; c < cells; ++c) {
-        const double rho = eos.density(pressure[c], t[c]);
-        density[c] = rho;
-        fraction[c] = rhobar[c] / rho;
-        compressibility[c] = eos.compressibility(rho, t[c]);
-      }
+    visit_model_copy(*models[f], [&](const auto& eos) {
+      store_state(eos, cells, pressure, t, rhobar, density, fraction, compressibility);
     });
   }
   for (const std::size_t c : w.one_by_one) {

@@ -237,7 +237,7 @@ void IceSolver<Dim>::equilibrate(StepReport* report) {
     const double* phi = material.volume_fraction.data();
     double* kappa = kappa_[m].data();
     double* mixture = mixture_kappa_.data();
-    visit_model(*eos_[m], [&](const auto& eos) {  // inlined for the built-in models
+    visit_model_copy(*eos_[m], [&](const auto& eos) {  // inlined for the built-in models
       for (std::size_t c = 0; c < material.density.size(); ++c) {
         kappa[c] = eos.adiabatic_compressibility(rho[c], t[c]);
         // The fluids' volume changes by -sum_f phi_f kappa_f dP V; with the
@@ -725,7 +725,7 @@ void IceSolver<Dim>::compute_lagrangian_specific_volume(double /*dt*/) {
   for (std::size_t m = 0; m < n; ++m) {
     const MaterialState<Dim>& material = state_.materials[m];
     double* alpha = volume_[m].data();
-    visit_model(*eos_[m], [&](const auto& eos) {  // inlined for the built-in models
+    visit_model_copy(*eos_[m], [&](const auto& eos) {  // inlined for the built-in models
       for (std::size_t c = 0; c < cells; ++c) {
         alpha[c] = eos.thermal_expansivity(material.density[c], material.temperature[c]);
         thermal_mixture[c] += material.volume_fraction[c] * alpha[c] *

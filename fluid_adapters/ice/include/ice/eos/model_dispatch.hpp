@@ -40,4 +40,25 @@ decltype(auto) visit_model(const EquationOfState& eos, F&& f) {
   return visit_model(eos, model_kind(eos), f);
 }
 
+// As visit_model, a built-in model passed as a local copy (a few numbers):
+// a loop over cells calling it then knows that its stores leave the
+// model's parameters alone, so the compiler neither reloads them per cell
+// nor gives up vectorising. For loops over many cells, not per cell.
+template <class F>
+decltype(auto) visit_model_copy(const EquationOfState& eos, F&& f) {
+  switch (model_kind(eos)) {
+    case ModelKind::linear_water: {
+      const LinearWater model = static_cast<const LinearWater&>(eos);
+      return f(model);
+    }
+    case ModelKind::ideal_gas: {
+      const IdealGas model = static_cast<const IdealGas&>(eos);
+      return f(model);
+    }
+    case ModelKind::other:
+      break;
+  }
+  return f(eos);
+}
+
 }  // namespace ice

@@ -99,7 +99,7 @@ struct EquilibratedCells {
   // Work arrays of the batched solve, kept so that repeated calls into the
   // same result allocate nothing; not part of the result.
   struct Workspace {
-    std::vector<double> lowest, low, high, pressure, residual, slope;
+    std::vector<double> low, high, pressure, residual, slope;
     std::vector<int> iterations;
     std::vector<std::size_t> active, one_by_one;
   } workspace;
