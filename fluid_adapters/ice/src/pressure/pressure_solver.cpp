@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -152,12 +153,6 @@ PressureSolver<Dim>::PressureSolver(const CellGrid<Dim>& grid, const Boundaries&
   }
 }
 
-template <int Dim>
-bool PressureSolver<Dim>::is_fixed_pressure(int direction, int face) const {
-  const int side = face_cells_[direction][face][0] < 0 ? 2 * direction : 2 * direction + 1;
-  return boundaries_[side] == PressureBoundary::fixed_pressure;
-}
-
 // Tran et al., MPMICE, eq. 125 times V: into the sparse matrix, or for the
 // multigrid straight into its diagonal and couplings (T = -A_c,c+s), with the
 // diagonal summed in the same order; matrix() then fills the sparse values
@@ -172,6 +167,7 @@ void PressureSolver<Dim>::assemble(std::span<const double> kappa,
                                   std::to_string(kappa[c]) + " in cell " + std::to_string(c));
     }
   }
+  require_entering_densities(face_density);
   if (multigrid_) {
     MultigridPreconditioner<Dim>& mg = *multigrid_;
     for (int c = 0; c < grid_.cell_count(); ++c) mg.diagonal(c) = kappa[c] * volume / dt;
@@ -181,7 +177,6 @@ void PressureSolver<Dim>::assemble(std::span<const double> kappa,
       for_each_face(
           grid_, d,
           [&](int f, int lower, int upper) {
-            require_positive_density(rho[f], d, f);
             const double t = area_over_spacing_dt / rho[f];
             mg.diagonal(lower) += t;
             mg.diagonal(upper) += t;
@@ -191,7 +186,6 @@ void PressureSolver<Dim>::assemble(std::span<const double> kappa,
             if (boundaries_[2 * d + (upper_side ? 1 : 0)] != PressureBoundary::fixed_pressure) {
               return;
             }
-            require_positive_density(rho[f], d, f);
             mg.diagonal(cell) += 2.0 * area_over_spacing_dt / rho[f];
           });
     }
@@ -207,7 +201,6 @@ void PressureSolver<Dim>::assemble(std::span<const double> kappa,
     for_each_face(
         grid_, d,
         [&](int f, int lower, int upper) {
-          require_positive_density(rho[f], d, f);
           const double t = area_over_spacing_dt / rho[f];
           values[diagonal_entry_[lower]] += t;
           values[diagonal_entry_[upper]] += t;
@@ -216,7 +209,6 @@ void PressureSolver<Dim>::assemble(std::span<const double> kappa,
         },
         [&](int f, int cell, bool upper_side) {
           if (boundaries_[2 * d + (upper_side ? 1 : 0)] != PressureBoundary::fixed_pressure) return;
-          require_positive_density(rho[f], d, f);
           values[diagonal_entry_[cell]] += 2.0 * area_over_spacing_dt / rho[f];
         });
   }
@@ -399,23 +391,56 @@ void PressureSolver<Dim>::correct_face_velocities(const FaceField<Dim>& face_den
   require_face_field_sizes(grid_, face_density, "face density");
   require_face_field_sizes(grid_, face_velocity, "face velocity");
   require_positive_time_step(dt);
+  require_entering_densities(face_density);
   for (int d = 0; d < Dim; ++d) {
     const double dx = grid_.spacing()[d];
-    const std::vector<double>& rho = face_density[d];
-    std::vector<double>& u = face_velocity[d];
+    const double* rho = face_density[d].data();
+    double* u = face_velocity[d].data();
     const double* dp = pressure_increment.data();
     for_each_face(
         grid_, d,
         [&](int f, int lower, int upper) {
           const double gradient = (dp[upper] - dp[lower]) / dx;
-          require_positive_density(rho[f], d, f);
           u[f] -= dt / rho[f] * gradient;
         },
         [&](int f, int cell, bool upper_side) {
           if (boundaries_[2 * d + (upper_side ? 1 : 0)] != PressureBoundary::fixed_pressure) return;
           const double gradient = upper_side ? -dp[cell] / (0.5 * dx) : dp[cell] / (0.5 * dx);
-          require_positive_density(rho[f], d, f);
           u[f] -= dt / rho[f] * gradient;
+        });
+  }
+}
+
+// Every face density that enters (interior and fixed_pressure faces) is
+// positive and finite; otherwise the first bad one, in face order, is
+// reported. A branch-free pass, so the loops using them need no check.
+template <int Dim>
+void PressureSolver<Dim>::require_entering_densities(const FaceField<Dim>& face_density) const {
+  int bad = 0;
+  for (int d = 0; d < Dim; ++d) {
+    const double* rho = face_density[d].data();
+    // Positive and finite is 0 < value <= the largest double (NaN fails
+    // both): comparisons only, which vectorise.
+    const auto is_bad = [](double value) {
+      return !(value > 0.0 && value <= std::numeric_limits<double>::max());
+    };
+    for_each_face(
+        grid_, d, [&](int f, int, int) { bad += is_bad(rho[f]) ? 1 : 0; },
+        [&](int f, int, bool upper_side) {
+          if (boundaries_[2 * d + (upper_side ? 1 : 0)] == PressureBoundary::fixed_pressure) {
+            bad += is_bad(rho[f]) ? 1 : 0;
+          }
+        });
+  }
+  if (bad == 0) return;
+  for (int d = 0; d < Dim; ++d) {
+    const std::vector<double>& rho = face_density[d];
+    for_each_face(
+        grid_, d, [&](int f, int, int) { require_positive_density(rho[f], d, f); },
+        [&](int f, int, bool upper_side) {
+          if (boundaries_[2 * d + (upper_side ? 1 : 0)] == PressureBoundary::fixed_pressure) {
+            require_positive_density(rho[f], d, f);
+          }
         });
   }
 }

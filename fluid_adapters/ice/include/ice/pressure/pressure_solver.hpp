@@ -125,7 +125,7 @@ class PressureSolver {
   PressureSolution run(Solver& solver, std::span<double> pressure_increment);
   PressureSolution run_multigrid(std::span<double> pressure_increment);
   void throw_not_converged(const PressureSolution& result) const;
-  bool is_fixed_pressure(int direction, int face) const;
+  void require_entering_densities(const FaceField<Dim>& face_density) const;
 
   CellGrid<Dim> grid_;
   Boundaries boundaries_;
