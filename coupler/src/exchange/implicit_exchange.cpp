@@ -234,13 +234,19 @@ void solve_implicit_exchange(std::span<const double> weight, std::span<const dou
     // all components, without the general path's bookkeeping.
     const double c = coefficient[1];
     if (!std::isfinite(c) || c < 0) throw_bad_coefficient(0, 1, c);
+    // The divisions by the two weights are done in pairs (one packed
+    // division each: the same quotients, half the divider's time).
+    using Pair = double __attribute__((vector_size(16)));
+    const Pair w = {weight[0], weight[1]};
+    const Pair inverse = 1.0 / w;
     const double dt_c = dt * c;
-    const double resistance = 1.0 / dt_c + 1.0 / weight[0] + 1.0 / weight[1];
+    const double resistance = 1.0 / dt_c + inverse[0] + inverse[1];
     const bool moves = dt_c > 0 && resistance != 0;
     for (std::size_t k = 0; k < dim; ++k) {
       const double impulse = moves ? (value[dim + k] - value[k]) / resistance : 0.0;
-      increment[k] = impulse / weight[0];
-      increment[dim + k] = -impulse / weight[1];
+      const Pair share = Pair{impulse, -impulse} / w;
+      increment[k] = share[0];
+      increment[dim + k] = share[1];
     }
     return;
   }
