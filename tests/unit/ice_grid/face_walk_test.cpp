@@ -35,6 +35,23 @@ void check_walks(const std::array<int, Dim>& cells) {
           EXPECT_EQ(upper_side ? grid.upper_cell(d, f) : grid.lower_cell(d, f), -1);
         });
     for (const int v : visits) EXPECT_EQ(v, 1);
+    // The run form covers the same faces with the same cells.
+    std::vector<int> run_visits(visits.size(), 0);
+    const int s = grid.stride(d);
+    ice::for_each_face_run(
+        grid, d,
+        [&](int first, int end, int upper_offset) {
+          for (int f = first; f < end; ++f) {
+            ++run_visits[static_cast<std::size_t>(f)];
+            EXPECT_EQ(f - upper_offset, grid.upper_cell(d, f));
+            EXPECT_EQ(f - upper_offset - s, grid.lower_cell(d, f));
+          }
+        },
+        [&](int f, int cell, bool upper_side) {
+          ++run_visits[static_cast<std::size_t>(f)];
+          EXPECT_EQ(upper_side ? grid.lower_cell(d, f) : grid.upper_cell(d, f), cell);
+        });
+    for (const int v : run_visits) EXPECT_EQ(v, 1);
   }
   std::vector<int> visits(static_cast<std::size_t>(grid.cell_count()), 0);
   ice::for_each_row(grid, [&](int first, int length) {

@@ -32,6 +32,28 @@ typename PressureSolver<Dim>::Boundaries pressure_boundaries(
   return boundaries;
 }
 
+// Eqs. 44-45 on the interior faces first <= f < end of a row (upper cell
+// f - upper_offset, lower one stride below); see compute_face_velocities.
+// A function of its own, with restrict-qualified outputs, so that the loop
+// vectorises.
+inline void interior_face_velocities(int first, int end, int upper_offset, int stride, double dt,
+                                     double dx, double g, const double* __restrict rhobar,
+                                     const double* __restrict phi, const double* __restrict u,
+                                     const double* __restrict p, double* __restrict face_u,
+                                     double* __restrict face_v) {
+  for (int f = first; f < end; ++f) {
+    const int upper = f - upper_offset;
+    const int lower = upper - stride;
+    const double rb_l = rhobar[lower];
+    const double rb_r = rhobar[upper];
+    const double v_face = (phi[lower] + phi[upper]) / (rb_l + rb_r);
+    const double mean_u = (rb_l * u[lower] + rb_r * u[upper]) / (rb_l + rb_r);
+    const double gradient = (p[upper] - p[lower]) / dx;
+    face_u[f] = mean_u + dt * (-v_face * gradient + g);
+    face_v[f] = v_face;
+  }
+}
+
 void require(bool condition, const std::string& what) {
   if (!condition) throw std::invalid_argument("IceSolver: " + what);
 }
@@ -352,14 +374,9 @@ void IceSolver<Dim>::compute_face_velocities(double dt) {
       const double* rhobar = material.bulk_density.data();
       const double* phi = material.volume_fraction.data();
       const double* p = s.pressure.data();
-      const auto interior = [&](int f, int lower, int upper) {
-        const double rb_l = rhobar[lower];
-        const double rb_r = rhobar[upper];
-        const double v_face = (phi[lower] + phi[upper]) / (rb_l + rb_r);
-        const double mean_u = (rb_l * u[at(lower)] + rb_r * u[at(upper)]) / (rb_l + rb_r);
-        const double gradient = (p[upper] - p[lower]) / dx;
-        face_u[at(f)] = mean_u + dt * (-v_face * gradient + g);
-        face_v[at(f)] = v_face;
+      const auto interior = [&](int first, int end, int upper_offset) {
+        interior_face_velocities(first, end, upper_offset, grid_.stride(d), dt, dx, g, rhobar, phi,
+                                 u.data(), p, face_u.data(), face_v.data());
       };
       const auto boundary = [&](int f, int cell, bool upper_side) {
         const SideCondition& side = sides_[at(2 * d + (upper_side ? 1 : 0))];
@@ -383,7 +400,7 @@ void IceSolver<Dim>::compute_face_velocities(double dt) {
           }
         }
       };
-      for_each_face(grid_, d, interior, boundary);
+      for_each_face_run(grid_, d, interior, boundary);
     }
   }
 }

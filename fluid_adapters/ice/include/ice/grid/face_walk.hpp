@@ -19,9 +19,12 @@ namespace ice {
 // cell f - s outer and the lower cell one stride below, so the interior
 // faces of a row form one contiguous range (a loop the compiler can
 // vectorise when `interior` is simple).
+//
+// Always inlined: the callers' loop bodies then see their own local
+// pointers, which is what lets the compiler vectorise them.
 template <int Dim, class Interior, class Boundary>
-void for_each_face(const CellGrid<Dim>& grid, int normal, Interior&& interior,
-                   Boundary&& boundary) {
+[[gnu::always_inline]] inline void for_each_face(const CellGrid<Dim>& grid, int normal,
+                                                 Interior&& interior, Boundary&& boundary) {
   const int s = grid.stride(normal);
   const int n = grid.cells()[normal];
   const int rows = grid.cell_count() / (s * n);
@@ -32,6 +35,29 @@ void for_each_face(const CellGrid<Dim>& grid, int normal, Interior&& interior,
     for (int f = face_row + s; f < face_row + n * s; ++f) {
       interior(f, f - to_upper_cell - s, f - to_upper_cell);
     }
+    for (int f = face_row + n * s; f < face_row + (n + 1) * s; ++f) {
+      boundary(f, f - to_upper_cell - s, true);
+    }
+  }
+}
+
+// The same walk with the interior faces of a row handed over as one run:
+// interior_run(first, end, upper_offset) for the faces first <= f < end,
+// whose upper cell is f - upper_offset and lower cell f - upper_offset - s.
+// For loops that the compiler vectorises only as their own loop (many
+// arrays, see compute_face_velocities).
+template <int Dim, class InteriorRun, class Boundary>
+[[gnu::always_inline]] inline void for_each_face_run(const CellGrid<Dim>& grid, int normal,
+                                                     InteriorRun&& interior_run,
+                                                     Boundary&& boundary) {
+  const int s = grid.stride(normal);
+  const int n = grid.cells()[normal];
+  const int rows = grid.cell_count() / (s * n);
+  for (int outer = 0; outer < rows; ++outer) {
+    const int face_row = outer * s * (n + 1);
+    const int to_upper_cell = s * outer;
+    for (int f = face_row; f < face_row + s; ++f) boundary(f, f - to_upper_cell, false);
+    interior_run(face_row + s, face_row + n * s, to_upper_cell);
     for (int f = face_row + n * s; f < face_row + (n + 1) * s; ++f) {
       boundary(f, f - to_upper_cell - s, true);
     }
