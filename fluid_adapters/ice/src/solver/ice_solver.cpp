@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 
@@ -52,6 +53,99 @@ inline void interior_face_velocities(int first, int end, int upper_offset, int s
     face_u[f] = mean_u + dt * (-v_face * gradient + g);
     face_v[f] = v_face;
   }
+}
+
+// compute_lagrangian_energy's cells first <= c < end of a row along x:
+// the face arrays are offset so that cell c's lower face normal to d is
+// index c and its upper face c + stride[d]. A function of its own, with
+// restrict-qualified outputs, so that the loop vectorises; returns how many
+// cells were left without positive finite internal energy.
+template <int Dim>
+struct LagrangianEnergyRow {
+  std::array<const double*, static_cast<std::size_t>(Dim)> face_pressure{};
+  std::array<const double*, static_cast<std::size_t>(Dim)> face_flux{};
+  std::array<int, static_cast<std::size_t>(Dim)> stride{};
+  std::array<double, static_cast<std::size_t>(Dim)> spacing{};
+  std::array<const double*, static_cast<std::size_t>(Dim)> velocity{};
+  std::array<const double*, static_cast<std::size_t>(Dim)> momentum{};
+};
+
+template <int Dim>
+int lagrangian_energy_row(const LagrangianEnergyRow<Dim>& pointers, int first, int end, double dt,
+                          double c_v, const double* __restrict bulk_density,
+                          const double* __restrict volume_fraction, const double* __restrict kappa,
+                          const double* __restrict pressure_increment,
+                          const double* __restrict new_pressure,
+                          const double* __restrict temperature, double* __restrict energy) {
+  const LagrangianEnergyRow<Dim> row = pointers;  // a local copy: kept in registers
+  // A 64-bit count, as wide as the doubles' lanes, so that it vectorises.
+  std::int64_t refused = 0;
+  for (int c = first; c < end; ++c) {
+    const double rhobar = bulk_density[c];
+    const double phi = volume_fraction[c];
+    double work = 0.0;
+    double volume_flux = 0.0;
+    for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
+      const double p_low = row.face_pressure[d][c];
+      const double p_up = row.face_pressure[d][c + row.stride[d]];
+      const double u = row.velocity[d][c];
+      const double u_mid = u + 0.5 * (row.momentum[d][c] / rhobar - u);
+      const double flux_low = row.face_flux[d][c];
+      const double flux_up = row.face_flux[d][c + row.stride[d]];
+      work += (phi * (p_up - p_low) * u_mid - (p_up * flux_up - p_low * flux_low)) / row.spacing[d];
+      volume_flux += (flux_up - flux_low) / row.spacing[d];
+    }
+    // The material's share of the volume work: its own compression
+    // -phi_f kappa_f dP instead of its volume outflow dt div(phi_f U_f);
+    // the difference sums to zero over the materials by eq. 125.
+    const double share =
+        new_pressure[c] * (phi * kappa[c] * pressure_increment[c] + dt * volume_flux);
+    energy[c] = rhobar * c_v * temperature[c] + dt * work + share;
+    // Positive and finite: 0 < e <= the largest double (comparisons only,
+    // combined with & rather than && so that no branch is needed).
+    const bool positive_finite =
+        (energy[c] > 0.0) & (energy[c] <= std::numeric_limits<double>::max());
+    refused += positive_finite ? 0 : 1;
+  }
+  return refused > 0 ? 1 : 0;
+}
+
+// advect_and_update's pass over one material's cells after its advection:
+// with `total_energy` the kinetic energy the advection dissipated returns
+// to the internal energy, then the bulk density, temperature and specific
+// volume. Restrict-qualified (and branch-free: the quotients of a cell
+// without mass are computed and discarded), so that the loop vectorises;
+// returns how many cells have no positive finite mass or temperature.
+template <int Dim>
+int primitive_variables(std::size_t cells, bool total_energy, double c_v,
+                        const std::array<const double*, static_cast<std::size_t>(Dim)>& momentum,
+                        const double* __restrict mass, const double* __restrict kinetic,
+                        const double* __restrict volume, double* __restrict energy,
+                        double* __restrict bulk_density, double* __restrict temperature,
+                        double* __restrict specific_volume) {
+  constexpr double largest = std::numeric_limits<double>::max();
+  const auto mom = momentum;  // a local copy of the pointers: kept in registers
+  std::int64_t bad = 0;       // as wide as the doubles' lanes, so that it vectorises
+  for (std::size_t c = 0; c < cells; ++c) {
+    const double m = mass[c];
+    double twice = 0.0;
+    for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
+      twice += mom[d][c] * mom[d][c];
+    }
+    const double kinetic_after = 0.5 * twice / m;
+    // Both candidates computed, so the choice is a select.
+    const double returned = energy[c] + (kinetic[c] - kinetic_after);
+    const bool returns = total_energy & (m > 0.0);
+    const double e = returns ? returned : energy[c];
+    energy[c] = e;
+    bulk_density[c] = m;
+    const double t = e / (m * c_v);
+    temperature[c] = t;
+    specific_volume[c] = volume[c] / m;
+    const bool good = (m > 0.0) & (m <= largest) & (t > 0.0) & (t <= largest);
+    bad += good ? 0 : 1;
+  }
+  return bad > 0 ? 1 : 0;
 }
 
 void require(bool condition, const std::string& what) {
@@ -615,42 +709,26 @@ bool IceSolver<Dim>::compute_lagrangian_energy(double dt) {
           },
           [&](int f, int cell, bool) { flux[f] = phi_cell[at(cell)] * u[f]; });
     }
-    bool refused = false;
+    int refused = 0;
     for_each_row(grid_, [&](int first, int length) {
-      std::array<int, static_cast<std::size_t>(Dim)> offset{};
-      for (int d = 0; d < Dim; ++d) offset[at(d)] = lower_face_offset(grid_, d, first);
-      for (int c = first; c < first + length; ++c) {
-        const std::size_t i = at(c);
-        const double rhobar = material.bulk_density[i];
-        const double phi = phi_cell[i];
-        double work = 0.0;
-        double volume_flux = 0.0;
-        for (int d = 0; d < Dim; ++d) {
-          const std::size_t low = at(c + offset[at(d)]);
-          const std::size_t up = low + at(grid_.stride(d));
-          const double p_low = face_pressure_[at(d)][low];
-          const double p_up = face_pressure_[at(d)][up];
-          const double u_mid =
-              material.velocity[at(d)][i] +
-              0.5 * (momentum_[m][at(d)][i] / rhobar - material.velocity[at(d)][i]);
-          const double flux_low = face_flux[at(d)][low];
-          const double flux_up = face_flux[at(d)][up];
-          work += (phi * (p_up - p_low) * u_mid - (p_up * flux_up - p_low * flux_low)) /
-                  grid_.spacing()[d];
-          volume_flux += (flux_up - flux_low) / grid_.spacing()[d];
-        }
-        // The material's share of the volume work: its own compression
-        // -phi_f kappa_f dP instead of its volume outflow dt div(phi_f U_f);
-        // the difference sums to zero over the materials by eq. 125.
-        const double share =
-            new_pressure_[i] * (phi * kappa_[m][i] * pressure_increment_[i] + dt * volume_flux);
-        energy_[m][i] = rhobar * c_v * material.temperature[i] + dt * work + share;
-        // A compression too strong for the step (or work that empties a
-        // trace material) leaves no internal energy: the step is refused.
-        refused = refused || !(energy_[m][i] > 0.0) || !std::isfinite(energy_[m][i]);
+      LagrangianEnergyRow<Dim> row;
+      for (int d = 0; d < Dim; ++d) {
+        const int offset = lower_face_offset(grid_, d, first);
+        row.face_pressure[at(d)] = face_pressure_[at(d)].data() + offset;
+        row.face_flux[at(d)] = face_flux[at(d)].data() + offset;
+        row.stride[at(d)] = grid_.stride(d);
+        row.spacing[at(d)] = grid_.spacing()[d];
+        row.velocity[at(d)] = material.velocity[at(d)].data();
+        row.momentum[at(d)] = momentum_[m][at(d)].data();
       }
+      refused += lagrangian_energy_row(
+          row, first, first + length, dt, c_v, material.bulk_density.data(), phi_cell.data(),
+          kappa_[m].data(), pressure_increment_.data(), new_pressure_.data(),
+          material.temperature.data(), energy_[m].data());
     });
-    if (refused) return false;
+    // A compression too strong for the step (or work that empties a trace
+    // material) leaves no internal energy: the step is refused.
+    if (refused > 0) return false;
   }
   return true;
 }
@@ -795,16 +873,17 @@ void IceSolver<Dim>::advect_and_update(double dt, StepReport& report) {
     // reported by the checking pass below.
     MaterialState<Dim>& material = state_.materials[m];
     const double c_v = eos_[m]->specific_heat();
-    bool bad = false;
-    for (std::size_t c = 0; c < cells; ++c) {
-      const double mass = mass_[m][c];
-      if (total_energy && mass > 0.0) energy_[m][c] += kinetic_[m][c] - kinetic_energy(m, c);
-      material.bulk_density[c] = mass;
-      for (std::size_t d = 0; d < dim; ++d) material.velocity[d][c] = momentum_[m][d][c] / mass;
-      material.temperature[c] = energy_[m][c] / (mass * c_v);
-      material.specific_volume[c] = volume_[m][c] / mass;
-      bad = bad || !(mass > 0.0) || !std::isfinite(mass) || !(material.temperature[c] > 0.0) ||
-            !std::isfinite(material.temperature[c]);
+    std::array<const double*, static_cast<std::size_t>(Dim)> momentum{};
+    for (std::size_t d = 0; d < dim; ++d) momentum[d] = momentum_[m][d].data();
+    const bool bad = primitive_variables<Dim>(
+                         cells, total_energy, c_v, momentum, mass_[m].data(), kinetic_[m].data(),
+                         volume_[m].data(), energy_[m].data(), material.bulk_density.data(),
+                         material.temperature.data(), material.specific_volume.data()) > 0;
+    for (std::size_t d = 0; d < dim; ++d) {
+      double* velocity = material.velocity[d].data();
+      const double* mass = mass_[m].data();
+      const double* mom = momentum[d];
+      for (std::size_t c = 0; c < cells; ++c) velocity[c] = mom[c] / mass[c];
     }
     if (!bad) continue;
     for (std::size_t c = 0; c < cells; ++c) {
