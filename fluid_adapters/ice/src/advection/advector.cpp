@@ -15,19 +15,11 @@ std::size_t size_of(int count) {
   return static_cast<std::size_t>(count);
 }
 
-// The row buffers: n_x differences and n_x + 1 fluxes along x, two cell
-// rows of differences and two face rows of fluxes (stride(d) values each)
-// along another direction d.
+// The buffers along another direction d than x: two cell rows of
+// differences and two face rows of fluxes (stride(d) values each).
 template <int Dim>
-std::size_t difference_buffer_size(const CellGrid<Dim>& grid) {
-  int largest = grid.cells()[0];
-  for (int d = 1; d < Dim; ++d) largest = std::max(largest, 2 * grid.stride(d));
-  return size_of(largest);
-}
-
-template <int Dim>
-std::size_t flux_buffer_size(const CellGrid<Dim>& grid) {
-  int largest = grid.cells()[0] + 1;
+std::size_t plane_buffer_size(const CellGrid<Dim>& grid) {
+  int largest = 0;
   for (int d = 1; d < Dim; ++d) largest = std::max(largest, 2 * grid.stride(d));
   return size_of(largest);
 }
@@ -49,8 +41,10 @@ Advector<Dim>::Advector(const CellGrid<Dim>& grid, Limiter limiter)
     : grid_(grid),
       limiter_(limiter),
       courant_(make_face_field(grid)),
-      difference_(difference_buffer_size(grid), 0.0),
-      flux_(flux_buffer_size(grid), 0.0),
+      row_difference_(size_of(grid.cells()[0]), 0.0),
+      row_flux_(size_of(grid.cells()[0] + 1), 0.0),
+      difference_(plane_buffer_size(grid), 0.0),
+      flux_(plane_buffer_size(grid), 0.0),
       change_(size_of(grid.cell_count()), 0.0) {}
 
 template <int Dim>
@@ -121,48 +115,48 @@ void Advector<Dim>::set_face_courant_numbers(const FaceField<Dim>& face_velocity
 template <int Dim>
 template <Limiter limiter>
 void Advector<Dim>::advance_field(std::span<double> q) {
-  add_row_fluxes<limiter>(q, Dim == 1);
-  if constexpr (Dim > 1) {
-    for (int d = 1; d < Dim; ++d) add_plane_fluxes<limiter>(q, d, d == Dim - 1);
+  if constexpr (Dim == 1) {
+    for (int row = 0; row < grid_.cell_count() / grid_.cells()[0]; ++row) {
+      add_row_fluxes<limiter>(q, row, true);
+    }
+  } else {
+    // Along y the rows along x are set as they are reached (one pass).
+    add_plane_fluxes<limiter>(q, 1, Dim == 2);
+    if constexpr (Dim == 3) add_plane_fluxes<limiter>(q, 2, true);
   }
 }
 
-// Along x (stride 1), row by row: the row's limited differences, then its
-// n + 1 face fluxes (the end faces carry the end cells' values: zero-gradient
-// ghosts, whose differences are zero too), then the cells' changes.
+// Along x (stride 1), row `row`: its limited differences, then its n + 1
+// face fluxes (the end faces carry the end cells' values: zero-gradient
+// ghosts, whose differences are zero too), then the cells' changes (the
+// first direction: change = 0 + ...).
 template <int Dim>
 template <Limiter limiter>
-void Advector<Dim>::add_row_fluxes(std::span<double> q, bool last) {
+void Advector<Dim>::add_row_fluxes(std::span<double> q, int row, bool last) {
   const int n = grid_.cells()[0];
-  const int rows = grid_.cell_count() / n;
-  double* difference = difference_.data();
-  double* flux = flux_.data();
-  double* change = change_.data();
-  double* values = q.data();
-  for (int outer = 0; outer < rows; ++outer) {
-    const double* value = values + outer * n;
-    const double* courant = courant_[0].data() + outer * (n + 1);
-    difference[0] = 0.0;
-    difference[n - 1] = 0.0;
-    if constexpr (limiter != Limiter::first_order) {
-      for (int i = 1; i < n - 1; ++i) {
-        difference[i] =
-            limited_difference<limiter>(value[i] - value[i - 1], value[i + 1] - value[i]);
-      }
-    } else {
-      for (int i = 1; i < n - 1; ++i) difference[i] = 0.0;
+  double* difference = row_difference_.data();
+  double* flux = row_flux_.data();
+  double* values = q.data() + row * n;
+  const double* value = values;
+  const double* courant = courant_[0].data() + row * (n + 1);
+  difference[0] = 0.0;
+  difference[n - 1] = 0.0;
+  if constexpr (limiter != Limiter::first_order) {
+    for (int i = 1; i < n - 1; ++i) {
+      difference[i] = limited_difference<limiter>(value[i] - value[i - 1], value[i + 1] - value[i]);
     }
-    flux[0] = courant[0] * value[0];
-    for (int f = 1; f < n; ++f) {
-      flux[f] = face_flux(courant[f], value[f - 1], difference[f - 1], value[f], difference[f]);
-    }
-    flux[n] = courant[n] * value[n - 1];
-    double* cell_change = change + outer * n;
-    for (int i = 0; i < n; ++i) cell_change[i] = 0.0 + (flux[i] - flux[i + 1]);
-    if (last) {
-      double* row_values = values + outer * n;
-      for (int i = 0; i < n; ++i) row_values[i] += cell_change[i];
-    }
+  } else {
+    for (int i = 1; i < n - 1; ++i) difference[i] = 0.0;
+  }
+  flux[0] = courant[0] * value[0];
+  for (int f = 1; f < n; ++f) {
+    flux[f] = face_flux(courant[f], value[f - 1], difference[f - 1], value[f], difference[f]);
+  }
+  flux[n] = courant[n] * value[n - 1];
+  double* cell_change = change_.data() + row * n;
+  for (int i = 0; i < n; ++i) cell_change[i] = 0.0 + (flux[i] - flux[i + 1]);
+  if (last) {
+    for (int i = 0; i < n; ++i) values[i] += cell_change[i];
   }
 }
 
@@ -171,6 +165,9 @@ void Advector<Dim>::add_row_fluxes(std::span<double> q, bool last) {
 // differences of the current and previous cell rows and the fluxes of the
 // last face row in buffers of s values. Face row i lies between cell rows
 // i - 1 and i; once its fluxes are known, cell row i - 1 is complete.
+// Along y (d = 1, s = n_x) cell row i is one row along x, whose x fluxes
+// are added first when the walk reaches it: it is complete along x before
+// the y fluxes add to it, and q is read once.
 template <int Dim>
 template <Limiter limiter>
 void Advector<Dim>::add_plane_fluxes(std::span<double> q, int direction, bool last) {
@@ -189,6 +186,7 @@ void Advector<Dim>::add_plane_fluxes(std::span<double> q, int direction, bool la
     const double* courant = courant_[direction].data() + outer * s * (n + 1);
     for (int inner = 0; inner < s; ++inner) previous_flux[inner] = courant[inner] * value[inner];
     for (int i = 0; i < n; ++i) {
+      if (direction == 1) add_row_fluxes<limiter>(q, outer * n + i, false);
       // This cell row's limited differences (zero at the ends).
       double* v = value + i * s;
       if (limiter == Limiter::first_order || i == 0 || i == n - 1) {

@@ -68,11 +68,11 @@ class Advector {
   void set_face_courant_numbers(const FaceField<Dim>& face_velocity, double dt);
   template <Limiter limiter>
   void advance_field(std::span<double> q);
-  // The fluxes along x (the first direction: change_ is set) and along
-  // direction > 0 (change_ accumulates); `last`: q += change_ as each cell
-  // row is complete.
+  // The fluxes along x of one row (the first direction: change_ is set)
+  // and along direction > 0 (change_ accumulates; along y each row's x
+  // fluxes first); `last`: q += change_ as each cell row is complete.
   template <Limiter limiter>
-  void add_row_fluxes(std::span<double> q, bool last);
+  void add_row_fluxes(std::span<double> q, int row, bool last);
   template <Limiter limiter>
   void add_plane_fluxes(std::span<double> q, int direction, bool last);
 
@@ -80,9 +80,11 @@ class Advector {
   Limiter limiter_;
   // Per face, the signed Courant number U dt / dx_d of the current step.
   FaceField<Dim> courant_;
-  // Row buffers: the limited differences along the current direction of
-  // one row along x, or of two cell rows along another direction, and the
-  // fluxes q_face U dt / dx_d of one face row along x, or two along another.
+  // Row buffers: the limited differences and the fluxes q_face U dt / dx_d
+  // of one row along x; along another direction those of two cell rows and
+  // two face rows.
+  std::vector<double> row_difference_;
+  std::vector<double> row_flux_;
   std::vector<double> difference_;
   std::vector<double> flux_;
   // Per cell, the net inflow over the step per unit volume.
