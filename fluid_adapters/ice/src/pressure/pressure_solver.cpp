@@ -328,8 +328,8 @@ PressureSolution PressureSolver<Dim>::run_multigrid(std::span<double> pressure_i
     mg.apply(padded_residual_, padded_preconditioned_);
     double rz = r.dot(z);
     s = z;
+    mg.multiply(padded_direction_, padded_product_);
     while (result.iterations < options_.max_iterations) {
-      mg.multiply(padded_direction_, padded_product_);
       const double step = rz / s.dot(q);
       // x += step s and r -= step q in one pass.
       double* xv = x.data();
@@ -344,7 +344,9 @@ PressureSolution PressureSolver<Dim>::run_multigrid(std::span<double> pressure_i
       if (!(r.squaredNorm() >= threshold2)) break;
       mg.apply(padded_residual_, padded_preconditioned_);
       const double rz_next = r.dot(z);
-      s = z + (rz_next / rz) * s;
+      // s = z + beta s and q = A s of the next iteration, in one pass.
+      mg.update_and_multiply(padded_preconditioned_, rz_next / rz, padded_direction_,
+                             padded_product_);
       rz = rz_next;
     }
     residual2 = true_residual2();

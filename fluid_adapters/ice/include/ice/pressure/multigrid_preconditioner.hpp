@@ -91,6 +91,10 @@ class MultigridPreconditioner {
 
   // y = A x on the finest level (padded vectors).
   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
+  // s = z + beta s, then y = A s (the conjugate-gradient direction and its
+  // product), in one pass; the same values as the two steps.
+  void update_and_multiply(const Eigen::VectorXd& z, double beta, Eigen::VectorXd& s,
+                           Eigen::VectorXd& y) const;
 
   // z = M^{-1} r, one cycle from z = 0 (padded vectors).
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z);
