@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 #include <numeric>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -242,6 +243,48 @@ TEST(PressureEquilibration, BatchedMatchesCellByCell) {
   // The previous pressures as guesses: converged cells need no iteration.
   const EquilibratedCells again = equilibrate_pressure(materials, n, cells.pressure);
   EXPECT_EQ(again.most_iterations, 0);
+}
+
+// The batched solve over many cells (all evaluated together while most
+// iterate, the last ones one by one; cells with an absent material through
+// the one-cell path) gives each cell the one-cell result to the bit.
+TEST(PressureEquilibration, BatchedMatchesCellByCellOnManyRandomCells) {
+  std::mt19937 rng(7u);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const std::size_t cells = 2000;
+  std::vector<double> n(cells), air_bulk(cells), water_bulk(cells), air_T(cells), water_T(cells),
+      guess(cells);
+  for (std::size_t c = 0; c < cells; ++c) {
+    n[c] = c % 3 == 0 ? 1.0 : 0.2 + 0.8 * u(rng);
+    const double p = 1e5 * (0.5 + u(rng));
+    const bool no_air = c % 97 == 0;
+    const double water_fraction =
+        no_air ? 1.0 : (c % 5 == 0 ? 1e-6 : (c % 5 == 1 ? 1.0 - 1e-6 : u(rng)));
+    air_T[c] = 250.0 + 100.0 * u(rng);
+    water_T[c] = 275.0 + 60.0 * u(rng);
+    air_bulk[c] = (1.0 - water_fraction) * n[c] * kAir.density(p, air_T[c]);
+    water_bulk[c] = water_fraction * n[c] * kWater.density(p, water_T[c]);
+    // Guesses from close (most cells) to far off (a few need many steps).
+    guess[c] = c % 50 == 0 ? 1e7 : p * (1.0 + 0.01 * (u(rng) - 0.5));
+  }
+  const std::vector<MaterialCells> materials{{&kAir, air_bulk, air_T},
+                                             {&kWater, water_bulk, water_T}};
+  EquilibratedCells batched;
+  equilibrate_pressure(materials, n, guess, {}, batched);
+  int most = 0;
+  for (std::size_t c = 0; c < cells; ++c) {
+    const std::vector<double> bulk{air_bulk[c], water_bulk[c]}, temperature{air_T[c], water_T[c]};
+    const CellEquilibrium one = equilibrate_pressure(kAirWater, bulk, temperature, n[c], guess[c]);
+    ASSERT_EQ(batched.pressure[c], one.pressure) << c;
+    for (std::size_t f = 0; f < 2; ++f) {
+      ASSERT_EQ(batched.density[f][c], one.density[f]) << c;
+      ASSERT_EQ(batched.volume_fraction[f][c], one.volume_fraction[f]) << c;
+      ASSERT_EQ(batched.compressibility[f][c], one.compressibility[f]) << c;
+    }
+    most = std::max(most, one.iterations);
+  }
+  EXPECT_EQ(batched.most_iterations, most);
+  std::cout << "    " << cells << " cells, most iterations " << most << '\n';
 }
 
 TEST(PressureEquilibration, BatchedErrorNamesTheCell) {

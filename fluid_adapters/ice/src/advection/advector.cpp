@@ -15,13 +15,23 @@ std::size_t size_of(int count) {
   return static_cast<std::size_t>(count);
 }
 
+// The buffers along another direction d than x: two cell rows of
+// differences and two face rows of fluxes (stride(d) values each).
 template <int Dim>
-int largest_face_count(const CellGrid<Dim>& grid) {
+std::size_t plane_buffer_size(const CellGrid<Dim>& grid) {
   int largest = 0;
-  for (int d = 0; d < Dim; ++d) {
-    largest = std::max(largest, grid.face_count(d));
-  }
-  return largest;
+  for (int d = 1; d < Dim; ++d) largest = std::max(largest, 2 * grid.stride(d));
+  return size_of(largest);
+}
+
+// The donor's profile at the centroid of the slab leaving through a face of
+// Courant number nu, between the lower cell (value, limited difference) and
+// the upper one; both candidates computed, so the choice is a select.
+inline double face_flux(double nu, double lower, double lower_difference, double upper,
+                        double upper_difference) {
+  const double from_lower = lower + 0.5 * (1.0 - nu) * lower_difference;
+  const double from_upper = upper - 0.5 * (1.0 + nu) * upper_difference;
+  return nu * (nu >= 0.0 ? from_lower : from_upper);
 }
 
 }  // namespace
@@ -31,8 +41,10 @@ Advector<Dim>::Advector(const CellGrid<Dim>& grid, Limiter limiter)
     : grid_(grid),
       limiter_(limiter),
       courant_(make_face_field(grid)),
-      difference_(size_of(grid.cell_count()), 0.0),
-      flux_(size_of(largest_face_count(grid)), 0.0),
+      row_difference_(size_of(grid.cells()[0]), 0.0),
+      row_flux_(size_of(grid.cells()[0] + 1), 0.0),
+      difference_(plane_buffer_size(grid), 0.0),
+      flux_(plane_buffer_size(grid), 0.0),
       change_(size_of(grid.cell_count()), 0.0) {}
 
 template <int Dim>
@@ -93,85 +105,126 @@ void Advector<Dim>::set_face_courant_numbers(const FaceField<Dim>& face_velocity
   }
 }
 
+// One field: the fluxes of each direction in turn (the differences limited
+// on the fly, row by row in small buffers), accumulated per cell as
+// change_c += (flux_lower face - flux_upper face), then q += change. The
+// last direction adds the change to a cell row as soon as it is complete:
+// what is read later (the rows above) is still the old q. Each cell and face
+// gets exactly the operations of the direction-by-direction form, in the
+// same order (the first direction's change starts from 0 + ...).
 template <int Dim>
 template <Limiter limiter>
 void Advector<Dim>::advance_field(std::span<double> q) {
-  std::fill(change_.begin(), change_.end(), 0.0);
-  for (int d = 0; d < Dim; ++d) {
-    // first_order keeps the zero differences of construction.
-    if constexpr (limiter != Limiter::first_order) {
-      set_limited_differences<limiter>(q, d);
+  if constexpr (Dim == 1) {
+    for (int row = 0; row < grid_.cell_count() / grid_.cells()[0]; ++row) {
+      add_row_fluxes<limiter>(q, row, true);
     }
-    add_face_fluxes(q, d);
-  }
-  for (std::size_t c = 0; c < q.size(); ++c) {
-    q[c] += change_[c];
+  } else {
+    // Along y the rows along x are set as they are reached (one pass).
+    add_plane_fluxes<limiter>(q, 1, Dim == 2);
+    if constexpr (Dim == 3) add_plane_fluxes<limiter>(q, 2, true);
   }
 }
 
-// Cells are visited as rows along `direction`: cell i of row `outer` at
-// offset `inner` is outer s n + i s + inner (s = stride, n = cells along the
-// direction), so the cells of a row, and those away from its ends, are
-// contiguous ranges; each loop below runs over one such range.
+// Along x (stride 1), row `row`: its limited differences, then its n + 1
+// face fluxes (the end faces carry the end cells' values: zero-gradient
+// ghosts, whose differences are zero too), then the cells' changes (the
+// first direction: change = 0 + ...).
 template <int Dim>
 template <Limiter limiter>
-void Advector<Dim>::set_limited_differences(std::span<const double> q, int direction) {
-  const int s = grid_.stride(direction);
-  const int n = grid_.cells()[direction];
-  const int rows = grid_.cell_count() / (s * n);
-  const double* value = q.data();
-  double* difference = difference_.data();
-  for (int outer = 0; outer < rows; ++outer) {
-    const int row = outer * s * n;
-    // The zero-gradient ghosts make a boundary cell's difference zero.
-    std::fill_n(difference + row, s, 0.0);
-    std::fill_n(difference + row + (n - 1) * s, s, 0.0);
-    for (int c = row + s; c < row + (n - 1) * s; ++c) {
-      difference[c] = limited_difference<limiter>(value[c] - value[c - s], value[c + s] - value[c]);
+void Advector<Dim>::add_row_fluxes(std::span<double> q, int row, bool last) {
+  const int n = grid_.cells()[0];
+  double* difference = row_difference_.data();
+  double* flux = row_flux_.data();
+  double* values = q.data() + row * n;
+  const double* value = values;
+  const double* courant = courant_[0].data() + row * (n + 1);
+  difference[0] = 0.0;
+  difference[n - 1] = 0.0;
+  if constexpr (limiter != Limiter::first_order) {
+    for (int i = 1; i < n - 1; ++i) {
+      difference[i] = limited_difference<limiter>(value[i] - value[i - 1], value[i + 1] - value[i]);
     }
+  } else {
+    for (int i = 1; i < n - 1; ++i) difference[i] = 0.0;
+  }
+  flux[0] = courant[0] * value[0];
+  for (int f = 1; f < n; ++f) {
+    flux[f] = face_flux(courant[f], value[f - 1], difference[f - 1], value[f], difference[f]);
+  }
+  flux[n] = courant[n] * value[n - 1];
+  double* cell_change = change_.data() + row * n;
+  for (int i = 0; i < n; ++i) cell_change[i] = 0.0 + (flux[i] - flux[i + 1]);
+  if (last) {
+    for (int i = 0; i < n; ++i) values[i] += cell_change[i];
   }
 }
 
-// Face i of row `outer` is outer s (n + 1) + i s + inner, between cells i - 1
-// and i of the row: face f of a row starting at cell `row` has the lower cell
-// f - s (outer + 1) and the upper cell f - s outer. One flux per face, then
-// each cell takes the difference of its two faces' fluxes, so what leaves
-// one cell enters its neighbour exactly.
+// Along direction d > 0 (stride s): cells i s + inner of a row, for
+// 0 <= inner < s, are contiguous, so the loops run over `inner` with the
+// differences of the current and previous cell rows and the fluxes of the
+// last face row in buffers of s values. Face row i lies between cell rows
+// i - 1 and i; once its fluxes are known, cell row i - 1 is complete.
+// Along y (d = 1, s = n_x) cell row i is one row along x, whose x fluxes
+// are added first when the walk reaches it: it is complete along x before
+// the y fluxes add to it, and q is read once.
 template <int Dim>
-void Advector<Dim>::add_face_fluxes(std::span<const double> q, int direction) {
+template <Limiter limiter>
+void Advector<Dim>::add_plane_fluxes(std::span<double> q, int direction, bool last) {
   const int s = grid_.stride(direction);
   const int n = grid_.cells()[direction];
   const int rows = grid_.cell_count() / (s * n);
-  const double* value = q.data();
-  const double* courant = courant_[direction].data();
-  const double* difference = difference_.data();
-  double* flux = flux_.data();
+  double* values = q.data();
   double* change = change_.data();
+  double* previous_difference = difference_.data();
+  double* current_difference = difference_.data() + s;
+  double* previous_flux = flux_.data();
+  double* current_flux = flux_.data() + s;
   for (int outer = 0; outer < rows; ++outer) {
-    const int face_row = outer * s * (n + 1);
-    const int to_upper_cell = s * outer;
-    const int to_lower_cell = to_upper_cell + s;
-    // The boundary faces carry the boundary cell's value (zero-gradient ghost).
-    for (int f = face_row; f < face_row + s; ++f) {
-      flux[f] = courant[f] * value[f - to_upper_cell];
+    double* value = values + outer * s * n;  // cell i s + inner of this row
+    double* cell_change = change + outer * s * n;
+    const double* courant = courant_[direction].data() + outer * s * (n + 1);
+    for (int inner = 0; inner < s; ++inner) previous_flux[inner] = courant[inner] * value[inner];
+    for (int i = 0; i < n; ++i) {
+      if (direction == 1) add_row_fluxes<limiter>(q, outer * n + i, false);
+      // This cell row's limited differences (zero at the ends).
+      double* v = value + i * s;
+      if (limiter == Limiter::first_order || i == 0 || i == n - 1) {
+        for (int inner = 0; inner < s; ++inner) current_difference[inner] = 0.0;
+      } else {
+        for (int inner = 0; inner < s; ++inner) {
+          current_difference[inner] =
+              limited_difference<limiter>(v[inner] - v[inner - s], v[inner + s] - v[inner]);
+        }
+      }
+      if (i > 0) {
+        // Face row i, then cell row i - 1 is complete.
+        const double* nu = courant + i * s;
+        double* lower = value + (i - 1) * s;
+        double* lower_change = cell_change + (i - 1) * s;
+        for (int inner = 0; inner < s; ++inner) {
+          current_flux[inner] = face_flux(nu[inner], lower[inner], previous_difference[inner],
+                                          v[inner], current_difference[inner]);
+        }
+        for (int inner = 0; inner < s; ++inner) {
+          lower_change[inner] += previous_flux[inner] - current_flux[inner];
+        }
+        std::swap(previous_flux, current_flux);
+        if (last) {
+          for (int inner = 0; inner < s; ++inner) lower[inner] += lower_change[inner];
+        }
+      }
+      std::swap(previous_difference, current_difference);
     }
-    for (int f = face_row + s; f < face_row + n * s; ++f) {
-      const int l = f - to_lower_cell;
-      const int r = f - to_upper_cell;
-      const double nu = courant[f];
-      // The donor's profile at the centroid of the slab leaving through
-      // the face; both candidates computed, so the choice is a select.
-      const double from_lower = value[l] + 0.5 * (1.0 - nu) * difference[l];
-      const double from_upper = value[r] - 0.5 * (1.0 + nu) * difference[r];
-      flux[f] = nu * (nu >= 0.0 ? from_lower : from_upper);
+    // The upper boundary face row carries the last cell row's values.
+    const double* nu = courant + n * s;
+    double* top = value + (n - 1) * s;
+    double* top_change = cell_change + (n - 1) * s;
+    for (int inner = 0; inner < s; ++inner) {
+      top_change[inner] += previous_flux[inner] - nu[inner] * top[inner];
     }
-    for (int f = face_row + n * s; f < face_row + (n + 1) * s; ++f) {
-      flux[f] = courant[f] * value[f - to_lower_cell];
-    }
-    const int row = outer * s * n;
-    for (int c = row; c < row + n * s; ++c) {
-      const int lower = c + to_upper_cell;
-      change[c] += flux[lower] - flux[lower + s];
+    if (last) {
+      for (int inner = 0; inner < s; ++inner) top[inner] += top_change[inner];
     }
   }
 }

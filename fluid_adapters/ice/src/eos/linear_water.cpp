@@ -37,27 +37,6 @@ LinearWater::LinearWater(const LinearWaterParameters& p)
           p.specific_heat);
 }
 
-// Tran et al., MPMICE, eq. 35
-double LinearWater::pressure(double density, double temperature) const {
-  return parameters_.reference_pressure +
-         stiffness_ * (density - parameters_.reference_density +
-                       thermal_density_slope_ * (temperature - parameters_.reference_temperature));
-}
-
-double LinearWater::density_at_reference_pressure(double temperature) const {
-  return parameters_.reference_density -
-         thermal_density_slope_ * (temperature - parameters_.reference_temperature);
-}
-
-double LinearWater::density(double pressure, double temperature) const {
-  return density_at_reference_pressure(temperature) +
-         (pressure - parameters_.reference_pressure) / stiffness_;
-}
-
-double LinearWater::minimum_pressure(double temperature) const {
-  return parameters_.reference_pressure - stiffness_ * density_at_reference_pressure(temperature);
-}
-
 Schema LinearWater::schema() {
   const LinearWaterParameters defaults;
   Schema schema = Schema::object(

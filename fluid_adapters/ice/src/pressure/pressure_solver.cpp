@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "cosim/error.hpp"
+#include "ice/grid/face_walk.hpp"
 
 namespace ice {
 
@@ -36,12 +38,15 @@ void require_positive_time_step(double dt) {
   }
 }
 
-void require_positive_density(double rho, int direction, int face) {
-  if (!(rho > 0.0) || !std::isfinite(rho)) {
-    throw std::invalid_argument("PressureSolver: face density must be positive and finite, got " +
-                                std::to_string(rho) + " on face " + std::to_string(face) +
-                                " normal to direction " + std::to_string(direction));
-  }
+[[noreturn]] void throw_bad_density(double rho, int direction, int face) {
+  throw std::invalid_argument("PressureSolver: face density must be positive and finite, got " +
+                              std::to_string(rho) + " on face " + std::to_string(face) +
+                              " normal to direction " + std::to_string(direction));
+}
+
+// Per face: the message is built out of line.
+inline void require_positive_density(double rho, int direction, int face) {
+  if (!(rho > 0.0) || !std::isfinite(rho)) throw_bad_density(rho, direction, face);
 }
 
 }  // namespace
@@ -148,44 +153,86 @@ PressureSolver<Dim>::PressureSolver(const CellGrid<Dim>& grid, const Boundaries&
   }
 }
 
-template <int Dim>
-bool PressureSolver<Dim>::is_fixed_pressure(int direction, int face) const {
-  const int side = face_cells_[direction][face][0] < 0 ? 2 * direction : 2 * direction + 1;
-  return boundaries_[side] == PressureBoundary::fixed_pressure;
-}
-
-// Tran et al., MPMICE, eq. 125 times V.
+// Tran et al., MPMICE, eq. 125 times V: into the sparse matrix, or for the
+// multigrid straight into its diagonal and couplings (T = -A_c,c+s), with the
+// diagonal summed in the same order; matrix() then fills the sparse values
+// from those when asked.
 template <int Dim>
 void PressureSolver<Dim>::assemble(std::span<const double> kappa,
                                    const FaceField<Dim>& face_density, double dt) {
-  double* values = matrix_.valuePtr();
-  std::fill(values, values + matrix_.nonZeros(), 0.0);
   const double volume = grid_.cell_volume();
   for (int c = 0; c < grid_.cell_count(); ++c) {
     if (!(kappa[c] > 0.0) || !std::isfinite(kappa[c])) {
       throw std::invalid_argument("PressureSolver: kappa must be positive and finite, got " +
                                   std::to_string(kappa[c]) + " in cell " + std::to_string(c));
     }
-    values[diagonal_entry_[c]] = kappa[c] * volume / dt;
   }
+  require_entering_densities(face_density);
+  if (multigrid_) {
+    MultigridPreconditioner<Dim>& mg = *multigrid_;
+    for (int c = 0; c < grid_.cell_count(); ++c) mg.diagonal(c) = kappa[c] * volume / dt;
+    for (int d = 0; d < Dim; ++d) {
+      const double area_over_spacing_dt = grid_.face_area(d) / grid_.spacing()[d] * dt;
+      const std::vector<double>& rho = face_density[d];
+      for_each_face(
+          grid_, d,
+          [&](int f, int lower, int upper) {
+            const double t = area_over_spacing_dt / rho[f];
+            mg.diagonal(lower) += t;
+            mg.diagonal(upper) += t;
+            mg.coupling(d, lower) = t;
+          },
+          [&](int f, int cell, bool upper_side) {
+            if (boundaries_[2 * d + (upper_side ? 1 : 0)] != PressureBoundary::fixed_pressure) {
+              return;
+            }
+            mg.diagonal(cell) += 2.0 * area_over_spacing_dt / rho[f];
+          });
+    }
+    matrix_current_ = false;
+    return;
+  }
+  double* values = matrix_.valuePtr();
+  std::fill(values, values + matrix_.nonZeros(), 0.0);
+  for (int c = 0; c < grid_.cell_count(); ++c) values[diagonal_entry_[c]] = kappa[c] * volume / dt;
   for (int d = 0; d < Dim; ++d) {
     const double area_over_spacing_dt = grid_.face_area(d) / grid_.spacing()[d] * dt;
     const std::vector<double>& rho = face_density[d];
-    for (int f = 0; f < grid_.face_count(d); ++f) {
-      const auto [lower, upper] = face_cells_[d][f];
-      if (lower >= 0 && upper >= 0) {
-        require_positive_density(rho[f], d, f);
-        const double t = area_over_spacing_dt / rho[f];
-        values[diagonal_entry_[lower]] += t;
-        values[diagonal_entry_[upper]] += t;
-        values[lower_upper_entry_[d][f]] -= t;
-        values[upper_lower_entry_[d][f]] -= t;
-      } else if (is_fixed_pressure(d, f)) {
-        require_positive_density(rho[f], d, f);
-        values[diagonal_entry_[lower >= 0 ? lower : upper]] += 2.0 * area_over_spacing_dt / rho[f];
+    for_each_face(
+        grid_, d,
+        [&](int f, int lower, int upper) {
+          const double t = area_over_spacing_dt / rho[f];
+          values[diagonal_entry_[lower]] += t;
+          values[diagonal_entry_[upper]] += t;
+          values[lower_upper_entry_[d][f]] -= t;
+          values[upper_lower_entry_[d][f]] -= t;
+        },
+        [&](int f, int cell, bool upper_side) {
+          if (boundaries_[2 * d + (upper_side ? 1 : 0)] != PressureBoundary::fixed_pressure) return;
+          values[diagonal_entry_[cell]] += 2.0 * area_over_spacing_dt / rho[f];
+        });
+  }
+}
+
+template <int Dim>
+const Eigen::SparseMatrix<double>& PressureSolver<Dim>::matrix() const {
+  if (!matrix_current_) {
+    // The multigrid's operator as the sparse values: A_cc = D_c,
+    // A_c,c+s = A_c+s,c = -T (0 - T, as the sparse assembly forms it).
+    const MultigridPreconditioner<Dim>& mg = *multigrid_;
+    double* values = matrix_.valuePtr();
+    for (int c = 0; c < grid_.cell_count(); ++c) values[diagonal_entry_[c]] = mg.diagonal(c);
+    for (int d = 0; d < Dim; ++d) {
+      for (int f = 0; f < grid_.face_count(d); ++f) {
+        if (lower_upper_entry_[d][f] < 0) continue;
+        const double t = mg.coupling(d, face_cells_[d][f][0]);
+        values[lower_upper_entry_[d][f]] = 0.0 - t;
+        values[upper_lower_entry_[d][f]] = 0.0 - t;
       }
     }
+    matrix_current_ = true;
   }
+  return matrix_;
 }
 
 // -V div_c U*_FC.
@@ -202,9 +249,13 @@ void PressureSolver<Dim>::set_right_hand_side(const FaceField<Dim>& predicted_ve
             " normal to direction " + std::to_string(d));
       }
     }
-    for (int c = 0; c < grid_.cell_count(); ++c) {
-      right_hand_side_[c] -= area * (u[grid_.upper_face(d, c)] - u[grid_.lower_face(d, c)]);
-    }
+    for_each_row(grid_, [&](int first, int length) {
+      const double* lower = u.data() + lower_face_offset(grid_, d, first);
+      const double* upper = lower + grid_.stride(d);
+      for (int c = first; c < first + length; ++c) {
+        right_hand_side_[c] -= area * (upper[c] - lower[c]);
+      }
+    });
   }
 }
 
@@ -248,18 +299,7 @@ void PressureSolver<Dim>::throw_not_converged(const PressureSolution& result) co
 template <int Dim>
 PressureSolution PressureSolver<Dim>::run_multigrid(std::span<double> pressure_increment) {
   MultigridPreconditioner<Dim>& mg = *multigrid_;
-  const double* values = matrix_.valuePtr();
-  for (int c = 0; c < grid_.cell_count(); ++c) {
-    mg.diagonal(c) = values[diagonal_entry_[c]];
-  }
-  for (int d = 0; d < Dim; ++d) {
-    for (int f = 0; f < grid_.face_count(d); ++f) {
-      if (lower_upper_entry_[d][f] >= 0) {
-        mg.coupling(d, face_cells_[d][f][0]) = -values[lower_upper_entry_[d][f]];
-      }
-    }
-  }
-  mg.update();
+  mg.update();  // assemble() wrote its finest operator
 
   const Eigen::Index n = grid_.cell_count();
   const Eigen::Index p = mg.padding();
@@ -288,16 +328,25 @@ PressureSolution PressureSolver<Dim>::run_multigrid(std::span<double> pressure_i
     mg.apply(padded_residual_, padded_preconditioned_);
     double rz = r.dot(z);
     s = z;
+    mg.multiply(padded_direction_, padded_product_);
     while (result.iterations < options_.max_iterations) {
-      mg.multiply(padded_direction_, padded_product_);
       const double step = rz / s.dot(q);
-      x += step * s;
-      r -= step * q;
+      // x += step s and r -= step q in one pass.
+      double* xv = x.data();
+      double* rv = r.data();
+      const double* sv = s.data();
+      const double* qv = q.data();
+      for (Eigen::Index c = 0; c < n; ++c) {
+        xv[c] += step * sv[c];
+        rv[c] -= step * qv[c];
+      }
       ++result.iterations;
       if (!(r.squaredNorm() >= threshold2)) break;
       mg.apply(padded_residual_, padded_preconditioned_);
       const double rz_next = r.dot(z);
-      s = z + (rz_next / rz) * s;
+      // s = z + beta s and q = A s of the next iteration, in one pass.
+      mg.update_and_multiply(padded_preconditioned_, rz_next / rz, padded_direction_,
+                             padded_product_);
       rz = rz_next;
     }
     residual2 = true_residual2();
@@ -344,24 +393,57 @@ void PressureSolver<Dim>::correct_face_velocities(const FaceField<Dim>& face_den
   require_face_field_sizes(grid_, face_density, "face density");
   require_face_field_sizes(grid_, face_velocity, "face velocity");
   require_positive_time_step(dt);
+  require_entering_densities(face_density);
   for (int d = 0; d < Dim; ++d) {
     const double dx = grid_.spacing()[d];
+    const double* rho = face_density[d].data();
+    double* u = face_velocity[d].data();
+    const double* dp = pressure_increment.data();
+    for_each_face(
+        grid_, d,
+        [&](int f, int lower, int upper) {
+          const double gradient = (dp[upper] - dp[lower]) / dx;
+          u[f] -= dt / rho[f] * gradient;
+        },
+        [&](int f, int cell, bool upper_side) {
+          if (boundaries_[2 * d + (upper_side ? 1 : 0)] != PressureBoundary::fixed_pressure) return;
+          const double gradient = upper_side ? -dp[cell] / (0.5 * dx) : dp[cell] / (0.5 * dx);
+          u[f] -= dt / rho[f] * gradient;
+        });
+  }
+}
+
+// Every face density that enters (interior and fixed_pressure faces) is
+// positive and finite; otherwise the first bad one, in face order, is
+// reported. A branch-free pass, so the loops using them need no check.
+template <int Dim>
+void PressureSolver<Dim>::require_entering_densities(const FaceField<Dim>& face_density) const {
+  int bad = 0;
+  for (int d = 0; d < Dim; ++d) {
+    const double* rho = face_density[d].data();
+    // Positive and finite is 0 < value <= the largest double (NaN fails
+    // both): comparisons only, which vectorise.
+    const auto is_bad = [](double value) {
+      return !(value > 0.0 && value <= std::numeric_limits<double>::max());
+    };
+    for_each_face(
+        grid_, d, [&](int f, int, int) { bad += is_bad(rho[f]) ? 1 : 0; },
+        [&](int f, int, bool upper_side) {
+          if (boundaries_[2 * d + (upper_side ? 1 : 0)] == PressureBoundary::fixed_pressure) {
+            bad += is_bad(rho[f]) ? 1 : 0;
+          }
+        });
+  }
+  if (bad == 0) return;
+  for (int d = 0; d < Dim; ++d) {
     const std::vector<double>& rho = face_density[d];
-    std::vector<double>& u = face_velocity[d];
-    for (int f = 0; f < grid_.face_count(d); ++f) {
-      const auto [lower, upper] = face_cells_[d][f];
-      double gradient = 0.0;
-      if (lower >= 0 && upper >= 0) {
-        gradient = (pressure_increment[upper] - pressure_increment[lower]) / dx;
-      } else if (is_fixed_pressure(d, f)) {
-        gradient = lower >= 0 ? -pressure_increment[lower] / (0.5 * dx)
-                              : pressure_increment[upper] / (0.5 * dx);
-      } else {
-        continue;
-      }
-      require_positive_density(rho[f], d, f);
-      u[f] -= dt / rho[f] * gradient;
-    }
+    for_each_face(
+        grid_, d, [&](int f, int, int) { require_positive_density(rho[f], d, f); },
+        [&](int f, int, bool upper_side) {
+          if (boundaries_[2 * d + (upper_side ? 1 : 0)] == PressureBoundary::fixed_pressure) {
+            require_positive_density(rho[f], d, f);
+          }
+        });
   }
 }
 

@@ -4,12 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 
 #include "cosim/error.hpp"
 #include "cosim/exchange/implicit_exchange.hpp"
 #include "ice/advection/advection_time_step.hpp"
+#include "ice/eos/model_dispatch.hpp"
+#include "ice/grid/face_walk.hpp"
 
 namespace ice {
 
@@ -28,6 +31,121 @@ typename PressureSolver<Dim>::Boundaries pressure_boundaries(
                                                               : PressureBoundary::wall;
   }
   return boundaries;
+}
+
+// Eqs. 44-45 on the interior faces first <= f < end of a row (upper cell
+// f - upper_offset, lower one stride below); see compute_face_velocities.
+// A function of its own, with restrict-qualified outputs, so that the loop
+// vectorises.
+inline void interior_face_velocities(int first, int end, int upper_offset, int stride, double dt,
+                                     double dx, double g, const double* __restrict rhobar,
+                                     const double* __restrict phi, const double* __restrict u,
+                                     const double* __restrict p, double* __restrict face_u,
+                                     double* __restrict face_v) {
+  for (int f = first; f < end; ++f) {
+    const int upper = f - upper_offset;
+    const int lower = upper - stride;
+    const double rb_l = rhobar[lower];
+    const double rb_r = rhobar[upper];
+    const double v_face = (phi[lower] + phi[upper]) / (rb_l + rb_r);
+    const double mean_u = (rb_l * u[lower] + rb_r * u[upper]) / (rb_l + rb_r);
+    const double gradient = (p[upper] - p[lower]) / dx;
+    face_u[f] = mean_u + dt * (-v_face * gradient + g);
+    face_v[f] = v_face;
+  }
+}
+
+// compute_lagrangian_energy's cells first <= c < end of a row along x:
+// the face arrays are offset so that cell c's lower face normal to d is
+// index c and its upper face c + stride[d]. A function of its own, with
+// restrict-qualified outputs, so that the loop vectorises; returns how many
+// cells were left without positive finite internal energy.
+template <int Dim>
+struct LagrangianEnergyRow {
+  std::array<const double*, static_cast<std::size_t>(Dim)> face_pressure{};
+  std::array<const double*, static_cast<std::size_t>(Dim)> face_flux{};
+  std::array<int, static_cast<std::size_t>(Dim)> stride{};
+  std::array<double, static_cast<std::size_t>(Dim)> spacing{};
+  std::array<const double*, static_cast<std::size_t>(Dim)> velocity{};
+  std::array<const double*, static_cast<std::size_t>(Dim)> momentum{};
+};
+
+template <int Dim>
+int lagrangian_energy_row(const LagrangianEnergyRow<Dim>& pointers, int first, int end, double dt,
+                          double c_v, const double* __restrict bulk_density,
+                          const double* __restrict volume_fraction, const double* __restrict kappa,
+                          const double* __restrict pressure_increment,
+                          const double* __restrict new_pressure,
+                          const double* __restrict temperature, double* __restrict energy) {
+  const LagrangianEnergyRow<Dim> row = pointers;  // a local copy: kept in registers
+  // A 64-bit count, as wide as the doubles' lanes, so that it vectorises.
+  std::int64_t refused = 0;
+  for (int c = first; c < end; ++c) {
+    const double rhobar = bulk_density[c];
+    const double phi = volume_fraction[c];
+    double work = 0.0;
+    double volume_flux = 0.0;
+    for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
+      const double p_low = row.face_pressure[d][c];
+      const double p_up = row.face_pressure[d][c + row.stride[d]];
+      const double u = row.velocity[d][c];
+      const double u_mid = u + 0.5 * (row.momentum[d][c] / rhobar - u);
+      const double flux_low = row.face_flux[d][c];
+      const double flux_up = row.face_flux[d][c + row.stride[d]];
+      work += (phi * (p_up - p_low) * u_mid - (p_up * flux_up - p_low * flux_low)) / row.spacing[d];
+      volume_flux += (flux_up - flux_low) / row.spacing[d];
+    }
+    // The material's share of the volume work: its own compression
+    // -phi_f kappa_f dP instead of its volume outflow dt div(phi_f U_f);
+    // the difference sums to zero over the materials by eq. 125.
+    const double share =
+        new_pressure[c] * (phi * kappa[c] * pressure_increment[c] + dt * volume_flux);
+    energy[c] = rhobar * c_v * temperature[c] + dt * work + share;
+    // Positive and finite: 0 < e <= the largest double (comparisons only,
+    // combined with & rather than && so that no branch is needed).
+    const bool positive_finite =
+        (energy[c] > 0.0) & (energy[c] <= std::numeric_limits<double>::max());
+    refused += positive_finite ? 0 : 1;
+  }
+  return refused > 0 ? 1 : 0;
+}
+
+// advect_and_update's pass over one material's cells after its advection:
+// with `total_energy` the kinetic energy the advection dissipated returns
+// to the internal energy, then the bulk density, temperature and specific
+// volume. Restrict-qualified (and branch-free: the quotients of a cell
+// without mass are computed and discarded), so that the loop vectorises;
+// returns how many cells have no positive finite mass or temperature.
+template <int Dim>
+int primitive_variables(std::size_t cells, bool total_energy, double c_v,
+                        const std::array<const double*, static_cast<std::size_t>(Dim)>& momentum,
+                        const double* __restrict mass, const double* __restrict kinetic,
+                        const double* __restrict volume, double* __restrict energy,
+                        double* __restrict bulk_density, double* __restrict temperature,
+                        double* __restrict specific_volume) {
+  constexpr double largest = std::numeric_limits<double>::max();
+  const auto mom = momentum;  // a local copy of the pointers: kept in registers
+  std::int64_t bad = 0;       // as wide as the doubles' lanes, so that it vectorises
+  for (std::size_t c = 0; c < cells; ++c) {
+    const double m = mass[c];
+    double twice = 0.0;
+    for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
+      twice += mom[d][c] * mom[d][c];
+    }
+    const double kinetic_after = 0.5 * twice / m;
+    // Both candidates computed, so the choice is a select.
+    const double returned = energy[c] + (kinetic[c] - kinetic_after);
+    const bool returns = total_energy & (m > 0.0);
+    const double e = returns ? returned : energy[c];
+    energy[c] = e;
+    bulk_density[c] = m;
+    const double t = e / (m * c_v);
+    temperature[c] = t;
+    specific_volume[c] = volume[c] / m;
+    const bool good = (m > 0.0) & (m <= largest) & (t > 0.0) & (t <= largest);
+    bad += good ? 0 : 1;
+  }
+  return bad > 0 ? 1 : 0;
 }
 
 void require(bool condition, const std::string& what) {
@@ -302,20 +420,28 @@ void IceSolver<Dim>::equilibrate(StepReport* report) {
   }
   equilibrate_pressure(cells, state_.porosity, state_.pressure, options_.equilibration,
                        equilibrium_);
-  state_.pressure = equilibrium_.pressure;
+  // The results move into the state (swapped: equilibrium_ keeps the old
+  // vectors as storage for the next call, which overwrites them).
+  state_.pressure.swap(equilibrium_.pressure);
   std::fill(mixture_kappa_.begin(), mixture_kappa_.end(), 0.0);
   for (std::size_t m = 0; m < count(); ++m) {
     MaterialState<Dim>& material = state_.materials[m];
-    material.density = equilibrium_.density[m];
-    material.volume_fraction = equilibrium_.volume_fraction[m];
-    for (std::size_t c = 0; c < material.density.size(); ++c) {
-      kappa_[m][c] =
-          eos_[m]->adiabatic_compressibility(material.density[c], material.temperature[c]);
-      // The fluids' volume changes by -sum_f phi_f kappa_f dP V; with the
-      // solid in the divergence this sum (not eq. 52's average over the
-      // fluids) is the mixture's compressibility per cell volume.
-      mixture_kappa_[c] += material.volume_fraction[c] * kappa_[m][c];
-    }
+    material.density.swap(equilibrium_.density[m]);
+    material.volume_fraction.swap(equilibrium_.volume_fraction[m]);
+    const double* rho = material.density.data();
+    const double* t = material.temperature.data();
+    const double* phi = material.volume_fraction.data();
+    double* kappa = kappa_[m].data();
+    double* mixture = mixture_kappa_.data();
+    visit_model_copy(*eos_[m], [&](const auto& eos) {  // inlined for the built-in models
+      for (std::size_t c = 0; c < material.density.size(); ++c) {
+        kappa[c] = eos.adiabatic_compressibility(rho[c], t[c]);
+        // The fluids' volume changes by -sum_f phi_f kappa_f dP V; with the
+        // solid in the divergence this sum (not eq. 52's average over the
+        // fluids) is the mixture's compressibility per cell volume.
+        mixture[c] += phi[c] * kappa[c];
+      }
+    });
   }
   if (report != nullptr) report->equilibration_iterations = equilibrium_.most_iterations;
 }
@@ -414,6 +540,51 @@ StepReport IceSolver<Dim>::advance(double dt) {
   return report;
 }
 
+// One interior face of material m in a porous solid (compute_face_velocities).
+// The mass-weighted mean is taken of the superficial velocities n U and
+// returned to the face's upwind pore space: a steady flow through a jump in
+// porosity keeps its face velocity from step to step (the interstitial
+// velocities' mean would differ from it by O(1) and act as a spurious
+// inertia of (mean - U_FC) / dt, as large as the drag; Darcy flow through a
+// column would come out 7 % fast at 10 cells); with n = 1 this is eq. 44.
+// Where the drag on a solid holds the fluid, its face velocity starts from
+// its own last value rather than from the cells' mean, in the proportion
+// K / (K + rhobar |U| / dx) in which the drag outweighs the momentum the flow
+// carries across a cell. The cell velocities there carry what advection
+// brings them, not what the face fluxes hold (out of a porous column the
+// free cell above takes the pores' interstitial velocity), and the
+// difference (mean - U_FC) / dt would act as a force no physics gives: a
+// checkerboard of pressure and cell velocity beside a drained side.
+template <int Dim>
+void IceSolver<Dim>::porous_face_velocity(std::size_t m, int d, int f, int lower, int upper,
+                                          double dt) {
+  const MaterialState<Dim>& material = state_.materials[m];
+  const double dx = grid_.spacing()[d];
+  const CellField& u = material.velocity[at(d)];
+  const double rb_l = material.bulk_density[at(lower)];
+  const double rb_r = material.bulk_density[at(upper)];
+  const double v_face =
+      (material.volume_fraction[at(lower)] + material.volume_fraction[at(upper)]) / (rb_l + rb_r);
+  const double n_l = state_.porosity[at(lower)];
+  const double n_r = state_.porosity[at(upper)];
+  const double superficial =
+      (rb_l * n_l * u[at(lower)] + rb_r * n_r * u[at(upper)]) / (rb_l + rb_r);
+  double mean_u = superficial / (superficial >= 0.0 ? n_l : n_r);
+  if (solid_drag_on_) {
+    const double porosity = 0.5 * (n_l + n_r);
+    const double fraction =
+        0.5 * (material.volume_fraction[at(lower)] + material.volume_fraction[at(upper)]);
+    const double k =
+        face_drag(lower, upper, porosity, d, f, previous_face_velocity_) * fraction / porosity;
+    const double carried = 0.5 * (rb_l + rb_r) * std::abs(mean_u) / dx;
+    const double memory = k > 0.0 ? k / (k + carried) : 0.0;
+    mean_u += memory * (previous_face_velocity_[m][at(d)][at(f)] - mean_u);
+  }
+  const double gradient = (state_.pressure[at(upper)] - state_.pressure[at(lower)]) / dx;
+  face_velocity_[m][at(d)][at(f)] = mean_u + dt * (-v_face * gradient + gravity_[d]);
+  face_correction_[m][at(d)][at(f)] = v_face;
+}
+
 // Tran et al., MPMICE, eqs. 44-45: per material, the face velocity from the
 // mass-weighted cell velocities and the pressure gradient times the face's
 // specific volume v_FC = (phi_L + phi_R) / (rhobar_L + rhobar_R). For one
@@ -427,6 +598,9 @@ StepReport IceSolver<Dim>::advance(double dt) {
 template <int Dim>
 void IceSolver<Dim>::compute_face_velocities(double dt) {
   const FluidState<Dim>& s = state_;
+  // Without a porous solid the faces take the vectorised eq. 44 row by row.
+  const bool porous = solid_drag_on_ || std::any_of(s.porosity.begin(), s.porosity.end(),
+                                                    [](double n) { return n < 1.0; });
   for (std::size_t m = 0; m < count(); ++m) {
     const MaterialState<Dim>& material = s.materials[m];
     for (int d = 0; d < Dim; ++d) {
@@ -435,54 +609,22 @@ void IceSolver<Dim>::compute_face_velocities(double dt) {
       const CellField& u = material.velocity[at(d)];
       std::vector<double>& face_u = face_velocity_[m][at(d)];
       std::vector<double>& face_v = face_correction_[m][at(d)];
-      for (int f = 0; f < grid_.face_count(d); ++f) {
-        const int lower = grid_.lower_cell(d, f);
-        const int upper = grid_.upper_cell(d, f);
-        if (lower >= 0 && upper >= 0) {
-          const double rb_l = material.bulk_density[at(lower)];
-          const double rb_r = material.bulk_density[at(upper)];
-          const double v_face =
-              (material.volume_fraction[at(lower)] + material.volume_fraction[at(upper)]) /
-              (rb_l + rb_r);
-          // In a porous solid the mass-weighted mean is taken of the
-          // superficial velocities n U and returned to the face's upwind
-          // pore space: a steady flow through a jump in porosity keeps its
-          // face velocity from step to step (the interstitial velocities'
-          // mean would differ from it by O(1) and act as a spurious inertia
-          // of (mean - U_FC) / dt, as large as the drag; Darcy flow through
-          // a column would come out 7 % fast at 10 cells). Without a solid
-          // this is eq. 44.
-          const double n_l = s.porosity[at(lower)];
-          const double n_r = s.porosity[at(upper)];
-          const double superficial =
-              (rb_l * n_l * u[at(lower)] + rb_r * n_r * u[at(upper)]) / (rb_l + rb_r);
-          double mean_u = superficial / (superficial >= 0.0 ? n_l : n_r);
-          // Where the drag on a solid holds the fluid, its face velocity
-          // starts from its own last value rather than from the cells' mean,
-          // in the proportion K / (K + rhobar |U| / dx) in which the drag
-          // outweighs the momentum the flow carries across a cell. The cell
-          // velocities there carry what advection brings them, not what the
-          // face fluxes hold (out of a porous column the free cell above
-          // takes the pores' interstitial velocity), and the difference
-          // (mean - U_FC) / dt would act as a force no physics gives: a
-          // checkerboard of pressure and cell velocity beside a drained side.
-          if (solid_drag_on_) {
-            const double porosity = 0.5 * (n_l + n_r);
-            const double fraction =
-                0.5 * (material.volume_fraction[at(lower)] + material.volume_fraction[at(upper)]);
-            const double k = face_drag(lower, upper, porosity, d, f, previous_face_velocity_) *
-                             fraction / porosity;
-            const double carried = 0.5 * (rb_l + rb_r) * std::abs(mean_u) / dx;
-            const double memory = k > 0.0 ? k / (k + carried) : 0.0;
-            mean_u += memory * (previous_face_velocity_[m][at(d)][at(f)] - mean_u);
-          }
-          const double gradient = (s.pressure[at(upper)] - s.pressure[at(lower)]) / dx;
-          face_u[at(f)] = mean_u + dt * (-v_face * gradient + g);
-          face_v[at(f)] = v_face;
-          continue;
+      const double* rhobar = material.bulk_density.data();
+      const double* phi = material.volume_fraction.data();
+      const double* p = s.pressure.data();
+      const int stride = grid_.stride(d);
+      const auto interior = [&](int first, int end, int upper_offset) {
+        if (!porous) {
+          interior_face_velocities(first, end, upper_offset, stride, dt, dx, g, rhobar, phi,
+                                   u.data(), p, face_u.data(), face_v.data());
+          return;
         }
-        const bool upper_side = upper < 0;
-        const int cell = upper_side ? lower : upper;
+        for (int f = first; f < end; ++f) {
+          const int upper = f - upper_offset;
+          porous_face_velocity(m, d, f, upper - stride, upper, dt);
+        }
+      };
+      const auto boundary = [&](int f, int cell, bool upper_side) {
         const SideCondition& side = sides_[at(2 * d + (upper_side ? 1 : 0))];
         const double v_cell = 1.0 / material.density[at(cell)];
         face_v[at(f)] = v_cell;
@@ -497,13 +639,14 @@ void IceSolver<Dim>::compute_face_velocities(double dt) {
             face_u[at(f)] = side.velocity[at(d)];
             break;
           case SideType::fixed_pressure: {
-            const double difference = upper_side ? side.pressure - s.pressure[at(cell)]
-                                                 : s.pressure[at(cell)] - side.pressure;
+            const double difference =
+                upper_side ? side.pressure - p[cell] : p[cell] - side.pressure;
             face_u[at(f)] = u[at(cell)] + dt * (-v_cell * difference / (0.5 * dx) + g);
             break;
           }
         }
-      }
+      };
+      for_each_face_run(grid_, d, interior, boundary);
     }
   }
 }
@@ -776,51 +919,46 @@ double IceSolver<Dim>::face_courant(double dt) const {
 // the column with the column's first pressure drop).
 template <int Dim>
 void IceSolver<Dim>::compute_face_pressure() {
-  const auto mixture_density = [&](int cell) {
-    double rho = 0.0;
-    for (const MaterialState<Dim>& material : state_.materials)
-      rho += material.bulk_density[at(cell)];
-    return rho;
-  };
+  CellField& rho = scratch_cell_;  // the mixture densities
+  rho.assign(at(grid_.cell_count()), 0.0);
+  for (const MaterialState<Dim>& material : state_.materials) {
+    for (std::size_t c = 0; c < rho.size(); ++c) rho[c] += material.bulk_density[c];
+  }
+  const double* p = new_pressure_.data();
   for (int d = 0; d < Dim; ++d) {
     const double dx = grid_.spacing()[d];
-    std::vector<double>& face_p = face_pressure_[at(d)];
-    for (int f = 0; f < grid_.face_count(d); ++f) {
-      const int lower = grid_.lower_cell(d, f);
-      const int upper = grid_.upper_cell(d, f);
-      if (lower >= 0 && upper >= 0) {
-        const double rho_l = mixture_density(lower);
-        const double rho_r = mixture_density(upper);
-        const double p_l = new_pressure_[at(lower)];
-        const double p_r = new_pressure_[at(upper)];
-        if (solid_drag_on_) {
-          const double n_l = state_.porosity[at(lower)];
-          const double n_r = state_.porosity[at(upper)];
-          const double a_l = solid_drag_[at(lower)] / (n_l * n_l);
-          const double a_r = solid_drag_[at(upper)] / (n_r * n_r);
-          if (a_l + a_r > 0.0) {
-            const double rise_l = 0.5 * dx * rho_l / n_l * gravity_[d];
-            const double rise_r = 0.5 * dx * rho_r / n_r * gravity_[d];
-            face_p[at(f)] = p_l + rise_l + a_l / (a_l + a_r) * (p_r - p_l - rise_l - rise_r);
-            continue;
+    double* face_p = face_pressure_[at(d)].data();
+    for_each_face(
+        grid_, d,
+        [&](int f, int lower, int upper) {
+          const double rho_l = rho[at(lower)];
+          const double rho_r = rho[at(upper)];
+          if (solid_drag_on_) {
+            const double n_l = state_.porosity[at(lower)];
+            const double n_r = state_.porosity[at(upper)];
+            const double a_l = solid_drag_[at(lower)] / (n_l * n_l);
+            const double a_r = solid_drag_[at(upper)] / (n_r * n_r);
+            if (a_l + a_r > 0.0) {
+              const double rise_l = 0.5 * dx * rho_l / n_l * gravity_[d];
+              const double rise_r = 0.5 * dx * rho_r / n_r * gravity_[d];
+              face_p[f] =
+                  p[lower] + rise_l + a_l / (a_l + a_r) * (p[upper] - p[lower] - rise_l - rise_r);
+              return;
+            }
           }
-        }
-        face_p[at(f)] = (p_l * rho_r + p_r * rho_l) / (rho_l + rho_r);
-        continue;
-      }
-      const bool upper_side = upper < 0;
-      const int cell = upper_side ? lower : upper;
-      const SideCondition& side = sides_[at(2 * d + (upper_side ? 1 : 0))];
-      if (side.type == SideType::fixed_pressure) {
-        face_p[at(f)] = side.pressure;
-      } else {
-        const double offset = upper_side ? 0.5 * dx : -0.5 * dx;
-        // The fluids' intrinsic density: in a porous cell their weight
-        // rhobar g is carried by n grad P.
-        face_p[at(f)] = new_pressure_[at(cell)] +
-                        mixture_density(cell) / state_.porosity[at(cell)] * gravity_[d] * offset;
-      }
-    }
+          face_p[f] = (p[lower] * rho_r + p[upper] * rho_l) / (rho_l + rho_r);
+        },
+        [&](int f, int cell, bool upper_side) {
+          const SideCondition& side = sides_[at(2 * d + (upper_side ? 1 : 0))];
+          if (side.type == SideType::fixed_pressure) {
+            face_p[f] = side.pressure;
+          } else {
+            // The fluids' intrinsic density: in a porous cell their weight
+            // rhobar g is carried by n grad P.
+            const double offset = upper_side ? 0.5 * dx : -0.5 * dx;
+            face_p[f] = p[cell] + rho[at(cell)] / state_.porosity[at(cell)] * gravity_[d] * offset;
+          }
+        });
   }
 }
 
@@ -835,18 +973,23 @@ template <int Dim>
 void IceSolver<Dim>::compute_lagrangian_values(double dt) {
   for (std::size_t m = 0; m < count(); ++m) {
     const MaterialState<Dim>& material = state_.materials[m];
-    for (int c = 0; c < grid_.cell_count(); ++c) {
-      const std::size_t i = at(c);
-      const double rhobar = material.bulk_density[i];
-      const double phi = material.volume_fraction[i];
-      mass_[m][i] = rhobar;
-      for (int d = 0; d < Dim; ++d) {
-        const double gradient = (face_pressure_[at(d)][at(grid_.upper_face(d, c))] -
-                                 face_pressure_[at(d)][at(grid_.lower_face(d, c))]) /
-                                grid_.spacing()[d];
-        momentum_[m][at(d)][i] =
-            rhobar * material.velocity[at(d)][i] + dt * (-phi * gradient + rhobar * gravity_[d]);
-      }
+    const double* rhobar = material.bulk_density.data();
+    const double* phi = material.volume_fraction.data();
+    std::copy(material.bulk_density.begin(), material.bulk_density.end(), mass_[m].begin());
+    for (int d = 0; d < Dim; ++d) {
+      const double dx = grid_.spacing()[d];
+      const double g = gravity_[d];
+      const double* u = material.velocity[at(d)].data();
+      double* momentum = momentum_[m][at(d)].data();
+      for_each_row(grid_, [&](int first, int length) {
+        // The cell's lower and upper faces normal to d.
+        const double* p_low = face_pressure_[at(d)].data() + lower_face_offset(grid_, d, first);
+        const double* p_up = p_low + grid_.stride(d);
+        for (int c = first; c < first + length; ++c) {
+          const double gradient = (p_up[c] - p_low[c]) / dx;
+          momentum[c] = rhobar[c] * u[c] + dt * (-phi[c] * gradient + rhobar[c] * g);
+        }
+      });
     }
   }
 }
@@ -857,38 +1000,39 @@ void IceSolver<Dim>::compute_lagrangian_values(double dt) {
 // accelerated by the pressure and stopped by the drag does no work).
 template <int Dim>
 bool IceSolver<Dim>::compute_lagrangian_energy(double dt) {
+  FaceField<Dim>& face_flux = scratch_face_;  // phi_f,FC U_f,FC per face
   for (std::size_t m = 0; m < count(); ++m) {
     const MaterialState<Dim>& material = state_.materials[m];
     const double c_v = eos_[m]->specific_heat();
-    for (int c = 0; c < grid_.cell_count(); ++c) {
-      const std::size_t i = at(c);
-      const double rhobar = material.bulk_density[i];
-      const double phi = material.volume_fraction[i];
-      double work = 0.0;
-      double volume_flux = 0.0;
-      for (int d = 0; d < Dim; ++d) {
-        const int low = grid_.lower_face(d, c);
-        const int up = grid_.upper_face(d, c);
-        const double p_low = face_pressure_[at(d)][at(low)];
-        const double p_up = face_pressure_[at(d)][at(up)];
-        const double u_mid = material.velocity[at(d)][i] +
-                             0.5 * (momentum_[m][at(d)][i] / rhobar - material.velocity[at(d)][i]);
-        const double flux_low = face_fraction(m, d, low) * face_velocity_[m][at(d)][at(low)];
-        const double flux_up = face_fraction(m, d, up) * face_velocity_[m][at(d)][at(up)];
-        work += (phi * (p_up - p_low) * u_mid - (p_up * flux_up - p_low * flux_low)) /
-                grid_.spacing()[d];
-        volume_flux += (flux_up - flux_low) / grid_.spacing()[d];
-      }
-      // The material's share of the volume work: its own compression
-      // -phi_f kappa_f dP instead of its volume outflow dt div(phi_f U_f);
-      // the difference sums to zero over the materials by eq. 125.
-      const double share =
-          new_pressure_[i] * (phi * kappa_[m][i] * pressure_increment_[i] + dt * volume_flux);
-      energy_[m][i] = rhobar * c_v * material.temperature[i] + dt * work + share;
-      // A compression too strong for the step (or work that empties a
-      // trace material) leaves no internal energy: the step is refused.
-      if (!(energy_[m][i] > 0.0) || !std::isfinite(energy_[m][i])) return false;
+    for (int d = 0; d < Dim; ++d) {
+      // The volume fraction the pressure equation carried on each face
+      // (face_fraction) times U_f,FC.
+      const double* u = face_velocity_[m][at(d)].data();
+      const double* carried = face_fraction_[m][at(d)].data();
+      double* flux = face_flux[at(d)].data();
+      const std::size_t faces = face_flux[at(d)].size();
+      for (std::size_t f = 0; f < faces; ++f) flux[f] = carried[f] * u[f];
     }
+    int refused = 0;
+    for_each_row(grid_, [&](int first, int length) {
+      LagrangianEnergyRow<Dim> row;
+      for (int d = 0; d < Dim; ++d) {
+        const int offset = lower_face_offset(grid_, d, first);
+        row.face_pressure[at(d)] = face_pressure_[at(d)].data() + offset;
+        row.face_flux[at(d)] = face_flux[at(d)].data() + offset;
+        row.stride[at(d)] = grid_.stride(d);
+        row.spacing[at(d)] = grid_.spacing()[d];
+        row.velocity[at(d)] = material.velocity[at(d)].data();
+        row.momentum[at(d)] = momentum_[m][at(d)].data();
+      }
+      refused += lagrangian_energy_row(
+          row, first, first + length, dt, c_v, material.bulk_density.data(),
+          material.volume_fraction.data(), kappa_[m].data(), pressure_increment_.data(),
+          new_pressure_.data(), material.temperature.data(), energy_[m].data());
+    });
+    // A compression too strong for the step (or work that empties a trace
+    // material) leaves no internal energy: the step is refused.
+    if (refused > 0) return false;
   }
   return true;
 }
@@ -995,24 +1139,32 @@ void IceSolver<Dim>::exchange_cell_energy(double dt) {
 template <int Dim>
 void IceSolver<Dim>::compute_lagrangian_specific_volume(double /*dt*/) {
   const std::size_t n = count();
-  for (std::size_t c = 0; c < at(grid_.cell_count()); ++c) {
-    double thermal_mixture = 0.0;
-    for (std::size_t m = 0; m < n; ++m) {
-      const MaterialState<Dim>& material = state_.materials[m];
-      const double alpha =
-          eos_[m]->thermal_expansivity(material.density[c], material.temperature[c]);
-      thermal_mixture += material.volume_fraction[c] * alpha *
-                         (lagrangian_temperature_[m][c] - material.temperature[c]);
-    }
-    for (std::size_t m = 0; m < n; ++m) {
-      const MaterialState<Dim>& material = state_.materials[m];
+  const std::size_t cells = at(grid_.cell_count());
+  // Each material's thermal expansivity alpha_f(rho_f, T_f) per cell (kept
+  // in volume_, which is written below) and their sum weighted by the
+  // temperature change.
+  CellField& thermal_mixture = scratch_cell_;
+  thermal_mixture.assign(cells, 0.0);
+  for (std::size_t m = 0; m < n; ++m) {
+    const MaterialState<Dim>& material = state_.materials[m];
+    double* alpha = volume_[m].data();
+    visit_model_copy(*eos_[m], [&](const auto& eos) {  // inlined for the built-in models
+      for (std::size_t c = 0; c < cells; ++c) {
+        alpha[c] = eos.thermal_expansivity(material.density[c], material.temperature[c]);
+        thermal_mixture[c] += material.volume_fraction[c] * alpha[c] *
+                              (lagrangian_temperature_[m][c] - material.temperature[c]);
+      }
+    });
+  }
+  for (std::size_t m = 0; m < n; ++m) {
+    const MaterialState<Dim>& material = state_.materials[m];
+    for (std::size_t c = 0; c < cells; ++c) {
       const double phi = material.volume_fraction[c];
-      const double alpha =
-          eos_[m]->thermal_expansivity(material.density[c], material.temperature[c]);
+      const double alpha = volume_[m][c];
       const double share = phi * kappa_[m][c] / mixture_kappa_[c];
       volume_[m][c] = phi - phi * kappa_[m][c] * pressure_increment_[c] +
                       phi * alpha * (lagrangian_temperature_[m][c] - material.temperature[c]) -
-                      share * thermal_mixture;
+                      share * thermal_mixture[c];
     }
   }
 }
@@ -1044,15 +1196,24 @@ void IceSolver<Dim>::advect_and_update(double dt, StepReport& report) {
     advector_.advance(
         face_velocity_[m], dt,
         std::span<const std::span<double>>(fields.data(), total_energy ? dim + 4 : dim + 3));
-    if (total_energy) {
-      for (std::size_t c = 0; c < cells; ++c) {
-        if (mass_[m][c] > 0.0) energy_[m][c] += kinetic_[m][c] - kinetic_energy(m, c);
-      }
-    }
-  }
-  for (std::size_t m = 0; m < n; ++m) {
+    // The kinetic energy the advection dissipated back into the internal
+    // energy, then the primitive variables, in one pass; a bad cell is
+    // reported by the checking pass below.
     MaterialState<Dim>& material = state_.materials[m];
     const double c_v = eos_[m]->specific_heat();
+    std::array<const double*, static_cast<std::size_t>(Dim)> momentum{};
+    for (std::size_t d = 0; d < dim; ++d) momentum[d] = momentum_[m][d].data();
+    const bool bad = primitive_variables<Dim>(
+                         cells, total_energy, c_v, momentum, mass_[m].data(), kinetic_[m].data(),
+                         volume_[m].data(), energy_[m].data(), material.bulk_density.data(),
+                         material.temperature.data(), material.specific_volume.data()) > 0;
+    for (std::size_t d = 0; d < dim; ++d) {
+      double* velocity = material.velocity[d].data();
+      const double* mass = mass_[m].data();
+      const double* mom = momentum[d];
+      for (std::size_t c = 0; c < cells; ++c) velocity[c] = mom[c] / mass[c];
+    }
+    if (!bad) continue;
     for (std::size_t c = 0; c < cells; ++c) {
       const double mass = mass_[m][c];
       if (!(mass > 0.0) || !std::isfinite(mass)) {
@@ -1061,12 +1222,6 @@ void IceSolver<Dim>::advect_and_update(double dt, StepReport& report) {
                         "(time {} s, dt {} s)",
                         materials_[m].name, c, mass, time_, dt));
       }
-      material.bulk_density[c] = mass;
-      for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
-        material.velocity[d][c] = momentum_[m][d][c] / mass;
-      }
-      material.temperature[c] = energy_[m][c] / (mass * c_v);
-      material.specific_volume[c] = volume_[m][c] / mass;
       if (!(material.temperature[c] > 0.0) || !std::isfinite(material.temperature[c])) {
         throw cosim::NumericalError(fmt::format(
             "ICE: material '{}' in cell {}: temperature {} K after advection (time {} s, dt {} s)",

@@ -68,17 +68,24 @@ class Advector {
   void set_face_courant_numbers(const FaceField<Dim>& face_velocity, double dt);
   template <Limiter limiter>
   void advance_field(std::span<double> q);
+  // The fluxes along x of one row (the first direction: change_ is set)
+  // and along direction > 0 (change_ accumulates; along y each row's x
+  // fluxes first); `last`: q += change_ as each cell row is complete.
   template <Limiter limiter>
-  void set_limited_differences(std::span<const double> q, int direction);
-  void add_face_fluxes(std::span<const double> q, int direction);
+  void add_row_fluxes(std::span<double> q, int row, bool last);
+  template <Limiter limiter>
+  void add_plane_fluxes(std::span<double> q, int direction, bool last);
 
   CellGrid<Dim> grid_;
   Limiter limiter_;
   // Per face, the signed Courant number U dt / dx_d of the current step.
   FaceField<Dim> courant_;
-  // Per cell, the limited difference along the current direction.
+  // Row buffers: the limited differences and the fluxes q_face U dt / dx_d
+  // of one row along x; along another direction those of two cell rows and
+  // two face rows.
+  std::vector<double> row_difference_;
+  std::vector<double> row_flux_;
   std::vector<double> difference_;
-  // Per face normal to the current direction, q_face U dt / dx_d.
   std::vector<double> flux_;
   // Per cell, the net inflow over the step per unit volume.
   std::vector<double> change_;

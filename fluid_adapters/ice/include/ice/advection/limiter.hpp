@@ -33,8 +33,13 @@ inline double limited_difference(double a, double b) {
     const double smaller = std::abs(a) < std::abs(b) ? a : b;
     return a * b > 0.0 ? smaller : 0.0;
   } else {
+    // The division is done whatever the sign (a + b may then be 0: the
+    // quotient is discarded), so that the choice is a select the compiler
+    // can vectorise; a conditional division it must keep as a branch, which
+    // rough data mispredicts.
     const double product = a * b;
-    return product > 0.0 ? 2.0 * product / (a + b) : 0.0;
+    const double harmonic = 2.0 * product / (a + b);
+    return product > 0.0 ? harmonic : 0.0;
   }
 }
 

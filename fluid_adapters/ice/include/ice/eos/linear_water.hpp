@@ -11,12 +11,12 @@ namespace ice {
 
 // The physical constants of the linear water law, as a user gives them.
 struct LinearWaterParameters {
-  double bulk_modulus = 2.0e9;             // K_bulk = rho dP/drho [Pa]
-  double reference_density = 999.8;        // rho_ref [kg/m3]
-  double reference_pressure = 101325.0;    // P_ref [Pa]
-  double reference_temperature = 283.15;   // T_ref [K] (10 degC)
-  double thermal_expansion = 2.1e-4;       // beta = -(1/rho)(drho/dT)_P [1/K]
-  double specific_heat = 4182.0;           // c_v [J/(kg K)]
+  double bulk_modulus = 2.0e9;            // K_bulk = rho dP/drho [Pa]
+  double reference_density = 999.8;       // rho_ref [kg/m3]
+  double reference_pressure = 101325.0;   // P_ref [Pa]
+  double reference_temperature = 283.15;  // T_ref [K] (10 degC)
+  double thermal_expansion = 2.1e-4;      // beta = -(1/rho)(drho/dT)_P [1/K]
+  double specific_heat = 4182.0;          // c_v [J/(kg K)]
 };
 
 // Linear water, Tran et al., MPMICE, eq. 35:
@@ -43,12 +43,24 @@ class LinearWater final : public EquationOfState {
 
   std::string_view type() const override { return name; }
   const LinearWaterParameters& parameters() const { return parameters_; }
-  double stiffness() const { return stiffness_; }                        // K_f [m2/s2]
+  double stiffness() const { return stiffness_; }                          // K_f [m2/s2]
   double thermal_density_slope() const { return thermal_density_slope_; }  // alpha_f [kg/(m3 K)]
 
-  double pressure(double density, double temperature) const override;
-  double density(double pressure, double temperature) const override;
-  double minimum_pressure(double temperature) const override;
+  // Tran et al., MPMICE, eq. 35 (inline: the pressure equilibration calls
+  // these per cell and Newton iteration).
+  double pressure(double density, double temperature) const override {
+    return parameters_.reference_pressure +
+           stiffness_ *
+               (density - parameters_.reference_density +
+                thermal_density_slope_ * (temperature - parameters_.reference_temperature));
+  }
+  double density(double pressure, double temperature) const override {
+    return density_at_reference_pressure(temperature) +
+           (pressure - parameters_.reference_pressure) / stiffness_;
+  }
+  double minimum_pressure(double temperature) const override {
+    return parameters_.reference_pressure - stiffness_ * density_at_reference_pressure(temperature);
+  }
   double dpressure_ddensity(double /*density*/, double /*temperature*/) const override {
     return stiffness_;
   }
@@ -58,7 +70,10 @@ class LinearWater final : public EquationOfState {
 
  private:
   // rho at P = P_ref and temperature T.
-  double density_at_reference_pressure(double temperature) const;
+  double density_at_reference_pressure(double temperature) const {
+    return parameters_.reference_density -
+           thermal_density_slope_ * (temperature - parameters_.reference_temperature);
+  }
 
   LinearWaterParameters parameters_;
   double stiffness_;

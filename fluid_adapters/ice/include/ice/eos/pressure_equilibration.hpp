@@ -95,6 +95,14 @@ struct EquilibratedCells {
   std::vector<std::vector<double>> volume_fraction;  // [material][cell]
   std::vector<std::vector<double>> compressibility;  // [material][cell]
   int most_iterations = 0;                           // over all cells
+
+  // Work arrays of the batched solve, kept so that repeated calls into the
+  // same result allocate nothing; not part of the result.
+  struct Workspace {
+    std::vector<double> low, high, pressure, residual, slope;
+    std::vector<int> iterations;
+    std::vector<std::size_t> active, one_by_one;
+  } workspace;
 };
 
 // equilibrate_pressure() in every cell. `pressure_guess` has one entry per
@@ -105,8 +113,7 @@ EquilibratedCells equilibrate_pressure(std::span<const MaterialCells> materials,
                                        std::span<const double> pressure_guess,
                                        const EquilibrationOptions& options = {});
 void equilibrate_pressure(std::span<const MaterialCells> materials,
-                          std::span<const double> porosity,
-                          std::span<const double> pressure_guess,
+                          std::span<const double> porosity, std::span<const double> pressure_guess,
                           const EquilibrationOptions& options, EquilibratedCells& result);
 
 // The mixture compressibility of MPMICE eq. 52,

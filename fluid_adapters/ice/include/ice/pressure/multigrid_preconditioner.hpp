@@ -75,6 +75,10 @@ class MultigridPreconditioner {
   double& coupling(int direction, int cell) {
     return levels_.front().coupling[direction][padding() + cell];
   }
+  double diagonal(int cell) const { return levels_.front().diagonal[padding() + cell]; }
+  double coupling(int direction, int cell) const {
+    return levels_.front().coupling[direction][padding() + cell];
+  }
 
   // Builds the coarse operators and factorises the coarsest one from the
   // finest operator. Throws cosim::NumericalError when the coarsest operator
@@ -87,6 +91,10 @@ class MultigridPreconditioner {
 
   // y = A x on the finest level (padded vectors).
   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
+  // s = z + beta s, then y = A s (the conjugate-gradient direction and its
+  // product), in one pass; the same values as the two steps.
+  void update_and_multiply(const Eigen::VectorXd& z, double beta, Eigen::VectorXd& s,
+                           Eigen::VectorXd& y) const;
 
   // z = M^{-1} r, one cycle from z = 0 (padded vectors).
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z);
@@ -99,19 +107,16 @@ class MultigridPreconditioner {
     int padding = 0;
     Eigen::VectorXd diagonal;
     Eigen::VectorXd inverse_diagonal;
-    // T_0,c-1 / D_c and T_0,c / D_c: the couplings along x scaled for the
-    // Gauss-Seidel recurrences along a row.
-    Eigen::VectorXd lower_weight;
-    Eigen::VectorXd upper_weight;
     // Row sums of the operator (kappa V / dt plus the fixed-pressure ghost
     // couplings): kept apart so that the coarse diagonals do not come from
     // cancelling the large couplings inside an aggregate.
     Eigen::VectorXd surplus;
     std::array<Eigen::VectorXd, Dim> coupling;
+    // b and x of the coarse levels (the finest uses the caller's vectors).
     Eigen::VectorXd solution;
     Eigen::VectorXd right_hand_side;
-    // Also the Gauss-Seidel sweeps' scratch.
-    Eigen::VectorXd residual;
+    // One row of residuals (restrict_residual's scratch).
+    Eigen::VectorXd row;
     // The coarse cell of each cell (unpadded indices) and the directions
     // coarsened to the next level; empty and unused on the coarsest.
     std::vector<int> aggregate;
@@ -120,12 +125,18 @@ class MultigridPreconditioner {
 
   static Level make_level(const CellCounts& cells);
   static void multiply(const Level& level, const Eigen::VectorXd& x, Eigen::VectorXd& y);
-  static void forward_gauss_seidel(Level& level, const Eigen::VectorXd& b, Eigen::VectorXd& x);
-  static void backward_gauss_seidel(Level& level, const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  template <bool from_zero>
+  static void forward_gauss_seidel(const Level& level, const Eigen::VectorXd& b,
+                                   Eigen::VectorXd& x);
+  static void backward_gauss_seidel(const Level& level, const Eigen::VectorXd& b,
+                                    Eigen::VectorXd& x);
+  static void restrict_residual(Level& fine, const Eigen::VectorXd& b, const Eigen::VectorXd& x,
+                                Level& coarse);
+  static void prolong(const Level& fine, const Level& coarse, double scale, Eigen::VectorXd& x);
   static void set_diagonal_from_couplings(Level& level);
   static void set_inverse_diagonal(Level& level);
   void build_coarse_operator(int level);
-  void cycle(int level);
+  void cycle(int level, const Eigen::VectorXd& b, Eigen::VectorXd& x);
 
   MultigridOptions options_;
   std::vector<Level> levels_;

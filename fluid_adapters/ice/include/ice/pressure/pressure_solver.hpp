@@ -116,7 +116,7 @@ class PressureSolver {
                                FaceField<Dim>& face_velocity) const;
 
   // V times the operator of eq. 125, as assembled by the last solve.
-  const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
+  const Eigen::SparseMatrix<double>& matrix() const;
 
  private:
   void assemble(std::span<const double> kappa, const FaceField<Dim>& face_density, double dt);
@@ -125,12 +125,15 @@ class PressureSolver {
   PressureSolution run(Solver& solver, std::span<double> pressure_increment);
   PressureSolution run_multigrid(std::span<double> pressure_increment);
   void throw_not_converged(const PressureSolution& result) const;
-  bool is_fixed_pressure(int direction, int face) const;
+  void require_entering_densities(const FaceField<Dim>& face_density) const;
 
   CellGrid<Dim> grid_;
   Boundaries boundaries_;
   PressureSolverOptions options_;
-  Eigen::SparseMatrix<double> matrix_;
+  // With the multigrid the operator is assembled into the preconditioner
+  // and copied into matrix_ only when matrix() is called.
+  mutable Eigen::SparseMatrix<double> matrix_;
+  mutable bool matrix_current_ = true;
   // Per direction and face: its lower and upper cell (-1 outside).
   std::array<std::vector<std::array<int, 2>>, static_cast<std::size_t>(Dim)> face_cells_;
   // Positions in matrix_.valuePtr(): per cell its diagonal; per interior

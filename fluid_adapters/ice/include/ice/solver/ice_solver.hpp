@@ -167,7 +167,9 @@ class IceSolver {
 
  private:
   // The steps of advance(), in order.
-  void compute_face_velocities(double dt);                                 // eqs. 44-45
+  void compute_face_velocities(double dt);  // eqs. 44-45
+  void porous_face_velocity(std::size_t material, int direction, int face, int lower, int upper,
+                            double dt);
   void exchange_face_momentum(double dt);                                  // eq. 48
   void assemble_divergence(const std::vector<FaceField<Dim>>& direction);  // eq. 75
   PressureSolution solve_pressure_increment(double dt);                    // eqs. 52-53, 125
@@ -259,6 +261,11 @@ class IceSolver {
   CellField solid_drag_;
   CellField solid_bulk_density_;
   std::vector<double> solid_impulse_;
+
+  // ---- ice-perf: scratch of the restructured loops (sized on first use) ----
+  // Per cell: eq. 54's mixture densities sum_f rhobar_f (compute_face_pressure),
+  // the thermal mixture expansion (compute_lagrangian_specific_volume).
+  CellField scratch_cell_;
 };
 
 extern template class IceSolver<1>;
