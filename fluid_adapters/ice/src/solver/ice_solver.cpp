@@ -499,21 +499,18 @@ StepReport IceSolver<Dim>::advance(double dt) {
   compute_face_velocities(dt);
   exchange_face_momentum(dt);
   assemble_divergence(face_velocity_);
-  predicted_face_velocity_ = face_velocity_;
   PressureSolution pressure = solve_pressure_increment(dt);
   report.pressure_iterations = pressure.iterations;
   // Where the correction reversed a flow, the divergence is assembled again
   // with the final directions, from the same predicted velocities (a flow
   // whose upwind side flips from step to step would otherwise carry volume
   // its mass flux does not, in a two-step cycle).
-  const std::vector<FaceField<Dim>>* assumed = &predicted_face_velocity_;
-  for (int pass = 0; pass < 2 && upwind_side_changed(*assumed, dt); ++pass) {
+  for (int pass = 0; pass < 2 && upwind_side_changed(dt); ++pass) {
     flow_direction_ = face_velocity_;
-    face_velocity_ = predicted_face_velocity_;
+    correct_face_velocities(dt, -1.0);  // back to the predicted velocities
     assemble_divergence(flow_direction_);
     pressure = solve_pressure_increment(dt);
     report.pressure_iterations += pressure.iterations;
-    assumed = &flow_direction_;
   }
   report.pressure_residual = pressure.relative_residual;
   report.courant = face_courant(dt);
@@ -760,6 +757,20 @@ void IceSolver<Dim>::exchange_face_momentum(double dt) {
         value[solid] = 0.0;
         cosim::exchange::solve_implicit_exchange(w, x, 1, k, dt, dx);
         for (std::size_t m = 0; m < n; ++m) face_correction_[m][at(d)][at(f)] += increment[m];
+      } else if (fluid_exchange && open && n == 2) {
+        // Two fluids: eq. 131's closed form, one resistance for the
+        // velocities and the correction (as solve_implicit_exchange forms it).
+        const double dt_c = dt * (exchange_.momentum[1] * fraction[0] * fraction[1]);
+        if (weight[0] > 0.0 && weight[1] > 0.0 && dt_c > 0.0) {
+          const double resistance = 1.0 / dt_c + 1.0 / weight[0] + 1.0 / weight[1];
+          for (std::vector<FaceField<Dim>>* field : {&face_velocity_, &face_correction_}) {
+            double& x0 = (*field)[0][at(d)][at(f)];
+            double& x1 = (*field)[1][at(d)][at(f)];
+            const double impulse = (x1 - x0) / resistance;
+            x0 += impulse / weight[0];
+            x1 += -impulse / weight[1];
+          }
+        }
       } else if (fluid_exchange && open) {
         const std::span<double> wn(weight.data(), n);
         const std::span<double> xn(value.data(), n);
@@ -790,53 +801,68 @@ void IceSolver<Dim>::exchange_face_momentum(double dt) {
 template <int Dim>
 void IceSolver<Dim>::assemble_divergence(const std::vector<FaceField<Dim>>& direction) {
   for (int d = 0; d < Dim; ++d) {
-    for (int f = 0; f < grid_.face_count(d); ++f) {
-      const int lower = grid_.lower_cell(d, f);
-      const int upper = grid_.upper_cell(d, f);
-      const bool interior = lower >= 0 && upper >= 0;
-      const bool upper_side = upper < 0;
-      const int cell = upper_side ? lower : upper;
-      if (!interior && sides_[at(2 * d + (upper_side ? 1 : 0))].type == SideType::wall) {
-        face_density_[at(d)][at(f)] = 1.0;
-        mixture_velocity_[at(d)][at(f)] = 0.0;
-        continue;
-      }
-      double inverse_density = 0.0;
-      double mixture = solid_face_fraction_[at(d)][at(f)] * solid_face_velocity_[at(d)][at(f)];
-      for (std::size_t m = 0; m < count(); ++m) {
-        const CellField& phi = state_.materials[m].volume_fraction;
-        const double carried =
-            interior ? phi[at(direction[m][at(d)][at(f)] >= 0.0 ? lower : upper)] : phi[at(cell)];
-        face_fraction_[m][at(d)][at(f)] = carried;
-        inverse_density += carried * face_correction_[m][at(d)][at(f)];
-        mixture += carried * face_velocity_[m][at(d)][at(f)];
-      }
-      face_density_[at(d)][at(f)] = 1.0 / inverse_density;
-      mixture_velocity_[at(d)][at(f)] = mixture;
+    double* inverse_density = face_density_[at(d)].data();
+    double* flux = mixture_velocity_[at(d)].data();
+    const double* phi_s = solid_face_fraction_[at(d)].data();
+    const double* u_s = solid_face_velocity_[at(d)].data();
+    const std::size_t faces = face_density_[at(d)].size();
+    for (std::size_t f = 0; f < faces; ++f) {
+      inverse_density[f] = 0.0;
+      flux[f] = phi_s[f] * u_s[f];
     }
+    for (std::size_t m = 0; m < count(); ++m) {
+      const double* phi = state_.materials[m].volume_fraction.data();
+      const double* sign = direction[m][at(d)].data();
+      const double* u = face_velocity_[m][at(d)].data();
+      const double* y = face_correction_[m][at(d)].data();
+      double* carried = face_fraction_[m][at(d)].data();
+      const auto add = [&](int f, double fraction) {
+        carried[f] = fraction;
+        inverse_density[f] += fraction * y[f];
+        flux[f] += fraction * u[f];
+      };
+      for_each_face(
+          grid_, d,
+          [&](int f, int lower, int upper) { add(f, phi[sign[f] >= 0.0 ? lower : upper]); },
+          [&](int f, int cell, bool) { add(f, phi[cell]); });
+    }
+    for_each_face(
+        grid_, d, [&](int f, int, int) { inverse_density[f] = 1.0 / inverse_density[f]; },
+        [&](int f, int, bool upper_side) {
+          if (sides_[at(2 * d + (upper_side ? 1 : 0))].type == SideType::wall) {
+            inverse_density[f] = 1.0;
+            flux[f] = 0.0;
+          } else {
+            inverse_density[f] = 1.0 / inverse_density[f];
+          }
+        });
   }
 }
 
 // Whether the pressure correction turned a face's flow against the upwind
-// side the divergence assumed, by more than a negligible volume.
+// side the divergence assumed (its carried fraction is not the final
+// upwind cell's), by more than a negligible volume.
 template <int Dim>
-bool IceSolver<Dim>::upwind_side_changed(const std::vector<FaceField<Dim>>& assumed,
-                                         double dt) const {
+bool IceSolver<Dim>::upwind_side_changed(double dt) const {
+  bool changed = false;
   for (std::size_t m = 0; m < count(); ++m) {
     const CellField& phi = state_.materials[m].volume_fraction;
     for (int d = 0; d < Dim; ++d) {
       const double factor = dt / grid_.spacing()[d];
-      for (int f = 0; f < grid_.face_count(d); ++f) {
-        const int lower = grid_.lower_cell(d, f);
-        const int upper = grid_.upper_cell(d, f);
-        if (lower < 0 || upper < 0) continue;
-        const double u = face_velocity_[m][at(d)][at(f)];
-        if ((u >= 0.0) == (assumed[m][at(d)][at(f)] >= 0.0)) continue;
-        if (std::abs(phi[at(lower)] - phi[at(upper)]) * std::abs(u) * factor > 1e-10) return true;
-      }
+      const double* u = face_velocity_[m][at(d)].data();
+      const double* carried = face_fraction_[m][at(d)].data();
+      double largest = 0.0;
+      for_each_face(
+          grid_, d,
+          [&](int f, int lower, int upper) {
+            const double upwind = phi[at(u[f] >= 0.0 ? lower : upper)];
+            largest = std::max(largest, std::abs(upwind - carried[f]) * std::abs(u[f]));
+          },
+          [](int, int, bool) {});
+      changed = changed || largest * factor > 1e-10;
     }
   }
-  return false;
+  return changed;
 }
 
 // Tran et al., MPMICE, eqs. 52-53 and 125, then each material's face
@@ -846,15 +872,7 @@ PressureSolution IceSolver<Dim>::solve_pressure_increment(double dt) {
   // Last step's increment is the initial guess: the pressure changes smoothly.
   const PressureSolution solution = pressure_solver_.solve(
       mixture_kappa_, face_density_, mixture_velocity_, dt, pressure_increment_);
-  for (std::size_t m = 0; m < count(); ++m) {
-    for (int d = 0; d < Dim; ++d) {
-      const std::vector<double>& y = face_correction_[m][at(d)];
-      std::vector<double>& density = scratch_face_[at(d)];
-      for (std::size_t f = 0; f < y.size(); ++f) density[f] = 1.0 / y[f];
-    }
-    pressure_solver_.correct_face_velocities(scratch_face_, pressure_increment_, dt,
-                                             face_velocity_[m]);
-  }
+  correct_face_velocities(dt, 1.0);
   for (std::size_t c = 0; c < new_pressure_.size(); ++c) {
     new_pressure_[c] = state_.pressure[c] + pressure_increment_[c];
   }
@@ -890,6 +908,26 @@ double IceSolver<Dim>::fluid_upwind_porosity(int lower, int upper, int d, int f,
                 velocity[m][at(d)][at(f)];
   }
   return state_.porosity[at(momentum >= 0.0 ? lower : upper)];
+}
+
+// U_FC -= sign dt y grad dP for every material (sign -1 takes it back).
+template <int Dim>
+void IceSolver<Dim>::correct_face_velocities(double dt, double sign) {
+  const CellField* increment = &pressure_increment_;
+  if (sign != 1.0) {
+    signed_increment_.resize(pressure_increment_.size());
+    for (std::size_t c = 0; c < signed_increment_.size(); ++c)
+      signed_increment_[c] = sign * pressure_increment_[c];
+    increment = &signed_increment_;
+  }
+  for (std::size_t m = 0; m < count(); ++m) {
+    for (int d = 0; d < Dim; ++d) {
+      const std::vector<double>& y = face_correction_[m][at(d)];
+      std::vector<double>& density = scratch_face_[at(d)];
+      for (std::size_t f = 0; f < y.size(); ++f) density[f] = 1.0 / y[f];
+    }
+    pressure_solver_.correct_face_velocities(scratch_face_, *increment, dt, face_velocity_[m]);
+  }
 }
 
 template <int Dim>
@@ -1048,6 +1086,26 @@ void IceSolver<Dim>::exchange_cell_momentum(double dt) {
   const bool drag = solid_drag_on_;
   const bool fluid_exchange = n >= 2 && has_momentum_exchange_;
   if (!fluid_exchange && !drag) return;
+  if (n == 2 && !drag) {
+    // Two fluids: eq. 131's closed form per cell (as solve_implicit_exchange forms it).
+    const double k = exchange_.momentum[1];
+    const double* phi_0 = state_.materials[0].volume_fraction.data();
+    const double* phi_1 = state_.materials[1].volume_fraction.data();
+    for (std::size_t c = 0; c < at(grid_.cell_count()); ++c) {
+      const double w_0 = mass_[0][c], w_1 = mass_[1][c];
+      const double dt_c = dt * (k * phi_0[c] * phi_1[c]);
+      if (!(w_0 > 0.0 && w_1 > 0.0 && dt_c > 0.0)) continue;
+      const double resistance = 1.0 / dt_c + 1.0 / w_0 + 1.0 / w_1;
+      for (int d = 0; d < Dim; ++d) {
+        double& p_0 = momentum_[0][at(d)][c];
+        double& p_1 = momentum_[1][at(d)][c];
+        const double impulse = (p_1 / w_1 - p_0 / w_0) / resistance;
+        p_0 += w_0 * (impulse / w_0);
+        p_1 += w_1 * (-impulse / w_1);
+      }
+    }
+    return;
+  }
   const std::size_t solid = n;
   const std::size_t total = drag ? n + 1 : n;
   std::array<double, cosim::exchange::kMaxMaterials> weight{};

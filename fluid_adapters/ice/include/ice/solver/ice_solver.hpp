@@ -190,7 +190,8 @@ class IceSolver {
   void add_viscous_stress(double dt);   // eq. 59's Delta(mU)_tau
   void add_heat_conduction(double dt);  // eq. 60's div q
   double face_courant(double dt) const;
-  bool upwind_side_changed(const std::vector<FaceField<Dim>>& assumed, double dt) const;
+  bool upwind_side_changed(double dt) const;
+  void correct_face_velocities(double dt, double sign);
   double face_fraction(std::size_t material, int direction, int face) const;
   void check_state(const FluidState<Dim>& state) const;
   std::size_t count() const { return materials_.size(); }
@@ -254,9 +255,9 @@ class IceSolver {
   // Per fluid material, the volume fraction its face flux carries (the
   // upwind cell's, as the advection of its mass takes it).
   std::vector<FaceField<Dim>> face_fraction_;
-  std::vector<FaceField<Dim>> previous_face_velocity_;   // of the last accepted step
-  std::vector<FaceField<Dim>> predicted_face_velocity_;  // this step's, before the correction
-  std::vector<FaceField<Dim>> flow_direction_;           // the upwind sides the divergence took
+  std::vector<FaceField<Dim>> previous_face_velocity_;  // of the last accepted step
+  std::vector<FaceField<Dim>> flow_direction_;          // the upwind sides the divergence took
+  CellField signed_increment_;
   bool solid_drag_on_ = false;
   CellField solid_drag_;
   CellField solid_bulk_density_;
