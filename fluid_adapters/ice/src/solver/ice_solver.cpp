@@ -586,12 +586,15 @@ void IceSolver<Dim>::exchange_face_momentum(double dt) {
         cosim::exchange::solve_implicit_exchange(w, x, 1, k, dt, dx);
         for (std::size_t m = 0; m < n; ++m) face_velocity_[m][at(d)][at(f)] += increment[m];
         // The pressure correction holds the solid (infinite weight): it
-        // answers the pressure in the solid solver, with its stresses.
+        // answers the pressure in the solid solver, with its stresses. The
+        // new coefficients are solved for directly: y + dy cancels to zero
+        // or below for a trace of air tied to an impermeable solid
+        // (w << dt K), and 1 / rho_FC with it.
         weight[solid] = std::numeric_limits<double>::infinity();
         for (std::size_t m = 0; m < n; ++m) value[m] = face_correction_[m][at(d)][at(f)];
         value[solid] = 0.0;
-        cosim::exchange::solve_implicit_exchange(w, x, 1, k, dt, dx);
-        for (std::size_t m = 0; m < n; ++m) face_correction_[m][at(d)][at(f)] += increment[m];
+        cosim::exchange::solve_implicit_exchange_values(w, x, 1, k, dt, dx);
+        for (std::size_t m = 0; m < n; ++m) face_correction_[m][at(d)][at(f)] = increment[m];
       } else if (fluid_exchange && open) {
         const std::span<double> wn(weight.data(), n);
         const std::span<double> xn(value.data(), n);
