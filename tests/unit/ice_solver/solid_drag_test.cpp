@@ -152,6 +152,39 @@ TEST(IceSolidDrag, PressureForceOnASolidAtRestIsItsBuoyancy) {
   EXPECT_LT(worst, 1e-4);
 }
 
+TEST(IceSolidDrag, AHeldSolidMovesNoPorosityAcrossItsFaces) {
+  // A strip between walls: the left half an impermeable held solid (n = 0.3,
+  // K = 1e15) with the velocity 0.2 m/s the solid solver sent (a shaking
+  // table), the right half a porous solid that is not held. Within the step
+  // no solid crosses the held cells' faces: their porosity stays as set (the
+  // upwind flux would move 0.7 x 0.2 x dt / dx of solid out of the last one
+  // into the first free cell); between the free cells the solid still moves.
+  const CellGrid<1> grid = strip<1>(8, 1.0);
+  SideCondition wall;
+  IceSolver<1> solver(grid, water(), ExchangeCoefficients::none(1), {wall, wall},
+                      Eigen::Matrix<double, 1, 1>::Zero(), still_water(grid, 1.0));
+  std::vector<double> porosity(8), drag(8), density(8);
+  CellField velocity(8, 0.0);
+  for (std::size_t c = 0; c < 8; ++c) {
+    const bool is_held = c < 4;
+    porosity[c] = is_held ? 0.3 : 0.4 + 0.05 * static_cast<double>(c - 4);
+    drag[c] = is_held ? 1e15 : 1e5;
+    density[c] = is_held ? 1e30 : 1590.0;
+    velocity[c] = is_held ? 0.2 : 0.1;
+  }
+  solver.set_porous_medium(porosity, {velocity}, PorosityChange::fill_pores);
+  solver.set_solid_drag(drag, density);
+  const double dt = 1e-3;
+  ASSERT_TRUE(solver.advance(dt).accepted);
+  const CellField& n = solver.state().porosity;
+  for (std::size_t c = 0; c < 4; ++c) EXPECT_EQ(n[c], porosity[c]) << "cell " << c;
+  // The first free cell only loses solid through its free side (upwind
+  // 1 - 0.4 at 0.1 m/s); between the free cells the upwind flux moves it on.
+  const double dx = grid.spacing()[0];
+  EXPECT_NEAR(n[4] - porosity[4], dt * 0.1 * (1.0 - porosity[4]) / dx, 1e-12);
+  EXPECT_NEAR(n[5] - porosity[5], -dt * 0.1 * (porosity[5] - porosity[4]) / dx, 1e-12);
+}
+
 TEST(IceSolidDrag, BadDragInputIsRefused) {
   const CellGrid<1> grid = strip<1>(4, 1.0);
   SideCondition wall;

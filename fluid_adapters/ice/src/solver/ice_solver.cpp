@@ -548,13 +548,23 @@ void IceSolver<Dim>::exchange_face_momentum(double dt) {
       const bool open = type == SideType::fixed_pressure;
       // The solid fraction of the upwind cell; through a side of the domain
       // only outflow.
+      // A held solid (the solid solver marks a rigid body with an immense
+      // bulk density) moves only with the porosity the solid solver sends: no
+      // solid crosses a face of its cells within a window. The water in its
+      // cells is tied to it by an impermeable drag; pores the face flux
+      // opened or closed would strain that water to cavitation within a few
+      // windows (a rigid bed under sliding sand: 1.5 MPa and 0 Pa side by side).
+      const auto held = [&](int c) {
+        return drag && solid_bulk_density_[at(c)] > held_solid_bulk_density;
+      };
       if (type == SideType::wall) {
         phi_s = 0.0;
       } else if (interior) {
-        phi_s = 1.0 - state_.porosity[at(u_s >= 0.0 ? lower : upper)];
+        phi_s = held(lower) || held(upper) ? 0.0
+                                           : 1.0 - state_.porosity[at(u_s >= 0.0 ? lower : upper)];
       } else {
         const bool outflow = upper_side ? u_s > 0.0 : u_s < 0.0;
-        phi_s = outflow ? 1.0 - state_.porosity[at(cell)] : 0.0;
+        phi_s = outflow && !held(cell) ? 1.0 - state_.porosity[at(cell)] : 0.0;
       }
       if (drag && open) {
         weight[solid] = face_value(solid_bulk_density_);
