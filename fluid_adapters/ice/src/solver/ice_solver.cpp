@@ -845,6 +845,18 @@ void IceSolver<Dim>::compute_lagrangian_values(double dt) {
 // accelerated by the pressure and stopped by the drag does no work).
 template <int Dim>
 bool IceSolver<Dim>::compute_lagrangian_energy(double dt) {
+  // Below this volume fraction a material is a trace (the initial state
+  // gives absent materials 1e-6 by default).
+  constexpr double trace_volume_fraction = 1e-5;
+  const auto cell_temperature = [&](std::size_t i) {
+    double heat = 0.0, capacity = 0.0;
+    for (std::size_t k = 0; k < count(); ++k) {
+      const double c = state_.materials[k].bulk_density[i] * eos_[k]->specific_heat();
+      heat += c * state_.materials[k].temperature[i];
+      capacity += c;
+    }
+    return heat / capacity;
+  };
   for (std::size_t m = 0; m < count(); ++m) {
     const MaterialState<Dim>& material = state_.materials[m];
     const double c_v = eos_[m]->specific_heat();
@@ -873,8 +885,21 @@ bool IceSolver<Dim>::compute_lagrangian_energy(double dt) {
       const double share =
           new_pressure_[i] * (phi * kappa_[m][i] * pressure_increment_[i] + dt * volume_flux);
       energy_[m][i] = rhobar * c_v * material.temperature[i] + dt * work + share;
+      // A trace of a material (a little air carried into wet soil) sits
+      // where the pressure equation is the other materials': its share of
+      // the work is not its own compression, and where the pores open and
+      // close (a coupled solid) it heats or cools it step after step, by
+      // orders of magnitude, to no energy at all (then to a negative
+      // temperature after advection) or to a bubble. A trace more than a
+      // factor two off the cell's temperature takes the cell's temperature
+      // instead (its energy is a trace too).
+      if (phi < trace_volume_fraction) {
+        const double equilibrium = rhobar * c_v * cell_temperature(i);
+        if (!(energy_[m][i] > 0.5 * equilibrium && energy_[m][i] < 2.0 * equilibrium))
+          energy_[m][i] = equilibrium;
+      }
       // A compression too strong for the step (or work that empties a
-      // trace material) leaves no internal energy: the step is refused.
+      // material) leaves no internal energy: the step is refused.
       if (!(energy_[m][i] > 0.0) || !std::isfinite(energy_[m][i])) return false;
     }
   }
