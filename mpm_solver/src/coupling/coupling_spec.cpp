@@ -37,7 +37,7 @@ Schema exchange_grid_schema() {
                 field_list({names::pore_pressure, names::pore_pressure_force, names::impulse})
                     .default_value("[pore_pressure, momentum_exchange_impulse]"),
                 "Fields read; the job must send each of them. With pore_pressure_force the solid "
-                "takes the fluid solver's pressure force per cell (split by mass) instead of "
+                "takes the fluid solver's pressure force per cell (split by solid volume) instead of "
                 "-phi_s grad p from pore_pressure, which then only sets the points' pore pressure.")
       .optional("held_density_factor", Schema::number().range(1.0, 1e100).default_value("1e30"),
                 "Factor on solid_bulk_density in cells whose solid cannot take the exchange "

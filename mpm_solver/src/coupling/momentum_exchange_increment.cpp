@@ -8,13 +8,19 @@ namespace mpm::coupling {
 template <int Dim>
 ImpulseSplit<Dim> split_impulse(const ExchangeGrid<Dim>& grid, std::span<const double> cell_impulse,
                                 const Particles<Dim>& particles, const std::vector<BodyRole>& roles,
-                                std::vector<Vec<Dim>>& particle_impulse) {
+                                std::vector<Vec<Dim>>& particle_impulse, SplitWeight weighting) {
   const std::size_t n = grid.size();
   const auto dim = static_cast<std::size_t>(Dim);
+  const bool by_volume = weighting == SplitWeight::solid_volume;
+  // Each particle's weight: its mass, or its solid volume.
+  const auto weight_of = [&](std::size_t p) {
+    return by_volume ? (1.0 - particles.porosity[p]) * particles.volume[p] : particles.mass[p];
+  };
+  // `mass` is the deformable particles' weight in a cell, `rigid_mass` the rigid ones'.
   std::vector<double> mass(n, 0.0), rigid_mass(n, 0.0);
   for (std::size_t p = 0; p < particles.size(); ++p) {
     const bool rigid = roles[particles.body[p]].rigid;
-    const double m = particles.mass[p];
+    const double m = weight_of(p);
     grid.for_each_conservative(particles.position[p], particles.half_length[p], [&](std::size_t c, double w) {
       (rigid ? rigid_mass : mass)[c] += w * m;
     });
@@ -55,18 +61,22 @@ ImpulseSplit<Dim> split_impulse(const ExchangeGrid<Dim>& grid, std::span<const d
     for (std::size_t f : neighbours) impulse[f] += moved * (mass[f] / neighbour_mass);
     impulse[c].setZero();
   }
-  // Impulse per unit of mass weight in each cell.
+  // Impulse per unit of weight in each cell (by volume the rigid solid's
+  // share is absorbed).
   std::vector<Vec<Dim>> per_mass(n, Vec<Dim>::Zero());
   for (std::size_t c = 0; c < n; ++c) {
-    if (mass[c] > 0.0)
-      per_mass[c] = impulse[c] / mass[c];
-    else
+    const double total = by_volume ? mass[c] + rigid_mass[c] : mass[c];
+    if (mass[c] > 0.0) {
+      per_mass[c] = impulse[c] / total;
+      if (by_volume) split.absorbed += impulse[c] * (rigid_mass[c] / total);
+    } else {
       split.absorbed += impulse[c];
+    }
   }
   particle_impulse.assign(particles.size(), Vec<Dim>::Zero());
   for (std::size_t p = 0; p < particles.size(); ++p) {
     if (roles[particles.body[p]].rigid) continue;
-    const double m = particles.mass[p];
+    const double m = weight_of(p);
     Vec<Dim>& j = particle_impulse[p];
     grid.for_each_conservative(particles.position[p], particles.half_length[p], [&](std::size_t c, double w) { j += (w * m) * per_mass[c]; });
     split.applied += j;
@@ -75,8 +85,8 @@ ImpulseSplit<Dim> split_impulse(const ExchangeGrid<Dim>& grid, std::span<const d
 }
 
 template ImpulseSplit<2> split_impulse<2>(const ExchangeGrid<2>&, std::span<const double>, const Particles<2>&,
-                                          const std::vector<BodyRole>&, std::vector<Vec<2>>&);
+                                          const std::vector<BodyRole>&, std::vector<Vec<2>>&, SplitWeight);
 template ImpulseSplit<3> split_impulse<3>(const ExchangeGrid<3>&, std::span<const double>, const Particles<3>&,
-                                          const std::vector<BodyRole>&, std::vector<Vec<3>>&);
+                                          const std::vector<BodyRole>&, std::vector<Vec<3>>&, SplitWeight);
 
 }  // namespace mpm::coupling
