@@ -33,12 +33,13 @@ Schema exchange_grid_schema() {
                     .default_value("[solid_fraction, solid_velocity, solid_bulk_density, "
                                    "permeability, grain_size]"),
                 "Fields written per cell at every window end.")
-      .optional("reads",
-                field_list({names::pore_pressure, names::pore_pressure_force, names::impulse})
-                    .default_value("[pore_pressure, momentum_exchange_impulse]"),
-                "Fields read; the job must send each of them. With pore_pressure_force the solid "
-                "takes the fluid solver's pressure force per cell (split by solid volume) instead of "
-                "-phi_s grad p from pore_pressure, which then only sets the points' pore pressure.")
+      .optional(
+          "reads",
+          field_list({names::pore_pressure, names::pore_pressure_force, names::impulse})
+              .default_value("[pore_pressure, momentum_exchange_impulse]"),
+          "Fields read; the job must send each of them. With pore_pressure_force the solid "
+          "takes the fluid solver's pressure force per cell (split by solid volume) instead of "
+          "-phi_s grad p from pore_pressure, which then only sets the points' pore pressure.")
       .optional("held_density_factor", Schema::number().range(1.0, 1e100).default_value("1e30"),
                 "Factor on solid_bulk_density in cells whose solid cannot take the exchange "
                 "impulse (rigid bodies, held bodies, fixed faces).")

@@ -84,9 +84,11 @@ ImpulseSplit<Dim> split_impulse(const ExchangeGrid<Dim>& grid, std::span<const d
   return split;
 }
 
-template ImpulseSplit<2> split_impulse<2>(const ExchangeGrid<2>&, std::span<const double>, const Particles<2>&,
-                                          const std::vector<BodyRole>&, std::vector<Vec<2>>&, SplitWeight);
-template ImpulseSplit<3> split_impulse<3>(const ExchangeGrid<3>&, std::span<const double>, const Particles<3>&,
-                                          const std::vector<BodyRole>&, std::vector<Vec<3>>&, SplitWeight);
+template ImpulseSplit<2> split_impulse<2>(const ExchangeGrid<2>&, std::span<const double>,
+                                          const Particles<2>&, const std::vector<BodyRole>&,
+                                          std::vector<Vec<2>>&, SplitWeight);
+template ImpulseSplit<3> split_impulse<3>(const ExchangeGrid<3>&, std::span<const double>,
+                                          const Particles<3>&, const std::vector<BodyRole>&,
+                                          std::vector<Vec<3>>&, SplitWeight);
 
 }  // namespace mpm::coupling

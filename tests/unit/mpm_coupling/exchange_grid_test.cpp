@@ -204,9 +204,9 @@ TEST(MpmCouplingExchangeGrid, HeldSolidIsWrittenWithAnEffectivelyInfiniteBulkDen
 }
 
 TEST(MpmCouplingExchangeGrid, HeldCellMovesWithItsHeldSolidAlone) {
-  // A held body at rest fills the bottom row; a deformable one slides over it at 2 m/s with points whose
-  // domains reach 2 cm down into the held cells. The held cells keep the held body's velocity (0), the
-  // cells above take the sliding body's; the solid fraction counts both.
+  // A held body at rest fills the bottom row; a deformable one slides over it at 2 m/s with points
+  // whose domains reach 2 cm down into the held cells. The held cells keep the held body's velocity
+  // (0), the cells above take the sliding body's; the solid fraction counts both.
   const auto grid = unit_square_grid<2>(4, 1);
   Particles<2> particles;
   testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.25), 0.125, 0.0, 8900.0, 0);
@@ -237,9 +237,9 @@ TEST(MpmCouplingExchangeGrid, HeldCellMovesWithItsHeldSolidAlone) {
 }
 
 TEST(MpmCouplingExchangeGrid, ACellSharedByABedAndSlidingSandMovesWithTheSand) {
-  // Each cell of the row: its lower half a rigid bed at rest, its upper half sand sliding at 2 m/s. The
-  // bed's mass is the larger, but the sand fills 30 % of the cell: not held, and the cell takes the sand's
-  // velocity (mass-weighted over both it would be 0.30 m/s); phi_s counts both.
+  // Each cell of the row: its lower half a rigid bed at rest, its upper half sand sliding at 2 m/s.
+  // The bed's mass is the larger, but the sand fills 30 % of the cell: not held, and the cell takes
+  // the sand's velocity (mass-weighted over both it would be 0.30 m/s); phi_s counts both.
   const auto grid = unit_square_grid<2>(4, 1);
   Particles<2> particles;
   testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.125), 0.125, 0.0, 8900.0, 0);

@@ -120,7 +120,8 @@ TEST(MpmCouplingImpulse, PressureForceBySolidVolumeGivesTheRigidBedItsShare) {
   std::vector<double> force(grid.size() * 2, 0.0);
   for (int i = 0; i < 4; ++i) force[grid.flat({i, 0}) * 2 + 1] = 0.8;  // N, upwards
   std::vector<Vec<2>> by_volume, by_mass;
-  const auto split = split_impulse(grid, force, particles, roles, by_volume, SplitWeight::solid_volume);
+  const auto split =
+      split_impulse(grid, force, particles, roles, by_volume, SplitWeight::solid_volume);
   split_impulse(grid, force, particles, roles, by_mass);
   double sand_volume = 0.0, sand_force = 0.0, sand_by_mass = 0.0;
   for (std::size_t p = 0; p < particles.size(); ++p) {
