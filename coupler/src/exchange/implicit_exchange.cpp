@@ -253,6 +253,59 @@ void solve_implicit_exchange(std::span<const double> weight, std::span<const dou
   solve_general(weight, value, dim, coefficient, dt, increment);
 }
 
+void solve_implicit_exchange_values(std::span<const double> weight, std::span<const double> value,
+                                    int components, std::span<const double> coefficient, double dt,
+                                    std::span<double> new_value) {
+  const std::size_t n = weight.size();
+  check_sizes(n, value.size(), components, coefficient.size(), new_value.size());
+  if (!std::isfinite(dt) || dt < 0) throw_bad_time_step(dt);
+  const auto dim = static_cast<std::size_t>(components);
+  std::copy(value.begin(), value.end(), new_value.begin());
+  std::array<std::size_t, kMaxMaterials> unknown{};
+  std::array<std::size_t, kMaxMaterials> held{};
+  std::size_t m = 0;
+  std::size_t held_count = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_present(weight[i])) continue;
+    if (is_held(weight[i])) {
+      held[held_count++] = i;
+    } else {
+      unknown[m++] = i;
+    }
+  }
+  if (m == 0 || m + held_count < 2) return;
+  const auto dt_coupling = [&](std::size_t i, std::size_t j) {
+    const double c = coefficient[std::min(i, j) * n + std::max(i, j)];
+    if (!std::isfinite(c) || c < 0) throw_bad_coefficient(std::min(i, j), std::max(i, j), c);
+    return dt * c;
+  };
+  MMatrix system;
+  system.size = m;
+  for (std::size_t a = 0; a < m; ++a) {
+    system.excess[a] = weight[unknown[a]];
+    for (std::size_t h = 0; h < held_count; ++h) {
+      system.excess[a] += dt_coupling(unknown[a], held[h]);
+    }
+    for (std::size_t b = 0; b < m; ++b) {
+      system.off_diagonal[a][b] = a == b ? 0.0 : dt_coupling(unknown[a], unknown[b]);
+    }
+  }
+  system.factor();
+  std::array<double, kMaxMaterials> column{};
+  for (std::size_t c = 0; c < dim; ++c) {
+    for (std::size_t a = 0; a < m; ++a) {
+      const std::size_t i = unknown[a];
+      double rhs = weight[i] * value[i * dim + c];
+      for (std::size_t h = 0; h < held_count; ++h) {
+        rhs += dt_coupling(i, held[h]) * value[held[h] * dim + c];
+      }
+      column[a] = rhs;
+    }
+    system.solve(column);
+    for (std::size_t a = 0; a < m; ++a) new_value[unknown[a] * dim + c] = column[a];
+  }
+}
+
 void exchange_momentum(std::span<const double> bulk_density, std::span<const double> velocity,
                        int dim, std::span<const double> drag, double dt,
                        std::span<double> velocity_increment) {

@@ -43,7 +43,7 @@ Schema exchange_grid_schema() {
                                    "heat_exchange_energy when the case conducts heat"),
                 "Fields read; the job must send each of them (a thermal soil coupled without an "
                 "energy exchange lists its reads). With pore_pressure_force the solid takes the "
-                "fluid solver's pressure force per cell (split by mass) instead of -phi_s grad p "
+                "fluid solver's pressure force per cell (split by solid volume) instead of -phi_s grad p "
                 "from pore_pressure, which then only sets the points' pore pressure. "
                 "heat_exchange_energy needs heat conduction and is shared over the particles by "
                 "heat capacity.")

@@ -104,7 +104,9 @@ void MpmCoupling<Dim>::State::apply(double dt, Particles<Dim>& particles) {
   if (cell_pressure_force) {
     cell_values.resize(exchange->size() * static_cast<std::size_t>(Dim));
     channel->read(n::pore_pressure_force, cell_values);
-    diagnostics.pore_pressure_force = split_impulse(*exchange, cell_values, particles, roles, scratch).applied;
+    diagnostics.pore_pressure_force =
+        split_impulse(*exchange, cell_values, particles, roles, scratch, SplitWeight::solid_volume)
+            .applied;
     add_to_force(scratch, 1.0);
   }
   if (exchange_reads(n::impulse)) {

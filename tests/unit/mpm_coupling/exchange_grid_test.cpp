@@ -203,5 +203,75 @@ TEST(MpmCouplingExchangeGrid, HeldSolidIsWrittenWithAnEffectivelyInfiniteBulkDen
   }
 }
 
+TEST(MpmCouplingExchangeGrid, HeldCellMovesWithItsHeldSolidAlone) {
+  // A held body at rest fills the bottom row; a deformable one slides over it at 2 m/s with points
+  // whose domains reach 2 cm down into the held cells. The held cells keep the held body's velocity
+  // (0), the cells above take the sliding body's; the solid fraction counts both.
+  const auto grid = unit_square_grid<2>(4, 1);
+  Particles<2> particles;
+  testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.25), 0.125, 0.0, 8900.0, 0);
+  testing::add_block<2>(particles, Vec<2>(0.0, 0.25), Vec<2>(1.0, 0.5), 0.125, 0.4, 2650.0, 1);
+  std::vector<BodyRole> roles = testing::porous_roles(2);
+  roles[0].held = roles[0].rigid = true;
+  roles[0].porous = false;
+  std::vector<std::uint8_t> held(particles.size(), 0);
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    held[p] = roles[particles.body[p]].held;
+    if (particles.body[p] == 1) {
+      particles.velocity[p] = Vec<2>(2.0, 0.0);
+      particles.position[p][1] -= 0.02;
+    }
+  }
+  const PorousFields f = porous_fields(grid, particles, roles, held, 1e30);
+  for (int i = 0; i < 4; ++i) {
+    const std::size_t bottom = grid.flat({i, 0}), above = grid.flat({i, 1});
+    EXPECT_EQ(f.held[bottom], 1);
+    EXPECT_EQ(f.solid_velocity[bottom * 2], 0.0);
+    EXPECT_EQ(f.solid_velocity[bottom * 2 + 1], 0.0);
+    EXPECT_EQ(f.held[above], 0);
+    EXPECT_NEAR(f.solid_velocity[above * 2], 2.0, 1e-12);
+    // Full of the held body plus 0.02 / 0.25 of a row of 0.6 solid: capped at 1, and counted.
+    EXPECT_EQ(f.solid_fraction[bottom], 1.0);
+  }
+  EXPECT_EQ(f.capped_cells, 4u);
+}
+
+TEST(MpmCouplingExchangeGrid, ACellSharedByABedAndSlidingSandMovesWithTheSand) {
+  // Each cell of the row: its lower half a rigid bed at rest, its upper half sand sliding at 2 m/s.
+  // The bed's mass is the larger, but the sand fills 30 % of the cell: not held, and the cell takes
+  // the sand's velocity (mass-weighted over both it would be 0.30 m/s); phi_s counts both.
+  const auto grid = unit_square_grid<2>(4, 1);
+  Particles<2> particles;
+  testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.125), 0.125, 0.0, 8900.0, 0);
+  testing::add_block<2>(particles, Vec<2>(0.0, 0.125), Vec<2>(1.0, 0.25), 0.125, 0.4, 2650.0, 1);
+  std::vector<BodyRole> roles = testing::porous_roles(2);
+  roles[0].held = roles[0].rigid = true;
+  roles[0].porous = false;
+  std::vector<std::uint8_t> held(particles.size(), 0);
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    held[p] = roles[particles.body[p]].held;
+    if (particles.body[p] == 1) particles.velocity[p] = Vec<2>(2.0, 0.0);
+  }
+  const PorousFields f = porous_fields(grid, particles, roles, held, 1e30);
+  for (int i = 0; i < 4; ++i) {
+    const std::size_t c = grid.flat({i, 0});
+    EXPECT_EQ(f.held[c], 0);
+    EXPECT_NEAR(f.solid_velocity[c * 2], 2.0, 1e-12);
+    EXPECT_NEAR(f.solid_fraction[c], 0.8, 1e-12);
+    EXPECT_NEAR(f.solid_bulk_density[c], 0.5 * 8900.0 + 0.5 * 0.6 * 2650.0, 1e-9);
+  }
+}
+
+TEST(MpmCouplingExchangeGrid, ACellItsDomainsFillExactlyIsNotCountedAsCapped) {
+  // A non-porous block, 8 x 8 points per cell: the solid fraction sums to 1 within round-off.
+  const auto grid = unit_square_grid<2>(4, 1);
+  Particles<2> particles;
+  testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 1.0), 0.25 / 8.0, 0.0, 7800.0, 0);
+  const PorousFields f = porous_fields(grid, particles, testing::porous_roles(1),
+                                       std::vector<std::uint8_t>(particles.size(), 0), 1e30);
+  for (double phi : f.solid_fraction) EXPECT_NEAR(phi, 1.0, 1e-12);
+  EXPECT_EQ(f.capped_cells, 0u);
+}
+
 }  // namespace
 }  // namespace mpm::coupling

@@ -103,5 +103,45 @@ TEST(MpmCouplingImpulse, StepSharesOverAWindowAddUpToTheReceivedImpulse) {
   EXPECT_LT(error, 1e-12);
 }
 
+TEST(MpmCouplingImpulse, PressureForceBySolidVolumeGivesTheRigidBedItsShare) {
+  // One row of cells, each half filled by a non-porous rigid bed (bottom) and
+  // half by sand of porosity 0.4 (top): phi_s = 0.5 + 0.5 x 0.6 = 0.8. The
+  // fluid solver's pressure force -phi_s grad P V_c split by solid volume gives
+  // the sand 0.3 / 0.8 of it (its own -(1 - n) V grad P) and the bed 0.5 / 0.8,
+  // absorbed; split by mass the sand would take all of it.
+  const Grid<2> g = make_grid<2>(Vec<2>::Zero(), Vec<2>::Constant(0.25), {4, 1}, ShapeKind::linear);
+  const auto grid = ExchangeGrid<2>::covering(g, 1);
+  Particles<2> particles;
+  testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.125), 0.125, 0.0, 8900.0, 0);
+  testing::add_block<2>(particles, Vec<2>(0.0, 0.125), Vec<2>(1.0, 0.25), 0.125, 0.4, 2650.0, 1);
+  auto roles = testing::porous_roles(2);
+  roles[0].rigid = roles[0].held = true;
+  roles[0].porous = false;
+  std::vector<double> force(grid.size() * 2, 0.0);
+  for (int i = 0; i < 4; ++i) force[grid.flat({i, 0}) * 2 + 1] = 0.8;  // N, upwards
+  std::vector<Vec<2>> by_volume, by_mass;
+  const auto split =
+      split_impulse(grid, force, particles, roles, by_volume, SplitWeight::solid_volume);
+  split_impulse(grid, force, particles, roles, by_mass);
+  double sand_volume = 0.0, sand_force = 0.0, sand_by_mass = 0.0;
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    if (particles.body[p] == 0) {
+      EXPECT_EQ(by_volume[p].norm(), 0.0);
+      continue;
+    }
+    sand_volume += (1.0 - particles.porosity[p]) * particles.volume[p];
+    sand_force += by_volume[p][1];
+    sand_by_mass += by_mass[p][1];
+    // Each sand point: 0.8 N per cell of 0.0625 m2 over the cell's solid
+    // volume 0.8 x 0.0625: 16 N per m3 of its own solid.
+    EXPECT_NEAR(by_volume[p][1], 16.0 * (1.0 - particles.porosity[p]) * particles.volume[p], 1e-12);
+  }
+  EXPECT_NEAR(sand_volume, 4 * 0.3 * 0.0625, 1e-12);
+  EXPECT_NEAR(sand_force, 4 * 0.3, 1e-12);
+  EXPECT_NEAR(split.absorbed[1], 4 * 0.5, 1e-12);
+  EXPECT_NEAR(split.applied[1] + split.absorbed[1], split.received[1], 1e-12);
+  EXPECT_NEAR(sand_by_mass, 4 * 0.8, 1e-12);
+}
+
 }  // namespace
 }  // namespace mpm::coupling

@@ -48,6 +48,20 @@ void solve_implicit_exchange(std::span<const double> weight, std::span<const dou
                              int components, std::span<const double> coefficient, double dt,
                              std::span<double> increment);
 
+// The same exchange returning the new values x*_i + Delta x_i, solved for
+// directly: (W + dt L_uu) x_u = W x*_u + dt sum_h C_uh x*_h over the unknowns u
+// (held and absent materials keep x*). For data x* >= 0 the right-hand side is
+// non-negative and the subtraction-free elimination gives every new value to
+// a few ulps of its own size, however small; x* + Delta x from
+// solve_implicit_exchange cancels to zero or below where a material with
+// little weight is tied to a held one (w_i << dt C_ih: x_i -> x_h w_i /
+// (w_i + dt C_ih)). Use it for coefficients that must stay positive (the face
+// coefficients of ICE's pressure correction); it does not have the pairwise
+// form that makes sum_i w_i Delta x_i vanish to round-off.
+void solve_implicit_exchange_values(std::span<const double> weight, std::span<const double> value,
+                                    int components, std::span<const double> coefficient, double dt,
+                                    std::span<double> new_value);
+
 // Momentum: bulk densities rho_bar_i [kg m^-3], velocities U*_i [m s^-1]
 // (dim per material), drag coefficients K_ij [kg m^-3 s^-1]; gives Delta U_i.
 void exchange_momentum(std::span<const double> bulk_density, std::span<const double> velocity,

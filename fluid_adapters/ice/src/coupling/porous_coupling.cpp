@@ -17,7 +17,6 @@ namespace mx = cosim::job::momentum_exchange_fields;
 namespace ex = cosim::job::energy_exchange_fields;
 constexpr const char* pore_pressure = "pore_pressure";
 constexpr const char* pore_pressure_force = "pore_pressure_force";
-constexpr double held_bulk_density = 1e20;  // [kg/m3]
 
 cosim::FieldSpec field(const char* name, int components, const char* unit) {
   cosim::FieldSpec f;
@@ -124,7 +123,7 @@ double PorousCoupling<Dim>::explicit_window_limit(const IceSolver<Dim>& solver) 
     if (state.porosity[c] >= 1.0) continue;
     // A held solid (the solid solver marks it with an immense bulk density)
     // does not answer the pressure: no feedback to resolve.
-    if (!solid_density_.empty() && solid_density_[c] > held_bulk_density) continue;
+    if (!solid_density_.empty() && solid_density_[c] > held_solid_bulk_density) continue;
     // Undrained, the pores' fluids carry the load: the mixture's bulk
     // modulus is about 1 / sum_f phi_f kappa_f (the skeleton's stiffness is
     // far smaller) and its inertia the fluids' and, where known (drag: ice),

@@ -682,7 +682,6 @@ void IceSolver<Dim>::exchange_face_momentum(double dt) {
   const std::span<double> dx(increment.data(), total);
   const std::span<double> k(coefficient.data(), total * total);
   const bool fluid_exchange = n >= 2 && has_momentum_exchange_;
-
   for (int d = 0; d < Dim; ++d) {
     for (int f = 0; f < grid_.face_count(d); ++f) {
       const int lower = grid_.lower_cell(d, f);
@@ -713,13 +712,23 @@ void IceSolver<Dim>::exchange_face_momentum(double dt) {
       const bool open = type == SideType::fixed_pressure;
       // The solid fraction of the upwind cell; through a side of the domain
       // only outflow.
+      // A held solid (the solid solver marks a rigid body with an immense
+      // bulk density) moves only with the porosity the solid solver sends: no
+      // solid crosses a face of its cells within a window. The water in its
+      // cells is tied to it by an impermeable drag; pores the face flux
+      // opened or closed would strain that water to cavitation within a few
+      // windows (a rigid bed under sliding sand: 1.5 MPa and 0 Pa side by side).
+      const auto held = [&](int c) {
+        return drag && solid_bulk_density_[at(c)] > held_solid_bulk_density;
+      };
       if (type == SideType::wall) {
         phi_s = 0.0;
       } else if (interior) {
-        phi_s = 1.0 - state_.porosity[at(u_s >= 0.0 ? lower : upper)];
+        phi_s = held(lower) || held(upper) ? 0.0
+                                           : 1.0 - state_.porosity[at(u_s >= 0.0 ? lower : upper)];
       } else {
         const bool outflow = upper_side ? u_s > 0.0 : u_s < 0.0;
-        phi_s = outflow ? 1.0 - state_.porosity[at(cell)] : 0.0;
+        phi_s = outflow && !held(cell) ? 1.0 - state_.porosity[at(cell)] : 0.0;
       }
       if (drag && open) {
         weight[solid] = face_value(solid_bulk_density_);
@@ -751,12 +760,15 @@ void IceSolver<Dim>::exchange_face_momentum(double dt) {
         cosim::exchange::solve_implicit_exchange(w, x, 1, k, dt, dx);
         for (std::size_t m = 0; m < n; ++m) face_velocity_[m][at(d)][at(f)] += increment[m];
         // The pressure correction holds the solid (infinite weight): it
-        // answers the pressure in the solid solver, with its stresses.
+        // answers the pressure in the solid solver, with its stresses. The
+        // new coefficients are solved for directly: y + dy cancels to zero
+        // or below for a trace of air tied to an impermeable solid
+        // (w << dt K), and 1 / rho_FC with it.
         weight[solid] = std::numeric_limits<double>::infinity();
         for (std::size_t m = 0; m < n; ++m) value[m] = face_correction_[m][at(d)][at(f)];
         value[solid] = 0.0;
-        cosim::exchange::solve_implicit_exchange(w, x, 1, k, dt, dx);
-        for (std::size_t m = 0; m < n; ++m) face_correction_[m][at(d)][at(f)] += increment[m];
+        cosim::exchange::solve_implicit_exchange_values(w, x, 1, k, dt, dx);
+        for (std::size_t m = 0; m < n; ++m) face_correction_[m][at(d)][at(f)] = increment[m];
       } else if (fluid_exchange && open && n == 2) {
         // Two fluids: eq. 131's closed form, one resistance for the
         // velocities and the correction (as solve_implicit_exchange forms it).
@@ -1039,6 +1051,19 @@ void IceSolver<Dim>::compute_lagrangian_values(double dt) {
 template <int Dim>
 bool IceSolver<Dim>::compute_lagrangian_energy(double dt) {
   FaceField<Dim>& face_flux = scratch_face_;  // phi_f,FC U_f,FC per face
+  const std::size_t cells = at(grid_.cell_count());
+  // Below this volume fraction a material is a trace (the initial state
+  // gives absent materials 1e-6 by default).
+  constexpr double trace_volume_fraction = 1e-5;
+  const auto cell_temperature = [&](std::size_t i) {
+    double heat = 0.0, capacity = 0.0;
+    for (std::size_t k = 0; k < count(); ++k) {
+      const double c = state_.materials[k].bulk_density[i] * eos_[k]->specific_heat();
+      heat += c * state_.materials[k].temperature[i];
+      capacity += c;
+    }
+    return heat / capacity;
+  };
   for (std::size_t m = 0; m < count(); ++m) {
     const MaterialState<Dim>& material = state_.materials[m];
     const double c_v = eos_[m]->specific_heat();
@@ -1068,9 +1093,29 @@ bool IceSolver<Dim>::compute_lagrangian_energy(double dt) {
           material.volume_fraction.data(), kappa_[m].data(), pressure_increment_.data(),
           new_pressure_.data(), material.temperature.data(), energy_[m].data());
     });
-    // A compression too strong for the step (or work that empties a trace
+    // A trace of a material (a little air carried into wet soil) sits where
+    // the pressure equation is the other materials': its share of the work
+    // is not its own compression, and where the pores open and close (a
+    // coupled solid) it heats or cools it step after step, by orders of
+    // magnitude, to no energy at all (then to a negative temperature after
+    // advection) or to a bubble. A trace more than a factor two off the
+    // cell's temperature takes the cell's temperature instead (its energy is
+    // a trace too).
+    const double* phi = material.volume_fraction.data();
+    double* energy = energy_[m].data();
+    for (std::size_t i = 0; i < cells; ++i) {
+      if (!(phi[i] < trace_volume_fraction)) continue;
+      const double equilibrium = material.bulk_density[i] * c_v * cell_temperature(i);
+      if (!(energy[i] > 0.5 * equilibrium && energy[i] < 2.0 * equilibrium))
+        energy[i] = equilibrium;
+    }
+    // A compression too strong for the step (or work that empties a
     // material) leaves no internal energy: the step is refused.
-    if (refused > 0) return false;
+    if (refused > 0) {
+      for (std::size_t i = 0; i < cells; ++i) {
+        if (!(energy[i] > 0.0) || !std::isfinite(energy[i])) return false;
+      }
+    }
   }
   return true;
 }

@@ -26,9 +26,20 @@ using ImpulseSplit = ShareTotals<Dim>;
 // (3^Dim block) by their deformable mass. Rigid bodies take no coupling
 // force: a cell holding only rigid solid, or an empty cell with no
 // deformable neighbour, absorbs its impulse (reported in `absorbed`).
+//
+// SplitWeight::solid_volume shares a cell's value by the particles' solid
+// volume (1 - n_p) V_p w_pc instead, rigid particles included, whose shares
+// are absorbed: the fluid solver's pressure force per cell,
+// -phi_s grad P V_c with phi_s counting every solid in the cell, then gives
+// each deformable particle its own -(1 - n_p) V_p grad P (Tran et al.,
+// MPMICE, eq. 7), also where it shares the cell with a rigid bed (by mass the
+// deformable particles would take the bed's share too).
+enum class SplitWeight { deformable_mass, solid_volume };
+
 template <int Dim>
 ImpulseSplit<Dim> split_impulse(const ExchangeGrid<Dim>& grid, std::span<const double> cell_impulse,
                                 const Particles<Dim>& particles, const std::vector<BodyRole>& roles,
-                                std::vector<Vec<Dim>>& particle_impulse);
+                                std::vector<Vec<Dim>>& particle_impulse,
+                                SplitWeight weighting = SplitWeight::deformable_mass);
 
 }  // namespace mpm::coupling

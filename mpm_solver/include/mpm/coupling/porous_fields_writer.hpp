@@ -20,9 +20,15 @@ namespace mpm::coupling {
 //                 particle's permeability follows its porosity, Pan et al.
 //                 2021, eq. 76); 0 where no porous particle reaches the cell.
 // A cell is held when more than half of its solid mass (of its volume, for
-// massless rigid bodies) belongs to held particles; its rho_bar_s is
-// written as held_density_factor x max(rho_bar_s, 1 kg/m^3), which makes the
-// exchange's solid velocity increment dt K / rho_bar_s vanish.
+// massless rigid bodies) belongs to held particles and the solid not held
+// fills at most 10 % of it; its rho_bar_s is written as held_density_factor x
+// max(rho_bar_s, 1 kg/m^3), which makes the exchange's solid velocity
+// increment dt K / rho_bar_s vanish, and its u_s is the held particles'
+// mass-weighted velocity alone (the tips of a deformable body's domains do
+// not move the held solid). A cell shared by held solid and more deformable
+// solid than that (sand sliding over a cut cell of a rigid bed) is not held
+// and takes the deformable solid's velocity: its fluid moves with the sand,
+// the bed only takes pore space.
 struct PorousFields {
   std::vector<double> solid_fraction;
   std::vector<double> solid_velocity;  // Dim per cell, cell-major
@@ -30,7 +36,7 @@ struct PorousFields {
   std::vector<double> permeability;
   std::vector<double> grain_size;
   std::vector<std::uint8_t> held;
-  std::size_t capped_cells = 0;  // cells where phi_s exceeded 1 (overlapping particles)
+  std::size_t capped_cells = 0;  // cells where phi_s exceeded 1 + 1e-9 (overlapping particles)
 };
 
 template <int Dim>

@@ -28,14 +28,18 @@ struct ShareTotals {
 // block around it by their share weight (the coupler's mappings smear
 // amounts a little past the solid's edge) unless it holds solid that keeps
 // it (`holding_weight`, e.g. rigid bodies for an impulse); what no particle
-// can take is absorbed.
+// can take is absorbed. With `holders_share` the holding weight also counts
+// in each cell's total, W_q -> W_q + H_q in the sum, and the holders' share
+// is absorbed (a force per cell shared by solid volume, a rigid bed's part
+// kept by the bed).
 template <int Dim, int N>
 ShareTotals<N> share_over_particles(const ExchangeGrid<Dim>& grid,
                                     std::span<const double> cell_amount,
                                     const Particles<Dim>& particles,
                                     std::span<const double> share_weight,
                                     std::span<const double> holding_weight,
-                                    std::vector<Eigen::Matrix<double, N, 1>>& particle_amount) {
+                                    std::vector<Eigen::Matrix<double, N, 1>>& particle_amount,
+                                    bool holders_share = false) {
   using Amount = Eigen::Matrix<double, N, 1>;
   const std::size_t n = grid.size();
   assert(cell_amount.size() == n * N);
@@ -68,10 +72,13 @@ ShareTotals<N> share_over_particles(const ExchangeGrid<Dim>& grid,
   // Amount per unit of share weight in each cell.
   std::vector<Amount> per_weight(n, Amount::Zero());
   for (std::size_t c = 0; c < n; ++c) {
-    if (weight[c] > 0.0)
-      per_weight[c] = amount[c] / weight[c];
-    else
+    if (weight[c] > 0.0) {
+      const double total = holders_share ? weight[c] + holding[c] : weight[c];
+      per_weight[c] = amount[c] / total;
+      if (holders_share) totals.absorbed += amount[c] * (holding[c] / total);
+    } else {
       totals.absorbed += amount[c];
+    }
   }
   particle_amount.assign(particles.size(), Amount::Zero());
   for (std::size_t p = 0; p < particles.size(); ++p) {

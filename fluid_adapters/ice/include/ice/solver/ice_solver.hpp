@@ -38,6 +38,12 @@ struct IceSolverOptions {
 
 enum class PorosityChange { compress, fill_pores };
 
+// A coupled solid whose bulk density exceeds this [kg/m3] is held: the solid
+// solver marks rigid bodies so (mpm_solver: their density x 1e30). It takes
+// the drag with infinite inertia and no solid crosses its cells' faces within
+// a window.
+inline constexpr double held_solid_bulk_density = 1e20;
+
 struct StepReport {
   bool accepted = true;
   double courant = 0.0;         // max over cells and materials of sum_d |U_FC,d| dt / dx_d
