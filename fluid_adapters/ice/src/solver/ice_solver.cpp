@@ -682,6 +682,11 @@ void IceSolver<Dim>::exchange_face_momentum(double dt) {
   const std::span<double> dx(increment.data(), total);
   const std::span<double> k(coefficient.data(), total * total);
   const bool fluid_exchange = n >= 2 && has_momentum_exchange_;
+  if (fluid_exchange && n == 2 && !drag) {
+    exchange_two_fluid_faces(dt);
+    return;
+  }
+
   for (int d = 0; d < Dim; ++d) {
     for (int f = 0; f < grid_.face_count(d); ++f) {
       const int lower = grid_.lower_cell(d, f);
@@ -769,20 +774,6 @@ void IceSolver<Dim>::exchange_face_momentum(double dt) {
         value[solid] = 0.0;
         cosim::exchange::solve_implicit_exchange_values(w, x, 1, k, dt, dx);
         for (std::size_t m = 0; m < n; ++m) face_correction_[m][at(d)][at(f)] = increment[m];
-      } else if (fluid_exchange && open && n == 2) {
-        // Two fluids: eq. 131's closed form, one resistance for the
-        // velocities and the correction (as solve_implicit_exchange forms it).
-        const double dt_c = dt * (exchange_.momentum[1] * fraction[0] * fraction[1]);
-        if (weight[0] > 0.0 && weight[1] > 0.0 && dt_c > 0.0) {
-          const double resistance = 1.0 / dt_c + 1.0 / weight[0] + 1.0 / weight[1];
-          for (std::vector<FaceField<Dim>>* field : {&face_velocity_, &face_correction_}) {
-            double& x0 = (*field)[0][at(d)][at(f)];
-            double& x1 = (*field)[1][at(d)][at(f)];
-            const double impulse = (x1 - x0) / resistance;
-            x0 += impulse / weight[0];
-            x1 += -impulse / weight[1];
-          }
-        }
       } else if (fluid_exchange && open) {
         const std::span<double> wn(weight.data(), n);
         const std::span<double> xn(value.data(), n);
@@ -801,6 +792,59 @@ void IceSolver<Dim>::exchange_face_momentum(double dt) {
         for (std::size_t m = 0; m < n; ++m) face_correction_[m][at(d)][at(f)] += increment[m];
       }
     }
+  }
+}
+
+// exchange_face_momentum for two fluids without the drag (a water-air
+// case, or the drag left to the coupler), face by face without index
+// divisions: the solid's face velocity and upwind fraction, then eq. 131's
+// closed form, one resistance for the velocities and the correction (as
+// solve_implicit_exchange forms it).
+template <int Dim>
+void IceSolver<Dim>::exchange_two_fluid_faces(double dt) {
+  const double k = exchange_.momentum[1];
+  const double* rhobar_0 = state_.materials[0].bulk_density.data();
+  const double* rhobar_1 = state_.materials[1].bulk_density.data();
+  const double* phi_0 = state_.materials[0].volume_fraction.data();
+  const double* phi_1 = state_.materials[1].volume_fraction.data();
+  const double* porosity = state_.porosity.data();
+  for (int d = 0; d < Dim; ++d) {
+    const double* solid_velocity = state_.solid_velocity[at(d)].data();
+    double* u_s = solid_face_velocity_[at(d)].data();
+    double* phi_s = solid_face_fraction_[at(d)].data();
+    double* u_0 = face_velocity_[0][at(d)].data();
+    double* u_1 = face_velocity_[1][at(d)].data();
+    double* y_0 = face_correction_[0][at(d)].data();
+    double* y_1 = face_correction_[1][at(d)].data();
+    const auto exchange = [&](int f, double w_0, double w_1, double fraction_0,
+                              double fraction_1) {
+      const double dt_c = dt * (k * fraction_0 * fraction_1);
+      if (!(w_0 > 0.0 && w_1 > 0.0 && dt_c > 0.0)) return;
+      const double resistance = 1.0 / dt_c + 1.0 / w_0 + 1.0 / w_1;
+      const double impulse = (u_1[f] - u_0[f]) / resistance;
+      u_0[f] += impulse / w_0;
+      u_1[f] += -impulse / w_1;
+      const double correction = (y_1[f] - y_0[f]) / resistance;
+      y_0[f] += correction / w_0;
+      y_1[f] += -correction / w_1;
+    };
+    for_each_face(
+        grid_, d,
+        [&](int f, int lower, int upper) {
+          u_s[f] = 0.5 * (solid_velocity[lower] + solid_velocity[upper]);
+          phi_s[f] = 1.0 - porosity[u_s[f] >= 0.0 ? lower : upper];
+          exchange(f, 0.5 * (rhobar_0[lower] + rhobar_0[upper]),
+                   0.5 * (rhobar_1[lower] + rhobar_1[upper]), 0.5 * (phi_0[lower] + phi_0[upper]),
+                   0.5 * (phi_1[lower] + phi_1[upper]));
+        },
+        [&](int f, int cell, bool upper_side) {
+          const SideType type = sides_[at(2 * d + (upper_side ? 1 : 0))].type;
+          u_s[f] = solid_velocity[cell];
+          const bool outflow = upper_side ? u_s[f] > 0.0 : u_s[f] < 0.0;
+          phi_s[f] = type != SideType::wall && outflow ? 1.0 - porosity[cell] : 0.0;
+          if (type == SideType::fixed_pressure)
+            exchange(f, rhobar_0[cell], rhobar_1[cell], phi_0[cell], phi_1[cell]);
+        });
   }
 }
 
@@ -1055,10 +1099,12 @@ bool IceSolver<Dim>::compute_lagrangian_energy(double dt) {
   // Below this volume fraction a material is a trace (the initial state
   // gives absent materials 1e-6 by default).
   constexpr double trace_volume_fraction = 1e-5;
+  std::array<double, cosim::exchange::kMaxMaterials> specific_heat{};
+  for (std::size_t k = 0; k < count(); ++k) specific_heat[k] = eos_[k]->specific_heat();
   const auto cell_temperature = [&](std::size_t i) {
     double heat = 0.0, capacity = 0.0;
     for (std::size_t k = 0; k < count(); ++k) {
-      const double c = state_.materials[k].bulk_density[i] * eos_[k]->specific_heat();
+      const double c = state_.materials[k].bulk_density[i] * specific_heat[k];
       heat += c * state_.materials[k].temperature[i];
       capacity += c;
     }
