@@ -1,0 +1,74 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace openfoam {
+
+using Vector3 = std::array<double, 3>;
+
+// One of the two fluids of the VOF case (water and air).
+struct FluidProperties {
+  double density = 0.0;    // [kg/m^3]
+  double viscosity = 0.0;  // dynamic [Pa s]; OpenFOAM takes nu = viscosity / density
+};
+
+// What a side of the generated box is.
+enum class SideKind {
+  wall,        // no slip: U = 0, zero-gradient water fraction, fixedFluxPressure
+  slip,        // free slip: zero normal velocity, tangential copied
+  atmosphere,  // open top: total pressure 0, inflow of air only
+};
+
+const char* to_string(SideKind kind);
+
+struct WaterBox {
+  Vector3 lower{};
+  Vector3 upper{};
+};
+
+// A complete blockMesh case made from the YAML: one hexahedral block of
+// uniform cells (x fastest, then y, then z, as blockMesh numbers them); in 2D
+// one cell thick along z with empty front and back.
+struct GeneratedCase {
+  int dimension = 2;
+  Vector3 origin{};
+  Vector3 upper{};
+  std::array<int, 3> cells{1, 1, 1};
+  Vector3 gravity{};
+  FluidProperties water;
+  FluidProperties air;
+  double surface_tension = 0.07;        // [N/m]
+  std::vector<WaterBox> water_regions;  // cells whose centre lies inside start as water
+  std::array<SideKind, 6> sides{SideKind::wall, SideKind::wall, SideKind::wall,
+                                SideKind::wall, SideKind::wall, SideKind::wall};
+
+  std::size_t cell_count() const;
+  Vector3 spacing() const;
+};
+
+// A `kind: openfoam_case` file (openfoam_adapter --config).
+struct CaseDescription {
+  std::filesystem::path file;
+  std::uint64_t config_hash = 0;
+  std::string name;
+  std::string solver = "interFoam";  // the OpenFOAM application run each window
+  // Exactly one of the two: a case made from the YAML, or a user's case
+  // directory (copied into the run directory, checked up front).
+  std::optional<GeneratedCase> generate;
+  std::filesystem::path directory;
+  double end_time = 0.0;
+  double time_step = 0.0;  // fixed OpenFOAM deltaT [s]
+  // Standalone, OpenFOAM is restarted every `window` (at least at every
+  // snapshot); coupled, the job's window applies. Each must be a whole
+  // number of time steps.
+  double window = 0.0;
+  double output_every = 0.0;           // snapshot interval; 0: start and end only
+  bool keep_time_directories = false;  // keep every window's time directory
+};
+
+}  // namespace openfoam

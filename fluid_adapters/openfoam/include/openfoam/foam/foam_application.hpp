@@ -1,0 +1,29 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "openfoam/foam/installation.hpp"
+
+namespace openfoam {
+
+// Wall time of one run of an OpenFOAM application [s].
+struct ApplicationTiming {
+  double startup = 0.0;   // launch to its first time step (the first "Time = " line)
+  double stepping = 0.0;  // from there to its exit, the last write included
+  double total = 0.0;
+};
+
+// Runs the OpenFOAM application `name` on `case_dir` (`-case` is added to
+// `arguments`) to completion, its output in `log_file`, in its own process
+// group that dies with the adapter. A non-zero exit, a signal or a
+// "FOAM FATAL" line in its log throws cosim::Error (participant_failed,
+// exit 3) naming the application, how it ended, the case directory (kept
+// for inspection) and the last lines of its log.
+ApplicationTiming run_application(const Installation& installation, const std::string& name,
+                                  std::vector<std::string> arguments,
+                                  const std::filesystem::path& case_dir,
+                                  const std::filesystem::path& log_file);
+
+}  // namespace openfoam

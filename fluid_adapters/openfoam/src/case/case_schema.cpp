@@ -1,0 +1,91 @@
+#include "openfoam/case/case_schema.hpp"
+
+namespace openfoam {
+
+using cosim::config::Schema;
+
+namespace {
+
+Schema vector_schema(const char* unit) {
+  return Schema::vector(2, 3).unit(unit);
+}
+
+Schema fluid_schema(const char* which) {
+  Schema fluid = Schema::object(which);
+  fluid.required("density", Schema::number().positive().unit("kg/m^3"), "Density.")
+      .required("viscosity", Schema::number().positive().unit("Pa s"),
+                "Dynamic viscosity (OpenFOAM's nu = viscosity / density).");
+  return fluid;
+}
+
+Schema generate_schema() {
+  Schema grid = Schema::object("One block of uniform cells.");
+  grid.required("origin", vector_schema("m"), "Lower corner.")
+      .required("upper", vector_schema("m"), "Upper corner.")
+      .required("cells", Schema::vector(2, 3), "Cells per direction.");
+  Schema fluids = Schema::object("The two fluids of the VOF case.");
+  fluids.required("water", fluid_schema("The liquid (alpha.water = 1)."), "Water.")
+      .required("air", fluid_schema("The gas (alpha.water = 0)."), "Air.");
+  Schema box = Schema::object("Axis-aligned box.");
+  box.required("lower", vector_schema("m"), "Lower corner.")
+      .required("upper", vector_schema("m"), "Upper corner.");
+  Schema region = Schema::object("Cells whose centre lies in the box start full of water.");
+  region.required("box", box, "The box.");
+  Schema side = Schema::one_of({"wall", "slip", "atmosphere"}).default_value("wall");
+  Schema boundaries = Schema::object(
+      "What each side is: wall (no slip), slip (free slip) or atmosphere (open, total pressure "
+      "0, air flows in, anything flows out); default wall. In 2D z_min and z_max are OpenFOAM's "
+      "empty front and back.");
+  for (const char* s : {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"})
+    boundaries.optional(s, side, "This side.");
+  Schema generate = Schema::object(
+      "A complete OpenFOAM case made by the adapter: blockMesh, setFields, the dictionaries of "
+      "the solver (VOF water and air, laminar).");
+  generate.required("dimension", Schema::integer().range(2, 3), "2 or 3.")
+      .required("grid", grid, "The cells; in 2D one cell of the smallest spacing thick along z.")
+      .optional("gravity", vector_schema("m/s^2").default_value("0"), "Gravity vector.")
+      .required("fluids", fluids, "Water and air.")
+      .optional("surface_tension",
+                Schema::number().non_negative().unit("N/m").default_value("0.07"),
+                "Surface tension of the water-air interface.")
+      .optional("water", Schema::sequence(region), "Regions that start full of water.")
+      .optional("boundaries", boundaries, "The sides.");
+  return generate;
+}
+
+}  // namespace
+
+Schema openfoam_case_schema() {
+  Schema output = Schema::object("What the run writes.");
+  output.optional("every", Schema::number().non_negative().unit("s").default_value("0"),
+                  "Snapshot interval (HDF5 + XDMF); 0: start and end only.");
+  Schema file = Schema::file(
+      "openfoam_case",
+      "A two-phase (water and air) flow run by Debian's stock OpenFOAM v1912 through case files "
+      "(openfoam_adapter): OpenFOAM is restarted once per coupling window.");
+  file.required("name", Schema::string().non_empty(), "Name of the case.")
+      .optional("solver", Schema::one_of({"interFoam"}).default_value("interFoam"),
+                "The OpenFOAM application.")
+      .optional("generate", generate_schema(),
+                "Make the OpenFOAM case from these keys (give this or `directory`).")
+      .optional("directory", Schema::path().must_exist(),
+                "An existing OpenFOAM case (system/, constant/ and a 0/ directory), copied into "
+                "the run directory and checked up front (give this or `generate`).")
+      .required("end_time", Schema::number().positive().unit("s"), "Simulated end time.")
+      .required("time_step", Schema::number().positive().unit("s"),
+                "OpenFOAM's fixed deltaT; every window and snapshot interval is a whole number "
+                "of steps.")
+      .optional("window", Schema::number().positive().unit("s").default_value("output.every"),
+                "Standalone: OpenFOAM runs this long per start (the adapter reads its fields "
+                "between starts). Coupled, the job's window applies.")
+      .optional("keep_time_directories", Schema::boolean().default_value("false"),
+                "Keep every window's OpenFOAM time directory (default: only the latest).")
+      .optional("output", output, "Outputs.");
+  return file;
+}
+
+std::string openfoam_case_help() {
+  return openfoam_case_schema().help("openfoam_case (openfoam_adapter --config)");
+}
+
+}  // namespace openfoam

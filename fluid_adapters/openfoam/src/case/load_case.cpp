@@ -1,0 +1,206 @@
+#include "openfoam/case/load_case.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "cosim/config/document.hpp"
+#include "cosim/config/kind.hpp"
+#include "cosim/error.hpp"
+#include "cosim/io/content_hash.hpp"
+#include "openfoam/case/case_schema.hpp"
+
+namespace openfoam {
+
+using cosim::config::Node;
+
+namespace {
+
+constexpr const char* side_names[] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+constexpr const char* axis_names[] = {"x", "y", "z"};
+
+SideKind side_kind(const std::string& name) {
+  if (name == "slip") return SideKind::slip;
+  if (name == "atmosphere") return SideKind::atmosphere;
+  return SideKind::wall;
+}
+
+// Whether `interval` is a whole number of `step`s (to a relative 1e-9).
+bool whole_steps(double interval, double step) {
+  const double n = interval / step;
+  return std::abs(n - std::round(n)) <= 1e-9 * std::max(1.0, n);
+}
+
+class CaseReader {
+ public:
+  explicit CaseReader(const cosim::config::Document& document)
+      : document_(document), root_(document.root()) {}
+
+  CaseDescription read() {
+    cosim::config::expect_kind(root_, "openfoam_case");
+    openfoam_case_schema().validate(root_);
+    CaseDescription c;
+    c.file = document_.path();
+    c.config_hash = cosim::hash_bytes(document_.text());
+    c.name = root_["name"].as<std::string>();
+    c.solver = root_.get<std::string>("solver", "interFoam");
+    const auto generate = root_.find("generate");
+    const auto directory = root_.find("directory");
+    if (generate && directory) directory->fail("give either `generate` or `directory`, not both");
+    if (!generate && !directory) {
+      root_.fail("give `generate` (a case made from the YAML) or `directory` (an OpenFOAM case)");
+    }
+    if (generate) c.generate = read_generated(*generate);
+    if (directory) c.directory = directory->as_path();
+    c.end_time = root_["end_time"].as<double>();
+    c.time_step = root_["time_step"].as<double>();
+    if (c.time_step > c.end_time) {
+      root_["time_step"].fail(
+          fmt::format("time step {} s is longer than the end time {} s", c.time_step, c.end_time));
+    }
+    if (auto output = root_.find("output")) c.output_every = output->get<double>("every", 0.0);
+    if (c.output_every > 0.0 && !whole_steps(c.output_every, c.time_step)) {
+      root_["output"]["every"].fail(
+          fmt::format("the snapshot interval {} s is not a whole number of time steps of {} s",
+                      c.output_every, c.time_step));
+    }
+    c.window = root_.get<double>("window", c.output_every > 0.0 ? c.output_every : c.end_time);
+    if (auto window = root_.find("window"); window && !whole_steps(c.window, c.time_step)) {
+      window->fail(fmt::format("the window {} s is not a whole number of time steps of {} s",
+                               c.window, c.time_step));
+    }
+    if (!whole_steps(c.end_time, c.time_step)) {
+      root_["end_time"].fail(
+          fmt::format("the end time {} s is not a whole number of time steps of {} s", c.end_time,
+                      c.time_step));
+    }
+    c.keep_time_directories = root_.get<bool>("keep_time_directories", false);
+    return c;
+  }
+
+ private:
+  Vector3 vector_of(const Node& node, int dimension) const {
+    const auto v = node.as<std::vector<double>>();
+    if (static_cast<int>(v.size()) != dimension) {
+      node.fail(
+          fmt::format("expected {} values for a {}D case, got {}", dimension, dimension, v.size()));
+    }
+    Vector3 x{};
+    std::copy(v.begin(), v.end(), x.begin());
+    return x;
+  }
+
+  GeneratedCase read_generated(const Node& g) const {
+    GeneratedCase c;
+    c.dimension = g["dimension"].as<int>();
+    const int dim = c.dimension;
+    const Node grid = g["grid"];
+    c.origin = vector_of(grid["origin"], dim);
+    c.upper = vector_of(grid["upper"], dim);
+    const Node cells = grid["cells"];
+    const auto counts = cells.as<std::vector<double>>();
+    if (static_cast<int>(counts.size()) != dim) {
+      cells.fail(
+          fmt::format("expected {} cell counts for a {}D case, got {}", dim, dim, counts.size()));
+    }
+    for (int d = 0; d < dim; ++d) {
+      const auto k = static_cast<std::size_t>(d);
+      if (!(counts[k] >= 1.0) || counts[k] != std::floor(counts[k]) || counts[k] > 1e6) {
+        cells.fail(fmt::format("cells along {} must be a whole number >= 1, got {}", axis_names[d],
+                               counts[k]));
+      }
+      c.cells[k] = static_cast<int>(counts[k]);
+      if (!(c.upper[k] > c.origin[k])) {
+        grid["upper"].fail(fmt::format("upper corner {} is not above the origin {} along {}",
+                                       c.upper[k], c.origin[k], axis_names[d]));
+      }
+    }
+    if (dim == 2) {
+      // One cell thick along z, as thick as the smallest spacing.
+      const double thickness = std::min((c.upper[0] - c.origin[0]) / c.cells[0],
+                                        (c.upper[1] - c.origin[1]) / c.cells[1]);
+      c.origin[2] = 0.0;
+      c.upper[2] = thickness;
+      c.cells[2] = 1;
+    }
+    if (auto gravity = g.find("gravity")) c.gravity = vector_of(*gravity, dim);
+    const Node fluids = g["fluids"];
+    c.water = {fluids["water"]["density"].as<double>(), fluids["water"]["viscosity"].as<double>()};
+    c.air = {fluids["air"]["density"].as<double>(), fluids["air"]["viscosity"].as<double>()};
+    c.surface_tension = g.get<double>("surface_tension", 0.07);
+    if (auto regions = g.find("water")) {
+      for (const Node& region : regions->items()) {
+        const Node box = region["box"];
+        WaterBox w{vector_of(box["lower"], dim), vector_of(box["upper"], dim)};
+        if (dim == 2) {
+          w.lower[2] = c.origin[2];
+          w.upper[2] = c.upper[2];
+        }
+        for (int d = 0; d < dim; ++d) {
+          const auto k = static_cast<std::size_t>(d);
+          if (!(w.upper[k] > w.lower[k])) {
+            box["upper"].fail(fmt::format("upper corner {} is not above the lower {} along {}",
+                                          w.upper[k], w.lower[k], axis_names[d]));
+          }
+        }
+        c.water_regions.push_back(w);
+      }
+    }
+    if (auto boundaries = g.find("boundaries")) {
+      for (int s = 0; s < 2 * dim; ++s) {
+        if (auto side = boundaries->find(side_names[s])) {
+          c.sides[static_cast<std::size_t>(s)] = side_kind(side->as<std::string>());
+        }
+      }
+      if (dim == 2) {
+        for (const char* s : {"z_min", "z_max"}) {
+          if (auto side = boundaries->find(s)) {
+            side->fail("a 2D case's z sides are OpenFOAM's empty front and back");
+          }
+        }
+      }
+    }
+    return c;
+  }
+
+  const cosim::config::Document& document_;
+  Node root_;
+};
+
+}  // namespace
+
+const char* to_string(SideKind kind) {
+  switch (kind) {
+    case SideKind::wall:
+      return "wall";
+    case SideKind::slip:
+      return "slip";
+    case SideKind::atmosphere:
+      return "atmosphere";
+  }
+  return "?";
+}
+
+std::size_t GeneratedCase::cell_count() const {
+  return static_cast<std::size_t>(cells[0]) * static_cast<std::size_t>(cells[1]) *
+         static_cast<std::size_t>(cells[2]);
+}
+
+Vector3 GeneratedCase::spacing() const {
+  Vector3 h{};
+  for (std::size_t d = 0; d < 3; ++d) h[d] = (upper[d] - origin[d]) / cells[d];
+  return h;
+}
+
+CaseDescription load_case(const std::filesystem::path& file) {
+  const auto document = cosim::config::Document::load_file(file);
+  return CaseReader(document).read();
+}
+
+CaseDescription load_case_text(std::string_view text, const std::filesystem::path& name) {
+  const auto document = cosim::config::Document::load_string(text, name);
+  return CaseReader(document).read();
+}
+
+}  // namespace openfoam

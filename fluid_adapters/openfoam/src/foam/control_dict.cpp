@@ -1,0 +1,31 @@
+#include "openfoam/foam/control_dict.hpp"
+
+#include <fmt/format.h>
+
+#include "cosim/io/files.hpp"
+#include "openfoam/foam/foam_file_header.hpp"
+
+namespace openfoam {
+
+// startFrom latestTime with a fixed deltaT keeps the window ends exact;
+// runTimeModifiable off spares the solver polling its dictionaries. The
+// Courant limits are read by the VOF solvers even with a fixed step.
+std::string control_dict(const ControlSettings& s) {
+  return foam_file_header({"dictionary", "system", "controlDict"}) +
+         fmt::format(
+             "application {};\n"
+             "startFrom latestTime;\nstartTime 0;\nstopAt endTime;\nendTime {:.17g};\n"
+             "deltaT {:.17g};\n"
+             "writeControl timeStep;\nwriteInterval {};\npurgeWrite 0;\n"
+             "writeFormat ascii;\nwritePrecision 12;\nwriteCompression off;\n"
+             "timeFormat general;\ntimePrecision {};\n"
+             "runTimeModifiable false;\nadjustTimeStep no;\nmaxCo 1;\nmaxAlphaCo 1;\n"
+             "maxDeltaT 1;\n",
+             s.application, s.end_time, s.time_step, s.write_every, time_precision);
+}
+
+void write_control_dict(const std::filesystem::path& case_dir, const ControlSettings& settings) {
+  cosim::write_file_atomically(case_dir / "system" / "controlDict", control_dict(settings));
+}
+
+}  // namespace openfoam
