@@ -1,0 +1,157 @@
+// openfoam_adapter end to end: its bad-input exits (which need no OpenFOAM),
+// then, with OpenFOAM installed, a small generated case run window by
+// window and a failing OpenFOAM run. Without OpenFOAM the executable exits
+// 77 after the first group, which CTest reports as not run
+// (SKIP_RETURN_CODE), printing why.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cosim/error.hpp"
+#include "openfoam/foam/installation.hpp"
+#include "openfoam/foam/time_directories.hpp"
+#include "run_process.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using cosim::testing::binary;
+using cosim::testing::fresh_directory;
+using cosim::testing::read_text;
+using cosim::testing::write_text;
+
+bool openfoam_installed = false;
+
+const std::string small_tank = R"(kind: openfoam_case
+name: tank
+generate:
+  dimension: 2
+  grid: {origin: [0.0, 0.0], upper: [0.2, 0.1], cells: [10, 5]}
+  gravity: [0.0, -9.81]
+  fluids:
+    water: {density: 1000, viscosity: 1.0e-3}
+    air: {density: 1, viscosity: 1.8e-5}
+  water:
+    - box: {lower: [0.0, 0.0], upper: [0.06, 0.06]}
+  boundaries: {y_max: atmosphere}
+end_time: 0.02
+time_step: 1.0e-3
+window: 0.005
+output: {every: 0.01}
+)";
+
+cosim::testing::ProcessResult run_adapter(const fs::path& config, const fs::path& output,
+                                          std::vector<std::string> prefix = {}) {
+  prefix.push_back(binary("openfoam_adapter").string());
+  for (const char* a : {"--config"}) prefix.emplace_back(a);
+  prefix.push_back(config.string());
+  prefix.emplace_back("--output");
+  prefix.push_back(output.string());
+  return cosim::testing::run(prefix, std::chrono::seconds(300));
+}
+
+TEST(OpenFoamAdapterApp, OpenFoamMissingExitsTwoSayingHowToInstallIt) {
+  const fs::path dir = fresh_directory("openfoam_adapter_missing");
+  write_text(dir / "case.yaml", small_tank);
+  const auto r = run_adapter(dir / "case.yaml", dir / "out", {"/usr/bin/env", "PATH=/nonexistent"});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("OpenFOAM is not installed"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("apt-get install openfoam"), std::string::npos) << r.output;
+}
+
+TEST(OpenFoamAdapterApp, AWindowThatIsNotWholeStepsExitsTwoNamingTheKeyAndLine) {
+  const fs::path dir = fresh_directory("openfoam_adapter_window");
+  std::string text = small_tank;
+  text.replace(text.find("window: 0.005"), 13, "window: 0.0055");
+  write_text(dir / "case.yaml", text);
+  const auto r = run_adapter(dir / "case.yaml", dir / "out");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("case.yaml:15"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("window"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("not a whole number of time steps"), std::string::npos) << r.output;
+}
+
+class OpenFoamAdapterRun : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!openfoam_installed) GTEST_SKIP() << "OpenFOAM is not installed";
+  }
+};
+
+TEST_F(OpenFoamAdapterRun, RunsWindowByWindowAndKeepsOnlyTheLatestTime) {
+  const fs::path dir = fresh_directory("openfoam_adapter_tank");
+  write_text(dir / "case.yaml", small_tank);
+  const auto r = run_adapter(dir / "case.yaml", dir / "out");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // Snapshots at 0, 0.01 and 0.02 s.
+  for (int step = 0; step < 3; ++step) {
+    EXPECT_TRUE(fs::exists(dir / "out" / fmt::format("openfoam_{:06d}.h5", step))) << step;
+  }
+  EXPECT_FALSE(fs::exists(dir / "out" / "openfoam_000003.h5"));
+  const auto times = openfoam::time_directories(dir / "out" / "case");
+  ASSERT_EQ(times.size(), 2u);
+  EXPECT_EQ(times[0].name, "0");
+  EXPECT_DOUBLE_EQ(times[1].time, 0.02);
+  const auto summary = nlohmann::json::parse(read_text(dir / "out" / "summary.json"));
+  EXPECT_EQ(summary["status"]["exit_code"], 0);
+  EXPECT_EQ(summary["windows"], 4);
+  EXPECT_EQ(summary["steps"], 20);
+  const auto& windows = summary["openfoam_windows"];
+  ASSERT_EQ(windows["end_time_s"].size(), 4u);
+  EXPECT_DOUBLE_EQ(windows["end_time_s"][3].get<double>(), 0.02);
+  for (const char* k :
+       {"adapter_write_s", "solver_startup_s", "solver_stepping_s", "field_read_s"}) {
+    ASSERT_EQ(windows[k].size(), 4u) << k;
+    for (const auto& v : windows[k]) EXPECT_GE(v.get<double>(), 0.0) << k;
+  }
+  // A solver start costs something: the start-up is measured, not zero.
+  EXPECT_GT(windows["solver_startup_s"][0].get<double>(), 0.0);
+  const auto& water = summary["conserved"]["volume_water"];
+  EXPECT_NEAR(water["start"].get<double>(), 0.06 * 0.06, 1e-12);
+  EXPECT_LE(std::abs(water["relative_change"].get<double>()), 1e-4);
+}
+
+TEST_F(OpenFoamAdapterRun, AFailingOpenFoamRunExitsThreeWithItsLogAndKeepsTheCase) {
+  const fs::path dir = fresh_directory("openfoam_adapter_failing");
+  write_text(dir / "case.yaml", small_tank);
+  ASSERT_EQ(run_adapter(dir / "case.yaml", dir / "made").exit_code, 0);
+  // The made case as a user's case, its pressure solver unknown to OpenFOAM.
+  const fs::path user = dir / "user_case";
+  fs::copy(dir / "made" / "case", user, fs::copy_options::recursive);
+  fs::remove_all(user / "0.02");
+  std::string solution = read_text(user / "system" / "fvSolution");
+  solution.replace(
+      solution.find("solver PCG;\n        preconditioner DIC;\n        tolerance 1e-7;"), 11,
+      "solver XYZ;");
+  write_text(user / "system" / "fvSolution", solution);
+  std::string text = small_tank;
+  text.replace(text.find("generate:"), text.find("end_time:") - text.find("generate:"),
+               "directory: user_case\n");
+  write_text(dir / "user.yaml", text);
+  const auto r = run_adapter(dir / "user.yaml", dir / "out");
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("OpenFOAM's interFoam"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("XYZ"), std::string::npos) << r.output;  // the log's last lines
+  EXPECT_TRUE(fs::exists(dir / "out" / "case" / "system" / "fvSolution"));
+  const auto summary = nlohmann::json::parse(read_text(dir / "out" / "summary.json"));
+  EXPECT_EQ(summary["status"]["exit_code"], 3);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    openfoam::find_installation({"interFoam", "blockMesh", "setFields", "postProcess"});
+    openfoam_installed = true;
+  } catch (const cosim::Error& e) {
+    fmt::print("OpenFOAM tests not run: {}\n", e.what());
+  }
+  ::testing::InitGoogleTest(&argc, argv);
+  const int result = RUN_ALL_TESTS();
+  return result == 0 && !openfoam_installed ? 77 : result;
+}
