@@ -1,5 +1,5 @@
 // Every YAML file shipped under configs/ loads: jobs through the coupler's
-// loader (schema and cross-references), MPM, shallow-water and ICE cases through
+// loader (schema and cross-references), MPM, shallow-water, ICE and OpenFOAM cases through
 // their solvers' loaders. A key renamed in a schema, or an example left
 // behind by a change, fails here rather than in a user's first run.
 // `kind: test_participant` files are read by the test participant, which
@@ -15,6 +15,7 @@
 #include "cosim/job/job.hpp"
 #include "ice/case/load_case.hpp"
 #include "mpm/case/load_case.hpp"
+#include "openfoam/case/load_case.hpp"
 #include "swe/case/load_case.hpp"
 
 namespace fs = std::filesystem;
@@ -37,6 +38,8 @@ TEST(ShippedConfigs, EveryJobAndCaseLoads) {
         (void)swe::load_case(file);
       } else if (kind == "ice_case") {
         (void)ice::load_case(file);
+      } else if (kind == "openfoam_case") {
+        (void)openfoam::load_case(file);
       } else if (kind != "test_participant") {
         ADD_FAILURE() << "unknown kind '" << kind << "'";
         continue;
@@ -52,6 +55,7 @@ TEST(ShippedConfigs, EveryJobAndCaseLoads) {
   EXPECT_GE(loaded["mpm_case"], 16);
   EXPECT_GE(loaded["swe_case"], 12);
   EXPECT_GE(loaded["ice_case"], 3);
+  EXPECT_GE(loaded["openfoam_case"], 1);
 }
 
 }  // namespace
