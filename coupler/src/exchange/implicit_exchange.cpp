@@ -114,29 +114,80 @@ double two_material_impulse(double weight_1, double weight_2, double value_1, do
 
 namespace {
 
+// The present materials, split into the unknowns (those that can move) and
+// the held ones that act as sources, each in index order.
+struct ExchangePartners {
+  std::array<std::size_t, kMaxMaterials> unknown{};
+  std::array<std::size_t, kMaxMaterials> held{};
+  std::size_t unknowns = 0;
+  std::size_t held_count = 0;
+
+  std::size_t present() const { return unknowns + held_count; }
+};
+
+ExchangePartners partition(std::span<const double> weight) {
+  ExchangePartners p;
+  for (std::size_t i = 0; i < weight.size(); ++i) {
+    if (!is_present(weight[i])) continue;
+    if (is_held(weight[i])) {
+      p.held[p.held_count++] = i;
+    } else {
+      p.unknown[p.unknowns++] = i;
+    }
+  }
+  return p;
+}
+
+// dt C_ij of a pair (the upper triangle of the n x n coefficients), checked.
+struct DtCoupling {
+  std::span<const double> coefficient;
+  std::size_t n;
+  double dt;
+
+  double operator()(std::size_t i, std::size_t j) const {
+    const double c = coefficient[std::min(i, j) * n + std::max(i, j)];
+    if (!std::isfinite(c) || c < 0) throw_bad_coefficient(std::min(i, j), std::max(i, j), c);
+    return dt * c;
+  }
+};
+
+// (W + dt L) restricted to the unknowns, stored as an M-matrix (off-diagonal
+// magnitudes dt C_ij and row excess w_i + sum_held dt C_ih) and factored.
+MMatrix factored_exchange_system(const ExchangePartners& p, std::span<const double> weight,
+                                 const DtCoupling& dt_coupling) {
+  MMatrix system;
+  system.size = p.unknowns;
+  for (std::size_t a = 0; a < p.unknowns; ++a) {
+    system.excess[a] = weight[p.unknown[a]];
+    for (std::size_t h = 0; h < p.held_count; ++h) {
+      system.excess[a] += dt_coupling(p.unknown[a], p.held[h]);
+    }
+    for (std::size_t b = 0; b < p.unknowns; ++b) {
+      system.off_diagonal[a][b] = a == b ? 0.0 : dt_coupling(p.unknown[a], p.unknown[b]);
+    }
+  }
+  system.factor();
+  return system;
+}
+
 // Any number of materials, absent and held ones included.
 [[gnu::noinline]] void solve_general(std::span<const double> weight, std::span<const double> value,
                                      std::size_t dim, std::span<const double> coefficient,
                                      double dt, std::span<double> increment) {
   const std::size_t n = weight.size();
   std::fill(increment.begin(), increment.end(), 0.0);
+  const ExchangePartners partners = partition(weight);
+  const DtCoupling dt_coupling{coefficient, n, dt};
+  if (partners.present() < 2) return;
 
-  std::array<std::size_t, kMaxMaterials> present{};
-  std::size_t present_count = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!is_present(weight[i])) continue;
-    present[present_count++] = i;
-  }
-  const auto dt_coupling = [&](std::size_t i, std::size_t j) {
-    const double c = coefficient[std::min(i, j) * n + std::max(i, j)];
-    if (!std::isfinite(c) || c < 0) throw_bad_coefficient(std::min(i, j), std::max(i, j), c);
-    return dt * c;
-  };
-  if (present_count < 2) return;
-
-  if (present_count == 2) {
-    const std::size_t i = present[0];
-    const std::size_t j = present[1];
+  if (partners.present() == 2) {
+    // The pair in index order.
+    const std::size_t first = partners.unknowns > 0 ? partners.unknown[0] : partners.held[0];
+    const std::size_t second = partners.unknowns == 2   ? partners.unknown[1]
+                               : partners.held_count == 2 ? partners.held[1]
+                                                          : partners.held[0];
+    const std::size_t i = std::min(first, second);
+    const std::size_t j = std::max(first, second);
     const double dt_c = dt_coupling(i, j);
     for (std::size_t c = 0; c < dim; ++c) {
       const double impulse =
@@ -147,35 +198,12 @@ namespace {
     return;
   }
 
-  // Materials that can move are the unknowns; held ones act as sources.
-  std::array<std::size_t, kMaxMaterials> unknown{};
-  std::array<std::size_t, kMaxMaterials> held{};
-  std::size_t m = 0;
-  std::size_t held_count = 0;
-  for (std::size_t p = 0; p < present_count; ++p) {
-    const std::size_t i = present[p];
-    if (is_held(weight[i])) {
-      held[held_count++] = i;
-    } else {
-      unknown[m++] = i;
-    }
-  }
+  const std::size_t m = partners.unknowns;
+  const std::size_t held_count = partners.held_count;
+  const auto& unknown = partners.unknown;
+  const auto& held = partners.held;
   if (m == 0) return;
-
-  // (W + dt L) restricted to the unknowns, stored as an M-matrix: off-diagonal
-  // magnitudes dt C_ij and row excess w_i + sum_held dt C_ih.
-  MMatrix system;
-  system.size = m;
-  for (std::size_t a = 0; a < m; ++a) {
-    system.excess[a] = weight[unknown[a]];
-    for (std::size_t h = 0; h < held_count; ++h) {
-      system.excess[a] += dt_coupling(unknown[a], held[h]);
-    }
-    for (std::size_t b = 0; b < m; ++b) {
-      system.off_diagonal[a][b] = a == b ? 0.0 : dt_coupling(unknown[a], unknown[b]);
-    }
-  }
-  system.factor();
+  const MMatrix system = factored_exchange_system(partners, weight, dt_coupling);
 
   // Effective conductances G = W (W + dt L)^-1 W between unknowns, and
   // G_ih = w_i [(W + dt L)^-1 dt C_h]_i towards held materials. The increments
@@ -261,36 +289,14 @@ void solve_implicit_exchange_values(std::span<const double> weight, std::span<co
   if (!std::isfinite(dt) || dt < 0) throw_bad_time_step(dt);
   const auto dim = static_cast<std::size_t>(components);
   std::copy(value.begin(), value.end(), new_value.begin());
-  std::array<std::size_t, kMaxMaterials> unknown{};
-  std::array<std::size_t, kMaxMaterials> held{};
-  std::size_t m = 0;
-  std::size_t held_count = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!is_present(weight[i])) continue;
-    if (is_held(weight[i])) {
-      held[held_count++] = i;
-    } else {
-      unknown[m++] = i;
-    }
-  }
-  if (m == 0 || m + held_count < 2) return;
-  const auto dt_coupling = [&](std::size_t i, std::size_t j) {
-    const double c = coefficient[std::min(i, j) * n + std::max(i, j)];
-    if (!std::isfinite(c) || c < 0) throw_bad_coefficient(std::min(i, j), std::max(i, j), c);
-    return dt * c;
-  };
-  MMatrix system;
-  system.size = m;
-  for (std::size_t a = 0; a < m; ++a) {
-    system.excess[a] = weight[unknown[a]];
-    for (std::size_t h = 0; h < held_count; ++h) {
-      system.excess[a] += dt_coupling(unknown[a], held[h]);
-    }
-    for (std::size_t b = 0; b < m; ++b) {
-      system.off_diagonal[a][b] = a == b ? 0.0 : dt_coupling(unknown[a], unknown[b]);
-    }
-  }
-  system.factor();
+  const ExchangePartners partners = partition(weight);
+  const std::size_t m = partners.unknowns;
+  const std::size_t held_count = partners.held_count;
+  const auto& unknown = partners.unknown;
+  const auto& held = partners.held;
+  if (m == 0 || partners.present() < 2) return;
+  const DtCoupling dt_coupling{coefficient, n, dt};
+  const MMatrix system = factored_exchange_system(partners, weight, dt_coupling);
   std::array<double, kMaxMaterials> column{};
   for (std::size_t c = 0; c < dim; ++c) {
     for (std::size_t a = 0; a < m; ++a) {
