@@ -183,7 +183,7 @@ MMatrix factored_exchange_system(const ExchangePartners& p, std::span<const doub
   if (partners.present() == 2) {
     // The pair in index order.
     const std::size_t first = partners.unknowns > 0 ? partners.unknown[0] : partners.held[0];
-    const std::size_t second = partners.unknowns == 2   ? partners.unknown[1]
+    const std::size_t second = partners.unknowns == 2     ? partners.unknown[1]
                                : partners.held_count == 2 ? partners.held[1]
                                                           : partners.held[0];
     const std::size_t i = std::min(first, second);

@@ -46,8 +46,8 @@ void check_generated_grid(const GeneratedCase& g, const std::vector<double>& cen
             throw cosim::Error(
                 cosim::ExitCode::participant_failed,
                 fmt::format("the OpenFOAM mesh does not match the generated grid: cell {} has "
-                            "its centre at {} = {} along axis {}, the grid's is {}",
-                            c, "C", centres[3 * c + d], d, expected));
+                            "its centre at {} along {}, the grid's is at {}",
+                            c, centres[3 * c + d], "xyz"[d], expected));
           }
         }
         if (std::abs(volumes[c] - cell_volume) > 1e-6 * cell_volume) {

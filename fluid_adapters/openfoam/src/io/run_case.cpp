@@ -110,7 +110,7 @@ class CaseRun {
       copy_existing_case(c_.directory, case_dir_);
     }
     fs::create_directories(log_dir_);
-    write_controls(std::min(c_.window, c_.end_time));
+    write_controls(0.0, std::min(c_.window, c_.end_time));
     if (make_mesh) run_tool("blockMesh", {});
     if (c_.generate) run_tool("setFields", {});
     mesh_ = read_case_mesh(installation_, case_dir_, log_dir_, c_.generate, "openfoam_cells");
@@ -135,11 +135,12 @@ class CaseRun {
 
   long steps_in(double interval) const { return std::lround(interval / c_.time_step); }
 
-  void write_controls(double end_time) {
+  // The controlDict of a start from `start` to `end`: every field written at `end`.
+  void write_controls(double start, double end) {
     write_control_dict(case_dir_, {.application = c_.solver,
-                                   .end_time = end_time,
+                                   .end_time = end,
                                    .time_step = c_.time_step,
-                                   .write_every = steps_in(end_time - last_end_)});
+                                   .write_every = steps_in(end - start)});
   }
 
   // One start of the solver from its latest time directory (`start`) to `end`.
@@ -147,8 +148,7 @@ class CaseRun {
     WindowTiming timing;
     timing.end_time = end;
     Clock::time_point phase = Clock::now();
-    last_end_ = start;
-    write_controls(end);
+    write_controls(start, end);
     timing.write = seconds_since(phase);
     timing.solver =
         run_application(installation_, c_.solver, {}, case_dir_, log_dir_ / (c_.solver + ".log"));
@@ -251,7 +251,6 @@ class CaseRun {
   std::optional<cosim::SnapshotWriter> snapshot_writer_;
   std::vector<WindowTiming> windows_;
   std::int64_t steps_ = 0;
-  double last_end_ = 0.0;
 };
 
 }  // namespace
