@@ -65,6 +65,38 @@ TEST(OpenFoamGeneratedCase, FieldsCarryTheSidesConditions) {
   EXPECT_NE(alpha.find("type inletOutlet; inletValue uniform 0;"), std::string::npos) << alpha;
 }
 
+TEST(OpenFoamGeneratedCase, APressureSideHoldsPRghAndLetsWaterIn) {
+  GeneratedCase g = dam_break();
+  g.sides[0] = SideKind::pressure;
+  g.side_pressure[0] = 151987.5;
+  cosim::testing::ScratchDirectory dir;
+  write_generated_case(g, dir.path());
+  const std::string mesh = read_text(dir / "system/blockMeshDict");
+  EXPECT_NE(mesh.find("x_min\n    {\n        type patch;"), std::string::npos) << mesh;
+  const std::string p = read_text(dir / "0/p_rgh");
+  EXPECT_NE(p.find("x_min\n    {\n        type fixedValue; value uniform 151987.5;"),
+            std::string::npos)
+      << p;
+  const std::string alpha = read_text(dir / "0/alpha.water");
+  EXPECT_NE(alpha.find("x_min\n    {\n        type inletOutlet; inletValue uniform 1;"),
+            std::string::npos)
+      << alpha;
+}
+
+TEST(OpenFoamGeneratedCase, TheSoilsCloudHasOnlyItsDragAndAnImmenseDensity) {
+  cosim::testing::ScratchDirectory dir;
+  SoilCloudSettings cloud;
+  write_generated_case(dam_break(), dir.path(), &cloud);
+  const std::string k = read_text(dir / "constant/kinematicCloudProperties");
+  for (const char* entry : {"ErgunWenYuDrag", "alphac alphac;", "rho0 2650000;", "alphaMax 0.99;",
+                            "U semiImplicit 1;", "packingModel none;", "injectionModels"}) {
+    EXPECT_NE(k.find(entry), std::string::npos) << entry << "\n" << k;
+  }
+  EXPECT_EQ(k.find("gravity"), std::string::npos) << k;
+  EXPECT_NE(read_text(dir / "system/fvSchemes").find("div((((alphac*rho)*nuEff)"),
+            std::string::npos);
+}
+
 TEST(OpenFoamGeneratedCase, KinematicViscosityIsTheDynamicOneOverTheDensity) {
   cosim::testing::ScratchDirectory dir;
   write_generated_case(dam_break(), dir.path());

@@ -66,6 +66,26 @@ TEST(OpenFoamCase, ReadsEveryKeyAndTheDefaults) {
   EXPECT_NE(c.config_hash, 0u);
 }
 
+TEST(OpenFoamCase, ReadsPressureSidesTheSoilsCloudAndGauges) {
+  std::string text = replaced(dam_break, "boundaries: {x_max: slip, y_max: atmosphere}",
+                              "boundaries: {x_min: {pressure: 1.5e5}, x_max: slip}\n"
+                              "  initial_pressure: 101325");
+  text = replaced(text, "name: dam\n",
+                  "name: dam\nsolver: MPPICInterFoam\nsoil: {parcel_density: 1.0e7}\n");
+  text = replaced(text, "output: {every: 0.05}",
+                  "output: {every: 0.05, gauges: [{name: g1, point: [0.2, 0.05]}]}");
+  const CaseDescription c = load_case_text(text, "case.yaml");
+  EXPECT_TRUE(c.has_cloud());
+  EXPECT_DOUBLE_EQ(c.soil.parcel_density, 1.0e7);
+  EXPECT_DOUBLE_EQ(c.soil.max_solid_fraction, 0.99);
+  EXPECT_EQ(c.generate->sides[0], SideKind::pressure);
+  EXPECT_DOUBLE_EQ(c.generate->side_pressure[0], 1.5e5);
+  EXPECT_DOUBLE_EQ(c.generate->initial_pressure, 101325.0);
+  ASSERT_EQ(c.gauges.size(), 1u);
+  EXPECT_EQ(c.gauges[0].name, "g1");
+  EXPECT_DOUBLE_EQ(c.gauges[0].point[0], 0.2);
+}
+
 TEST(OpenFoamCase, TheWindowDefaultsToTheSnapshotInterval) {
   const CaseDescription c = load_case_text(replaced(dam_break, "window: 0.01\n", ""), "case.yaml");
   EXPECT_DOUBLE_EQ(c.window, 0.05);
@@ -106,7 +126,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"inverted_box", "upper: [0.1, 0.1]", "upper: [0.1, -0.1]", "not above"},
         BadCase{"unknown_side", "x_max: slip", "x_max: porous", "porous"},
         BadCase{"empty_side_in_2d", "x_max: slip", "z_max: slip", "empty front and back"},
-        BadCase{"negative_density", "density: 1000", "density: -1000", "density"}),
+        BadCase{"negative_density", "density: 1000", "density: -1000", "density"},
+        BadCase{"soil_without_cloud_solver", "end_time: 0.3", "soil: {}\nend_time: 0.3",
+                "needs `solver: MPPICInterFoam`"},
+        BadCase{"pressure_side_without_value", "x_max: slip", "x_max: {pressur: 1}", "pressur"}),
     [](const ::testing::TestParamInfo<BadCase>& param_info) { return param_info.param.name; });
 
 }  // namespace

@@ -31,11 +31,15 @@ Schema generate_schema() {
       .required("upper", vector_schema("m"), "Upper corner.");
   Schema region = Schema::object("Cells whose centre lies in the box start full of water.");
   region.required("box", box, "The box.");
-  Schema side = Schema::one_of({"wall", "slip", "atmosphere"}).default_value("wall");
+  Schema pressure_side = Schema::object("A side held at a fixed pressure.");
+  pressure_side.required("pressure", Schema::number().unit("Pa"),
+                         "p_rgh on the side (p - rho g.x); water flows in, anything out.");
+  Schema side = Schema::any_of({Schema::one_of({"wall", "slip", "atmosphere"}), pressure_side})
+                    .default_value("wall");
   Schema boundaries = Schema::object(
-      "What each side is: wall (no slip), slip (free slip) or atmosphere (open, total pressure "
-      "0, air flows in, anything flows out); default wall. In 2D z_min and z_max are OpenFOAM's "
-      "empty front and back.");
+      "What each side is: wall (no slip), slip (free slip), atmosphere (open, total pressure "
+      "0, air flows in, anything flows out) or {pressure: p} (fixed p_rgh, water flows in); "
+      "default wall. In 2D z_min and z_max are OpenFOAM's empty front and back.");
   for (const char* s : {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"})
     boundaries.optional(s, side, "This side.");
   Schema generate = Schema::object(
@@ -49,6 +53,8 @@ Schema generate_schema() {
                 Schema::number().non_negative().unit("N/m").default_value("0.07"),
                 "Surface tension of the water-air interface.")
       .optional("water", Schema::sequence(region), "Regions that start full of water.")
+      .optional("initial_pressure", Schema::number().unit("Pa").default_value("0"),
+                "p_rgh inside at the start.")
       .optional("boundaries", boundaries, "The sides.");
   return generate;
 }
@@ -56,16 +62,35 @@ Schema generate_schema() {
 }  // namespace
 
 Schema openfoam_case_schema() {
+  Schema gauge = Schema::object("A point whose cell is recorded at every window's end.");
+  gauge.required("name", Schema::string().non_empty(), "Column prefix in gauges.csv.")
+      .required("point", vector_schema("m"), "The point; its cell is the nearest centre.");
   Schema output = Schema::object("What the run writes.");
-  output.optional("every", Schema::number().non_negative().unit("s").default_value("0"),
-                  "Snapshot interval (HDF5 + XDMF); 0: start and end only.");
+  output
+      .optional("every", Schema::number().non_negative().unit("s").default_value("0"),
+                "Snapshot interval (HDF5 + XDMF); 0: start and end only.")
+      .optional("gauges", Schema::sequence(gauge),
+                "Points recorded in gauges.csv (p, p_rgh, U, water fraction) every window.");
+  Schema soil = Schema::object(
+      "MPPICInterFoam's cloud standing for the MPM soil (one parcel per cell holding soil).");
+  soil.optional("parcel_density",
+                Schema::number().positive().unit("kg/m^3").default_value("2.65e6"),
+                "Parcel density: immense, so that the drag cannot move the parcels in a window "
+                "(the drag itself does not depend on it).")
+      .optional("max_solid_fraction", Schema::number().range(0.0, 1.0).default_value("0.99"),
+                "OpenFOAM's alphaMax: the fluid fraction is clipped at 1 - this.")
+      .optional("minimum_solid_fraction", Schema::number().range(0.0, 1.0).default_value("1e-6"),
+                "Cells with less soil than this get no parcel.");
   Schema file = Schema::file(
       "openfoam_case",
       "A two-phase (water and air) flow run by Debian's stock OpenFOAM v1912 through case files "
       "(openfoam_adapter): OpenFOAM is restarted once per coupling window.");
   file.required("name", Schema::string().non_empty(), "Name of the case.")
-      .optional("solver", Schema::one_of({"interFoam"}).default_value("interFoam"),
-                "The OpenFOAM application.")
+      .optional("solver",
+                Schema::one_of({"interFoam", "MPPICInterFoam"}).default_value("interFoam"),
+                "The OpenFOAM application: interFoam (water and air), or MPPICInterFoam (water "
+                "and air around the MPM soil as parcels; needed coupled with a soil).")
+      .optional("soil", soil, "MPPICInterFoam: the soil's parcels.")
       .optional("generate", generate_schema(),
                 "Make the OpenFOAM case from these keys (give this or `directory`).")
       .optional("directory", Schema::path().must_exist(),

@@ -60,7 +60,7 @@ void require_entries(const fs::path& file, std::initializer_list<const char*> en
 
 }  // namespace
 
-void check_existing_case(const fs::path& c) {
+void check_existing_case(const fs::path& c, bool cloud) {
   std::error_code ec;
   if (!fs::is_directory(c / "constant" / "polyMesh", ec)) {
     require_file(c / "system" / "blockMeshDict",
@@ -80,6 +80,13 @@ void check_existing_case(const fs::path& c) {
   for (const char* field : {"alpha.water", "U", "p_rgh"}) {
     require_file(c / "0" / field, "the initial fields alpha.water, U and p_rgh in 0/");
   }
+  if (!cloud) return;
+  require_entries(c / "constant" / "kinematicCloudProperties",
+                  {"ErgunWenYuDrag", "alphac", "rho0", "alphaMax", "semiImplicit"},
+                  "MPPICInterFoam's cloud for the soil's parcels: Ergun-Wen-Yu drag on alphac, "
+                  "rho0, alphaMax, the semi-implicit momentum source");
+  require_entries(c / "system" / "fvSchemes", {"div((((alphac*rho)*nuEff)*dev2(T(grad(U)))))"},
+                  "MPPICInterFoam's viscous stress scheme");
 }
 
 void copy_existing_case(const fs::path& case_dir, const fs::path& run_case_dir) {

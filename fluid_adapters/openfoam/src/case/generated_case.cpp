@@ -26,6 +26,10 @@ bool is_empty_side(const GeneratedCase& c, int side) {
   return c.dimension == 2 && side >= 4;
 }
 
+bool is_open(SideKind kind) {
+  return kind == SideKind::atmosphere || kind == SideKind::pressure;
+}
+
 std::string block_mesh_dict(const GeneratedCase& c) {
   const Vector3& a = c.origin;
   const Vector3& b = c.upper;
@@ -42,9 +46,9 @@ std::string block_mesh_dict(const GeneratedCase& c) {
   text += "edges\n(\n);\n\nboundary\n(\n";
   for (int s = 0; s < 6; ++s) {
     const auto& f = side_faces[s];
-    const char* type = is_empty_side(c, s)                                            ? "empty"
-                       : c.sides[static_cast<std::size_t>(s)] == SideKind::atmosphere ? "patch"
-                                                                                      : "wall";
+    const char* type = is_empty_side(c, s)                             ? "empty"
+                       : is_open(c.sides[static_cast<std::size_t>(s)]) ? "patch"
+                                                                       : "wall";
     text +=
         fmt::format("    {}\n    {{\n        type {};\n        faces (({} {} {} {}));\n    }}\n",
                     patch_names[s], type, f[0], f[1], f[2], f[3]);
@@ -104,7 +108,8 @@ std::string fv_schemes() {
          "gradSchemes\n{\n    default Gauss linear;\n}\n\n"
          "divSchemes\n{\n    div(rhoPhi,U) Gauss linearUpwind grad(U);\n"
          "    div(phi,alpha) Gauss vanLeer;\n    div(phirb,alpha) Gauss linear;\n"
-         "    div(((rho*nuEff)*dev2(T(grad(U))))) Gauss linear;\n}\n\n"
+         "    div(((rho*nuEff)*dev2(T(grad(U))))) Gauss linear;\n"
+         "    div((((alphac*rho)*nuEff)*dev2(T(grad(U))))) Gauss linear;\n}\n\n"
          "laplacianSchemes\n{\n    default Gauss linear corrected;\n}\n\n"
          "interpolationSchemes\n{\n    default linear;\n}\n\n"
          "snGradSchemes\n{\n    default corrected;\n}\n";
@@ -138,8 +143,14 @@ std::string side_condition(const GeneratedCase& c, int side, const std::string& 
   if (is_empty_side(c, side)) return "type empty;";
   const SideKind kind = c.sides[static_cast<std::size_t>(side)];
   if (field == "alpha.water") {
-    return kind == SideKind::atmosphere ? "type inletOutlet; inletValue uniform 0; value uniform 0;"
-                                        : "type zeroGradient;";
+    switch (kind) {
+      case SideKind::atmosphere:
+        return "type inletOutlet; inletValue uniform 0; value uniform 0;";
+      case SideKind::pressure:
+        return "type inletOutlet; inletValue uniform 1; value uniform 1;";
+      default:
+        return "type zeroGradient;";
+    }
   }
   if (field == "U") {
     switch (kind) {
@@ -148,11 +159,19 @@ std::string side_condition(const GeneratedCase& c, int side, const std::string& 
       case SideKind::slip:
         return "type slip;";
       case SideKind::atmosphere:
+      case SideKind::pressure:
         return "type pressureInletOutletVelocity; value uniform (0 0 0);";
     }
   }
-  return kind == SideKind::atmosphere ? "type totalPressure; p0 uniform 0;"
-                                      : "type fixedFluxPressure; value uniform 0;";
+  switch (kind) {
+    case SideKind::atmosphere:
+      return "type totalPressure; p0 uniform 0;";
+    case SideKind::pressure:
+      return fmt::format("type fixedValue; value uniform {:.17g};",
+                         c.side_pressure[static_cast<std::size_t>(side)]);
+    default:
+      return "type fixedFluxPressure; value uniform 0;";
+  }
 }
 
 std::string initial_field(const GeneratedCase& c, const std::string& field, const char* foam_class,
@@ -170,11 +189,32 @@ std::string initial_field(const GeneratedCase& c, const std::string& field, cons
 
 }  // namespace
 
+std::string soil_cloud_properties(const SoilCloudSettings& cloud) {
+  return foam_file_header({"dictionary", "constant", "kinematicCloudProperties"}) +
+         "solution\n{\n    active true;\n    coupled true;\n    transient yes;\n"
+         "    cellValueSourceCorrection off;\n    maxCo 0.3;\n"
+         "    interpolationSchemes\n    {\n        rho cell;\n        U cellPoint;\n"
+         "        mu cell;\n        alphac cell;\n    }\n"
+         "    averagingMethod dual;\n    integrationSchemes\n    {\n        U Euler;\n    }\n"
+         "    sourceTerms\n    {\n        schemes\n        {\n            U semiImplicit 1;\n"
+         "        }\n    }\n}\n\n" +
+         fmt::format("constantProperties\n{{\n    rho0 {};\n    alphaMax {};\n}}\n\n",
+                     cloud.parcel_density, cloud.max_solid_fraction) +
+         "subModels\n{\n    particleForces\n    {\n        ErgunWenYuDrag\n        {\n"
+         "            alphac alphac;\n        }\n    }\n    injectionModels\n    {\n    }\n"
+         "    dispersionModel none;\n    patchInteractionModel standardWallInteraction;\n"
+         "    standardWallInteractionCoeffs\n    {\n        type rebound;\n    }\n"
+         "    heatTransferModel none;\n    surfaceFilmModel none;\n    packingModel none;\n"
+         "    dampingModel none;\n    isotropyModel none;\n    stochasticCollisionModel none;\n"
+         "    radiation off;\n}\n\ncloudFunctions\n{\n}\n";
+}
+
 const char* side_patch_name(int side) {
   return patch_names[side];
 }
 
-void write_generated_case(const GeneratedCase& c, const std::filesystem::path& case_dir) {
+void write_generated_case(const GeneratedCase& c, const std::filesystem::path& case_dir,
+                          const SoilCloudSettings* cloud) {
   for (const char* sub : {"system", "constant", "0"}) {
     std::filesystem::create_directories(case_dir / sub);
   }
@@ -190,7 +230,9 @@ void write_generated_case(const GeneratedCase& c, const std::filesystem::path& c
   write("constant/turbulenceProperties", turbulence_properties());
   write("0/alpha.water", initial_field(c, "alpha.water", "volScalarField", "[0 0 0 0 0 0 0]", "0"));
   write("0/U", initial_field(c, "U", "volVectorField", "[0 1 -1 0 0 0 0]", "(0 0 0)"));
-  write("0/p_rgh", initial_field(c, "p_rgh", "volScalarField", "[1 -1 -2 0 0 0 0]", "0"));
+  write("0/p_rgh", initial_field(c, "p_rgh", "volScalarField", "[1 -1 -2 0 0 0 0]",
+                                 fmt::format("{:.17g}", c.initial_pressure).c_str()));
+  if (cloud) write("constant/kinematicCloudProperties", soil_cloud_properties(*cloud));
 }
 
 }  // namespace openfoam

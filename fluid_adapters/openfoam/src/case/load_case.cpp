@@ -59,7 +59,17 @@ class CaseReader {
       root_["time_step"].fail(
           fmt::format("time step {} s is longer than the end time {} s", c.time_step, c.end_time));
     }
-    if (auto output = root_.find("output")) c.output_every = output->get<double>("every", 0.0);
+    if (auto output = root_.find("output")) {
+      c.output_every = output->get<double>("every", 0.0);
+      if (auto gauges = output->find("gauges")) {
+        for (const Node& g : gauges->items()) {
+          Gauge gauge{g["name"].as<std::string>(), {}};
+          const auto point = g["point"].as<std::vector<double>>();
+          std::copy(point.begin(), point.end(), gauge.point.begin());
+          c.gauges.push_back(gauge);
+        }
+      }
+    }
     if (c.output_every > 0.0 && !whole_steps(c.output_every, c.time_step)) {
       root_["output"]["every"].fail(
           fmt::format("the snapshot interval {} s is not a whole number of time steps of {} s",
@@ -76,6 +86,14 @@ class CaseReader {
                       c.time_step));
     }
     c.keep_time_directories = root_.get<bool>("keep_time_directories", false);
+    if (auto soil = root_.find("soil")) {
+      if (!c.has_cloud()) soil->fail("`soil` needs `solver: MPPICInterFoam` (the soil's parcels)");
+      c.soil.parcel_density = soil->get<double>("parcel_density", c.soil.parcel_density);
+      c.soil.max_solid_fraction =
+          soil->get<double>("max_solid_fraction", c.soil.max_solid_fraction);
+      c.soil.minimum_solid_fraction =
+          soil->get<double>("minimum_solid_fraction", c.soil.minimum_solid_fraction);
+    }
     return c;
   }
 
@@ -129,6 +147,7 @@ class CaseReader {
     c.water = {fluids["water"]["density"].as<double>(), fluids["water"]["viscosity"].as<double>()};
     c.air = {fluids["air"]["density"].as<double>(), fluids["air"]["viscosity"].as<double>()};
     c.surface_tension = g.get<double>("surface_tension", 0.07);
+    c.initial_pressure = g.get<double>("initial_pressure", 0.0);
     if (auto regions = g.find("water")) {
       for (const Node& region : regions->items()) {
         const Node box = region["box"];
@@ -150,7 +169,13 @@ class CaseReader {
     if (auto boundaries = g.find("boundaries")) {
       for (int s = 0; s < 2 * dim; ++s) {
         if (auto side = boundaries->find(side_names[s])) {
-          c.sides[static_cast<std::size_t>(s)] = side_kind(side->as<std::string>());
+          const auto k = static_cast<std::size_t>(s);
+          if (side->is_map()) {
+            c.sides[k] = SideKind::pressure;
+            c.side_pressure[k] = (*side)["pressure"].as<double>();
+          } else {
+            c.sides[k] = side_kind(side->as<std::string>());
+          }
         }
       }
       if (dim == 2) {
@@ -178,6 +203,8 @@ const char* to_string(SideKind kind) {
       return "slip";
     case SideKind::atmosphere:
       return "atmosphere";
+    case SideKind::pressure:
+      return "pressure";
   }
   return "?";
 }

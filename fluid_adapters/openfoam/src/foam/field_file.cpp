@@ -359,8 +359,8 @@ std::vector<typename Entry::Value> read_list(FoamText& text, std::string_view wh
 }
 
 template <class Entry>
-std::vector<double> read_internal_field_of(FoamText& text, std::size_t cells) {
-  constexpr std::string_view what = "internalField";
+std::vector<double> read_internal_field_of(FoamText& text, std::size_t cells,
+                                           std::string_view what) {
   const std::size_t at = text.position();
   const std::string_view form = text.word();
   std::vector<double> values;
@@ -374,15 +374,14 @@ std::vector<double> read_internal_field_of(FoamText& text, std::size_t cells) {
     const std::size_t type_at = text.position();
     const std::string_view found = text.word();
     if (found != list_type) {
-      text.fail_at(type_at,
-                   fmt::format("expected {} in internalField, found '{}'", list_type, found));
+      text.fail_at(type_at, fmt::format("expected {} in {}, found '{}'", list_type, what, found));
     }
     values = read_list<Entry>(text, what, cells);
   } else {
-    text.fail_at(at, fmt::format("expected uniform or nonuniform in internalField, found {}",
+    text.fail_at(at, fmt::format("expected uniform or nonuniform in {}, found {}", what,
                                  form.empty() ? text.next_token() : fmt::format("'{}'", form)));
   }
-  text.expect(';', "';' ending internalField");
+  text.expect(';', fmt::format("';' ending {}", what));
   return values;
 }
 
@@ -446,9 +445,10 @@ std::vector<double> read_internal_field(const fs::path& file, FieldType type, st
     if (keyword.empty()) text.fail_expected("a keyword");
     if (keyword == "FoamFile") {
       read_header(text);
-    } else if (keyword == "internalField") {
-      return type == FieldType::vector ? read_internal_field_of<VectorEntry>(text, cells)
-                                       : read_internal_field_of<ScalarEntry>(text, cells);
+    } else if (keyword == "internalField" || keyword == "value") {
+      // `value` at the top: a DimensionedField (a cloud's UTrans, UCoeff).
+      return type == FieldType::vector ? read_internal_field_of<VectorEntry>(text, cells, keyword)
+                                       : read_internal_field_of<ScalarEntry>(text, cells, keyword);
     } else {
       text.skip_entry_value(keyword);
     }

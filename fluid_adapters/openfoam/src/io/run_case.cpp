@@ -6,6 +6,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
@@ -16,14 +17,19 @@
 #include "cosim/io/output_schedule.hpp"
 #include "cosim/io/run_summary.hpp"
 #include "cosim/io/snapshot_writer.hpp"
+#include "cosim/io/time_series_writer.hpp"
+#include "cosim/participant.hpp"
 #include "openfoam/case/existing_case.hpp"
 #include "openfoam/case/generated_case.hpp"
 #include "openfoam/case/load_case.hpp"
+#include "openfoam/cloud/soil_cloud.hpp"
 #include "openfoam/foam/control_dict.hpp"
 #include "openfoam/foam/field_file.hpp"
 #include "openfoam/foam/foam_application.hpp"
 #include "openfoam/foam/time_directories.hpp"
 #include "openfoam/io/case_mesh.hpp"
+#include "openfoam/io/foam_fields.hpp"
+#include "openfoam/io/soil_coupling.hpp"
 
 namespace openfoam {
 
@@ -35,14 +41,6 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
-
-// The fields of interFoam at one time, per cell.
-struct FoamFields {
-  std::vector<double> alpha_water;
-  std::vector<double> p_rgh;
-  std::vector<double> p;         // empty at time 0 (the solver writes it)
-  std::vector<double> velocity;  // components as the mesh's dimension
-};
 
 // The cost of one window [s].
 struct WindowTiming {
@@ -69,28 +67,81 @@ class CaseRun {
       auto scope = summary_.phases().measure("setup");
       set_up_case();
     }
-    FoamFields initial = read_fields(case_dir_ / "0");
-    record_water(initial, true);
-    write_snapshot(0.0, initial);
+    FoamFields fields = read_fields(case_dir_ / "0");
+    record_water(fields, true);
+    write_outputs(0.0, fields);
     summary_.write();
     double t = 0.0;
     while (t < c_.end_time - tolerance_) {
       const double end = std::min(t + c_.window, c_.end_time);
-      FoamFields fields = run_window(t, end);
+      fields = run_window(t, end);
       t = end;
-      if (snapshots_.due(t, tolerance_) || t >= c_.end_time - tolerance_) {
-        auto scope = summary_.phases().measure("output");
-        write_snapshot(t, fields);
-        snapshots_.passed(t, tolerance_);
-      }
-      if (t >= c_.end_time - tolerance_) record_water(fields, false);
-      summary_.set_windows(static_cast<std::int64_t>(windows_.size()));
-      summary_.set_steps(steps_);
-      summary_.set_section("openfoam_windows", windows_json());
-      summary_.write();
+      finish_window(t, fields);
     }
     spdlog::info("completed: t = {:.6g} s in {} windows, {} OpenFOAM steps", t, windows_.size(),
                  steps_);
+  }
+
+  // Coupled with the MPM soil: one OpenFOAM start per coupling window, the
+  // soil's parcels written into the window's start directory.
+  void run_coupled() {
+    if (!c_.has_cloud()) {
+      throw cosim::InputError(cosim::SourceLocation{c_.file.string(), 0, 0}, "solver",
+                              "coupled with a soil the solver must be MPPICInterFoam (the soil "
+                              "enters OpenFOAM as its parcels); the case runs " +
+                                  c_.solver);
+    }
+    {
+      auto scope = summary_.phases().measure("setup");
+      set_up_case();
+    }
+    SoilCoupling coupling(c_, mesh_);
+    cosim::Participant participant(options_.endpoint.name_or("openfoam"), options_.endpoint);
+    coupling.declare(participant);
+    FoamFields fields = read_fields(case_dir_ / "0");
+    coupling.write(participant, fields, c_.time_step, 0);
+    participant.initialize(0.0, c_.end_time);
+    const double window = participant.window_size();
+    if (!whole_steps(window)) {
+      throw cosim::InputError(
+          cosim::SourceLocation{c_.file.string(), 0, 0}, "time_step",
+          fmt::format("the job's window {} s is not a whole number of OpenFOAM time steps of {} s",
+                      window, c_.time_step));
+    }
+    record_water(fields, true);
+    write_outputs(0.0, fields);
+    summary_.write();
+    exchange_csv_.emplace(
+        options_.output / "soil_exchange.csv",
+        std::vector<std::string>{"time_s", "parcels", "cloud_on_fluid_kg_m/s",
+                                 "law_on_fluid_kg_m/s", "to_soil_kg_m/s", "mismatch_1"});
+    while (participant.is_coupling_ongoing()) {
+      const double start = participant.time();
+      const double end = start + participant.max_time_step();
+      {
+        auto scope = summary_.phases().measure("adapter_write");
+        const SoilParcels& parcels = coupling.parcels(participant, fields);
+        const auto latest = latest_time_directory(case_dir_);
+        write_soil_cloud(case_dir_ / latest->name, latest->name, parcels, c_.soil.parcel_density);
+        parcels_ = parcels.size();
+      }
+      fields = run_window(start, end);
+      SoilCoupling::MomentumCheck check;
+      {
+        auto scope = summary_.phases().measure("coupling");
+        check = coupling.write(participant, fields, end - start, steps_in(end - start));
+        participant.advance(end - start);
+      }
+      worst_mismatch_ = std::max(worst_mismatch_, check.mismatch);
+      exchange_csv_->append({end, static_cast<double>(parcels_), check.cloud_on_fluid,
+                             check.law_on_fluid, check.to_soil, check.mismatch});
+      finish_window(end, fields);
+    }
+    participant.finalize();
+    spdlog::info(
+        "completed: t = {:.6g} s in {} windows, {} OpenFOAM steps; the cloud's momentum on the "
+        "water against the drag law's: largest mismatch {:.3g}",
+        participant.time(), windows_.size(), steps_, worst_mismatch_);
   }
 
  private:
@@ -103,9 +154,9 @@ class CaseRun {
     if (c_.directory.empty()) {
       // A previous run's case in this output directory is replaced.
       fs::remove_all(case_dir_);
-      write_generated_case(*c_.generate, case_dir_);
+      write_generated_case(*c_.generate, case_dir_, c_.has_cloud() ? &c_.soil : nullptr);
     } else {
-      check_existing_case(c_.directory);
+      check_existing_case(c_.directory, c_.has_cloud());
       fs::remove_all(case_dir_);
       copy_existing_case(c_.directory, case_dir_);
     }
@@ -113,7 +164,9 @@ class CaseRun {
     write_controls(0.0, std::min(c_.window, c_.end_time));
     if (make_mesh) run_tool("blockMesh", {});
     if (c_.generate) run_tool("setFields", {});
-    mesh_ = read_case_mesh(installation_, case_dir_, log_dir_, c_.generate, "openfoam_cells");
+    mesh_ =
+        read_case_mesh(installation_, case_dir_, log_dir_, c_.generate, SoilCoupling::mesh_name);
+    set_up_gauges();
     snapshot_writer_.emplace(options_.output, "openfoam", mesh_.mesh);
     summary_.set_section("case", {{"name", c_.name},
                                   {"solver", c_.solver},
@@ -134,6 +187,72 @@ class CaseRun {
   }
 
   long steps_in(double interval) const { return std::lround(interval / c_.time_step); }
+
+  bool whole_steps(double interval) const {
+    const double n = interval / c_.time_step;
+    return std::abs(n - std::round(n)) <= 1e-9 * std::max(1.0, n);
+  }
+
+  void finish_window(double t, const FoamFields& fields) {
+    const bool last = t >= c_.end_time - tolerance_;
+    write_outputs(t, fields);
+    if (last) record_water(fields, false);
+    summary_.set_windows(static_cast<std::int64_t>(windows_.size()));
+    summary_.set_steps(steps_);
+    summary_.set_section("openfoam_windows", windows_json());
+    if (exchange_csv_) summary_.set_metric("cloud_momentum_mismatch_max", worst_mismatch_, "1");
+    summary_.write();
+  }
+
+  void write_outputs(double t, const FoamFields& fields) {
+    if (gauges_) record_gauges(t, fields);
+    if (t == 0.0 || snapshots_.due(t, tolerance_) || t >= c_.end_time - tolerance_) {
+      auto scope = summary_.phases().measure("output");
+      write_snapshot(t, fields);
+      if (t > 0.0) snapshots_.passed(t, tolerance_);
+    }
+  }
+
+  // The nearest cell centre of each gauge (gauges.csv, every window).
+  void set_up_gauges() {
+    if (c_.gauges.empty()) return;
+    std::vector<std::string> columns{"time_s"};
+    const int dim = mesh_.mesh.dimension();
+    for (const Gauge& g : c_.gauges) {
+      std::size_t best = 0;
+      double best_distance = std::numeric_limits<double>::infinity();
+      for (std::size_t c = 0; c < mesh_.volumes.size(); ++c) {
+        double d2 = 0.0;
+        for (std::size_t k = 0; k < static_cast<std::size_t>(dim); ++k) {
+          const double dx = mesh_.centres[3 * c + k] - g.point[k];
+          d2 += dx * dx;
+        }
+        if (d2 < best_distance) {
+          best_distance = d2;
+          best = c;
+        }
+      }
+      gauge_cells_.push_back(best);
+      columns.push_back(cosim::column_name(g.name + "_p", "Pa"));
+      columns.push_back(cosim::column_name(g.name + "_p_rgh", "Pa"));
+      for (int k = 0; k < dim; ++k)
+        columns.push_back(cosim::column_name(g.name + "_u" + "xyz"[k], "m/s"));
+      columns.push_back(cosim::column_name(g.name + "_water_fraction", "1"));
+    }
+    gauges_.emplace(options_.output / "gauges.csv", std::move(columns));
+  }
+
+  void record_gauges(double t, const FoamFields& f) {
+    const auto dim = static_cast<std::size_t>(mesh_.mesh.dimension());
+    std::vector<double> row{t};
+    for (std::size_t c : gauge_cells_) {
+      row.push_back(f.p[c]);
+      row.push_back(f.p_rgh[c]);
+      for (std::size_t k = 0; k < dim; ++k) row.push_back(f.velocity[c * dim + k]);
+      row.push_back((f.alphac.empty() ? 1.0 : f.alphac[c]) * f.alpha_water[c]);
+    }
+    gauges_->append(row);
+  }
 
   // The controlDict of a start from `start` to `end`: every field written at `end`.
   void write_controls(double start, double end) {
@@ -180,17 +299,10 @@ class CaseRun {
   }
 
   FoamFields read_fields(const fs::path& directory) const {
-    const std::size_t cells = mesh_.volumes.size();
-    FoamFields f;
-    f.alpha_water = read_internal_field(directory / "alpha.water", FieldType::scalar, cells);
-    f.p_rgh = read_internal_field(directory / "p_rgh", FieldType::scalar, cells);
-    if (fs::exists(directory / "p"))
-      f.p = read_internal_field(directory / "p", FieldType::scalar, cells);
-    const std::vector<double> u = read_internal_field(directory / "U", FieldType::vector, cells);
-    const auto dim = static_cast<std::size_t>(mesh_.mesh.dimension());
-    f.velocity.resize(cells * dim);
-    for (std::size_t c = 0; c < cells; ++c) {
-      for (std::size_t d = 0; d < dim; ++d) f.velocity[c * dim + d] = u[3 * c + d];
+    FoamFields f = read_foam_fields(directory, mesh_.volumes.size(), mesh_.mesh.dimension());
+    if (c_.generate) {
+      complete_pressure(f, mesh_.centres, c_.generate->gravity, c_.generate->water,
+                        c_.generate->air);
     }
     return f;
   }
@@ -200,6 +312,7 @@ class CaseRun {
                                  {"p_rgh", {f.p_rgh, 1, "Pa"}},
                                  {"velocity", {f.velocity, mesh_.mesh.dimension(), "m/s"}}};
     if (!f.p.empty()) fields.emplace("pressure", cosim::FieldView{f.p, 1, "Pa"});
+    if (!f.alphac.empty()) fields.emplace("fluid_fraction", cosim::FieldView{f.alphac, 1, "1"});
     snapshot_writer_->write(t, fields);
   }
 
@@ -251,6 +364,11 @@ class CaseRun {
   std::optional<cosim::SnapshotWriter> snapshot_writer_;
   std::vector<WindowTiming> windows_;
   std::int64_t steps_ = 0;
+  std::vector<std::size_t> gauge_cells_;
+  std::optional<cosim::TimeSeriesWriter> gauges_;
+  std::optional<cosim::TimeSeriesWriter> exchange_csv_;
+  std::size_t parcels_ = 0;
+  double worst_mismatch_ = 0.0;
 };
 
 }  // namespace
@@ -265,13 +383,11 @@ int run_case(const cosim::SolverCommandLine& options) {
       return load_case(options.config);
     }();
     summary.set_config(options.config, description.config_hash);
-    if (!options.endpoint.is_standalone()) {
-      throw cosim::InputError(
-          "openfoam_adapter runs standalone only so far: coupling with the MPM soil "
-          "(MPPICInterFoam with the soil as parcels) is not built yet");
-    }
     CaseRun run(description, options, summary);
-    run.run();
+    if (options.endpoint.is_standalone())
+      run.run();
+    else
+      run.run_coupled();
   });
 }
 

@@ -22,6 +22,7 @@ enum class SideKind {
   wall,        // no slip: U = 0, zero-gradient water fraction, fixedFluxPressure
   slip,        // free slip: zero normal velocity, tangential copied
   atmosphere,  // open top: total pressure 0, inflow of air only
+  pressure,    // a fixed pressure (p_rgh) with water flowing in or anything out
 };
 
 const char* to_string(SideKind kind);
@@ -46,9 +47,24 @@ struct GeneratedCase {
   std::vector<WaterBox> water_regions;  // cells whose centre lies inside start as water
   std::array<SideKind, 6> sides{SideKind::wall, SideKind::wall, SideKind::wall,
                                 SideKind::wall, SideKind::wall, SideKind::wall};
+  std::array<double, 6> side_pressure{};  // p_rgh of a `pressure` side [Pa]
+  double initial_pressure = 0.0;          // p_rgh inside at the start [Pa]
 
   std::size_t cell_count() const;
   Vector3 spacing() const;
+};
+
+// The MPM soil as MPPICInterFoam's parcels (coupled runs).
+struct SoilCloudSettings {
+  double parcel_density = 2.65e6;        // rho_p [kg/m^3]: the drag cannot move the parcels
+  double max_solid_fraction = 0.99;      // alphaMax: alphac >= 1 - alphaMax
+  double minimum_solid_fraction = 1e-6;  // cells with less soil get no parcel
+};
+
+// A point whose cell's values are recorded every window (gauges.csv).
+struct Gauge {
+  std::string name;
+  Vector3 point{};
 };
 
 // A `kind: openfoam_case` file (openfoam_adapter --config).
@@ -57,6 +73,7 @@ struct CaseDescription {
   std::uint64_t config_hash = 0;
   std::string name;
   std::string solver = "interFoam";  // the OpenFOAM application run each window
+  SoilCloudSettings soil;            // MPPICInterFoam only
   // Exactly one of the two: a case made from the YAML, or a user's case
   // directory (copied into the run directory, checked up front).
   std::optional<GeneratedCase> generate;
@@ -69,6 +86,9 @@ struct CaseDescription {
   double window = 0.0;
   double output_every = 0.0;           // snapshot interval; 0: start and end only
   bool keep_time_directories = false;  // keep every window's time directory
+  std::vector<Gauge> gauges;
+
+  bool has_cloud() const { return solver == "MPPICInterFoam"; }
 };
 
 }  // namespace openfoam

@@ -11,7 +11,15 @@ namespace openfoam {
 // flow, the VOF solver's schemes and solution controls, and the initial
 // fields 0/alpha.water, 0/U, 0/p_rgh with the sides' conditions. The
 // controlDict is written by the run (write_control_dict) before each start.
-void write_generated_case(const GeneratedCase& c, const std::filesystem::path& case_dir);
+// With `cloud` (MPPICInterFoam) also constant/kinematicCloudProperties: the
+// soil's parcels (soil_cloud.hpp) with Ergun-Wen-Yu drag and nothing else (no
+// gravity on them, no injection, packing, damping or collisions).
+void write_generated_case(const GeneratedCase& c, const std::filesystem::path& case_dir,
+                          const SoilCloudSettings* cloud = nullptr);
+
+// The kinematicCloudProperties of the soil's parcels (also what a user's
+// MPPICInterFoam case is checked against).
+std::string soil_cloud_properties(const SoilCloudSettings& cloud);
 
 // The patch names of the generated mesh, per side (x_min, x_max, ... z_max).
 const char* side_patch_name(int side);

@@ -28,7 +28,8 @@ constexpr std::size_t components(FieldType type) {
 
 // The internalField of a vol<Type>Field file, `cells` entries: `uniform <v>`
 // (expanded), `nonuniform List<Type> N (...)` or `N{v}`. Whatever follows it
-// (boundaryField) is not read.
+// (boundaryField) is not read. A DimensionedField file (a cloud's
+// kinematicCloud:UTrans) has its values under `value` instead.
 std::vector<double> read_internal_field(const std::filesystem::path& file, FieldType type,
                                         std::size_t cells);
 

@@ -1,0 +1,66 @@
+#pragma once
+
+#include <vector>
+
+#include "cosim/participant.hpp"
+#include "openfoam/case/case_description.hpp"
+#include "openfoam/cloud/soil_cloud.hpp"
+#include "openfoam/io/case_mesh.hpp"
+#include "openfoam/io/foam_fields.hpp"
+
+namespace openfoam {
+
+// What the adapter exchanges with the MPM soil through the coupler, on the
+// case's cells (DESIGN.md §4, the job's `momentum_exchange` with
+// `solved_by: fluid`):
+//   reads   solid_fraction, solid_velocity, drag_coefficient K (the job's law);
+//   writes  pore_pressure p, fluid_velocity (interstitial U),
+//           fluid_bulk_density alphac rho, water_fraction alphac alpha.water,
+//           momentum_exchange_impulse (what the soil receives in the window).
+// MPPICInterFoam applies the drag to the water itself, through the parcels;
+// their diameter is chosen per cell so that the cloud's Ergun-Wen-Yu
+// coefficient is K / n at the relative speed of the previous window's end
+// (ergun_wen_yu.hpp: the cloud's water takes the whole pressure gradient).
+// The soil receives n times the reaction of that drag, from the same law on
+// the window's end fields: with the MPM's own -phi_s grad p the mixture's
+// momentum is that of Tran et al., MPMICE, eqs. 7-8 (at steady state the
+// soil takes the whole seepage force grad p).
+class SoilCoupling {
+ public:
+  SoilCoupling(const CaseDescription& description, const CaseMesh& mesh);
+
+  void declare(cosim::Participant& participant) const;
+
+  // The window's parcels from the soil's fields received at its start and
+  // the fluid's at its start.
+  const SoilParcels& parcels(const cosim::Participant& participant, const FoamFields& start);
+
+  // The fields sent at the window's end, and the momentum check of the
+  // window of `steps` OpenFOAM steps.
+  struct MomentumCheck {
+    double cloud_on_fluid = 0.0;  // |sum| of OpenFOAM's UTrans x steps [kg m/s]
+    double law_on_fluid = 0.0;    // |sum| of the law's -f V T
+    double to_soil = 0.0;         // |sum| of what the soil receives
+    double mismatch = 0.0;        // |cloud - law| / sum |law| over the cells
+  };
+  MomentumCheck write(cosim::Participant& participant, const FoamFields& end, double window,
+                      long steps);
+
+  static constexpr const char* mesh_name = "openfoam_cells";
+
+ private:
+  double plane_volume(std::size_t c) const;
+
+  const CaseDescription& c_;
+  const CaseMesh& mesh_;
+  FluidProperties water_;
+  FluidProperties air_;
+  int dim_;
+  std::vector<double> solid_fraction_;
+  std::vector<double> solid_velocity_;  // dim per cell
+  std::vector<double> drag_;
+  std::vector<double> diameter_;  // per cell; 0 where no parcel
+  SoilParcels parcels_;
+};
+
+}  // namespace openfoam

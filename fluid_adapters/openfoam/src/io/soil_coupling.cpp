@@ -1,0 +1,159 @@
+#include "openfoam/io/soil_coupling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "cosim/error.hpp"
+#include "cosim/job/job.hpp"
+#include "openfoam/cloud/ergun_wen_yu.hpp"
+
+namespace openfoam {
+
+namespace {
+
+namespace mx = cosim::job::momentum_exchange_fields;
+constexpr const char* pore_pressure = "pore_pressure";
+constexpr const char* water_fraction = "water_fraction";
+
+cosim::FieldSpec field(const char* name, int components, const char* unit, double lower = -INFINITY,
+                       double upper = INFINITY) {
+  cosim::FieldSpec f;
+  f.name = name;
+  f.mesh = SoilCoupling::mesh_name;
+  f.components = components;
+  f.unit = unit;
+  f.lower_bound = lower;
+  f.upper_bound = upper;
+  return f;
+}
+
+}  // namespace
+
+SoilCoupling::SoilCoupling(const CaseDescription& description, const CaseMesh& mesh)
+    : c_(description), mesh_(mesh), dim_(mesh.mesh.dimension()) {
+  if (!c_.generate) {
+    throw cosim::InputError(
+        cosim::SourceLocation{c_.file.string(), 0, 0}, "directory",
+        "coupling with a soil needs a generated case so far (`generate`: the fluids' density "
+        "and viscosity enter the parcels' drag)");
+  }
+  water_ = c_.generate->water;
+  air_ = c_.generate->air;
+}
+
+double SoilCoupling::plane_volume(std::size_t c) const {
+  const double v = mesh_.volumes[c];
+  return dim_ == 2 ? v / (c_.generate->upper[2] - c_.generate->origin[2]) : v;
+}
+
+void SoilCoupling::declare(cosim::Participant& participant) const {
+  participant.declare_mesh(mesh_.mesh);
+  participant.declare_read(field(mx::solid_fraction, 1, "1", 0.0, 1.0), 0.0);
+  participant.declare_read(field(mx::solid_velocity, dim_, "m/s"), 0.0);
+  participant.declare_read(field(mx::drag_coefficient, 1, "kg/(m^3 s)", 0.0), 0.0);
+  participant.declare_write(field(pore_pressure, 1, "Pa"));
+  participant.declare_write(field(mx::fluid_velocity, dim_, "m/s"));
+  participant.declare_write(field(mx::fluid_bulk_density, 1, "kg/m^3", 0.0));
+  participant.declare_write(field(water_fraction, 1, "1", 0.0, 1.0));
+  cosim::FieldSpec impulse = field(mx::impulse, dim_, "kg m/s");
+  impulse.quantity = cosim::Quantity::extensive;
+  impulse.time = cosim::TimeTreatment::integral;
+  participant.declare_write(impulse);
+}
+
+const SoilParcels& SoilCoupling::parcels(const cosim::Participant& participant,
+                                         const FoamFields& start) {
+  const std::size_t cells = mesh_.volumes.size();
+  const auto dim = static_cast<std::size_t>(dim_);
+  solid_fraction_.resize(cells);
+  solid_velocity_.resize(cells * dim);
+  drag_.resize(cells);
+  participant.read(mx::solid_fraction, solid_fraction_);
+  participant.read(mx::solid_velocity, solid_velocity_);
+  participant.read(mx::drag_coefficient, drag_);
+  diameter_.assign(cells, 0.0);
+  parcels_.clear();
+  const SoilCloudSettings& soil = c_.soil;
+  const double smallest_pore = 1.0 - soil.max_solid_fraction;
+  for (std::size_t c = 0; c < cells; ++c) {
+    const double phi_s = std::min(solid_fraction_[c], soil.max_solid_fraction);
+    if (phi_s < soil.minimum_solid_fraction || !(drag_[c] > 0.0)) continue;
+    const double n = std::max(1.0 - phi_s, smallest_pore);
+    double relative[3] = {0.0, 0.0, 0.0};
+    double speed2 = 0.0;
+    for (std::size_t d = 0; d < dim; ++d) {
+      relative[d] = start.velocity[c * dim + d] - solid_velocity_[c * dim + d];
+      speed2 += relative[d] * relative[d];
+    }
+    const CloudDragInput input{phi_s, mixture_density(start, c, water_, air_),
+                               mixture_viscosity(start, c, water_, air_), std::sqrt(speed2)};
+    const double d = ergun_wen_yu_grain_size(input, drag_[c] / n);
+    diameter_[c] = d;
+    double u[3] = {0.0, 0.0, 0.0};
+    for (std::size_t k = 0; k < dim; ++k) u[k] = solid_velocity_[c * dim + k];
+    const double grain_volume = std::numbers::pi * d * d * d / 6.0;
+    parcels_.add(&mesh_.centres[3 * c], static_cast<std::int64_t>(c), u, d,
+                 phi_s * mesh_.volumes[c] / grain_volume);
+  }
+  return parcels_;
+}
+
+SoilCoupling::MomentumCheck SoilCoupling::write(cosim::Participant& participant,
+                                                const FoamFields& end, double window, long steps) {
+  const std::size_t cells = mesh_.volumes.size();
+  const auto dim = static_cast<std::size_t>(dim_);
+  std::vector<double> density(cells), water(cells), impulse_rate(cells * dim, 0.0);
+  for (std::size_t c = 0; c < cells; ++c) {
+    const double alphac = end.alphac.empty() ? 1.0 : end.alphac[c];
+    density[c] = alphac * mixture_density(end, c, water_, air_);
+    water[c] = std::clamp(alphac * end.alpha_water[c], 0.0, 1.0);
+  }
+  MomentumCheck check;
+  double cloud[3] = {0, 0, 0}, law[3] = {0, 0, 0}, soil[3] = {0, 0, 0}, scale = 0.0, off = 0.0;
+  for (std::size_t c = 0; c < cells; ++c) {
+    if (diameter_.empty() || diameter_[c] <= 0.0) continue;
+    const double phi_s = std::min(solid_fraction_[c], c_.soil.max_solid_fraction);
+    const double n = std::max(1.0 - phi_s, 1.0 - c_.soil.max_solid_fraction);
+    double speed2 = 0.0;
+    for (std::size_t d = 0; d < dim; ++d) {
+      const double r = end.velocity[c * dim + d] - solid_velocity_[c * dim + d];
+      speed2 += r * r;
+    }
+    const CloudDragInput input{phi_s, mixture_density(end, c, water_, air_),
+                               mixture_viscosity(end, c, water_, air_), std::sqrt(speed2)};
+    const double k_cloud = ergun_wen_yu_coefficient(input, diameter_[c]);
+    const double volume = plane_volume(c);
+    for (std::size_t d = 0; d < dim; ++d) {
+      const double relative = end.velocity[c * dim + d] - solid_velocity_[c * dim + d];
+      const double on_fluid = -k_cloud * relative * volume * window;
+      impulse_rate[c * dim + d] = -n * on_fluid / window;
+      law[d] += on_fluid;
+      soil[d] += -n * on_fluid;
+      scale += std::abs(on_fluid);
+      if (!end.cloud_momentum.empty()) {
+        const double measured = end.cloud_momentum[c * dim + d] * static_cast<double>(steps) *
+                                volume / mesh_.volumes[c];
+        cloud[d] += measured;
+        off += std::abs(measured - on_fluid);
+      }
+    }
+  }
+  for (std::size_t d = 0; d < dim; ++d) {
+    check.cloud_on_fluid += cloud[d] * cloud[d];
+    check.law_on_fluid += law[d] * law[d];
+    check.to_soil += soil[d] * soil[d];
+  }
+  check.cloud_on_fluid = std::sqrt(check.cloud_on_fluid);
+  check.law_on_fluid = std::sqrt(check.law_on_fluid);
+  check.to_soil = std::sqrt(check.to_soil);
+  check.mismatch = scale > 0.0 ? off / scale : 0.0;
+  participant.write(pore_pressure, end.p);
+  participant.write(mx::fluid_velocity, end.velocity);
+  participant.write(mx::fluid_bulk_density, density);
+  participant.write(water_fraction, water);
+  participant.write(mx::impulse, impulse_rate);
+  return check;
+}
+
+}  // namespace openfoam
