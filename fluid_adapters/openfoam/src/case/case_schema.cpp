@@ -71,6 +71,12 @@ Schema openfoam_case_schema() {
                 "Snapshot interval (HDF5 + XDMF); 0: start and end only.")
       .optional("gauges", Schema::sequence(gauge),
                 "Points recorded in gauges.csv (p, p_rgh, U, water fraction) every window.");
+  Schema parallel = Schema::object(
+      "Run OpenFOAM on several processes: the case is decomposed once at the start "
+      "(decomposePar, method simple) and never reconstructed.");
+  parallel.required("processes", Schema::integer().range(1, 1024), "How many MPI processes.")
+      .optional("split", Schema::vector(2, 3).default_value("[processes, 1, 1]"),
+                "Blocks per direction (x, y, z); their product is `processes`.");
   Schema soil = Schema::object(
       "MPPICInterFoam's cloud standing for the MPM soil (one parcel per cell holding soil).");
   soil.optional("parcel_density",
@@ -80,7 +86,14 @@ Schema openfoam_case_schema() {
       .optional("max_solid_fraction", Schema::number().range(0.0, 1.0).default_value("0.99"),
                 "OpenFOAM's alphaMax: the fluid fraction is clipped at 1 - this.")
       .optional("minimum_solid_fraction", Schema::number().range(0.0, 1.0).default_value("1e-6"),
-                "Cells with less soil than this get no parcel.");
+                "Cells with less soil than this get no parcel.")
+      .optional("displaced_water", Schema::boolean().default_value("true"),
+                "Account for the water the moving soil displaces: MPPICInterFoam sees the "
+                "soil's volume only between windows, so within a window its continuity lacks "
+                "d(n)/dt = div(phi_s U_s); the parcels then move at U_s / n and the fluid "
+                "velocity read back is shifted by -phi_s U_s / n, which solves the missing term "
+                "exactly (false: the parcels move at U_s, and compaction-driven pore pressure "
+                "is underestimated by the factor n).");
   Schema file = Schema::file(
       "openfoam_case",
       "A two-phase (water and air) flow run by Debian's stock OpenFOAM v1912 through case files "
@@ -91,6 +104,7 @@ Schema openfoam_case_schema() {
                 "The OpenFOAM application: interFoam (water and air), or MPPICInterFoam (water "
                 "and air around the MPM soil as parcels; needed coupled with a soil).")
       .optional("soil", soil, "MPPICInterFoam: the soil's parcels.")
+      .optional("parallel", parallel, "Parallel OpenFOAM (default: serial).")
       .optional("generate", generate_schema(),
                 "Make the OpenFOAM case from these keys (give this or `directory`).")
       .optional("directory", Schema::path().must_exist(),

@@ -86,6 +86,26 @@ class CaseReader {
                       c.time_step));
     }
     c.keep_time_directories = root_.get<bool>("keep_time_directories", false);
+    if (auto parallel = root_.find("parallel")) {
+      c.processes = (*parallel)["processes"].as<int>();
+      c.split = {c.processes, 1, 1};
+      if (auto split = parallel->find("split")) {
+        const auto blocks = split->as<std::vector<double>>();
+        long product = 1;
+        for (std::size_t d = 0; d < 3; ++d) {
+          const double b = d < blocks.size() ? blocks[d] : 1.0;
+          if (!(b >= 1.0) || b != std::floor(b)) {
+            split->fail(fmt::format("blocks per direction must be whole numbers >= 1, got {}", b));
+          }
+          c.split[d] = static_cast<int>(b);
+          product *= c.split[d];
+        }
+        if (product != c.processes) {
+          split->fail(fmt::format("the blocks {} x {} x {} make {} processes, not {}", c.split[0],
+                                  c.split[1], c.split[2], product, c.processes));
+        }
+      }
+    }
     if (auto soil = root_.find("soil")) {
       if (!c.has_cloud()) soil->fail("`soil` needs `solver: MPPICInterFoam` (the soil's parcels)");
       c.soil.parcel_density = soil->get<double>("parcel_density", c.soil.parcel_density);
@@ -93,6 +113,7 @@ class CaseReader {
           soil->get<double>("max_solid_fraction", c.soil.max_solid_fraction);
       c.soil.minimum_solid_fraction =
           soil->get<double>("minimum_solid_fraction", c.soil.minimum_solid_fraction);
+      c.soil.displaced_water = soil->get<bool>("displaced_water", c.soil.displaced_water);
     }
     return c;
   }

@@ -1,8 +1,10 @@
 #include "openfoam/foam/foam_application.hpp"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <thread>
 
@@ -86,12 +88,23 @@ bool log_has_fatal_error(const std::filesystem::path& log_file, std::size_t offs
 ApplicationTiming run_application(const Installation& installation, const std::string& name,
                                   std::vector<std::string> arguments,
                                   const std::filesystem::path& case_dir,
-                                  const std::filesystem::path& log_file) {
+                                  const std::filesystem::path& log_file, int processes) {
   arguments.insert(arguments.begin(), {"-case", case_dir.string()});
+  std::filesystem::path program = installation.application(name);
+  if (processes > 1) {
+    arguments.push_back("-parallel");
+    arguments.insert(arguments.begin(),
+                     {"-np", std::to_string(processes), "--bind-to", "none", program.string()});
+    program = installation.application("mpirun");
+    if (::geteuid() == 0) {
+      ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+      ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+    }
+  }
   const std::size_t log_start = size_of_file(log_file);
   cosim::runtime::Supervisor supervisor;
   const Clock::time_point launched = Clock::now();
-  supervisor.start({name, installation.application(name), arguments, log_file});
+  supervisor.start({name, program, arguments, log_file});
   LogFollower log(log_file, log_start);
   Clock::time_point first_step{};
   bool stepping = false;

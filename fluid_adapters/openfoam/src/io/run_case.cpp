@@ -19,6 +19,7 @@
 #include "cosim/io/snapshot_writer.hpp"
 #include "cosim/io/time_series_writer.hpp"
 #include "cosim/participant.hpp"
+#include "openfoam/case/decomposition.hpp"
 #include "openfoam/case/existing_case.hpp"
 #include "openfoam/case/generated_case.hpp"
 #include "openfoam/case/load_case.hpp"
@@ -27,6 +28,7 @@
 #include "openfoam/foam/field_file.hpp"
 #include "openfoam/foam/foam_application.hpp"
 #include "openfoam/foam/time_directories.hpp"
+#include "openfoam/io/case_layout.hpp"
 #include "openfoam/io/case_mesh.hpp"
 #include "openfoam/io/foam_fields.hpp"
 #include "openfoam/io/soil_coupling.hpp"
@@ -67,7 +69,7 @@ class CaseRun {
       auto scope = summary_.phases().measure("setup");
       set_up_case();
     }
-    FoamFields fields = read_fields(case_dir_ / "0");
+    FoamFields fields = read_fields("0");
     record_water(fields, true);
     write_outputs(0.0, fields);
     summary_.write();
@@ -98,7 +100,7 @@ class CaseRun {
     SoilCoupling coupling(c_, mesh_);
     cosim::Participant participant(options_.endpoint.name_or("openfoam"), options_.endpoint);
     coupling.declare(participant);
-    FoamFields fields = read_fields(case_dir_ / "0");
+    FoamFields fields = read_fields("0");
     coupling.write(participant, fields, c_.time_step, 0);
     participant.initialize(0.0, c_.end_time);
     const double window = participant.window_size();
@@ -121,8 +123,7 @@ class CaseRun {
       {
         auto scope = summary_.phases().measure("adapter_write");
         const SoilParcels& parcels = coupling.parcels(participant, fields);
-        const auto latest = latest_time_directory(case_dir_);
-        write_soil_cloud(case_dir_ / latest->name, latest->name, parcels, c_.soil.parcel_density);
+        layout_->write_cloud(layout_->latest()->name, parcels, c_.soil.parcel_density);
         parcels_ = parcels.size();
       }
       fields = run_window(start, end);
@@ -150,6 +151,10 @@ class CaseRun {
     const bool make_mesh = c_.generate || !fs::is_directory(c_.directory / "constant" / "polyMesh");
     if (make_mesh) applications.push_back("blockMesh");
     if (c_.generate) applications.push_back("setFields");
+    if (c_.processes > 1) {
+      applications.push_back("decomposePar");
+      applications.push_back("mpirun");
+    }
     installation_ = find_installation(applications);
     if (c_.directory.empty()) {
       // A previous run's case in this output directory is replaced.
@@ -166,12 +171,19 @@ class CaseRun {
     if (c_.generate) run_tool("setFields", {});
     mesh_ =
         read_case_mesh(installation_, case_dir_, log_dir_, c_.generate, SoilCoupling::mesh_name);
+    if (c_.processes > 1) {
+      // Decomposed once; the windows then run on the processors' directories.
+      write_decompose_par_dict(case_dir_, c_.processes, c_.split);
+      run_tool("decomposePar", {"-force"});
+    }
+    layout_.emplace(case_dir_, c_.processes, mesh_.volumes.size());
     set_up_gauges();
     snapshot_writer_.emplace(options_.output, "openfoam", mesh_.mesh);
     summary_.set_section("case", {{"name", c_.name},
                                   {"solver", c_.solver},
                                   {"cells", mesh_.volumes.size()},
                                   {"case_directory", case_dir_.string()},
+                                  {"processes", c_.processes},
                                   {"generated", c_.generate.has_value()},
                                   {"time_step_s", c_.time_step},
                                   {"window_s", c_.window},
@@ -269,12 +281,12 @@ class CaseRun {
     Clock::time_point phase = Clock::now();
     write_controls(start, end);
     timing.write = seconds_since(phase);
-    timing.solver =
-        run_application(installation_, c_.solver, {}, case_dir_, log_dir_ / (c_.solver + ".log"));
+    timing.solver = run_application(installation_, c_.solver, {}, case_dir_,
+                                    log_dir_ / (c_.solver + ".log"), c_.processes);
     phase = Clock::now();
     // The directory the solver wrote at the window's end, found by its time
     // (OpenFOAM lengthens a name that two times would share).
-    const auto latest = latest_time_directory(case_dir_);
+    const auto latest = layout_->latest();
     if (!latest || std::abs(latest->time - end) > tolerance_) {
       throw cosim::Error(
           cosim::ExitCode::participant_failed,
@@ -283,11 +295,11 @@ class CaseRun {
                       c_.solver, end, time_name(end, time_precision), case_dir_.string(),
                       latest ? latest->name : "none"));
     }
-    FoamFields fields = read_fields(case_dir_ / latest->name);
+    FoamFields fields = read_fields(latest->name);
     timing.read = seconds_since(phase);
     if (!c_.keep_time_directories) {
       const std::array<std::string, 2> keep{"0", latest->name};
-      remove_time_directories_except(case_dir_, keep);
+      layout_->remove_times_except(keep);
     }
     steps_ += steps_in(end - start);
     summary_.phases().add("adapter_write", timing.write);
@@ -298,8 +310,8 @@ class CaseRun {
     return fields;
   }
 
-  FoamFields read_fields(const fs::path& directory) const {
-    FoamFields f = read_foam_fields(directory, mesh_.volumes.size(), mesh_.mesh.dimension());
+  FoamFields read_fields(const std::string& time) const {
+    FoamFields f = layout_->read(time, mesh_.mesh.dimension());
     if (c_.generate) {
       complete_pressure(f, mesh_.centres, c_.generate->gravity, c_.generate->water,
                         c_.generate->air);
@@ -361,6 +373,7 @@ class CaseRun {
   double tolerance_;
   Installation installation_;
   CaseMesh mesh_;
+  std::optional<CaseLayout> layout_;
   std::optional<cosim::SnapshotWriter> snapshot_writer_;
   std::vector<WindowTiming> windows_;
   std::int64_t steps_ = 0;

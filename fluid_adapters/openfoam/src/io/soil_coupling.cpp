@@ -83,7 +83,9 @@ const SoilParcels& SoilCoupling::parcels(const cosim::Participant& participant,
     double relative[3] = {0.0, 0.0, 0.0};
     double speed2 = 0.0;
     for (std::size_t d = 0; d < dim; ++d) {
-      relative[d] = start.velocity[c * dim + d] - solid_velocity_[c * dim + d];
+      const double u_f =
+          fluid_velocity_.empty() ? start.velocity[c * dim + d] : fluid_velocity_[c * dim + d];
+      relative[d] = u_f - solid_velocity_[c * dim + d];
       speed2 += relative[d] * relative[d];
     }
     const CloudDragInput input{phi_s, mixture_density(start, c, water_, air_),
@@ -91,7 +93,8 @@ const SoilParcels& SoilCoupling::parcels(const cosim::Participant& participant,
     const double d = ergun_wen_yu_grain_size(input, drag_[c] / n);
     diameter_[c] = d;
     double u[3] = {0.0, 0.0, 0.0};
-    for (std::size_t k = 0; k < dim; ++k) u[k] = solid_velocity_[c * dim + k];
+    const double shift = soil.displaced_water ? 1.0 / n : 1.0;
+    for (std::size_t k = 0; k < dim; ++k) u[k] = shift * solid_velocity_[c * dim + k];
     const double grain_volume = std::numbers::pi * d * d * d / 6.0;
     parcels_.add(&mesh_.centres[3 * c], static_cast<std::int64_t>(c), u, d,
                  phi_s * mesh_.volumes[c] / grain_volume);
@@ -99,10 +102,20 @@ const SoilParcels& SoilCoupling::parcels(const cosim::Participant& participant,
   return parcels_;
 }
 
-SoilCoupling::MomentumCheck SoilCoupling::write(cosim::Participant& participant,
-                                                const FoamFields& end, double window, long steps) {
+SoilCoupling::MomentumCheck SoilCoupling::write(cosim::Participant& participant, FoamFields& end,
+                                                double window, long steps) {
   const std::size_t cells = mesh_.volumes.size();
   const auto dim = static_cast<std::size_t>(dim_);
+  if (c_.soil.displaced_water) {
+    for (std::size_t c = 0; c < cells; ++c) {
+      if (diameter_.empty() || diameter_[c] <= 0.0) continue;
+      const double phi_s = std::min(solid_fraction_[c], c_.soil.max_solid_fraction);
+      const double n = std::max(1.0 - phi_s, 1.0 - c_.soil.max_solid_fraction);
+      for (std::size_t d = 0; d < dim; ++d)
+        end.velocity[c * dim + d] -= phi_s * solid_velocity_[c * dim + d] / n;
+    }
+  }
+  fluid_velocity_ = end.velocity;
   std::vector<double> density(cells), water(cells), impulse_rate(cells * dim, 0.0);
   for (std::size_t c = 0; c < cells; ++c) {
     const double alphac = end.alphac.empty() ? 1.0 : end.alphac[c];

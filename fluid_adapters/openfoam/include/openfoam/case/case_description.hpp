@@ -59,6 +59,9 @@ struct SoilCloudSettings {
   double parcel_density = 2.65e6;        // rho_p [kg/m^3]: the drag cannot move the parcels
   double max_solid_fraction = 0.99;      // alphaMax: alphac >= 1 - alphaMax
   double minimum_solid_fraction = 1e-6;  // cells with less soil get no parcel
+  // The water the moving soil displaces (see SoilCoupling): the parcels move
+  // at U_s / n and the fluid velocity is shifted back by phi_s U_s / n.
+  bool displaced_water = true;
 };
 
 // A point whose cell's values are recorded every window (gauges.csv).
@@ -87,6 +90,10 @@ struct CaseDescription {
   double output_every = 0.0;           // snapshot interval; 0: start and end only
   bool keep_time_directories = false;  // keep every window's time directory
   std::vector<Gauge> gauges;
+  // Parallel OpenFOAM: decomposed once (method simple, `split` cells blocks
+  // per direction, their product the process count), run under mpirun.
+  int processes = 1;
+  std::array<int, 3> split{1, 1, 1};
 
   bool has_cloud() const { return solver == "MPPICInterFoam"; }
 };

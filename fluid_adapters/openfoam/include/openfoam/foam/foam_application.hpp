@@ -20,10 +20,13 @@ struct ApplicationTiming {
 // group that dies with the adapter. A non-zero exit, a signal or a
 // "FOAM FATAL" line in its log throws cosim::Error (participant_failed,
 // exit 3) naming the application, how it ended, the case directory (kept
-// for inspection) and the last lines of its log.
+// for inspection) and the last lines of its log. With `processes` > 1 it
+// runs decomposed under `mpirun -np <processes>` (found on PATH like the
+// applications) with `-parallel`; as root the Open MPI variables that allow
+// it are set.
 ApplicationTiming run_application(const Installation& installation, const std::string& name,
                                   std::vector<std::string> arguments,
                                   const std::filesystem::path& case_dir,
-                                  const std::filesystem::path& log_file);
+                                  const std::filesystem::path& log_file, int processes = 1);
 
 }  // namespace openfoam

@@ -25,6 +25,14 @@ namespace openfoam {
 // the window's end fields: with the MPM's own -phi_s grad p the mixture's
 // momentum is that of Tran et al., MPMICE, eqs. 7-8 (at steady state the
 // soil takes the whole seepage force grad p).
+//
+// The water the soil displaces: the solver sees the soil's volume fraction
+// only between windows (cell mode), so inside a window its continuity is
+// div(n u) = 0 where the mixture's is div(n u_f + phi_s U_s) = 0. The
+// solver's u is then the physical u_f + phi_s U_s / n exactly, and with the
+// parcels moving at U_s / n its drag sees the physical U_s - u_f; the fields
+// read back are shifted to the physical u_f. This is what carries the pore
+// pressure of a compacting skeleton (Terzaghi) through stock MPPICInterFoam.
 class SoilCoupling {
  public:
   SoilCoupling(const CaseDescription& description, const CaseMesh& mesh);
@@ -35,16 +43,16 @@ class SoilCoupling {
   // the fluid's at its start.
   const SoilParcels& parcels(const cosim::Participant& participant, const FoamFields& start);
 
-  // The fields sent at the window's end, and the momentum check of the
-  // window of `steps` OpenFOAM steps.
+  // The fields sent at the window's end (`end`'s velocity shifted to the
+  // physical u_f), and the momentum check of the window of `steps` OpenFOAM
+  // steps.
   struct MomentumCheck {
     double cloud_on_fluid = 0.0;  // |sum| of OpenFOAM's UTrans x steps [kg m/s]
     double law_on_fluid = 0.0;    // |sum| of the law's -f V T
     double to_soil = 0.0;         // |sum| of what the soil receives
     double mismatch = 0.0;        // |cloud - law| / sum |law| over the cells
   };
-  MomentumCheck write(cosim::Participant& participant, const FoamFields& end, double window,
-                      long steps);
+  MomentumCheck write(cosim::Participant& participant, FoamFields& end, double window, long steps);
 
   static constexpr const char* mesh_name = "openfoam_cells";
 
@@ -59,7 +67,8 @@ class SoilCoupling {
   std::vector<double> solid_fraction_;
   std::vector<double> solid_velocity_;  // dim per cell
   std::vector<double> drag_;
-  std::vector<double> diameter_;  // per cell; 0 where no parcel
+  std::vector<double> diameter_;        // per cell; 0 where no parcel
+  std::vector<double> fluid_velocity_;  // physical u_f at the last window's end, dim per cell
   SoilParcels parcels_;
 };
 

@@ -1,0 +1,51 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "openfoam/cloud/soil_cloud.hpp"
+#include "openfoam/foam/time_directories.hpp"
+#include "openfoam/io/foam_fields.hpp"
+
+namespace openfoam {
+
+// Where a run's time directories live: the case itself when OpenFOAM runs
+// serial, or, decomposed once at the start (decomposePar), each
+// processor<N>/ directory with its own cells. A decomposed case is never
+// reconstructed: the adapter writes each processor's parcels with its local
+// cell labels and gathers the fields it reads back through
+// processor<N>/constant/polyMesh/cellProcAddressing (local cell -> cell of
+// the whole mesh).
+class CaseLayout {
+ public:
+  // Serial: `processes` = 1. Decomposed: reads the processors' addressing
+  // (run decomposePar first) and checks it covers each of `cells` once.
+  CaseLayout(std::filesystem::path case_dir, int processes, std::size_t cells);
+
+  int processes() const { return processes_; }
+  // The latest time directory the solver wrote (processor0's when decomposed).
+  std::optional<TimeDirectory> latest() const;
+  // The fields at time `name`, over the whole mesh.
+  FoamFields read(const std::string& name, int dim) const;
+  // The window's parcels (cells of the whole mesh) into time `name`.
+  void write_cloud(const std::string& name, const SoilParcels& parcels,
+                   double parcel_density) const;
+  // Removes every time directory but `keep`.
+  void remove_times_except(std::span<const std::string> keep) const;
+
+ private:
+  std::vector<std::filesystem::path> roots() const;
+
+  std::filesystem::path case_dir_;
+  int processes_;
+  std::size_t cells_;
+  std::vector<std::vector<std::int64_t>> addressing_;  // per processor: its cells' global labels
+  std::vector<std::int64_t> owner_;                    // per global cell: processor
+  std::vector<std::int64_t> local_;                    // per global cell: its local label
+};
+
+}  // namespace openfoam
