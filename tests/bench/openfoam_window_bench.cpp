@@ -1,7 +1,8 @@
 // openfoam_adapter's cost per window: the adapter's writes, the solver's
 // start-up (launch to its first time step), its stepping and the fields read
-// back, for a generated water tank of 800, 3 200 and 20 000 cells, serial,
-// 10 steps of 1 ms per window; then the same steps in one start (the
+// back, for a generated water tank of 800, 3 200 and 20 000 cells, serial
+// and on two processes (decomposed along x, mpirun), 10 steps of 1 ms per
+// window; then the same steps in one start (the
 // continuous reference), the restart overhead's share of a window, and the
 // steps per window at which that share falls below 25 %. Medians over the
 // windows after the first (its start builds the mesh caches the others
@@ -26,8 +27,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string tank_case(int nx, int ny, double window, double end_time) {
-  return fmt::format(R"(kind: openfoam_case
+std::string tank_case(int nx, int ny, double window, double end_time, int processes) {
+  std::string text = fmt::format(R"(kind: openfoam_case
 name: tank_{}x{}
 generate:
   dimension: 2
@@ -44,7 +45,9 @@ time_step: 1.0e-3
 window: {}
 output: {{every: {}}}
 )",
-                     nx, ny, nx, ny, end_time, window, end_time);
+                                 nx, ny, nx, ny, end_time, window, end_time);
+  if (processes > 1) text += fmt::format("parallel: {{processes: {}}}\n", processes);
+  return text;
 }
 
 double median(std::vector<double> v) {
@@ -82,32 +85,37 @@ int main(int argc, char** argv) {
   const double window = steps_per_window * 1e-3;
   fmt::print(
       "openfoam_adapter window cost: interFoam, 2D tank, {} windows of {} steps (1 ms), "
-      "serial; medians of windows 2..{} [s]\n",
+      "serial and np = 2; medians of windows 2..{} [s]\n",
       windows, steps_per_window, windows);
-  fmt::print("{:>7} {:>8} {:>8} {:>9} {:>8} {:>9} {:>11} {:>9} {:>10}\n", "cells", "write",
-             "startup", "stepping", "read", "window", "continuous", "overhead", "k for 25%");
-  for (const auto& [nx, ny] : {std::pair{40, 20}, std::pair{80, 40}, std::pair{200, 100}}) {
-    const double end = windows * window;
-    const auto restarted = run(fmt::format("{}x{}", nx, ny), tank_case(nx, ny, window, end));
-    const auto& w = restarted["openfoam_windows"];
-    const double write = median(after_first(w["adapter_write_s"]));
-    const double startup = median(after_first(w["solver_startup_s"]));
-    const double stepping = median(after_first(w["solver_stepping_s"]));
-    const double read = median(after_first(w["field_read_s"]));
-    const double per_window = write + startup + stepping + read;
-    // The same steps in one start: its stepping per window is what a
-    // window costs without restarts.
-    const auto continuous =
-        run(fmt::format("{}x{}_continuous", nx, ny), tank_case(nx, ny, end, end));
-    const double continuous_window =
-        continuous["openfoam_windows"]["solver_stepping_s"][0].get<double>() / windows;
-    const double overhead = per_window - continuous_window;
-    const double per_step = continuous_window / steps_per_window;
-    // overhead / (overhead + k per_step) < 0.25  <=>  k > 3 overhead / per_step
-    const double k25 = std::ceil(3.0 * overhead / per_step);
-    fmt::print("{:>7} {:>8.4f} {:>8.3f} {:>9.3f} {:>8.4f} {:>9.3f} {:>11.3f} {:>8.0f}% {:>10.0f}\n",
-               nx * ny, write, startup, stepping, read, per_window, continuous_window,
-               100.0 * overhead / per_window, k25);
+  fmt::print("{:>7} {:>3} {:>8} {:>8} {:>9} {:>8} {:>9} {:>11} {:>9} {:>10}\n", "cells", "np",
+             "write", "startup", "stepping", "read", "window", "continuous", "overhead",
+             "k for 25%");
+  for (const int np : {1, 2}) {
+    for (const auto& [nx, ny] : {std::pair{40, 20}, std::pair{80, 40}, std::pair{200, 100}}) {
+      const double end = windows * window;
+      const std::string name = fmt::format("{}x{}_np{}", nx, ny, np);
+      const auto restarted = run(name, tank_case(nx, ny, window, end, np));
+      const auto& w = restarted["openfoam_windows"];
+      const double write = median(after_first(w["adapter_write_s"]));
+      const double startup = median(after_first(w["solver_startup_s"]));
+      const double stepping = median(after_first(w["solver_stepping_s"]));
+      const double read = median(after_first(w["field_read_s"]));
+      const double per_window = write + startup + stepping + read;
+      // The same steps in one start: its stepping per window is what a
+      // window costs without restarts.
+      const auto continuous = run(name + "_continuous", tank_case(nx, ny, end, end, np));
+      const double continuous_window =
+          continuous["openfoam_windows"]["solver_stepping_s"][0].get<double>() / windows;
+      const double overhead = per_window - continuous_window;
+      const double per_step = continuous_window / steps_per_window;
+      // overhead / (overhead + k per_step) < 0.25  <=>  k > 3 overhead / per_step
+      const double k25 = std::ceil(3.0 * overhead / per_step);
+      fmt::print(
+          "{:>7} {:>3} {:>8.4f} {:>8.3f} {:>9.3f} {:>8.4f} {:>9.3f} {:>11.3f} {:>8.0f}% "
+          "{:>10.0f}\n",
+          nx * ny, np, write, startup, stepping, read, per_window, continuous_window,
+          100.0 * overhead / per_window, k25);
+    }
   }
   return 0;
 }

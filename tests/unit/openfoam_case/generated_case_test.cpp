@@ -85,7 +85,7 @@ TEST(OpenFoamGeneratedCase, APressureSideHoldsPRghAndLetsWaterIn) {
 
 TEST(OpenFoamGeneratedCase, TheSoilsCloudHasOnlyItsDragAndAnImmenseDensity) {
   cosim::testing::ScratchDirectory dir;
-  SoilCloudSettings cloud;
+  SoilSettings cloud;
   write_generated_case(dam_break(), dir.path(), &cloud);
   const std::string k = read_text(dir / "constant/kinematicCloudProperties");
   for (const char* entry : {"ErgunWenYuDrag", "alphac alphac;", "rho0 2650000;", "alphaMax 0.99;",

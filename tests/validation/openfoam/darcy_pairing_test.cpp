@@ -8,6 +8,7 @@
 //   U_f = (1/n) d^2 (1 - phi_s)^3 / (180 phi_s^2 mu) dp / L   (eq. 98).
 // CI runs each solid fraction at one of the pressure differences (both
 // extremes included); -DCOSIM_FULL_VALIDATION=ON runs all 15 (~2.5 min).
+// The porosity-zone fallback (interFoam) is run on two of the cases.
 // Printed besides: the momentum the cloud gave the water in the last window
 // (OpenFOAM's UTrans) against the drag law's, and the cell velocity in the
 // free water upstream against n U_f (MPPICInterFoam's cell-centred velocity
@@ -43,14 +44,18 @@ struct Steady {
   double mismatch = 0.0;         // the cloud's momentum on the water against the law's
 };
 
-Steady run_case(const fs::path& dir, double phi_s, double dp) {
+Steady run_case(const fs::path& dir, double phi_s, double dp, bool porosity_zones = false) {
   const fs::path source = fs::path(COSIM_SOURCE_DIR) / "configs/openfoam_coupled/darcy";
   fs::create_directories(dir);
   write_text(dir / "job.yaml", read_text(source / "job.yaml"));
   write_text(dir / "column.yaml", replaced(read_text(source / "column.yaml"), "porosity: 0.4",
                                            fmt::format("porosity: {}", 1.0 - phi_s)));
-  write_text(dir / "water.yaml", replaced(read_text(source / "water.yaml"), "pressure: 151987.5",
-                                          fmt::format("pressure: {}", atmosphere + dp)));
+  std::string water = replaced(read_text(source / "water.yaml"), "pressure: 151987.5",
+                               fmt::format("pressure: {}", atmosphere + dp));
+  if (porosity_zones)
+    water = replaced(water, "solver: MPPICInterFoam",
+                     "solver: interFoam\nsoil: {model: porosity_zones}");
+  write_text(dir / "water.yaml", water);
   const ProcessResult r = run({binary("cosim").string(), "run", (dir / "job.yaml").string(),
                                "--output", (dir / "run").string()},
                               std::chrono::seconds(300));
@@ -108,6 +113,28 @@ TEST(OpenFoamDarcyPairing, PoreWaterVelocityMatchesEquation98ForAllFifteenCases)
       "largest error over the cases run: {:.3f} % (tolerance 2 %); largest momentum mismatch "
       "cloud vs law {:.2e} (tolerance 1e-2)\n",
       100.0 * worst, worst_mismatch);
+}
+
+// The fallback for rigid porous structures: interFoam with a porosity source
+// on the column's cells (one zone: the column is uniform). Its velocity is
+// superficial, without the cell-to-cell oscillation of MPPICInterFoam's, so
+// the free water's flux n U_f is asserted too.
+TEST(OpenFoamDarcyPairing, ThePorosityZoneFallbackGivesTheSameFlow) {
+  const fs::path dir = fresh_directory("openfoam_darcy_porosity_zones");
+  for (const auto& [phi_s, atmospheres] : {std::pair{0.6, 0.5}, std::pair{0.7, 1.0}}) {
+    const double dp = atmospheres * atmosphere;
+    const Steady s = run_case(dir / fmt::format("phi{}_dp{}", phi_s, atmospheres), phi_s, dp, true);
+    const double exact = DarcyColumn{}.pore_velocity(phi_s, dp);
+    const double error = s.column_velocity / exact - 1.0;
+    const double flux_error = s.inlet_velocity / ((1.0 - phi_s) * exact) - 1.0;
+    fmt::print(
+        "porosity zones: phi_s {:.2f}, dp {:.2f} atm: U_f {:.5f} m/s vs eq. 98 {:.5f} ({:+.3f} %, "
+        "tolerance 2 %); free-water flux vs n U_f {:+.3f} % (tolerance 2 %)\n",
+        phi_s, atmospheres, s.column_velocity, exact, 100.0 * error, 100.0 * flux_error);
+    EXPECT_LE(std::abs(error), 0.02);
+    EXPECT_LE(std::abs(flux_error), 0.02);
+    EXPECT_LE(s.drift, 1e-3);
+  }
 }
 
 }  // namespace

@@ -77,9 +77,16 @@ Schema openfoam_case_schema() {
   parallel.required("processes", Schema::integer().range(1, 1024), "How many MPI processes.")
       .optional("split", Schema::vector(2, 3).default_value("[processes, 1, 1]"),
                 "Blocks per direction (x, y, z); their product is `processes`.");
-  Schema soil = Schema::object(
-      "MPPICInterFoam's cloud standing for the MPM soil (one parcel per cell holding soil).");
-  soil.optional("parcel_density",
+  Schema soil = Schema::object("How the MPM soil enters OpenFOAM in a coupled run.");
+  soil.optional("model", Schema::one_of({"parcels", "porosity_zones"}).default_value("parcels"),
+                "parcels: MPPICInterFoam's cloud, one parcel per cell holding soil (moving, "
+                "deforming soil); porosity_zones: interFoam's explicitPorositySource on zones "
+                "rebuilt by topoSet each window (rigid, slow porous structures only: no porosity "
+                "in continuity or inertia, no solid velocity in the drag).")
+      .optional("zones", Schema::integer().range(1, 64).default_value("8"),
+                "porosity_zones: at most this many zones, the cells' Darcy coefficients binned "
+                "log-spaced (OpenFOAM takes one per zone).")
+      .optional("parcel_density",
                 Schema::number().positive().unit("kg/m^3").default_value("2.65e6"),
                 "Parcel density: immense, so that the drag cannot move the parcels in a window "
                 "(the drag itself does not depend on it).")

@@ -189,7 +189,7 @@ std::string initial_field(const GeneratedCase& c, const std::string& field, cons
 
 }  // namespace
 
-std::string soil_cloud_properties(const SoilCloudSettings& cloud) {
+std::string soil_cloud_properties(const SoilSettings& cloud) {
   return foam_file_header({"dictionary", "constant", "kinematicCloudProperties"}) +
          "solution\n{\n    active true;\n    coupled true;\n    transient yes;\n"
          "    cellValueSourceCorrection off;\n    maxCo 0.3;\n"
@@ -214,7 +214,7 @@ const char* side_patch_name(int side) {
 }
 
 void write_generated_case(const GeneratedCase& c, const std::filesystem::path& case_dir,
-                          const SoilCloudSettings* cloud) {
+                          const SoilSettings* cloud) {
   for (const char* sub : {"system", "constant", "0"}) {
     std::filesystem::create_directories(case_dir / sub);
   }

@@ -107,7 +107,16 @@ class CaseReader {
       }
     }
     if (auto soil = root_.find("soil")) {
-      if (!c.has_cloud()) soil->fail("`soil` needs `solver: MPPICInterFoam` (the soil's parcels)");
+      if (soil->get<std::string>("model", "parcels") == "porosity_zones") {
+        c.soil.model = SoilModel::porosity_zones;
+        if (c.has_cloud()) {
+          (*soil)["model"].fail("porosity_zones run interFoam (`solver: interFoam`), not " +
+                                c.solver);
+        }
+      } else if (!c.has_cloud()) {
+        soil->fail("`soil` with parcels needs `solver: MPPICInterFoam` (the soil's parcels)");
+      }
+      c.soil.zones = soil->get<int>("zones", c.soil.zones);
       c.soil.parcel_density = soil->get<double>("parcel_density", c.soil.parcel_density);
       c.soil.max_solid_fraction =
           soil->get<double>("max_solid_fraction", c.soil.max_solid_fraction);

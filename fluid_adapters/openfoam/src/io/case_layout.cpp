@@ -111,6 +111,27 @@ void CaseLayout::write_cloud(const std::string& name, const SoilParcels& parcels
                      parcel_density);
 }
 
+void CaseLayout::write_scalar_field(const std::string& name, const std::string& field,
+                                    const std::string& dimensions,
+                                    std::span<const double> values) const {
+  const std::string boundary =
+      "    \".*\"\n    {\n        type zeroGradient;\n    }\n"
+      "    #includeEtc \"caseDicts/setConstraintTypes\"\n";
+  if (processes_ <= 1) {
+    write_vol_field(case_dir_ / name / field, name,
+                    {FieldType::scalar, dimensions, values, boundary});
+    return;
+  }
+  for (int p = 0; p < processes_; ++p) {
+    const auto& addressing = addressing_[static_cast<std::size_t>(p)];
+    std::vector<double> part(addressing.size());
+    for (std::size_t local = 0; local < addressing.size(); ++local)
+      part[local] = values[static_cast<std::size_t>(addressing[local])];
+    write_vol_field(processor_dir(case_dir_, p) / name / field, name,
+                    {FieldType::scalar, dimensions, part, boundary});
+  }
+}
+
 void CaseLayout::remove_times_except(std::span<const std::string> keep) const {
   for (const fs::path& root : roots()) remove_time_directories_except(root, keep);
 }

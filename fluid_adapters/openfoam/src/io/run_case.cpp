@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -32,6 +33,7 @@
 #include "openfoam/io/case_mesh.hpp"
 #include "openfoam/io/foam_fields.hpp"
 #include "openfoam/io/soil_coupling.hpp"
+#include "openfoam/porosity/porosity_zones.hpp"
 
 namespace openfoam {
 
@@ -87,10 +89,12 @@ class CaseRun {
   // Coupled with the MPM soil: one OpenFOAM start per coupling window, the
   // soil's parcels written into the window's start directory.
   void run_coupled() {
-    if (!c_.has_cloud()) {
+    const bool zones = c_.soil.model == SoilModel::porosity_zones;
+    if (!c_.has_cloud() && !zones) {
       throw cosim::InputError(cosim::SourceLocation{c_.file.string(), 0, 0}, "solver",
                               "coupled with a soil the solver must be MPPICInterFoam (the soil "
-                              "enters OpenFOAM as its parcels); the case runs " +
+                              "enters OpenFOAM as its parcels), or interFoam with `soil: {model: "
+                              "porosity_zones}`; the case runs " +
                                   c_.solver);
     }
     {
@@ -120,7 +124,9 @@ class CaseRun {
     while (participant.is_coupling_ongoing()) {
       const double start = participant.time();
       const double end = start + participant.max_time_step();
-      {
+      if (zones) {
+        write_porosity_zones(coupling.darcy_coefficients(participant, fields));
+      } else {
         auto scope = summary_.phases().measure("adapter_write");
         const SoilParcels& parcels = coupling.parcels(participant, fields);
         layout_->write_cloud(layout_->latest()->name, parcels, c_.soil.parcel_density);
@@ -151,6 +157,7 @@ class CaseRun {
     const bool make_mesh = c_.generate || !fs::is_directory(c_.directory / "constant" / "polyMesh");
     if (make_mesh) applications.push_back("blockMesh");
     if (c_.generate) applications.push_back("setFields");
+    if (c_.soil.model == SoilModel::porosity_zones) applications.push_back("topoSet");
     if (c_.processes > 1) {
       applications.push_back("decomposePar");
       applications.push_back("mpirun");
@@ -196,6 +203,26 @@ class CaseRun {
     auto scope = summary_.phases().measure("preprocessing");
     run_application(installation_, name, std::move(arguments), case_dir_,
                     log_dir_ / (name + ".log"));
+  }
+
+  // The fallback's zones for the window: the cells' d into the start
+  // directory, topoSet's dictionary and the porosity sources, then topoSet.
+  void write_porosity_zones(const std::vector<double>& darcy) {
+    const std::vector<PorosityZone> zones = porosity_zones(darcy, c_.soil.zones);
+    const std::string start = layout_->latest()->name;
+    {
+      auto scope = summary_.phases().measure("adapter_write");
+      layout_->write_scalar_field(start, darcy_field, "[0 -2 0 0 0 0 0]", darcy);
+      cosim::write_file_atomically(case_dir_ / "system" / "topoSetDict", topo_set_dict(zones));
+      cosim::write_file_atomically(case_dir_ / "constant" / "fvOptions",
+                                   porosity_fv_options(zones));
+    }
+    parcels_ = static_cast<std::size_t>(
+        std::count_if(darcy.begin(), darcy.end(), [](double d) { return d > 0.0; }));
+    if (zones.empty()) return;
+    auto scope = summary_.phases().measure("topo_set");
+    run_application(installation_, "topoSet", {"-time", start}, case_dir_, log_dir_ / "topoSet.log",
+                    c_.processes);
   }
 
   long steps_in(double interval) const { return std::lround(interval / c_.time_step); }

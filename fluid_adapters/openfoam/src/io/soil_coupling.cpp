@@ -62,19 +62,42 @@ void SoilCoupling::declare(cosim::Participant& participant) const {
   participant.declare_write(impulse);
 }
 
-const SoilParcels& SoilCoupling::parcels(const cosim::Participant& participant,
-                                         const FoamFields& start) {
+void SoilCoupling::read_soil(const cosim::Participant& participant) {
   const std::size_t cells = mesh_.volumes.size();
-  const auto dim = static_cast<std::size_t>(dim_);
   solid_fraction_.resize(cells);
-  solid_velocity_.resize(cells * dim);
+  solid_velocity_.resize(cells * static_cast<std::size_t>(dim_));
   drag_.resize(cells);
   participant.read(mx::solid_fraction, solid_fraction_);
   participant.read(mx::solid_velocity, solid_velocity_);
   participant.read(mx::drag_coefficient, drag_);
+}
+
+double SoilCoupling::pore_fraction(std::size_t c) const {
+  const double phi_s = std::min(solid_fraction_[c], c_.soil.max_solid_fraction);
+  return std::max(1.0 - phi_s, 1.0 - c_.soil.max_solid_fraction);
+}
+
+const std::vector<double>& SoilCoupling::darcy_coefficients(const cosim::Participant& participant,
+                                                            const FoamFields& start) {
+  read_soil(participant);
+  const std::size_t cells = mesh_.volumes.size();
+  darcy_.assign(cells, 0.0);
+  for (std::size_t c = 0; c < cells; ++c) {
+    if (solid_fraction_[c] < c_.soil.minimum_solid_fraction || !(drag_[c] > 0.0)) continue;
+    const double n = pore_fraction(c);
+    darcy_[c] = drag_[c] / (n * n * mixture_viscosity(start, c, water_, air_));
+  }
+  return darcy_;
+}
+
+const SoilParcels& SoilCoupling::parcels(const cosim::Participant& participant,
+                                         const FoamFields& start) {
+  const std::size_t cells = mesh_.volumes.size();
+  const auto dim = static_cast<std::size_t>(dim_);
+  read_soil(participant);
   diameter_.assign(cells, 0.0);
   parcels_.clear();
-  const SoilCloudSettings& soil = c_.soil;
+  const SoilSettings& soil = c_.soil;
   const double smallest_pore = 1.0 - soil.max_solid_fraction;
   for (std::size_t c = 0; c < cells; ++c) {
     const double phi_s = std::min(solid_fraction_[c], soil.max_solid_fraction);
@@ -106,28 +129,23 @@ SoilCoupling::MomentumCheck SoilCoupling::write(cosim::Participant& participant,
                                                 double window, long steps) {
   const std::size_t cells = mesh_.volumes.size();
   const auto dim = static_cast<std::size_t>(dim_);
+  if (porosity_zones()) return write_porosity_zones(participant, end, window);
   if (c_.soil.displaced_water) {
     for (std::size_t c = 0; c < cells; ++c) {
       if (diameter_.empty() || diameter_[c] <= 0.0) continue;
-      const double phi_s = std::min(solid_fraction_[c], c_.soil.max_solid_fraction);
-      const double n = std::max(1.0 - phi_s, 1.0 - c_.soil.max_solid_fraction);
+      const double n = pore_fraction(c);
       for (std::size_t d = 0; d < dim; ++d)
-        end.velocity[c * dim + d] -= phi_s * solid_velocity_[c * dim + d] / n;
+        end.velocity[c * dim + d] -= (1.0 - n) * solid_velocity_[c * dim + d] / n;
     }
   }
   fluid_velocity_ = end.velocity;
-  std::vector<double> density(cells), water(cells), impulse_rate(cells * dim, 0.0);
-  for (std::size_t c = 0; c < cells; ++c) {
-    const double alphac = end.alphac.empty() ? 1.0 : end.alphac[c];
-    density[c] = alphac * mixture_density(end, c, water_, air_);
-    water[c] = std::clamp(alphac * end.alpha_water[c], 0.0, 1.0);
-  }
+  std::vector<double> impulse_rate(cells * dim, 0.0);
   MomentumCheck check;
   double cloud[3] = {0, 0, 0}, law[3] = {0, 0, 0}, soil[3] = {0, 0, 0}, scale = 0.0, off = 0.0;
   for (std::size_t c = 0; c < cells; ++c) {
     if (diameter_.empty() || diameter_[c] <= 0.0) continue;
-    const double phi_s = std::min(solid_fraction_[c], c_.soil.max_solid_fraction);
-    const double n = std::max(1.0 - phi_s, 1.0 - c_.soil.max_solid_fraction);
+    const double n = pore_fraction(c);
+    const double phi_s = 1.0 - n;
     double speed2 = 0.0;
     for (std::size_t d = 0; d < dim; ++d) {
       const double r = end.velocity[c * dim + d] - solid_velocity_[c * dim + d];
@@ -161,12 +179,54 @@ SoilCoupling::MomentumCheck SoilCoupling::write(cosim::Participant& participant,
   check.law_on_fluid = std::sqrt(check.law_on_fluid);
   check.to_soil = std::sqrt(check.to_soil);
   check.mismatch = scale > 0.0 ? off / scale : 0.0;
+  write_fields(participant, end, end.alphac, impulse_rate);
+  return check;
+}
+
+SoilCoupling::MomentumCheck SoilCoupling::write_porosity_zones(cosim::Participant& participant,
+                                                               FoamFields& end, double window) {
+  const std::size_t cells = mesh_.volumes.size();
+  const auto dim = static_cast<std::size_t>(dim_);
+  // interFoam's U is superficial: the pore water moves at U / n.
+  std::vector<double> fluid_fraction(cells, 1.0), impulse_rate(cells * dim, 0.0);
+  MomentumCheck check;
+  double law[3] = {0, 0, 0};
+  for (std::size_t c = 0; c < cells; ++c) {
+    if (darcy_.empty() || darcy_[c] <= 0.0) continue;
+    const double n = pore_fraction(c);
+    fluid_fraction[c] = n;
+    const double mu_d = mixture_viscosity(end, c, water_, air_) * darcy_[c];
+    for (std::size_t d = 0; d < dim; ++d) {
+      const double on_fluid = -mu_d * end.velocity[c * dim + d] * plane_volume(c) * window;
+      law[d] += on_fluid;
+      impulse_rate[c * dim + d] = -n * on_fluid / window;
+      end.velocity[c * dim + d] /= n;
+    }
+  }
+  for (std::size_t d = 0; d < dim; ++d) check.law_on_fluid += law[d] * law[d];
+  check.law_on_fluid = std::sqrt(check.law_on_fluid);
+  check.to_soil =
+      check.law_on_fluid;  // times n per cell; the soil's own -phi_s grad p does the rest
+  fluid_velocity_ = end.velocity;
+  write_fields(participant, end, fluid_fraction, impulse_rate);
+  return check;
+}
+
+void SoilCoupling::write_fields(cosim::Participant& participant, const FoamFields& end,
+                                const std::vector<double>& fluid_fraction,
+                                const std::vector<double>& impulse_rate) const {
+  const std::size_t cells = mesh_.volumes.size();
+  std::vector<double> density(cells), water(cells);
+  for (std::size_t c = 0; c < cells; ++c) {
+    const double n = fluid_fraction.empty() ? 1.0 : fluid_fraction[c];
+    density[c] = n * mixture_density(end, c, water_, air_);
+    water[c] = std::clamp(n * end.alpha_water[c], 0.0, 1.0);
+  }
   participant.write(pore_pressure, end.p);
   participant.write(mx::fluid_velocity, end.velocity);
   participant.write(mx::fluid_bulk_density, density);
   participant.write(water_fraction, water);
   participant.write(mx::impulse, impulse_rate);
-  return check;
 }
 
 }  // namespace openfoam

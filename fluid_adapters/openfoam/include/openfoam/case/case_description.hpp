@@ -54,8 +54,15 @@ struct GeneratedCase {
   Vector3 spacing() const;
 };
 
-// The MPM soil as MPPICInterFoam's parcels (coupled runs).
-struct SoilCloudSettings {
+// How the MPM soil enters OpenFOAM (coupled runs).
+enum class SoilModel {
+  parcels,         // MPPICInterFoam's cloud, one parcel per cell (cloud/soil_cloud.hpp)
+  porosity_zones,  // interFoam's porosity source on zones (rigid porous structures)
+};
+
+struct SoilSettings {
+  SoilModel model = SoilModel::parcels;
+  int zones = 8;                         // porosity_zones: at most this many zones (one d each)
   double parcel_density = 2.65e6;        // rho_p [kg/m^3]: the drag cannot move the parcels
   double max_solid_fraction = 0.99;      // alphaMax: alphac >= 1 - alphaMax
   double minimum_solid_fraction = 1e-6;  // cells with less soil get no parcel
@@ -76,7 +83,7 @@ struct CaseDescription {
   std::uint64_t config_hash = 0;
   std::string name;
   std::string solver = "interFoam";  // the OpenFOAM application run each window
-  SoilCloudSettings soil;            // MPPICInterFoam only
+  SoilSettings soil;                 // MPPICInterFoam only
   // Exactly one of the two: a case made from the YAML, or a user's case
   // directory (copied into the run directory, checked up front).
   std::optional<GeneratedCase> generate;

@@ -15,11 +15,11 @@ namespace openfoam {
 // soil's parcels (soil_cloud.hpp) with Ergun-Wen-Yu drag and nothing else (no
 // gravity on them, no injection, packing, damping or collisions).
 void write_generated_case(const GeneratedCase& c, const std::filesystem::path& case_dir,
-                          const SoilCloudSettings* cloud = nullptr);
+                          const SoilSettings* cloud = nullptr);
 
 // The kinematicCloudProperties of the soil's parcels (also what a user's
 // MPPICInterFoam case is checked against).
-std::string soil_cloud_properties(const SoilCloudSettings& cloud);
+std::string soil_cloud_properties(const SoilSettings& cloud);
 
 // The patch names of the generated mesh, per side (x_min, x_max, ... z_max).
 const char* side_patch_name(int side);

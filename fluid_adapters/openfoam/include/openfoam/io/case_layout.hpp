@@ -34,6 +34,10 @@ class CaseLayout {
   // The window's parcels (cells of the whole mesh) into time `name`.
   void write_cloud(const std::string& name, const SoilParcels& parcels,
                    double parcel_density) const;
+  // A scalar vol field of the whole mesh (zero gradient on every patch,
+  // constraint patches as their type) written into time `name`.
+  void write_scalar_field(const std::string& name, const std::string& field,
+                          const std::string& dimensions, std::span<const double> values) const;
   // Removes every time directory but `keep`.
   void remove_times_except(std::span<const std::string> keep) const;
 

@@ -43,6 +43,14 @@ class SoilCoupling {
   // the fluid's at its start.
   const SoilParcels& parcels(const cosim::Participant& participant, const FoamFields& start);
 
+  // porosity_zones: each cell's Darcy coefficient d = K / (n^2 mu) [1/m^2]
+  // (0 without soil) from the soil's fields received at the window's start:
+  // interFoam's water takes the whole pressure gradient and its U is the
+  // superficial velocity, so at steady state grad p = -mu d U gives the
+  // Darcy flux of the job's law (n grad p = -K u_f, U = n u_f).
+  const std::vector<double>& darcy_coefficients(const cosim::Participant& participant,
+                                                const FoamFields& start);
+
   // The fields sent at the window's end (`end`'s velocity shifted to the
   // physical u_f), and the momentum check of the window of `steps` OpenFOAM
   // steps.
@@ -58,6 +66,14 @@ class SoilCoupling {
 
  private:
   double plane_volume(std::size_t c) const;
+  void read_soil(const cosim::Participant& participant);
+  bool porosity_zones() const { return c_.soil.model == SoilModel::porosity_zones; }
+  double pore_fraction(std::size_t c) const;
+  MomentumCheck write_porosity_zones(cosim::Participant& participant, FoamFields& end,
+                                     double window);
+  void write_fields(cosim::Participant& participant, const FoamFields& end,
+                    const std::vector<double>& fluid_fraction,
+                    const std::vector<double>& impulse_rate) const;
 
   const CaseDescription& c_;
   const CaseMesh& mesh_;
@@ -68,6 +84,7 @@ class SoilCoupling {
   std::vector<double> solid_velocity_;  // dim per cell
   std::vector<double> drag_;
   std::vector<double> diameter_;        // per cell; 0 where no parcel
+  std::vector<double> darcy_;           // porosity_zones: per cell d [1/m^2]; 0 where no soil
   std::vector<double> fluid_velocity_;  // physical u_f at the last window's end, dim per cell
   SoilParcels parcels_;
 };
