@@ -63,5 +63,14 @@ TEST(ErgunWenYu, ACoefficientNoGrainCanGiveIsANumericalError) {
   EXPECT_THROW(ergun_wen_yu_grain_size({0.6, 1000.0, mu, 0.0}, 1e-12), cosim::NumericalError);
 }
 
+TEST(ErgunWenYu, TheClampedGrainStaysInRangeForATraceOfSoil) {
+  const CloudDragInput trace{2.4e-6, 1000.0, mu, 0.01};
+  EXPECT_DOUBLE_EQ(ergun_wen_yu_grain_size_within_range(trace, 4.6e-7), largest_grain);
+  EXPECT_DOUBLE_EQ(ergun_wen_yu_grain_size_within_range({0.6, 1000.0, mu, 0.0}, 1e40),
+                   smallest_grain);
+  const double d = ergun_wen_yu_grain_size_within_range({0.6, 1000.0, mu, 0.0}, 4.05e5);
+  EXPECT_NEAR(d, ergun_wen_yu_grain_size({0.6, 1000.0, mu, 0.0}, 4.05e5), 1e-15);
+}
+
 }  // namespace
 }  // namespace openfoam

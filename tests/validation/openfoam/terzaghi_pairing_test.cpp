@@ -8,6 +8,9 @@
 // within a window its continuity lacks the water the compacting skeleton
 // expels. The adapter's displaced-water shift (soil.displaced_water, on by
 // default) restores it; the same job without the shift shows what is lost.
+// Measured (this machine): 3.19 / 0.90 / 0.28 / 0.11 % of p0 at T_v = 0.01,
+// 0.1, 0.5, 1 with the shift; 25.8 % and 38.2 % at T_v = 0.01 and 0.1
+// without it.
 // CI runs the shifted job to T_v = 0.01 (80 OpenFOAM starts);
 // -DCOSIM_FULL_VALIDATION=ON runs it to T_v = 1 (7 300 starts, ~20 min) and
 // the unshifted job to T_v = 0.1.
@@ -110,8 +113,10 @@ TEST(OpenFoamTerzaghiPairing, TheDisplacedWaterShiftCarriesTheConsolidationPress
   const double end_time = 0.008;
 #endif
   const auto errors = run_and_compare("shifted", end_time, true, factors);
+  // 3 % of p0 as for the ICE pairing; 5 % at T_v = 0.01, where the MPM
+  // skeleton's own loading wave (the load is applied at once) has not settled.
   for (std::size_t i = 0; i < errors.size(); ++i)
-    EXPECT_LE(errors[i], 0.05) << "T_v = " << factors[i];
+    EXPECT_LE(errors[i], factors[i] < 0.05 ? 0.05 : 0.03) << "T_v = " << factors[i];
 }
 
 #ifdef COSIM_FULL_VALIDATION

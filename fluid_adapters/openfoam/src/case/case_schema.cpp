@@ -65,12 +65,20 @@ Schema openfoam_case_schema() {
   Schema gauge = Schema::object("A point whose cell is recorded at every window's end.");
   gauge.required("name", Schema::string().non_empty(), "Column prefix in gauges.csv.")
       .required("point", vector_schema("m"), "The point; its cell is the nearest centre.");
+  Schema wave_gauge = Schema::object(
+      "A generated case's column of cells whose water surface is recorded every window.");
+  wave_gauge.required("name", Schema::string().non_empty(), "Column prefix in gauges.csv.")
+      .required("x", Schema::number().unit("m"), "Where along x.")
+      .optional("z", Schema::number().unit("m").default_value("0"), "Where along z (3D).");
   Schema output = Schema::object("What the run writes.");
   output
       .optional("every", Schema::number().non_negative().unit("s").default_value("0"),
                 "Snapshot interval (HDF5 + XDMF); 0: start and end only.")
       .optional("gauges", Schema::sequence(gauge),
-                "Points recorded in gauges.csv (p, p_rgh, U, water fraction) every window.");
+                "Points recorded in gauges.csv (p, p_rgh, U, water fraction) every window.")
+      .optional("wave_gauges", Schema::sequence(wave_gauge),
+                "Water surface elevations recorded in gauges.csv every window (generated cases: "
+                "the height of water in the cell column, from the grid's bottom).");
   Schema parallel = Schema::object(
       "Run OpenFOAM on several processes: the case is decomposed once at the start "
       "(decomposePar, method simple) and never reconstructed.");
@@ -124,6 +132,9 @@ Schema openfoam_case_schema() {
       .optional("window", Schema::number().positive().unit("s").default_value("output.every"),
                 "Standalone: OpenFOAM runs this long per start (the adapter reads its fields "
                 "between starts). Coupled, the job's window applies.")
+      .optional("window_timeout", Schema::number().positive().unit("s").default_value("600"),
+                "Wall time one start of the solver may take; beyond it the solver is stopped "
+                "and the run fails (exit 3) with its log's last lines.")
       .optional("keep_time_directories", Schema::boolean().default_value("false"),
                 "Keep every window's OpenFOAM time directory (default: only the latest).")
       .optional("output", output, "Outputs.");

@@ -69,6 +69,18 @@ class CaseReader {
           c.gauges.push_back(gauge);
         }
       }
+      if (auto waves = output->find("wave_gauges")) {
+        if (!c.generate) waves->fail("wave gauges need a generated case (its columns of cells)");
+        for (const Node& g : waves->items()) {
+          WaveGauge gauge{g["name"].as<std::string>(), g["x"].as<double>(), g.get<double>("z", 0.0)};
+          const GeneratedCase& box = *c.generate;
+          if (gauge.x < box.origin[0] || gauge.x > box.upper[0]) {
+            g["x"].fail(fmt::format("x = {} m is outside the grid [{}, {}] m", gauge.x,
+                                    box.origin[0], box.upper[0]));
+          }
+          c.wave_gauges.push_back(gauge);
+        }
+      }
     }
     if (c.output_every > 0.0 && !whole_steps(c.output_every, c.time_step)) {
       root_["output"]["every"].fail(
@@ -86,6 +98,7 @@ class CaseReader {
                       c.time_step));
     }
     c.keep_time_directories = root_.get<bool>("keep_time_directories", false);
+    c.window_timeout = root_.get<double>("window_timeout", c.window_timeout);
     if (auto parallel = root_.find("parallel")) {
       c.processes = (*parallel)["processes"].as<int>();
       c.split = {c.processes, 1, 1};

@@ -27,7 +27,7 @@ double ergun_wen_yu_coefficient(const CloudDragInput& in, double d) {
 }
 
 double ergun_wen_yu_grain_size(const CloudDragInput& in, double coefficient) {
-  double small = 1e-9, large = 10.0;
+  double small = smallest_grain, large = largest_grain;
   const auto too_strong = [&](double d) { return ergun_wen_yu_coefficient(in, d) > coefficient; };
   if (!too_strong(small) || too_strong(large)) {
     throw cosim::NumericalError(fmt::format(
@@ -42,6 +42,12 @@ double ergun_wen_yu_grain_size(const CloudDragInput& in, double coefficient) {
     (too_strong(mid) ? small : large) = mid;
   }
   return std::sqrt(small * large);
+}
+
+double ergun_wen_yu_grain_size_within_range(const CloudDragInput& in, double coefficient) {
+  if (ergun_wen_yu_coefficient(in, largest_grain) >= coefficient) return largest_grain;
+  if (ergun_wen_yu_coefficient(in, smallest_grain) <= coefficient) return smallest_grain;
+  return ergun_wen_yu_grain_size(in, coefficient);
 }
 
 }  // namespace openfoam

@@ -88,7 +88,8 @@ bool log_has_fatal_error(const std::filesystem::path& log_file, std::size_t offs
 ApplicationTiming run_application(const Installation& installation, const std::string& name,
                                   std::vector<std::string> arguments,
                                   const std::filesystem::path& case_dir,
-                                  const std::filesystem::path& log_file, int processes) {
+                                  const std::filesystem::path& log_file, int processes,
+                                  std::chrono::seconds timeout) {
   arguments.insert(arguments.begin(), {"-case", case_dir.string()});
   std::filesystem::path program = installation.application(name);
   if (processes > 1) {
@@ -119,6 +120,14 @@ ApplicationTiming run_application(const Installation& installation, const std::s
     if (!exits.empty()) {
       exit = exits.front();
       break;
+    }
+    if (Clock::now() - launched > timeout) {
+      supervisor.stop_all(std::chrono::milliseconds(2000));
+      throw_failed(name,
+                   fmt::format("did not finish within {} s (stopped; a hang or a far too long "
+                               "window: the case's `window_timeout`)",
+                               timeout.count()),
+                   case_dir, log_file);
     }
     std::this_thread::sleep_for(stepping ? std::chrono::microseconds(5000) : pause);
   }

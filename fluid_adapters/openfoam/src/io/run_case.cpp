@@ -80,7 +80,7 @@ class CaseRun {
       const double end = std::min(t + c_.window, c_.end_time);
       fields = run_window(t, end);
       t = end;
-      finish_window(t, fields);
+      finish_window(t, fields, t >= c_.end_time - tolerance_);
     }
     spdlog::info("completed: t = {:.6g} s in {} windows, {} OpenFOAM steps", t, windows_.size(),
                  steps_);
@@ -103,46 +103,13 @@ class CaseRun {
     }
     SoilCoupling coupling(c_, mesh_);
     cosim::Participant participant(options_.endpoint.name_or("openfoam"), options_.endpoint);
-    coupling.declare(participant);
-    FoamFields fields = read_fields("0");
-    coupling.write(participant, fields, c_.time_step, 0);
-    participant.initialize(0.0, c_.end_time);
-    const double window = participant.window_size();
-    if (!whole_steps(window)) {
-      throw cosim::InputError(
-          cosim::SourceLocation{c_.file.string(), 0, 0}, "time_step",
-          fmt::format("the job's window {} s is not a whole number of OpenFOAM time steps of {} s",
-                      window, c_.time_step));
-    }
-    record_water(fields, true);
-    write_outputs(0.0, fields);
-    summary_.write();
-    exchange_csv_.emplace(
-        options_.output / "soil_exchange.csv",
-        std::vector<std::string>{"time_s", "parcels", "cloud_on_fluid_kg_m/s",
-                                 "law_on_fluid_kg_m/s", "to_soil_kg_m/s", "mismatch_1"});
-    while (participant.is_coupling_ongoing()) {
-      const double start = participant.time();
-      const double end = start + participant.max_time_step();
-      if (zones) {
-        write_porosity_zones(coupling.darcy_coefficients(participant, fields));
-      } else {
-        auto scope = summary_.phases().measure("adapter_write");
-        const SoilParcels& parcels = coupling.parcels(participant, fields);
-        layout_->write_cloud(layout_->latest()->name, parcels, c_.soil.parcel_density);
-        parcels_ = parcels.size();
-      }
-      fields = run_window(start, end);
-      SoilCoupling::MomentumCheck check;
-      {
-        auto scope = summary_.phases().measure("coupling");
-        check = coupling.write(participant, fields, end - start, steps_in(end - start));
-        participant.advance(end - start);
-      }
-      worst_mismatch_ = std::max(worst_mismatch_, check.mismatch);
-      exchange_csv_->append({end, static_cast<double>(parcels_), check.cloud_on_fluid,
-                             check.law_on_fluid, check.to_soil, check.mismatch});
-      finish_window(end, fields);
+    // The coupler hears why this participant stopped before it stops the
+    // others.
+    try {
+      exchange_windows(participant, coupling);
+    } catch (const std::exception& e) {
+      participant.abort(e.what());
+      throw;
     }
     participant.finalize();
     spdlog::info(
@@ -205,6 +172,54 @@ class CaseRun {
                     log_dir_ / (name + ".log"));
   }
 
+  void exchange_windows(cosim::Participant& participant, SoilCoupling& coupling) {
+    const bool zones = c_.soil.model == SoilModel::porosity_zones;
+    coupling.declare(participant);
+    FoamFields fields = read_fields("0");
+    coupling.write(participant, fields, c_.time_step, 0);
+    participant.initialize(0.0, c_.end_time);
+    const double window = participant.window_size();
+    if (!whole_steps(window)) {
+      throw cosim::InputError(
+          cosim::SourceLocation{c_.file.string(), 0, 0}, "time_step",
+          fmt::format("the job's window {} s is not a whole number of OpenFOAM time steps of {} s",
+                      window, c_.time_step));
+    }
+    // The pores the soil leaves the water at the start (MPPICInterFoam sees
+    // them from its first start on).
+    if (!zones) fields.alphac = coupling.fluid_fraction(participant);
+    record_water(fields, true);
+    write_outputs(0.0, fields);
+    summary_.write();
+    exchange_csv_.emplace(
+        options_.output / "soil_exchange.csv",
+        std::vector<std::string>{"time_s", "parcels", "cloud_on_fluid_kg_m/s",
+                                 "law_on_fluid_kg_m/s", "to_soil_kg_m/s", "mismatch_1"});
+    while (participant.is_coupling_ongoing()) {
+      const double start = participant.time();
+      const double end = start + participant.max_time_step();
+      if (zones) {
+        write_porosity_zones(coupling.darcy_coefficients(participant));
+      } else {
+        auto scope = summary_.phases().measure("adapter_write");
+        const SoilParcels& parcels = coupling.parcels(participant, fields);
+        layout_->write_cloud(layout_->latest()->name, parcels, c_.soil.parcel_density);
+        parcels_ = parcels.size();
+      }
+      fields = run_window(start, end);
+      SoilCoupling::MomentumCheck check;
+      {
+        auto scope = summary_.phases().measure("coupling");
+        check = coupling.write(participant, fields, end - start, steps_in(end - start));
+        participant.advance(end - start);
+      }
+      worst_mismatch_ = std::max(worst_mismatch_, check.mismatch);
+      exchange_csv_->append({end, static_cast<double>(parcels_), check.cloud_on_fluid,
+                             check.law_on_fluid, check.to_soil, check.mismatch});
+      finish_window(end, fields, !participant.is_coupling_ongoing());
+    }
+  }
+
   // The fallback's zones for the window: the cells' d into the start
   // directory, topoSet's dictionary and the porosity sources, then topoSet.
   void write_porosity_zones(const std::vector<double>& darcy) {
@@ -232,9 +247,8 @@ class CaseRun {
     return std::abs(n - std::round(n)) <= 1e-9 * std::max(1.0, n);
   }
 
-  void finish_window(double t, const FoamFields& fields) {
-    const bool last = t >= c_.end_time - tolerance_;
-    write_outputs(t, fields);
+  void finish_window(double t, const FoamFields& fields, bool last) {
+    write_outputs(t, fields, last);
     if (last) record_water(fields, false);
     summary_.set_windows(static_cast<std::int64_t>(windows_.size()));
     summary_.set_steps(steps_);
@@ -243,9 +257,9 @@ class CaseRun {
     summary_.write();
   }
 
-  void write_outputs(double t, const FoamFields& fields) {
+  void write_outputs(double t, const FoamFields& fields, bool last = false) {
     if (gauges_) record_gauges(t, fields);
-    if (t == 0.0 || snapshots_.due(t, tolerance_) || t >= c_.end_time - tolerance_) {
+    if (t == 0.0 || snapshots_.due(t, tolerance_) || last) {
       auto scope = summary_.phases().measure("output");
       write_snapshot(t, fields);
       if (t > 0.0) snapshots_.passed(t, tolerance_);
@@ -254,7 +268,7 @@ class CaseRun {
 
   // The nearest cell centre of each gauge (gauges.csv, every window).
   void set_up_gauges() {
-    if (c_.gauges.empty()) return;
+    if (c_.gauges.empty() && c_.wave_gauges.empty()) return;
     std::vector<std::string> columns{"time_s"};
     const int dim = mesh_.mesh.dimension();
     for (const Gauge& g : c_.gauges) {
@@ -278,6 +292,21 @@ class CaseRun {
         columns.push_back(cosim::column_name(g.name + "_u" + "xyz"[k], "m/s"));
       columns.push_back(cosim::column_name(g.name + "_water_fraction", "1"));
     }
+    for (const WaveGauge& g : c_.wave_gauges) {
+      // The cells of the grid's column at (x, z), bottom to top (x fastest).
+      const GeneratedCase& box = *c_.generate;
+      const Vector3 h = box.spacing();
+      const auto index = [](double x, double origin, double dx, int n) {
+        return std::clamp(static_cast<int>(std::floor((x - origin) / dx)), 0, n - 1);
+      };
+      const int i = index(g.x, box.origin[0], h[0], box.cells[0]);
+      const int k = box.dimension == 3 ? index(g.z, box.origin[2], h[2], box.cells[2]) : 0;
+      std::vector<std::size_t> cells;
+      for (int j = 0; j < box.cells[1]; ++j)
+        cells.push_back(static_cast<std::size_t>(i + box.cells[0] * (j + box.cells[1] * k)));
+      wave_columns_.push_back(std::move(cells));
+      columns.push_back(cosim::column_name(g.name + "_surface_elevation", "m"));
+    }
     gauges_.emplace(options_.output / "gauges.csv", std::move(columns));
   }
 
@@ -289,6 +318,13 @@ class CaseRun {
       row.push_back(f.p_rgh[c]);
       for (std::size_t k = 0; k < dim; ++k) row.push_back(f.velocity[c * dim + k]);
       row.push_back((f.alphac.empty() ? 1.0 : f.alphac[c]) * f.alpha_water[c]);
+    }
+    for (const auto& column : wave_columns_) {
+      // Water and the pores' water alike: a saturated soil's cells count whole.
+      double height = c_.generate->origin[1];
+      const double dy = c_.generate->spacing()[1];
+      for (std::size_t c : column) height += f.alpha_water[c] * dy;
+      row.push_back(height);
     }
     gauges_->append(row);
   }
@@ -308,8 +344,9 @@ class CaseRun {
     Clock::time_point phase = Clock::now();
     write_controls(start, end);
     timing.write = seconds_since(phase);
-    timing.solver = run_application(installation_, c_.solver, {}, case_dir_,
-                                    log_dir_ / (c_.solver + ".log"), c_.processes);
+    timing.solver = run_application(
+        installation_, c_.solver, {}, case_dir_, log_dir_ / (c_.solver + ".log"), c_.processes,
+        std::chrono::seconds(static_cast<long>(std::ceil(c_.window_timeout))));
     phase = Clock::now();
     // The directory the solver wrote at the window's end, found by its time
     // (OpenFOAM lengthens a name that two times would share).
@@ -360,7 +397,9 @@ class CaseRun {
   void record_water(const FoamFields& f, bool start) {
     double volume = 0.0;
     for (std::size_t c = 0; c < f.alpha_water.size(); ++c) {
-      volume += f.alpha_water[c] * mesh_.volumes[c];
+      // MPPICInterFoam's alpha.water is per pore volume.
+      const double pores = f.alphac.empty() ? 1.0 : f.alphac[c];
+      volume += pores * f.alpha_water[c] * mesh_.volumes[c];
     }
     const bool plane = c_.generate && c_.generate->dimension == 2;
     if (plane) volume /= c_.generate->upper[2] - c_.generate->origin[2];
@@ -405,6 +444,7 @@ class CaseRun {
   std::vector<WindowTiming> windows_;
   std::int64_t steps_ = 0;
   std::vector<std::size_t> gauge_cells_;
+  std::vector<std::vector<std::size_t>> wave_columns_;
   std::optional<cosim::TimeSeriesWriter> gauges_;
   std::optional<cosim::TimeSeriesWriter> exchange_csv_;
   std::size_t parcels_ = 0;

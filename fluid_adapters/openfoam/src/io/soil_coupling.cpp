@@ -72,20 +72,27 @@ void SoilCoupling::read_soil(const cosim::Participant& participant) {
   participant.read(mx::drag_coefficient, drag_);
 }
 
+std::vector<double> SoilCoupling::fluid_fraction(const cosim::Participant& participant) {
+  read_soil(participant);
+  std::vector<double> n(mesh_.volumes.size());
+  for (std::size_t c = 0; c < n.size(); ++c) n[c] = pore_fraction(c);
+  return n;
+}
+
 double SoilCoupling::pore_fraction(std::size_t c) const {
   const double phi_s = std::min(solid_fraction_[c], c_.soil.max_solid_fraction);
   return std::max(1.0 - phi_s, 1.0 - c_.soil.max_solid_fraction);
 }
 
-const std::vector<double>& SoilCoupling::darcy_coefficients(const cosim::Participant& participant,
-                                                            const FoamFields& start) {
+const std::vector<double>& SoilCoupling::darcy_coefficients(const cosim::Participant& participant) {
   read_soil(participant);
   const std::size_t cells = mesh_.volumes.size();
   darcy_.assign(cells, 0.0);
   for (std::size_t c = 0; c < cells; ++c) {
     if (solid_fraction_[c] < c_.soil.minimum_solid_fraction || !(drag_[c] > 0.0)) continue;
     const double n = pore_fraction(c);
-    darcy_[c] = drag_[c] / (n * n * mixture_viscosity(start, c, water_, air_));
+    // The job's law is the water's: OpenFOAM scales d by the cell's own mu.
+    darcy_[c] = drag_[c] / (n * n * water_.viscosity);
   }
   return darcy_;
 }
@@ -111,15 +118,24 @@ const SoilParcels& SoilCoupling::parcels(const cosim::Participant& participant,
       relative[d] = u_f - solid_velocity_[c * dim + d];
       speed2 += relative[d] * relative[d];
     }
-    const CloudDragInput input{phi_s, mixture_density(start, c, water_, air_),
-                               mixture_viscosity(start, c, water_, air_), std::sqrt(speed2)};
-    const double d = ergun_wen_yu_grain_size(input, drag_[c] / n);
+    // The job's law is the water's (K = n^2 mu_w / k): the grain solved with
+    // the water's density and viscosity gives the soil's permeability, and
+    // OpenFOAM's drag then follows the cell's own fluid (air drags mu_a / mu_w
+    // as much).
+    const CloudDragInput input{phi_s, water_.density, water_.viscosity, std::sqrt(speed2)};
+    const double d = ergun_wen_yu_grain_size_within_range(input, drag_[c] / n);
     diameter_[c] = d;
     double u[3] = {0.0, 0.0, 0.0};
     const double shift = soil.displaced_water ? 1.0 / n : 1.0;
     for (std::size_t k = 0; k < dim; ++k) u[k] = shift * solid_velocity_[c * dim + k];
     const double grain_volume = std::numbers::pi * d * d * d / 6.0;
-    parcels_.add(&mesh_.centres[3 * c], static_cast<std::int64_t>(c), u, d,
+    // A hair off the cell's centre: a parcel starting exactly there (the apex
+    // of all the cell's tets) can stall OpenFOAM v1912's tracking for good.
+    const double size = dim_ == 2 ? std::sqrt(plane_volume(c)) : std::cbrt(mesh_.volumes[c]);
+    const double offset[3] = {3.1e-4 * size, 1.7e-4 * size, dim_ == 3 ? 1.1e-4 * size : 0.0};
+    double position[3];
+    for (std::size_t k = 0; k < 3; ++k) position[k] = mesh_.centres[3 * c + k] + offset[k];
+    parcels_.add(position, static_cast<std::int64_t>(c), u, d,
                  phi_s * mesh_.volumes[c] / grain_volume);
   }
   return parcels_;
@@ -155,10 +171,14 @@ SoilCoupling::MomentumCheck SoilCoupling::write(cosim::Participant& participant,
                                mixture_viscosity(end, c, water_, air_), std::sqrt(speed2)};
     const double k_cloud = ergun_wen_yu_coefficient(input, diameter_[c]);
     const double volume = plane_volume(c);
+    // An impermeable solid (a rigid bed: solid fraction at the cap) holds its
+    // pores' water at its own velocity: no momentum worth comparing.
+    const bool impermeable = solid_fraction_[c] >= c_.soil.max_solid_fraction;
     for (std::size_t d = 0; d < dim; ++d) {
       const double relative = end.velocity[c * dim + d] - solid_velocity_[c * dim + d];
       const double on_fluid = -k_cloud * relative * volume * window;
       impulse_rate[c * dim + d] = -n * on_fluid / window;
+      if (impermeable) continue;
       law[d] += on_fluid;
       soil[d] += -n * on_fluid;
       scale += std::abs(on_fluid);

@@ -77,6 +77,14 @@ struct Gauge {
   Vector3 point{};
 };
 
+// A wave gauge of a generated case: the water surface's height over the
+// floor at (x, z), origin_y + sum of the column's water fraction x dy.
+struct WaveGauge {
+  std::string name;
+  double x = 0.0;
+  double z = 0.0;
+};
+
 // A `kind: openfoam_case` file (openfoam_adapter --config).
 struct CaseDescription {
   std::filesystem::path file;
@@ -96,7 +104,9 @@ struct CaseDescription {
   double window = 0.0;
   double output_every = 0.0;           // snapshot interval; 0: start and end only
   bool keep_time_directories = false;  // keep every window's time directory
+  double window_timeout = 600.0;       // [s] of wall time for one start of the solver
   std::vector<Gauge> gauges;
+  std::vector<WaveGauge> wave_gauges;
   // Parallel OpenFOAM: decomposed once (method simple, `split` cells blocks
   // per direction, their product the process count), run under mpirun.
   int processes = 1;

@@ -26,9 +26,18 @@ struct CloudDragInput {
 // K_cloud [kg m^-3 s^-1] of parcels of diameter d [m].
 double ergun_wen_yu_coefficient(const CloudDragInput& input, double grain_size);
 
+// The parcels' diameters the adapter uses [m].
+inline constexpr double smallest_grain = 1e-9;
+inline constexpr double largest_grain = 10.0;
+
 // The diameter for which the cloud's coefficient is `coefficient` at the
 // input's relative speed (K_cloud falls strictly with d), found to a relative
-// 1e-12. Throws cosim::NumericalError when no diameter in [1e-9, 10] m gives it.
+// 1e-12. Throws cosim::NumericalError when no diameter in [smallest_grain,
+// largest_grain] gives it.
 double ergun_wen_yu_grain_size(const CloudDragInput& input, double coefficient);
+
+// The same, clamped to that range: a coefficient weaker than the largest
+// grain's (a trace of soil) gets the largest grain.
+double ergun_wen_yu_grain_size_within_range(const CloudDragInput& input, double coefficient);
 
 }  // namespace openfoam

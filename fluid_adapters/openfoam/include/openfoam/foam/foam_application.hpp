@@ -1,5 +1,6 @@
 #pragma once
 
+#include <chrono>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -23,10 +24,12 @@ struct ApplicationTiming {
 // for inspection) and the last lines of its log. With `processes` > 1 it
 // runs decomposed under `mpirun -np <processes>` (found on PATH like the
 // applications) with `-parallel`; as root the Open MPI variables that allow
-// it are set.
+// it are set. A run that outlives `timeout` is stopped (SIGTERM, then
+// SIGKILL) and throws the same error saying so.
 ApplicationTiming run_application(const Installation& installation, const std::string& name,
                                   std::vector<std::string> arguments,
                                   const std::filesystem::path& case_dir,
-                                  const std::filesystem::path& log_file, int processes = 1);
+                                  const std::filesystem::path& log_file, int processes = 1,
+                                  std::chrono::seconds timeout = std::chrono::hours(24));
 
 }  // namespace openfoam

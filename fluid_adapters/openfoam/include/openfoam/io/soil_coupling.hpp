@@ -19,8 +19,9 @@ namespace openfoam {
 //           momentum_exchange_impulse (what the soil receives in the window).
 // MPPICInterFoam applies the drag to the water itself, through the parcels;
 // their diameter is chosen per cell so that the cloud's Ergun-Wen-Yu
-// coefficient is K / n at the relative speed of the previous window's end
-// (ergun_wen_yu.hpp: the cloud's water takes the whole pressure gradient).
+// coefficient in water is K / n at the relative speed of the previous
+// window's end (ergun_wen_yu.hpp: the cloud's water takes the whole pressure
+// gradient); in air OpenFOAM's drag follows the air's viscosity and density.
 // The soil receives n times the reaction of that drag, from the same law on
 // the window's end fields: with the MPM's own -phi_s grad p the mixture's
 // momentum is that of Tran et al., MPMICE, eqs. 7-8 (at steady state the
@@ -43,13 +44,16 @@ class SoilCoupling {
   // the fluid's at its start.
   const SoilParcels& parcels(const cosim::Participant& participant, const FoamFields& start);
 
-  // porosity_zones: each cell's Darcy coefficient d = K / (n^2 mu) [1/m^2]
+  // 1 - phi_s per cell (phi_s capped at max_solid_fraction) from the soil's
+  // fields received last: the fluid fraction MPPICInterFoam will see.
+  std::vector<double> fluid_fraction(const cosim::Participant& participant);
+
+  // porosity_zones: each cell's Darcy coefficient d = K / (n^2 mu_water) [1/m^2]
   // (0 without soil) from the soil's fields received at the window's start:
   // interFoam's water takes the whole pressure gradient and its U is the
   // superficial velocity, so at steady state grad p = -mu d U gives the
   // Darcy flux of the job's law (n grad p = -K u_f, U = n u_f).
-  const std::vector<double>& darcy_coefficients(const cosim::Participant& participant,
-                                                const FoamFields& start);
+  const std::vector<double>& darcy_coefficients(const cosim::Participant& participant);
 
   // The fields sent at the window's end (`end`'s velocity shifted to the
   // physical u_f), and the momentum check of the window of `steps` OpenFOAM

@@ -1,0 +1,151 @@
+#!/usr/bin/python3
+"""Wave gauges and snapshots of the subaerial granular slide (MPM + OpenFOAM).
+
+    examples/subaerial_slide/plot_slide.py RUN_DIR [--times 0 0.23 0.41 0.52] [--still-water 0.15]
+                                           [--soil soil] [--water water] [--output RUN_DIR/plots]
+
+RUN_DIR is the --output of `cosim run configs/openfoam_coupled/subaerial_slide/job.yaml` (or of
+full/job.yaml). It reads the wave gauges (RUN_DIR/water/gauges.csv), the particle snapshots
+(RUN_DIR/soil/particles_*.h5) and the OpenFOAM snapshots (RUN_DIR/water/openfoam_*.h5, the grid
+from openfoam.xdmf) and writes, like Pan et al. 2021, Figs. 10-12:
+  gauges.png     the water surface at the four gauges G1-G4, eta - h0 against time
+  snapshots.png  one panel per time: the cells' water fraction (blue), the plane (grey points)
+                 and the grains coloured by their speed
+and prints, per gauge, the first wave's arrival (eta - h0 first above 1 mm) and its crest.
+"""
+import argparse
+import csv
+import glob
+import os
+import re
+import sys
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def snapshots(directory, pattern):
+    """{time: path} of the HDF5 snapshots of one participant."""
+    out = {}
+    for path in sorted(glob.glob(os.path.join(directory, pattern))):
+        with h5py.File(path, "r") as f:
+            out[float(f.attrs["time"])] = path
+    return out
+
+
+def nearest(snaps, t, tolerance=0.03):
+    if not snaps:
+        return None
+    key = min(snaps, key=lambda s: abs(s - t))
+    return snaps[key] if abs(key - t) <= tolerance else None
+
+
+def grid(directory):
+    """(origin, spacing, (nx, ny)) of the OpenFOAM cells from openfoam.xdmf."""
+    text = open(os.path.join(directory, "openfoam.xdmf")).read()
+    dims = [int(v) for v in re.search(r'TopologyType="2DCoRectMesh" Dimensions="(\d+) (\d+)"', text).groups()]
+    items = re.findall(r'<DataItem Format="XML" Dimensions="2"[^>]*>([^<]+)</DataItem>', text)
+    origin = [float(v) for v in items[0].split()][::-1]
+    spacing = [float(v) for v in items[1].split()][::-1]
+    return np.array(origin), np.array(spacing), (dims[1] - 1, dims[0] - 1)
+
+
+def gauges(path):
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    header, values = rows[0], np.array([[float(v) for v in r] for r in rows[1:]])
+    names = [h.split("_surface_elevation")[0] for h in header[1:] if "_surface_elevation" in h]
+    columns = [i for i, h in enumerate(header) if "_surface_elevation" in h]
+    return values[:, 0], names, values[:, columns]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("run")
+    parser.add_argument("--times", type=float, nargs="+", default=[0.0, 0.23, 0.41, 0.52])
+    parser.add_argument("--still-water", type=float, default=0.15, help="still-water depth h0 [m]")
+    parser.add_argument("--soil", default="soil")
+    parser.add_argument("--water", default="water")
+    parser.add_argument("--output")
+    args = parser.parse_args()
+    water_dir = os.path.join(args.run, args.water)
+    soil_dir = os.path.join(args.run, args.soil)
+    out = args.output or os.path.join(args.run, "plots")
+    os.makedirs(out, exist_ok=True)
+
+    t, names, eta = gauges(os.path.join(water_dir, "gauges.csv"))
+    rise = eta - args.still_water
+    fig, ax = plt.subplots(figsize=(7.5, 3.4))
+    for g, name in enumerate(names):
+        ax.plot(t, 1e3 * rise[:, g], lw=1.0, label=name)
+        above = np.nonzero(rise[:, g] > 1e-3)[0]
+        if above.size:
+            first = above[0]
+            # the first crest: the highest point before the surface falls back below 1 mm
+            after = np.nonzero(rise[first:, g] <= 1e-3)[0]
+            end = first + (after[0] if after.size else len(t) - first)
+            crest = first + int(np.argmax(rise[first:end, g]))
+            print(f"{name}: first wave arrives at t = {t[first]:.3f} s, crest {1e3 * rise[crest, g]:.1f} mm "
+                  f"at t = {t[crest]:.3f} s")
+        else:
+            print(f"{name}: no wave above 1 mm by t = {t[-1]:.3f} s")
+    ax.axhline(0.0, color="k", lw=0.5)
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel(r"$\eta - h_0$ [mm]")
+    ax.set_title("Wave gauges (cf. Pan et al. 2021, Fig. 12)", fontsize=9)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    path = os.path.join(out, "gauges.png")
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    print(path)
+
+    water = snapshots(water_dir, "openfoam_*.h5")
+    soil = snapshots(soil_dir, "particles_*.h5")
+    if not water or not soil:
+        print(f"{args.run}: no OpenFOAM or particle snapshots", file=sys.stderr)
+        return 0
+    origin, spacing, (nx, ny) = grid(water_dir)
+    extent = [origin[0], origin[0] + nx * spacing[0], origin[1], origin[1] + ny * spacing[1]]
+    fig, axes = plt.subplots(len(args.times), 1, figsize=(8.0, 1.9 * len(args.times) + 0.6), squeeze=False,
+                             constrained_layout=True)
+    scatter = None
+    for ax, time in zip(axes[:, 0], args.times):
+        w, s = nearest(water, time), nearest(soil, time)
+        if w:
+            with h5py.File(w, "r") as f:
+                share = f["fields/alpha_water"][:] * f["fields/fluid_fraction"][:] \
+                    if "fluid_fraction" in f["fields"] else f["fields/alpha_water"][:]
+            ax.imshow(share, origin="lower", extent=extent, cmap="Blues", vmin=0.0, vmax=1.6,
+                      interpolation="nearest", aspect="equal")
+        if s:
+            with h5py.File(s, "r") as f:
+                xy = f["geometry/xyz"][:, :2]
+                body = f["fields/body"][:]
+                speed = np.linalg.norm(f["fields/velocity"][:, :2], axis=1)
+            plane = body != 0
+            ax.scatter(xy[plane, 0], xy[plane, 1], s=0.3, color="0.6", rasterized=True)
+            grains = body == 0
+            scatter = ax.scatter(xy[grains, 0], xy[grains, 1], c=speed[grains], s=1.5, cmap="magma_r",
+                                 vmin=0.0, vmax=2.5, rasterized=True)
+        ax.set_xlim(extent[0], extent[1])
+        ax.set_ylim(extent[2], extent[3])
+        ax.set_ylabel("y [m]")
+        ax.set_title(f"t = {time:g} s", fontsize=9, loc="left")
+    axes[-1, 0].set_xlabel("x [m]")
+    if scatter is not None:
+        fig.colorbar(scatter, ax=axes[:, 0].tolist(), label="grain speed [m/s]", shrink=0.5)
+    fig.suptitle("Subaerial granular slide: grains (points), water fraction (blue)", fontsize=10)
+    path = os.path.join(out, "snapshots.png")
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    print(path)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
