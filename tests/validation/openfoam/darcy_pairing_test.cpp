@@ -6,8 +6,9 @@
 // Kozeny-Carman law. For the paper's five solid fractions and three pressure
 // differences the steady pore-water velocity in the column is within 2 % of
 //   U_f = (1/n) d^2 (1 - phi_s)^3 / (180 phi_s^2 mu) dp / L   (eq. 98).
-// CI runs each solid fraction at one of the pressure differences (both
-// extremes included); -DCOSIM_FULL_VALIDATION=ON runs all 15 (~2.5 min).
+// CI runs three cases from one corner of the table to the other (0.6 at
+// 0.25 atm, 0.66 at 0.5 atm, 0.7 at 1 atm); -DCOSIM_FULL_VALIDATION=ON runs
+// all 15 (~2.5 min).
 // The porosity-zone fallback (interFoam) is run on two of the cases.
 // Printed besides: the momentum the cloud gave the water in the last window
 // (OpenFOAM's UTrans) against the drag law's, and the cell velocity in the
@@ -87,7 +88,7 @@ TEST(OpenFoamDarcyPairing, PoreWaterVelocityMatchesEquation98ForAllFifteenCases)
     const double phi_s = fractions[i];
     for (std::size_t j = 0; j < std::size(differences); ++j) {
 #ifndef COSIM_FULL_VALIDATION
-      if (j != (i == 4 ? 2 : i % 3)) continue;
+      if (i % 2 == 1 || j != i / 2) continue;
 #endif
       const double atmospheres = differences[j];
       const double dp = atmospheres * atmosphere;
