@@ -12,6 +12,12 @@
 //   p_ramp(z, t) = (1 / t_ramp) int_0^min(t, t_ramp) p(z, t - s) ds.
 namespace cosim::testing {
 
+// The skeleton's constrained (oedometric) modulus E (1 - nu) / ((1 + nu) (1 - 2 nu)).
+inline double oedometric_modulus(double youngs_modulus, double poisson_ratio) {
+  const double nu = poisson_ratio;
+  return youngs_modulus * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
+}
+
 struct TerzaghiColumn {
   double height = 1.0;         // h [m]
   double load = 1.0e4;         // p0 [Pa]

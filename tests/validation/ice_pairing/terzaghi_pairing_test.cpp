@@ -34,11 +34,6 @@ namespace fs = std::filesystem;
 
 constexpr double atmosphere = 101325.0;
 
-double oedometric_modulus(double youngs_modulus, double poisson_ratio) {
-  const double nu = poisson_ratio;
-  return youngs_modulus * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
-}
-
 struct Setting {
   const char* name;
   const char* job;

@@ -16,8 +16,7 @@
 // oscillates from cell to cell near a porosity jump while its face fluxes
 // are uniform, so it is printed, not asserted).
 //
-// Needs OpenFOAM: without it the test exits 77, which CTest reports as not
-// run (SKIP_RETURN_CODE), printing why.
+// Needs OpenFOAM (openfoam_test_main.cpp).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -25,9 +24,7 @@
 #include <iterator>
 #include <string>
 
-#include "cosim/error.hpp"
 #include "darcy/darcy_column.hpp"
-#include "openfoam/foam/installation.hpp"
 #include "replaced_text.hpp"
 #include "run_process.hpp"
 
@@ -140,14 +137,3 @@ TEST(OpenFoamDarcyPairing, ThePorosityZoneFallbackGivesTheSameFlow) {
 
 }  // namespace
 }  // namespace cosim::testing
-
-int main(int argc, char** argv) {
-  try {
-    openfoam::find_installation({"MPPICInterFoam", "blockMesh", "setFields", "postProcess"});
-  } catch (const cosim::Error& e) {
-    fmt::print("OpenFOAM is not installed, so this test does not run: {}\n", e.what());
-    return 77;
-  }
-  ::testing::InitGoogleTest(&argc, argv);
-  return RUN_ALL_TESTS();
-}

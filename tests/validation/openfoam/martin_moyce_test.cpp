@@ -5,8 +5,7 @@
 // are compared on one case. The front is the downstream edge of the last
 // cell of the floor row holding more water than air, in each snapshot.
 //
-// Needs OpenFOAM: without it the test exits 77, which CTest reports as not
-// run (SKIP_RETURN_CODE), printing why.
+// Needs OpenFOAM (openfoam_test_main.cpp).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -17,10 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "cosim/error.hpp"
 #include "hdf5_reader.hpp"
 #include "martin_moyce/surge_front.hpp"
-#include "openfoam/foam/installation.hpp"
 #include "run_process.hpp"
 
 namespace {
@@ -96,14 +93,3 @@ TEST(OpenFoamMartinMoyce, SurgeFrontFollowsTheExperimentLikeTheIceSolver) {
 }
 
 }  // namespace
-
-int main(int argc, char** argv) {
-  try {
-    openfoam::find_installation({"interFoam", "blockMesh", "setFields", "postProcess"});
-  } catch (const cosim::Error& e) {
-    fmt::print("not run: {}\n", e.what());
-    return 77;
-  }
-  ::testing::InitGoogleTest(&argc, argv);
-  return RUN_ALL_TESTS();
-}

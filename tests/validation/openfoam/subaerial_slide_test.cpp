@@ -9,8 +9,7 @@
 // gauges and the water's volume are checked); -DCOSIM_FULL_VALIDATION=ON
 // runs the paper's 2 s (~25 min at the coarse 1 cm cells).
 //
-// Needs OpenFOAM: without it the test exits 77, which CTest reports as not
-// run (SKIP_RETURN_CODE), printing why.
+// Needs OpenFOAM (openfoam_test_main.cpp).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -19,8 +18,6 @@
 #include <string>
 #include <vector>
 
-#include "cosim/error.hpp"
-#include "openfoam/foam/installation.hpp"
 #include "replaced_text.hpp"
 #include "run_process.hpp"
 
@@ -86,14 +83,3 @@ TEST(OpenFoamSubaerialSlide, TheGrainsRaiseAWaveThatReachesTheGaugesInOrder) {
 
 }  // namespace
 }  // namespace cosim::testing
-
-int main(int argc, char** argv) {
-  try {
-    openfoam::find_installation({"MPPICInterFoam", "blockMesh", "setFields", "postProcess"});
-  } catch (const cosim::Error& e) {
-    fmt::print("OpenFOAM is not installed, so this test does not run: {}\n", e.what());
-    return 77;
-  }
-  ::testing::InitGoogleTest(&argc, argv);
-  return RUN_ALL_TESTS();
-}

@@ -15,8 +15,7 @@
 // -DCOSIM_FULL_VALIDATION=ON runs it to T_v = 1 (7 300 starts, ~20 min) and
 // the unshifted job to T_v = 0.1.
 //
-// Needs OpenFOAM: without it the test exits 77, which CTest reports as not
-// run (SKIP_RETURN_CODE), printing why.
+// Needs OpenFOAM (openfoam_test_main.cpp).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -25,8 +24,6 @@
 #include <string>
 #include <vector>
 
-#include "cosim/error.hpp"
-#include "openfoam/foam/installation.hpp"
 #include "replaced_text.hpp"
 #include "run_process.hpp"
 #include "terzaghi/terzaghi_consolidation.hpp"
@@ -35,11 +32,6 @@ namespace cosim::testing {
 namespace {
 
 namespace fs = std::filesystem;
-
-double oedometric_modulus(double youngs_modulus, double poisson_ratio) {
-  const double nu = poisson_ratio;
-  return youngs_modulus * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
-}
 
 // Pan et al. 2021, eqs. 4 and 84: k = D50^2 n^3 / (150 (1 - n)^2), c_v = k E_oed / mu.
 TerzaghiColumn pan_column() {
@@ -130,14 +122,3 @@ TEST(OpenFoamTerzaghiPairing, WithoutTheShiftTheCompactionPressureIsLost) {
 
 }  // namespace
 }  // namespace cosim::testing
-
-int main(int argc, char** argv) {
-  try {
-    openfoam::find_installation({"MPPICInterFoam", "blockMesh", "setFields", "postProcess"});
-  } catch (const cosim::Error& e) {
-    fmt::print("OpenFOAM is not installed, so this test does not run: {}\n", e.what());
-    return 77;
-  }
-  ::testing::InitGoogleTest(&argc, argv);
-  return RUN_ALL_TESTS();
-}
