@@ -72,7 +72,8 @@ class CaseReader {
       if (auto waves = output->find("wave_gauges")) {
         if (!c.generate) waves->fail("wave gauges need a generated case (its columns of cells)");
         for (const Node& g : waves->items()) {
-          WaveGauge gauge{g["name"].as<std::string>(), g["x"].as<double>(), g.get<double>("z", 0.0)};
+          WaveGauge gauge{g["name"].as<std::string>(), g["x"].as<double>(),
+                          g.get<double>("z", 0.0)};
           const GeneratedCase& box = *c.generate;
           if (gauge.x < box.origin[0] || gauge.x > box.upper[0]) {
             g["x"].fail(fmt::format("x = {} m is outside the grid [{}, {}] m", gauge.x,

@@ -1,5 +1,7 @@
 #include "openfoam/io/foam_fields.hpp"
 
+#include <algorithm>
+
 #include "openfoam/foam/field_file.hpp"
 
 namespace openfoam {
@@ -38,13 +40,14 @@ FoamFields read_foam_fields(const fs::path& directory, std::size_t cells, int di
 
 double mixture_density(const FoamFields& f, std::size_t c, const FluidProperties& water,
                        const FluidProperties& air) {
-  const double a = f.alpha_water[c];
+  // MULES lets alpha.water stray from [0, 1] by a little.
+  const double a = std::clamp(f.alpha_water[c], 0.0, 1.0);
   return a * water.density + (1.0 - a) * air.density;
 }
 
 double mixture_viscosity(const FoamFields& f, std::size_t c, const FluidProperties& water,
                          const FluidProperties& air) {
-  const double a = f.alpha_water[c];
+  const double a = std::clamp(f.alpha_water[c], 0.0, 1.0);
   return a * water.viscosity + (1.0 - a) * air.viscosity;
 }
 

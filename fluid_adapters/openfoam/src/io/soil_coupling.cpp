@@ -172,13 +172,14 @@ SoilCoupling::MomentumCheck SoilCoupling::write(cosim::Participant& participant,
     const double k_cloud = ergun_wen_yu_coefficient(input, diameter_[c]);
     const double volume = plane_volume(c);
     // An impermeable solid (a rigid bed: solid fraction at the cap) holds its
-    // pores' water at its own velocity: no momentum worth comparing.
-    const bool impermeable = solid_fraction_[c] >= c_.soil.max_solid_fraction;
+    // pores' trace of water at its own velocity. Its law (K ~ 1e15) would turn
+    // the water's leftover velocity into kicks on grains that share the cell,
+    // so it exchanges nothing with the soil, and is not compared.
+    if (solid_fraction_[c] >= c_.soil.max_solid_fraction) continue;
     for (std::size_t d = 0; d < dim; ++d) {
       const double relative = end.velocity[c * dim + d] - solid_velocity_[c * dim + d];
       const double on_fluid = -k_cloud * relative * volume * window;
       impulse_rate[c * dim + d] = -n * on_fluid / window;
-      if (impermeable) continue;
       law[d] += on_fluid;
       soil[d] += -n * on_fluid;
       scale += std::abs(on_fluid);
@@ -199,6 +200,7 @@ SoilCoupling::MomentumCheck SoilCoupling::write(cosim::Participant& participant,
   check.law_on_fluid = std::sqrt(check.law_on_fluid);
   check.to_soil = std::sqrt(check.to_soil);
   check.mismatch = scale > 0.0 ? off / scale : 0.0;
+  extend_pressure_into_impermeable_cells(end.p);
   write_fields(participant, end, end.alphac, impulse_rate);
   return check;
 }
@@ -230,6 +232,52 @@ SoilCoupling::MomentumCheck SoilCoupling::write_porosity_zones(cosim::Participan
   fluid_velocity_ = end.velocity;
   write_fields(participant, end, fluid_fraction, impulse_rate);
   return check;
+}
+
+void SoilCoupling::extend_pressure_into_impermeable_cells(std::vector<double>& p) const {
+  // OpenFOAM's pressure in the trace of pores of an impermeable solid means
+  // nothing (its water is locked by a drag of ~1e17), yet it reaches the
+  // soil's points beside the solid through the pressure gradient: it is
+  // replaced, front by front, by the mean of its cells' permeable (or
+  // already replaced) neighbours on the generated grid.
+  if (solid_fraction_.empty()) return;
+  const auto& n = c_.generate->cells;
+  const std::size_t cells = p.size();
+  std::vector<char> known(cells);
+  for (std::size_t c = 0; c < cells; ++c)
+    known[c] = solid_fraction_[c] < c_.soil.max_solid_fraction ? 1 : 0;
+  std::vector<std::size_t> front;
+  for (bool changed = true; changed;) {
+    changed = false;
+    front.clear();
+    for (std::size_t c = 0; c < cells; ++c) {
+      if (known[c]) continue;
+      const long i = static_cast<long>(c) % n[0];
+      const long j = (static_cast<long>(c) / n[0]) % n[1];
+      const long k = static_cast<long>(c) / (static_cast<long>(n[0]) * n[1]);
+      double sum = 0.0;
+      int count = 0;
+      const long step[3] = {1, n[0], static_cast<long>(n[0]) * n[1]};
+      const long at[3] = {i, j, k};
+      for (int d = 0; d < 3; ++d) {
+        for (int side : {-1, 1}) {
+          const long next = at[d] + side;
+          if (next < 0 || next >= n[d]) continue;
+          const auto neighbour = static_cast<std::size_t>(static_cast<long>(c) + side * step[d]);
+          if (known[neighbour] == 1) {
+            sum += p[neighbour];
+            ++count;
+          }
+        }
+      }
+      if (count > 0) {
+        p[c] = sum / count;
+        front.push_back(c);
+      }
+    }
+    for (std::size_t c : front) known[c] = 1;
+    changed = !front.empty();
+  }
 }
 
 void SoilCoupling::write_fields(cosim::Participant& participant, const FoamFields& end,

@@ -71,6 +71,7 @@ class SoilCoupling {
  private:
   double plane_volume(std::size_t c) const;
   void read_soil(const cosim::Participant& participant);
+  void extend_pressure_into_impermeable_cells(std::vector<double>& p) const;
   bool porosity_zones() const { return c_.soil.model == SoilModel::porosity_zones; }
   double pore_fraction(std::size_t c) const;
   MomentumCheck write_porosity_zones(cosim::Participant& participant, FoamFields& end,
