@@ -15,6 +15,8 @@ namespace {
 namespace mx = cosim::job::momentum_exchange_fields;
 constexpr const char* pore_pressure = "pore_pressure";
 constexpr const char* water_fraction = "water_fraction";
+// mpm_solver marks a held (rigid) body's bulk density above this [kg/m^3].
+constexpr double held_solid_bulk_density = 1e20;
 
 cosim::FieldSpec field(const char* name, int components, const char* unit, double lower = -INFINITY,
                        double upper = INFINITY) {
@@ -52,6 +54,7 @@ void SoilCoupling::declare(cosim::Participant& participant) const {
   participant.declare_read(field(mx::solid_fraction, 1, "1", 0.0, 1.0), 0.0);
   participant.declare_read(field(mx::solid_velocity, dim_, "m/s"), 0.0);
   participant.declare_read(field(mx::drag_coefficient, 1, "kg/(m^3 s)", 0.0), 0.0);
+  participant.declare_read(field(mx::solid_bulk_density, 1, "kg/m^3", 0.0), 0.0);
   participant.declare_write(field(pore_pressure, 1, "Pa"));
   participant.declare_write(field(mx::fluid_velocity, dim_, "m/s"));
   participant.declare_write(field(mx::fluid_bulk_density, 1, "kg/m^3", 0.0));
@@ -70,6 +73,8 @@ void SoilCoupling::read_soil(const cosim::Participant& participant) {
   participant.read(mx::solid_fraction, solid_fraction_);
   participant.read(mx::solid_velocity, solid_velocity_);
   participant.read(mx::drag_coefficient, drag_);
+  solid_density_.resize(cells);
+  participant.read(mx::solid_bulk_density, solid_density_);
 }
 
 std::vector<double> SoilCoupling::fluid_fraction(const cosim::Participant& participant) {
@@ -176,10 +181,21 @@ SoilCoupling::MomentumCheck SoilCoupling::write(cosim::Participant& participant,
     // the water's leftover velocity into kicks on grains that share the cell,
     // so it exchanges nothing with the soil, and is not compared.
     if (solid_fraction_[c] >= c_.soil.max_solid_fraction) continue;
+    // A held solid (a rigid body: the MPM marks its bulk density) absorbs
+    // what it receives; grains sharing its cells would take a volume share
+    // of its drag, so the cell gives the soil nothing.
+    const bool held = solid_density_[c] > held_solid_bulk_density;
+    // The exchange is explicit: over a window the drag cannot give the soil
+    // more than brings it to the water's velocity (beta T <= 1, beta =
+    // n K_cloud / rho_bar_s); beyond, it would overshoot and diverge (seen
+    // in cells the grains share with a rigid bed).
+    const double beta_window =
+        solid_density_[c] > 0.0 ? n * k_cloud * window / solid_density_[c] : 0.0;
+    const double limiter = held ? 0.0 : 1.0 / std::max(1.0, beta_window);
     for (std::size_t d = 0; d < dim; ++d) {
       const double relative = end.velocity[c * dim + d] - solid_velocity_[c * dim + d];
       const double on_fluid = -k_cloud * relative * volume * window;
-      impulse_rate[c * dim + d] = -n * on_fluid / window;
+      impulse_rate[c * dim + d] = -n * limiter * on_fluid / window;
       law[d] += on_fluid;
       soil[d] += -n * on_fluid;
       scale += std::abs(on_fluid);

@@ -13,7 +13,8 @@ namespace openfoam {
 // What the adapter exchanges with the MPM soil through the coupler, on the
 // case's cells (DESIGN.md §4, the job's `momentum_exchange` with
 // `solved_by: fluid`):
-//   reads   solid_fraction, solid_velocity, drag_coefficient K (the job's law);
+//   reads   solid_fraction, solid_velocity, solid_bulk_density, drag_coefficient K
+//           (the job's law);
 //   writes  pore_pressure p, fluid_velocity (interstitial U),
 //           fluid_bulk_density alphac rho, water_fraction alphac alpha.water,
 //           momentum_exchange_impulse (what the soil receives in the window).
@@ -88,6 +89,7 @@ class SoilCoupling {
   std::vector<double> solid_fraction_;
   std::vector<double> solid_velocity_;  // dim per cell
   std::vector<double> drag_;
+  std::vector<double> solid_density_;   // rho_bar_s; above 1e20: a held (rigid) solid
   std::vector<double> diameter_;        // per cell; 0 where no parcel
   std::vector<double> darcy_;           // porosity_zones: per cell d [1/m^2]; 0 where no soil
   std::vector<double> fluid_velocity_;  // physical u_f at the last window's end, dim per cell
