@@ -85,6 +85,8 @@ class OpenFoamAdapterRun : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!openfoam_installed) {
+      // Skipped only without OpenFOAM: nothing to run these on (CI installs
+      // it, so there they always run); main() then exits 77, "not run".
       GTEST_SKIP() << "OpenFOAM is not installed: " << openfoam::installation_hint();
     }
   }

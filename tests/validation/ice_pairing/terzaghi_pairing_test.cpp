@@ -54,32 +54,17 @@ void check(const Setting& setting) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto gauges = read_csv(dir / "run" / "water" / "gauges.csv");  // time, then p, ux, uy, phi
   ASSERT_GT(gauges.size(), 100u);
-  const std::size_t count = (gauges.front().size() - 1) / 4;
   TerzaghiColumn column;
   column.consolidation = setting.consolidation;
   column.ramp_time = setting.ramp_time;
+  const PressureGauges pressures{gauges, setting.first_gauge, setting.spacing, 4, atmosphere};
   const auto compare = [&](double time_factor, bool asserted) {
-    const double t = column.time_of(time_factor);
-    const auto row = std::min_element(gauges.begin(), gauges.end(), [&](auto& a, auto& b) {
-      return std::abs(a[0] - t) < std::abs(b[0] - t);
-    });
-    double worst = 0.0, at = 0.0, measured = 0.0, exact = 0.0;
-    for (std::size_t g = 0; g < count; ++g) {
-      const double z = setting.first_gauge + setting.spacing * static_cast<double>(g);
-      const double p = (*row)[1 + 4 * g] - atmosphere;
-      const double reference = column.excess_pressure(z, (*row)[0]);
-      if (std::abs(p - reference) > worst) {
-        worst = std::abs(p - reference);
-        at = z;
-        measured = p;
-        exact = reference;
-      }
-    }
-    const double error = worst / column.load;
+    const ProfileError e = largest_profile_error(column, pressures, time_factor);
+    const double error = e.error;
     fmt::print(
         "{}: T_v = {:.2f} (t = {:.5f} s): largest error {:.2f} % of p0 at z = {:.3f} m ({:.0f} vs "
         "{:.0f} Pa){}\n",
-        setting.name, time_factor, (*row)[0], 100.0 * error, at, measured, exact,
+        setting.name, time_factor, e.time, 100.0 * error, e.at, e.measured, e.exact,
         asserted ? " (tolerance 3 %)" : " (printed only: within the first acoustic period)");
     if (asserted) {
       EXPECT_LE(error, 0.03) << setting.name << " at T_v = " << time_factor;

@@ -68,30 +68,15 @@ std::vector<double> run_and_compare(const std::string& name, double end_time, bo
     ADD_FAILURE() << "no gauge rows";
     return errors;
   }
-  const std::size_t count = (gauges.front().size() - 1) / 5;
   const TerzaghiColumn column = pan_column();
+  const PressureGauges pressures{gauges, 0.01, 0.02, 5, 0.0};
   for (double time_factor : time_factors) {
-    const double t = column.time_of(time_factor);
-    const auto row = std::min_element(gauges.begin(), gauges.end(), [&](auto& a, auto& b) {
-      return std::abs(a[0] - t) < std::abs(b[0] - t);
-    });
-    double worst = 0.0, at = 0.0, measured = 0.0, exact = 0.0;
-    for (std::size_t g = 0; g < count; ++g) {
-      const double z = 0.01 + 0.02 * static_cast<double>(g);
-      const double p = (*row)[1 + 5 * g];
-      const double reference = column.excess_pressure(z, (*row)[0]);
-      if (std::abs(p - reference) > worst) {
-        worst = std::abs(p - reference);
-        at = z;
-        measured = p;
-        exact = reference;
-      }
-    }
-    errors.push_back(worst / column.load);
+    const ProfileError e = largest_profile_error(column, pressures, time_factor);
+    errors.push_back(e.error);
     fmt::print(
         "{}: T_v = {:.2f} (t = {:.5f} s): largest error {:.2f} % of p0 at z = {:.3f} m ({:.0f} vs "
         "{:.0f} Pa)\n",
-        name, time_factor, (*row)[0], 100.0 * worst / column.load, at, measured, exact);
+        name, time_factor, e.time, 100.0 * e.error, e.at, e.measured, e.exact);
   }
   return errors;
 }

@@ -10,6 +10,7 @@
 #include "cosim/error.hpp"
 #include "cosim/io/content_hash.hpp"
 #include "openfoam/case/case_schema.hpp"
+#include "openfoam/foam/control_dict.hpp"
 
 namespace openfoam {
 
@@ -24,12 +25,6 @@ SideKind side_kind(const std::string& name) {
   if (name == "slip") return SideKind::slip;
   if (name == "atmosphere") return SideKind::atmosphere;
   return SideKind::wall;
-}
-
-// Whether `interval` is a whole number of `step`s (to a relative 1e-9).
-bool whole_steps(double interval, double step) {
-  const double n = interval / step;
-  return std::abs(n - std::round(n)) <= 1e-9 * std::max(1.0, n);
 }
 
 class CaseReader {
@@ -83,17 +78,18 @@ class CaseReader {
         }
       }
     }
-    if (c.output_every > 0.0 && !whole_steps(c.output_every, c.time_step)) {
+    if (c.output_every > 0.0 && !is_whole_number_of_steps(c.output_every, c.time_step)) {
       root_["output"]["every"].fail(
           fmt::format("the snapshot interval {} s is not a whole number of time steps of {} s",
                       c.output_every, c.time_step));
     }
     c.window = root_.get<double>("window", c.output_every > 0.0 ? c.output_every : c.end_time);
-    if (auto window = root_.find("window"); window && !whole_steps(c.window, c.time_step)) {
+    if (auto window = root_.find("window");
+        window && !is_whole_number_of_steps(c.window, c.time_step)) {
       window->fail(fmt::format("the window {} s is not a whole number of time steps of {} s",
                                c.window, c.time_step));
     }
-    if (!whole_steps(c.end_time, c.time_step)) {
+    if (!is_whole_number_of_steps(c.end_time, c.time_step)) {
       root_["end_time"].fail(
           fmt::format("the end time {} s is not a whole number of time steps of {} s", c.end_time,
                       c.time_step));

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "cosim/io/files.hpp"
 #include "openfoam/foam/foam_file_header.hpp"
 
@@ -26,6 +29,11 @@ std::string control_dict(const ControlSettings& s) {
 
 void write_control_dict(const std::filesystem::path& case_dir, const ControlSettings& settings) {
   cosim::write_file_atomically(case_dir / "system" / "controlDict", control_dict(settings));
+}
+
+bool is_whole_number_of_steps(double interval, double step) {
+  const double n = interval / step;
+  return std::abs(n - std::round(n)) <= 1e-9 * std::max(1.0, n);
 }
 
 }  // namespace openfoam

@@ -179,7 +179,7 @@ class CaseRun {
     coupling.write(participant, fields, c_.time_step, 0);
     participant.initialize(0.0, c_.end_time);
     const double window = participant.window_size();
-    if (!whole_steps(window)) {
+    if (!is_whole_number_of_steps(window, c_.time_step)) {
       throw cosim::InputError(
           cosim::SourceLocation{c_.file.string(), 0, 0}, "time_step",
           fmt::format("the job's window {} s is not a whole number of OpenFOAM time steps of {} s",
@@ -241,11 +241,6 @@ class CaseRun {
   }
 
   long steps_in(double interval) const { return std::lround(interval / c_.time_step); }
-
-  bool whole_steps(double interval) const {
-    const double n = interval / c_.time_step;
-    return std::abs(n - std::round(n)) <= 1e-9 * std::max(1.0, n);
-  }
 
   void finish_window(double t, const FoamFields& fields, bool last) {
     write_outputs(t, fields, last);

@@ -21,6 +21,10 @@ struct ControlSettings {
 };
 
 std::string control_dict(const ControlSettings& settings);
+
+// Whether `interval` is a whole number of fixed steps `step` (to a relative
+// 1e-9): every window and output time must fall on a step.
+bool is_whole_number_of_steps(double interval, double step);
 // Writes system/controlDict atomically (a half-written one must never be
 // read by a solver start).
 void write_control_dict(const std::filesystem::path& case_dir, const ControlSettings& settings);
