@@ -74,6 +74,7 @@ nlohmann::json CouplingObserver<Dim>::summary() const {
           {"writes", d.writes},
           {"held_cells", d.held_cells},
           {"capped_solid_fraction_cells", d.capped_solid_fraction_cells},
+          {"overfilled_cells", d.overfilled_cells},
           {"impulse_received", vector_json<Dim>(d.impulse_total.received)},
           {"impulse_applied", vector_json<Dim>(d.impulse_total.applied)},
           {"impulse_absorbed", vector_json<Dim>(d.impulse_total.absorbed)},

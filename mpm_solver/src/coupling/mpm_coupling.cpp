@@ -240,6 +240,7 @@ void MpmCoupling<Dim>::write_fields() {
       spdlog::warn("mpm coupling: solid fraction above 1 capped in {} exchange cell(s) at t = {:.6g} s",
                    f.capped_cells, s.solver.time());
     s.diagnostics.capped_solid_fraction_cells += f.capped_cells;
+    s.diagnostics.overfilled_cells += f.overfilled_cells;
     s.diagnostics.held_cells = static_cast<std::size_t>(std::count(f.held.begin(), f.held.end(), 1));
     if (s.exchange_writes(n::solid_fraction)) s.channel->write(n::solid_fraction, f.solid_fraction);
     if (s.exchange_writes(n::solid_velocity)) s.channel->write(n::solid_velocity, f.solid_velocity);

@@ -230,10 +230,56 @@ TEST(MpmCouplingExchangeGrid, HeldCellMovesWithItsHeldSolidAlone) {
     EXPECT_EQ(f.solid_velocity[bottom * 2 + 1], 0.0);
     EXPECT_EQ(f.held[above], 0);
     EXPECT_NEAR(f.solid_velocity[above * 2], 2.0, 1e-12);
-    // Full of the held body plus 0.02 / 0.25 of a row of 0.6 solid: capped at 1, and counted.
+    // The sand's domains overfill the held cells by 0.02 / 0.25 of a row: handed back to the row
+    // above, which they left as short, so each row holds its own solid again (to the 0.1 %
+    // overfill the spreading leaves).
     EXPECT_EQ(f.solid_fraction[bottom], 1.0);
+    EXPECT_NEAR(f.solid_fraction[above], 0.6, 1e-3);
+    EXPECT_NEAR(f.solid_bulk_density[above], 0.6 * 2650.0, 2.0);
   }
-  EXPECT_EQ(f.capped_cells, 4u);
+  EXPECT_EQ(f.overfilled_cells, 4u);
+  EXPECT_EQ(f.capped_cells, 0u);
+}
+
+TEST(MpmCouplingExchangeGrid, ClusteredPointsHandTheirExcessToTheCellTheyLeftShort) {
+  // A row of two cells of 0.4-porous sand, four points' worth of domain each: six points have
+  // drifted into the left cell (at 1 m/s), two remain in the right (at 3 m/s). The left cell's
+  // domains cover 1.5 cells, its solid fraction would be 0.9 where the sand's is 0.6; the spreading
+  // hands a third of its sums to the right cell, conserving solid volume, mass and momentum.
+  const auto grid = unit_square_grid<2>(4, 1);
+  const double h = 0.25;
+  Particles<2> particles;
+  testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(h, h), h / 2.0, 0.4, 2650.0, 0);
+  testing::add_block<2>(particles, Vec<2>(h, 0.0), Vec<2>(2.0 * h, h), h / 2.0, 0.4, 2650.0, 0);
+  for (std::size_t p = 0; p < 2; ++p) {  // two of the right cell's points drifted into the left one
+    particles.position[p + 4][0] -= h / 2.0 + 0.01;
+    particles.position[p + 4][1] += 0.01;
+  }
+  for (std::size_t p = 0; p < particles.size(); ++p)
+    particles.velocity[p] = Vec<2>(p < 6 ? 1.0 : 3.0, 0.0);
+  for (std::size_t p = 0; p < particles.size(); ++p) particles.half_length[p] = Vec<2>::Constant(h / 4.0 - 1e-6);
+  const std::size_t left = grid.flat({0, 0}), right = grid.flat({1, 0});
+  const PorousFields f = porous_fields(grid, particles, testing::porous_roles(1),
+                                       std::vector<std::uint8_t>(particles.size(), 0), 1e30);
+  EXPECT_EQ(f.overfilled_cells, 1u);
+  EXPECT_EQ(f.capped_cells, 0u);
+  const double point_mass = particles.mass[0];
+  const double cell_volume = grid.cell_volume();
+  std::printf("  solid fraction left %.6f right %.6f (sand 0.6)\n", f.solid_fraction[left],
+              f.solid_fraction[right]);
+  // The right cell accepts its room times the share of it its own points fill: the excess moves over
+  // the sweeps, to the 0.1 % overfill the spreading leaves.
+  EXPECT_NEAR(f.solid_fraction[left], 0.6, 2e-3);
+  EXPECT_NEAR(f.solid_fraction[right], 0.6, 2e-3);
+  EXPECT_NEAR((f.solid_fraction[left] + f.solid_fraction[right]) * cell_volume, 8 * 0.6 * cell_volume / 4.0,
+              1e-12);
+  EXPECT_NEAR((f.solid_bulk_density[left] + f.solid_bulk_density[right]) * cell_volume, 8 * point_mass, 1e-12);
+  const double momentum = (f.solid_bulk_density[left] * f.solid_velocity[left * 2] +
+                           f.solid_bulk_density[right] * f.solid_velocity[right * 2]) *
+                          cell_volume;
+  EXPECT_NEAR(momentum, (6 * 1.0 + 2 * 3.0) * point_mass, 1e-12);
+  // The right cell's own two points at 3 m/s and the two points' worth it was handed at 1 m/s.
+  EXPECT_NEAR(f.solid_velocity[right * 2], 2.0, 1e-2);
 }
 
 TEST(MpmCouplingExchangeGrid, ACellSharedByABedAndSlidingSandMovesWithTheSand) {

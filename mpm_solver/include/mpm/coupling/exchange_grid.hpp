@@ -85,6 +85,19 @@ struct ExchangeGrid {
     }
   }
 
+  // f(flat cell) for the up to 2 Dim cells sharing a face with `cell`.
+  template <class F>
+  void for_each_face_neighbour(std::size_t cell, F&& f) const {
+    std::size_t stride = 1;
+    for (std::size_t d = 0; d < Dim; ++d) {
+      const auto n = static_cast<std::size_t>(cells[d]);
+      const std::size_t i = (cell / stride) % n;
+      if (i > 0) f(cell - stride);
+      if (i + 1 < n) f(cell + stride);
+      stride *= n;
+    }
+  }
+
   cosim::UniformGrid mesh() const {
     cosim::UniformGrid m;
     m.dim = Dim;

@@ -61,6 +61,7 @@ namespace mpm::coupling {
 template <int Dim>
 struct CouplingDiagnostics {
   std::size_t capped_solid_fraction_cells = 0;  // summed over all writes
+  std::size_t overfilled_cells = 0;             // summed over all writes (spread_overfilled_cells)
   std::size_t held_cells = 0;                   // at the last write
   std::size_t writes = 0;                       // times the fields were written
   Vec<Dim> pore_pressure_force = Vec<Dim>::Zero();  // last step [N]

@@ -18,7 +18,10 @@ namespace mpm::coupling {
 //   u_s         = sum_p m_p v_p w_pc / sum_p m_p w_pc
 //   kappa, D50  = mass-weighted means over the porous particles (each
 //                 particle's permeability follows its porosity, Pan et al.
-//                 2021, eq. 76); 0 where no porous particle reaches the cell.
+//                 2021, eq. 76); 0 where no porous particle reaches the cell,
+// with the sums of the points that are not held taken after the cells their
+// domains overfill have handed their excess to neighbours with room
+// (spread_overfilled_cells: the sums are moved, not changed).
 // A cell is held when more than half of its solid mass (of its volume, for
 // massless rigid bodies) belongs to held particles and the solid not held
 // fills at most 10 % of it; its rho_bar_s is written as held_density_factor x
@@ -36,7 +39,8 @@ struct PorousFields {
   std::vector<double> permeability;
   std::vector<double> grain_size;
   std::vector<std::uint8_t> held;
-  std::size_t capped_cells = 0;  // cells where phi_s exceeded 1 + 1e-9 (overlapping particles)
+  std::size_t capped_cells = 0;      // cells where phi_s exceeded 1 + 1e-3 after the spreading
+  std::size_t overfilled_cells = 0;  // cells whose points' domains covered more than the cell
 };
 
 template <int Dim>
