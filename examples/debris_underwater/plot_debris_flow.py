@@ -18,10 +18,8 @@ and prints, per time, the slide front (the farthest sand point along the bed, fr
 toe), the deepest trough over the sand and the highest crest ahead of it.
 """
 import argparse
-import glob
 import math
 import os
-import re
 import sys
 
 import h5py
@@ -31,34 +29,16 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from cosim_outputs import ice_grid, nearest, snapshots  # noqa: E402
+
 TOE = (1.10, 0.90)  # the sand's initial toe on the bed (sand.yaml)
 
 
-def snapshots(directory, pattern):
-    """{time: path} of the HDF5 snapshots of one participant."""
-    out = {}
-    for path in sorted(glob.glob(os.path.join(directory, pattern))):
-        with h5py.File(path, "r") as f:
-            out[float(f.attrs["time"])] = path
-    return out
 
 
-def nearest(snaps, t, tolerance=0.026):
-    if not snaps:
-        return None
-    key = min(snaps, key=lambda s: abs(s - t))
-    return snaps[key] if abs(key - t) <= tolerance else None
 
 
-def ice_grid(directory):
-    """(origin, spacing, cells) of the ICE grid from ice.xdmf."""
-    text = open(os.path.join(directory, "ice.xdmf")).read()
-    dims = [int(v) for v in re.search(r'TopologyType="2DCoRectMesh" Dimensions="(\d+) (\d+)"', text).groups()]
-    items = re.findall(r'<DataItem Format="XML" Dimensions="2"[^>]*>([^<]+)</DataItem>', text)
-    # XDMF lists the slowest direction first: (y, x).
-    origin = [float(v) for v in items[0].split()][::-1]
-    spacing = [float(v) for v in items[1].split()][::-1]
-    return np.array(origin), np.array(spacing), (dims[1] - 1, dims[0] - 1)  # (nx, ny)
 
 
 def fluid(path):
@@ -119,7 +99,7 @@ def main():
     scatter = None
     profiles = []
     for ax, t in zip(axes[:, 0], args.times):
-        w, s = nearest(water, t), nearest(soil, t)
+        w, s = nearest(water, t, 0.026), nearest(soil, t, 0.026)
         if w:
             wf, af = fluid(w)
             share = wf / np.maximum(wf + af, 1e-30)

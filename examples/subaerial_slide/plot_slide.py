@@ -14,10 +14,7 @@ from openfoam.xdmf) and writes, like Pan et al. 2021, Figs. 10-12:
 and prints, per gauge, the first wave's arrival (eta - h0 first above 1 mm) and its crest.
 """
 import argparse
-import csv
-import glob
 import os
-import re
 import sys
 
 import h5py
@@ -27,40 +24,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-
-def snapshots(directory, pattern):
-    """{time: path} of the HDF5 snapshots of one participant."""
-    out = {}
-    for path in sorted(glob.glob(os.path.join(directory, pattern))):
-        with h5py.File(path, "r") as f:
-            out[float(f.attrs["time"])] = path
-    return out
-
-
-def nearest(snaps, t, tolerance=0.03):
-    if not snaps:
-        return None
-    key = min(snaps, key=lambda s: abs(s - t))
-    return snaps[key] if abs(key - t) <= tolerance else None
-
-
-def grid(directory):
-    """(origin, spacing, (nx, ny)) of the OpenFOAM cells from openfoam.xdmf."""
-    text = open(os.path.join(directory, "openfoam.xdmf")).read()
-    dims = [int(v) for v in re.search(r'TopologyType="2DCoRectMesh" Dimensions="(\d+) (\d+)"', text).groups()]
-    items = re.findall(r'<DataItem Format="XML" Dimensions="2"[^>]*>([^<]+)</DataItem>', text)
-    origin = [float(v) for v in items[0].split()][::-1]
-    spacing = [float(v) for v in items[1].split()][::-1]
-    return np.array(origin), np.array(spacing), (dims[1] - 1, dims[0] - 1)
-
-
-def gauges(path):
-    with open(path) as f:
-        rows = list(csv.reader(f))
-    header, values = rows[0], np.array([[float(v) for v in r] for r in rows[1:]])
-    names = [h.split("_surface_elevation")[0] for h in header[1:] if "_surface_elevation" in h]
-    columns = [i for i, h in enumerate(header) if "_surface_elevation" in h]
-    return values[:, 0], names, values[:, columns]
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from cosim_outputs import first_wave, nearest, openfoam_grid, snapshots, wave_gauges  # noqa: E402
 
 
 def main():
@@ -77,20 +42,15 @@ def main():
     out = args.output or os.path.join(args.run, "plots")
     os.makedirs(out, exist_ok=True)
 
-    t, names, eta = gauges(os.path.join(water_dir, "gauges.csv"))
+    t, names, eta = wave_gauges(os.path.join(water_dir, "gauges.csv"))
     rise = eta - args.still_water
     fig, ax = plt.subplots(figsize=(7.5, 3.4))
     for g, name in enumerate(names):
         ax.plot(t, 1e3 * rise[:, g], lw=1.0, label=name)
-        above = np.nonzero(rise[:, g] > 1e-3)[0]
-        if above.size:
-            first = above[0]
-            # the first crest: the highest point before the surface falls back below 1 mm
-            after = np.nonzero(rise[first:, g] <= 1e-3)[0]
-            end = first + (after[0] if after.size else len(t) - first)
-            crest = first + int(np.argmax(rise[first:end, g]))
-            print(f"{name}: first wave arrives at t = {t[first]:.3f} s, crest {1e3 * rise[crest, g]:.1f} mm "
-                  f"at t = {t[crest]:.3f} s")
+        wave = first_wave(t, rise[:, g])
+        if wave:
+            print(f"{name}: first wave arrives at t = {wave[0]:.3f} s, crest {1e3 * wave[1]:.1f} mm "
+                  f"at t = {wave[2]:.3f} s")
         else:
             print(f"{name}: no wave above 1 mm by t = {t[-1]:.3f} s")
     ax.axhline(0.0, color="k", lw=0.5)
@@ -109,7 +69,7 @@ def main():
     if not water or not soil:
         print(f"{args.run}: no OpenFOAM or particle snapshots", file=sys.stderr)
         return 0
-    origin, spacing, (nx, ny) = grid(water_dir)
+    origin, spacing, (nx, ny) = openfoam_grid(water_dir)
     extent = [origin[0], origin[0] + nx * spacing[0], origin[1], origin[1] + ny * spacing[1]]
     fig, axes = plt.subplots(len(args.times), 1, figsize=(8.0, 1.9 * len(args.times) + 0.6), squeeze=False,
                              constrained_layout=True)

@@ -21,9 +21,7 @@ shear strain and the excess pore pressure in the cells of the most and of the le
 """
 import argparse
 import csv
-import glob
 import os
-import re
 import sys
 
 import h5py
@@ -33,33 +31,17 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from cosim_outputs import ice_grid, nearest, snapshots  # noqa: E402
+
 ATMOSPHERE = 101325.0
 RHO_G = 999.8 * 9.81
 
 
-def snapshots(directory, pattern):
-    out = {}
-    for path in sorted(glob.glob(os.path.join(directory, pattern))):
-        with h5py.File(path, "r") as f:
-            out[float(f.attrs["time"])] = path
-    return out
 
 
-def nearest(snaps, t, tolerance=0.26):
-    if not snaps:
-        return None
-    key = min(snaps, key=lambda s: abs(s - t))
-    return snaps[key] if abs(key - t) <= tolerance else None
 
 
-def ice_grid(directory):
-    text = open(os.path.join(directory, "ice.xdmf")).read()
-    dims = [int(v) for v in re.search(r'TopologyType="2DCoRectMesh" Dimensions="(\d+) (\d+)"', text).groups()]
-    items = re.findall(r'<DataItem Format="XML" Dimensions="2"[^>]*>([^<]+)</DataItem>', text)
-    # XDMF lists the slowest direction first: (y, x).
-    origin = np.array([float(v) for v in items[0].split()][::-1])
-    spacing = np.array([float(v) for v in items[1].split()][::-1])
-    return origin, spacing, (dims[1] - 1, dims[0] - 1)
 
 
 def soil_points(path):
@@ -122,15 +104,15 @@ def main():
     out = args.output or os.path.join(args.run, "plots")
     os.makedirs(out, exist_ok=True)
 
-    times = [t for t in args.times if nearest(soil, t) and nearest(water, t)]
+    times = [t for t in args.times if nearest(soil, t, 0.26) and nearest(water, t, 0.26)]
     fig, axes = plt.subplots(len(times), 3, figsize=(14, 2.0 * len(times) + 0.8), squeeze=False,
                              constrained_layout=True)
     fig2, axes2 = plt.subplots(len(times), 1, figsize=(6.5, 2.0 * len(times) + 0.8), squeeze=False,
                                constrained_layout=True)
     art = [None, None, None, None]
     for row, t in enumerate(times):
-        xy, gamma, speed, plastic, table = soil_points(nearest(soil, t))
-        p = pressure(nearest(water, t))
+        xy, gamma, speed, plastic, table = soil_points(nearest(soil, t, 0.26))
+        p = pressure(nearest(water, t, 0.26))
         excess = excess_field(p, origin, spacing, args.sea_level)
         ax = axes[row]
         art[0] = ax[0].scatter(xy[:, 0], xy[:, 1], c=gamma, s=3, cmap="magma_r", vmin=0.0, vmax=0.2, rasterized=True)
