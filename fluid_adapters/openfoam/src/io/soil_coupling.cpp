@@ -195,16 +195,22 @@ SoilCoupling::MomentumCheck SoilCoupling::write(cosim::Participant& participant,
     for (std::size_t d = 0; d < dim; ++d) {
       const double relative = end.velocity[c * dim + d] - solid_velocity_[c * dim + d];
       const double on_fluid = -k_cloud * relative * volume * window;
-      impulse_rate[c * dim + d] = -n * limiter * on_fluid / window;
+      double reaction = on_fluid;
       law[d] += on_fluid;
-      soil[d] += -n * on_fluid;
       scale += std::abs(on_fluid);
       if (!end.cloud_momentum.empty()) {
         const double measured = end.cloud_momentum[c * dim + d] * static_cast<double>(steps) *
                                 volume / mesh_.volumes[c];
         cloud[d] += measured;
         off += std::abs(measured - on_fluid);
+        // The soil takes the reaction to what the water received, so that the
+        // momentum lost by one is the other's (the law at the window's end
+        // fields differs from it while the flow changes within the window;
+        // its mismatch is the check of the grain size's fit).
+        reaction = measured;
       }
+      impulse_rate[c * dim + d] = -n * limiter * reaction / window;
+      soil[d] += -n * reaction;
     }
   }
   for (std::size_t d = 0; d < dim; ++d) {
