@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <stdexcept>
 
@@ -63,7 +62,10 @@ inline void interior_face_velocities(int first, int end, int upper_offset, int s
 template <int Dim>
 struct LagrangianEnergyRow {
   std::array<const double*, static_cast<std::size_t>(Dim)> face_pressure{};
-  std::array<const double*, static_cast<std::size_t>(Dim)> face_flux{};
+  // The volume fraction the pressure equation carried on each face
+  // (face_fraction) and U_f,FC: their product is the face's volume flux.
+  std::array<const double*, static_cast<std::size_t>(Dim)> face_fraction{};
+  std::array<const double*, static_cast<std::size_t>(Dim)> face_velocity{};
   std::array<int, static_cast<std::size_t>(Dim)> stride{};
   std::array<double, static_cast<std::size_t>(Dim)> spacing{};
   std::array<const double*, static_cast<std::size_t>(Dim)> velocity{};
@@ -78,8 +80,9 @@ int lagrangian_energy_row(const LagrangianEnergyRow<Dim>& pointers, int first, i
                           const double* __restrict new_pressure,
                           const double* __restrict temperature, double* __restrict energy) {
   const LagrangianEnergyRow<Dim> row = pointers;  // a local copy: kept in registers
-  // A 64-bit count, as wide as the doubles' lanes, so that it vectorises.
-  std::int64_t refused = 0;
+  // Counted in a double (exact to 2^53): GCC vectorises this reduction, not
+  // one into an integer.
+  double refused = 0.0;
   for (int c = first; c < end; ++c) {
     const double rhobar = bulk_density[c];
     const double phi = volume_fraction[c];
@@ -90,8 +93,9 @@ int lagrangian_energy_row(const LagrangianEnergyRow<Dim>& pointers, int first, i
       const double p_up = row.face_pressure[d][c + row.stride[d]];
       const double u = row.velocity[d][c];
       const double u_mid = u + 0.5 * (row.momentum[d][c] / rhobar - u);
-      const double flux_low = row.face_flux[d][c];
-      const double flux_up = row.face_flux[d][c + row.stride[d]];
+      const double flux_low = row.face_fraction[d][c] * row.face_velocity[d][c];
+      const double flux_up =
+          row.face_fraction[d][c + row.stride[d]] * row.face_velocity[d][c + row.stride[d]];
       work += (phi * (p_up - p_low) * u_mid - (p_up * flux_up - p_low * flux_low)) / row.spacing[d];
       volume_flux += (flux_up - flux_low) / row.spacing[d];
     }
@@ -105,47 +109,48 @@ int lagrangian_energy_row(const LagrangianEnergyRow<Dim>& pointers, int first, i
     // combined with & rather than && so that no branch is needed).
     const bool positive_finite =
         (energy[c] > 0.0) & (energy[c] <= std::numeric_limits<double>::max());
-    refused += positive_finite ? 0 : 1;
+    refused += positive_finite ? 0.0 : 1.0;
   }
-  return refused > 0 ? 1 : 0;
+  return refused > 0.0 ? 1 : 0;
 }
 
 // advect_and_update's pass over one material's cells after its advection:
 // with `total_energy` the kinetic energy the advection dissipated returns
-// to the internal energy, then the bulk density, temperature and specific
-// volume. Restrict-qualified (and branch-free: the quotients of a cell
-// without mass are computed and discarded), so that the loop vectorises;
-// returns how many cells have no positive finite mass or temperature.
-template <int Dim>
-int primitive_variables(std::size_t cells, bool total_energy, double c_v,
+// to the internal energy, then the bulk density, velocity, temperature and
+// specific volume. Restrict-qualified and branch-free (a cell without mass
+// gets quotients the check reports), so that the loop vectorises; returns
+// how many cells have no positive finite mass or temperature.
+template <int Dim, bool total_energy>
+int primitive_variables(std::size_t cells, double c_v,
                         const std::array<const double*, static_cast<std::size_t>(Dim)>& momentum,
+                        const std::array<double*, static_cast<std::size_t>(Dim)>& velocity,
                         const double* __restrict mass, const double* __restrict kinetic,
                         const double* __restrict volume, double* __restrict energy,
                         double* __restrict bulk_density, double* __restrict temperature,
                         double* __restrict specific_volume) {
   constexpr double largest = std::numeric_limits<double>::max();
-  const auto mom = momentum;  // a local copy of the pointers: kept in registers
-  std::int64_t bad = 0;       // as wide as the doubles' lanes, so that it vectorises
+  const auto mom = momentum;  // local copies of the pointers: kept in registers
+  const auto u = velocity;
+  double bad = 0.0;  // a double count, so that it vectorises (see above)
   for (std::size_t c = 0; c < cells; ++c) {
     const double m = mass[c];
     double twice = 0.0;
     for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
       twice += mom[d][c] * mom[d][c];
+      u[d][c] = mom[d][c] / m;
     }
     const double kinetic_after = 0.5 * twice / m;
-    // Both candidates computed, so the choice is a select.
-    const double returned = energy[c] + (kinetic[c] - kinetic_after);
-    const bool returns = total_energy & (m > 0.0);
-    const double e = returns ? returned : energy[c];
+    // A cell without mass fails the check below (its energy is not used).
+    const double e = total_energy ? energy[c] + (kinetic[c] - kinetic_after) : energy[c];
     energy[c] = e;
     bulk_density[c] = m;
     const double t = e / (m * c_v);
     temperature[c] = t;
     specific_volume[c] = volume[c] / m;
     const bool good = (m > 0.0) & (m <= largest) & (t > 0.0) & (t <= largest);
-    bad += good ? 0 : 1;
+    bad += good ? 0.0 : 1.0;
   }
-  return bad > 0 ? 1 : 0;
+  return bad > 0.0 ? 1 : 0;
 }
 
 void require(bool condition, const std::string& what) {
@@ -1094,7 +1099,6 @@ void IceSolver<Dim>::compute_lagrangian_values(double dt) {
 // accelerated by the pressure and stopped by the drag does no work).
 template <int Dim>
 bool IceSolver<Dim>::compute_lagrangian_energy(double dt) {
-  FaceField<Dim>& face_flux = scratch_face_;  // phi_f,FC U_f,FC per face
   const std::size_t cells = at(grid_.cell_count());
   // Below this volume fraction a material is a trace (the initial state
   // gives absent materials 1e-6 by default).
@@ -1113,22 +1117,14 @@ bool IceSolver<Dim>::compute_lagrangian_energy(double dt) {
   for (std::size_t m = 0; m < count(); ++m) {
     const MaterialState<Dim>& material = state_.materials[m];
     const double c_v = eos_[m]->specific_heat();
-    for (int d = 0; d < Dim; ++d) {
-      // The volume fraction the pressure equation carried on each face
-      // (face_fraction) times U_f,FC.
-      const double* u = face_velocity_[m][at(d)].data();
-      const double* carried = face_fraction_[m][at(d)].data();
-      double* flux = face_flux[at(d)].data();
-      const std::size_t faces = face_flux[at(d)].size();
-      for (std::size_t f = 0; f < faces; ++f) flux[f] = carried[f] * u[f];
-    }
     int refused = 0;
     for_each_row(grid_, [&](int first, int length) {
       LagrangianEnergyRow<Dim> row;
       for (int d = 0; d < Dim; ++d) {
         const int offset = lower_face_offset(grid_, d, first);
         row.face_pressure[at(d)] = face_pressure_[at(d)].data() + offset;
-        row.face_flux[at(d)] = face_flux[at(d)].data() + offset;
+        row.face_fraction[at(d)] = face_fraction_[m][at(d)].data() + offset;
+        row.face_velocity[at(d)] = face_velocity_[m][at(d)].data() + offset;
         row.stride[at(d)] = grid_.stride(d);
         row.spacing[at(d)] = grid_.spacing()[d];
         row.velocity[at(d)] = material.velocity[at(d)].data();
@@ -1352,16 +1348,13 @@ void IceSolver<Dim>::advect_and_update(double dt, StepReport& report) {
     const double c_v = eos_[m]->specific_heat();
     std::array<const double*, static_cast<std::size_t>(Dim)> momentum{};
     for (std::size_t d = 0; d < dim; ++d) momentum[d] = momentum_[m][d].data();
-    const bool bad = primitive_variables<Dim>(
-                         cells, total_energy, c_v, momentum, mass_[m].data(), kinetic_[m].data(),
-                         volume_[m].data(), energy_[m].data(), material.bulk_density.data(),
-                         material.temperature.data(), material.specific_volume.data()) > 0;
-    for (std::size_t d = 0; d < dim; ++d) {
-      double* velocity = material.velocity[d].data();
-      const double* mass = mass_[m].data();
-      const double* mom = momentum[d];
-      for (std::size_t c = 0; c < cells; ++c) velocity[c] = mom[c] / mass[c];
-    }
+    std::array<double*, static_cast<std::size_t>(Dim)> velocity{};
+    for (std::size_t d = 0; d < dim; ++d) velocity[d] = material.velocity[d].data();
+    const auto primitives =
+        total_energy ? primitive_variables<Dim, true> : primitive_variables<Dim, false>;
+    const bool bad = primitives(cells, c_v, momentum, velocity, mass_[m].data(), kinetic_[m].data(),
+                                volume_[m].data(), energy_[m].data(), material.bulk_density.data(),
+                                material.temperature.data(), material.specific_volume.data()) > 0;
     if (!bad) continue;
     for (std::size_t c = 0; c < cells; ++c) {
       const double mass = mass_[m][c];
