@@ -54,6 +54,38 @@ inline void interior_face_velocities(int first, int end, int upper_offset, int s
   }
 }
 
+// Eq. 131's closed form for two fluids on the interior faces
+// first <= f < end of a row (upper cell f - upper_offset, lower one stride
+// below), see exchange_two_fluid_faces. A function of its own, with
+// restrict-qualified outputs and branch-free, so that the loop vectorises:
+// a face without exchange (no coefficient, or a material without mass,
+// which the state excludes) adds 0 times its increments.
+inline void interior_two_fluid_exchange(int first, int end, int upper_offset, int stride, double dt,
+                                        double k, const double* __restrict rhobar_0,
+                                        const double* __restrict rhobar_1,
+                                        const double* __restrict phi_0,
+                                        const double* __restrict phi_1, double* __restrict u_0,
+                                        double* __restrict u_1, double* __restrict y_0,
+                                        double* __restrict y_1) {
+  for (int f = first; f < end; ++f) {
+    const int upper = f - upper_offset;
+    const int lower = upper - stride;
+    const double w_0 = 0.5 * (rhobar_0[lower] + rhobar_0[upper]);
+    const double w_1 = 0.5 * (rhobar_1[lower] + rhobar_1[upper]);
+    const double fraction_0 = 0.5 * (phi_0[lower] + phi_0[upper]);
+    const double fraction_1 = 0.5 * (phi_1[lower] + phi_1[upper]);
+    const double dt_c = dt * (k * fraction_0 * fraction_1);
+    const double exchanged = (w_0 > 0.0) & (w_1 > 0.0) & (dt_c > 0.0) ? 1.0 : 0.0;
+    const double resistance = 1.0 / dt_c + 1.0 / w_0 + 1.0 / w_1;
+    const double impulse = (u_1[f] - u_0[f]) / resistance;
+    const double correction = (y_1[f] - y_0[f]) / resistance;
+    u_0[f] += exchanged * (impulse / w_0);
+    u_1[f] += exchanged * (-impulse / w_1);
+    y_0[f] += exchanged * (correction / w_0);
+    y_1[f] += exchanged * (-correction / w_1);
+  }
+}
+
 // compute_lagrangian_energy's cells first <= c < end of a row along x:
 // the face arrays are offset so that cell c's lower face normal to d is
 // index c and its upper face c + stride[d]. A function of its own, with
@@ -833,14 +865,18 @@ void IceSolver<Dim>::exchange_two_fluid_faces(double dt) {
       y_0[f] += correction / w_0;
       y_1[f] += -correction / w_1;
     };
-    for_each_face(
+    const int stride = grid_.stride(d);
+    for_each_face_run(
         grid_, d,
-        [&](int f, int lower, int upper) {
-          u_s[f] = 0.5 * (solid_velocity[lower] + solid_velocity[upper]);
-          phi_s[f] = 1.0 - porosity[u_s[f] >= 0.0 ? lower : upper];
-          exchange(f, 0.5 * (rhobar_0[lower] + rhobar_0[upper]),
-                   0.5 * (rhobar_1[lower] + rhobar_1[upper]), 0.5 * (phi_0[lower] + phi_0[upper]),
-                   0.5 * (phi_1[lower] + phi_1[upper]));
+        [&](int first, int end, int upper_offset) {
+          for (int f = first; f < end; ++f) {
+            const int upper = f - upper_offset;
+            const int lower = upper - stride;
+            u_s[f] = 0.5 * (solid_velocity[lower] + solid_velocity[upper]);
+            phi_s[f] = 1.0 - porosity[u_s[f] >= 0.0 ? lower : upper];
+          }
+          interior_two_fluid_exchange(first, end, upper_offset, stride, dt, k, rhobar_0, rhobar_1,
+                                      phi_0, phi_1, u_0, u_1, y_0, y_1);
         },
         [&](int f, int cell, bool upper_side) {
           const SideType type = sides_[at(2 * d + (upper_side ? 1 : 0))].type;
@@ -861,40 +897,52 @@ void IceSolver<Dim>::exchange_two_fluid_faces(double dt) {
 // would run away in a checkerboard. Plus the solid's flux.
 template <int Dim>
 void IceSolver<Dim>::assemble_divergence(const std::vector<FaceField<Dim>>& direction) {
+  const std::size_t n = count();
   for (int d = 0; d < Dim; ++d) {
     double* inverse_density = face_density_[at(d)].data();
     double* flux = mixture_velocity_[at(d)].data();
     const double* phi_s = solid_face_fraction_[at(d)].data();
     const double* u_s = solid_face_velocity_[at(d)].data();
-    const std::size_t faces = face_density_[at(d)].size();
-    for (std::size_t f = 0; f < faces; ++f) {
-      inverse_density[f] = 0.0;
-      flux[f] = phi_s[f] * u_s[f];
+    std::array<const double*, cosim::exchange::kMaxMaterials> phi{};
+    std::array<const double*, cosim::exchange::kMaxMaterials> sign{};
+    std::array<const double*, cosim::exchange::kMaxMaterials> u{};
+    std::array<const double*, cosim::exchange::kMaxMaterials> y{};
+    std::array<double*, cosim::exchange::kMaxMaterials> carried{};
+    for (std::size_t m = 0; m < n; ++m) {
+      phi[m] = state_.materials[m].volume_fraction.data();
+      sign[m] = direction[m][at(d)].data();
+      u[m] = face_velocity_[m][at(d)].data();
+      y[m] = face_correction_[m][at(d)].data();
+      carried[m] = face_fraction_[m][at(d)].data();
     }
-    for (std::size_t m = 0; m < count(); ++m) {
-      const double* phi = state_.materials[m].volume_fraction.data();
-      const double* sign = direction[m][at(d)].data();
-      const double* u = face_velocity_[m][at(d)].data();
-      const double* y = face_correction_[m][at(d)].data();
-      double* carried = face_fraction_[m][at(d)].data();
-      const auto add = [&](int f, double fraction) {
-        carried[f] = fraction;
-        inverse_density[f] += fraction * y[f];
-        flux[f] += fraction * u[f];
-      };
-      for_each_face(
-          grid_, d,
-          [&](int f, int lower, int upper) { add(f, phi[sign[f] >= 0.0 ? lower : upper]); },
-          [&](int f, int cell, bool) { add(f, phi[cell]); });
-    }
+    // 1 / rho_FC = sum_f phi_f,FC y_f and U_FC = phi_s U_s + sum_f phi_f,FC U_f
+    // on a face whose materials carry the given fractions.
+    const auto sums = [&](int f, const auto& fraction) {
+      double inverse = 0.0;
+      double volume_flux = phi_s[f] * u_s[f];
+      for (std::size_t m = 0; m < n; ++m) {
+        const double carried_fraction = fraction(m);
+        carried[m][f] = carried_fraction;
+        inverse += carried_fraction * y[m][f];
+        volume_flux += carried_fraction * u[m][f];
+      }
+      flux[f] = volume_flux;
+      return inverse;
+    };
     for_each_face(
-        grid_, d, [&](int f, int, int) { inverse_density[f] = 1.0 / inverse_density[f]; },
-        [&](int f, int, bool upper_side) {
+        grid_, d,
+        [&](int f, int lower, int upper) {
+          const double inverse =
+              sums(f, [&](std::size_t m) { return phi[m][sign[m][f] >= 0.0 ? lower : upper]; });
+          inverse_density[f] = 1.0 / inverse;
+        },
+        [&](int f, int cell, bool upper_side) {
+          const double inverse = sums(f, [&](std::size_t m) { return phi[m][cell]; });
           if (sides_[at(2 * d + (upper_side ? 1 : 0))].type == SideType::wall) {
             inverse_density[f] = 1.0;
             flux[f] = 0.0;
           } else {
-            inverse_density[f] = 1.0 / inverse_density[f];
+            inverse_density[f] = 1.0 / inverse;
           }
         });
   }
