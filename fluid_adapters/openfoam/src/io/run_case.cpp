@@ -194,7 +194,8 @@ class CaseRun {
     exchange_csv_.emplace(
         options_.output / "soil_exchange.csv",
         std::vector<std::string>{"time_s", "parcels", "cloud_on_fluid_kg_m/s",
-                                 "law_on_fluid_kg_m/s", "to_soil_kg_m/s", "mismatch_1"});
+                                 "law_on_fluid_kg_m/s", "to_soil_kg_m/s", "mismatch_1",
+                                 "drag_limited_cells"});
     while (participant.is_coupling_ongoing()) {
       const double start = participant.time();
       const double end = start + participant.max_time_step();
@@ -214,8 +215,10 @@ class CaseRun {
         participant.advance(end - start);
       }
       worst_mismatch_ = std::max(worst_mismatch_, check.mismatch);
+      warn_of_limited_drag(check, end - start, end);
       exchange_csv_->append({end, static_cast<double>(parcels_), check.cloud_on_fluid,
-                             check.law_on_fluid, check.to_soil, check.mismatch});
+                             check.law_on_fluid, check.to_soil, check.mismatch,
+                             static_cast<double>(check.limited_cells)});
       finish_window(end, fields, !participant.is_coupling_ongoing());
     }
   }
@@ -242,13 +245,34 @@ class CaseRun {
 
   long steps_in(double interval) const { return std::lround(interval / c_.time_step); }
 
+  // The explicit exchange gives the soil at most what brings it to the
+  // water's velocity in a window: where the window outlasts the soil's
+  // relaxation time the drag is cut, and the user is told once, and again
+  // whenever more cells are cut than ever before.
+  void warn_of_limited_drag(const SoilCoupling::MomentumCheck& check, double window, double t) {
+    most_limited_cells_ = std::max(most_limited_cells_, check.limited_cells);
+    shortest_relaxation_ = std::min(shortest_relaxation_, check.shortest_relaxation);
+    if (check.limited_cells <= warned_limited_cells_) return;
+    warned_limited_cells_ = check.limited_cells;
+    spdlog::warn(
+        "t = {:.6g} s: the window {:g} s outlasts the soil's drag relaxation time (down to {:.3g} "
+        "s) in {} cell(s): their drag is limited to what brings the soil to the water's velocity "
+        "(beta T = 1); a window of {:.2g} s or less resolves it",
+        t, window, check.shortest_relaxation, check.limited_cells, check.shortest_relaxation);
+  }
+
   void finish_window(double t, const FoamFields& fields, bool last) {
     write_outputs(t, fields, last);
     if (last) record_water(fields, false);
     summary_.set_windows(static_cast<std::int64_t>(windows_.size()));
     summary_.set_steps(steps_);
     summary_.set_section("openfoam_windows", windows_json());
-    if (exchange_csv_) summary_.set_metric("cloud_momentum_mismatch_max", worst_mismatch_, "1");
+    if (exchange_csv_) {
+      summary_.set_metric("cloud_momentum_mismatch_max", worst_mismatch_, "1");
+      summary_.set_metric("drag_limited_cells_max", static_cast<double>(most_limited_cells_), "1");
+      if (most_limited_cells_ > 0)
+        summary_.set_metric("drag_relaxation_time_min", shortest_relaxation_, "s");
+    }
     summary_.write();
   }
 
@@ -444,6 +468,9 @@ class CaseRun {
   std::optional<cosim::TimeSeriesWriter> exchange_csv_;
   std::size_t parcels_ = 0;
   double worst_mismatch_ = 0.0;
+  std::size_t most_limited_cells_ = 0;
+  std::size_t warned_limited_cells_ = 0;
+  double shortest_relaxation_ = INFINITY;
 };
 
 }  // namespace

@@ -192,6 +192,10 @@ SoilCoupling::MomentumCheck SoilCoupling::write(cosim::Participant& participant,
     const double beta_window =
         solid_density_[c] > 0.0 ? n * k_cloud * window / solid_density_[c] : 0.0;
     const double limiter = held ? 0.0 : 1.0 / std::max(1.0, beta_window);
+    if (!held && beta_window > 1.0) {
+      ++check.limited_cells;
+      check.shortest_relaxation = std::min(check.shortest_relaxation, window / beta_window);
+    }
     for (std::size_t d = 0; d < dim; ++d) {
       const double relative = end.velocity[c * dim + d] - solid_velocity_[c * dim + d];
       const double on_fluid = -k_cloud * relative * volume * window;

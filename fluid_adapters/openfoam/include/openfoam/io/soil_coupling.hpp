@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cmath>
+
 #include <vector>
 
 #include "cosim/participant.hpp"
@@ -65,6 +67,11 @@ class SoilCoupling {
     double law_on_fluid = 0.0;    // |sum| of the law's -f V T
     double to_soil = 0.0;         // |sum| of what the soil receives
     double mismatch = 0.0;        // |cloud - law| / sum |law| over the cells
+    // Cells whose drag was limited to beta T = 1 (the window longer than the
+    // soil's relaxation time 1 / beta, beta = n K_cloud / rho_bar_s), and
+    // the shortest relaxation time among them [s].
+    std::size_t limited_cells = 0;
+    double shortest_relaxation = INFINITY;
   };
   MomentumCheck write(cosim::Participant& participant, FoamFields& end, double window, long steps);
 
