@@ -4,8 +4,7 @@
     examples/subaerial_slide/plot_slide.py RUN_DIR [--times 0 0.23 0.41 0.52] [--still-water 0.15]
                                            [--soil soil] [--water water] [--output RUN_DIR/plots]
 
-RUN_DIR is the --output of `cosim run configs/openfoam_coupled/subaerial_slide/job.yaml` (or of
-full/job.yaml). It reads the wave gauges (RUN_DIR/water/gauges.csv), the particle snapshots
+RUN_DIR is the --output of `cosim run configs/openfoam_coupled/subaerial_slide/job.yaml`. It reads the wave gauges (RUN_DIR/water/gauges.csv), the particle snapshots
 (RUN_DIR/soil/particles_*.h5) and the OpenFOAM snapshots (RUN_DIR/water/openfoam_*.h5, the grid
 from openfoam.xdmf) and writes, like Pan et al. 2021, Figs. 10-12:
   gauges.png     the water surface at the four gauges G1-G4, eta - h0 against time

@@ -8,7 +8,7 @@
 // stress, so the open water must stay hydrostatic, the water under the
 // releasing column a little below, and the water's volume be kept;
 // -DCOSIM_FULL_VALIDATION=ON runs
-// the paper's 2 s (~2 h): the column must spread beyond the gate, lose
+// the paper's 2 s (~1.5 h): the column must spread beyond the gate, lose
 // height, and come to rest.
 //
 // Needs OpenFOAM (openfoam_test_main.cpp).
