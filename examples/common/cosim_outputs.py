@@ -77,3 +77,41 @@ def first_wave(t, rise, threshold=1e-3):
     end = first + (after[0] if after.size else len(t) - first)
     crest = first + int(np.argmax(rise[first:end]))
     return t[first], rise[crest], t[crest]
+
+
+def water_and_points_figure(path, times, water, soil, extent, speed_max, speed_label, title,
+                            panel_height=1.9, point_size=1.5, tolerance=0.03):
+    """One panel per time: a coupled OpenFOAM run's cells' water share (alpha_water times the
+    fluid fraction, blue), the held bodies' points (grey) and the others' points coloured by speed.
+    water and soil are snapshots() of the fluid and the MPM; writes the figure to path."""
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(len(times), 1, figsize=(8.0, panel_height * len(times) + 0.6), squeeze=False,
+                             constrained_layout=True)
+    scatter = None
+    for ax, time in zip(axes[:, 0], times):
+        w, s = nearest(water, time, tolerance), nearest(soil, time, tolerance)
+        if w:
+            with h5py.File(w, "r") as f:
+                share = f["fields/alpha_water"][:]
+                if "fluid_fraction" in f["fields"]:
+                    share = share * f["fields/fluid_fraction"][:]
+            ax.imshow(share, origin="lower", extent=extent, cmap="Blues", vmin=0.0, vmax=1.6,
+                      interpolation="nearest", aspect="equal")
+        if s:
+            xy, body, v = particles(s)
+            held = body != 0
+            ax.scatter(xy[held, 0], xy[held, 1], s=0.3, color="0.6", rasterized=True)
+            moving = body == 0
+            scatter = ax.scatter(xy[moving, 0], xy[moving, 1], c=np.linalg.norm(v[moving], axis=1),
+                                 s=point_size, cmap="magma_r", vmin=0.0, vmax=speed_max, rasterized=True)
+        ax.set_xlim(extent[0], extent[1])
+        ax.set_ylim(extent[2], extent[3])
+        ax.set_ylabel("y [m]")
+        ax.set_title(f"t = {time:g} s", fontsize=9, loc="left")
+    axes[-1, 0].set_xlabel("x [m]")
+    if scatter is not None:
+        fig.colorbar(scatter, ax=axes[:, 0].tolist(), label=speed_label, shrink=0.5)
+    fig.suptitle(title, fontsize=10)
+    fig.savefig(path, dpi=130)
+    plt.close(fig)

@@ -18,7 +18,6 @@ import argparse
 import os
 import sys
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
@@ -26,7 +25,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from cosim_outputs import nearest, openfoam_grid, particles, snapshots, wave_gauges  # noqa: E402
+from cosim_outputs import (  # noqa: E402
+    nearest, openfoam_grid, particles, snapshots, water_and_points_figure, wave_gauges)
 
 
 def surface(xy, width):
@@ -99,31 +99,10 @@ def main():
         return 0
     origin, spacing, (nx, ny) = openfoam_grid(water_dir)
     extent = [origin[0], origin[0] + nx * spacing[0], origin[1], origin[1] + ny * spacing[1]]
-    fig, axes = plt.subplots(len(args.times), 1, figsize=(8.0, 1.6 * len(args.times) + 0.6), squeeze=False,
-                             constrained_layout=True)
-    scatter = None
-    for ax, time in zip(axes[:, 0], args.times):
-        w, s = nearest(water, time), nearest(soil, time)
-        if w:
-            with h5py.File(w, "r") as f:
-                share = f["fields/alpha_water"][:] * f["fields/fluid_fraction"][:]
-            ax.imshow(share, origin="lower", extent=extent, cmap="Blues", vmin=0.0, vmax=1.6,
-                      interpolation="nearest", aspect="equal")
-        if s:
-            xy, _, v = particles(s)
-            scatter = ax.scatter(xy[:, 0], xy[:, 1], c=np.linalg.norm(v, axis=1), s=1.0, cmap="magma_r",
-                                 vmin=0.0, vmax=0.3, rasterized=True)
-        ax.set_xlim(extent[0], extent[1])
-        ax.set_ylim(extent[2], extent[3])
-        ax.set_ylabel("y [m]")
-        ax.set_title(f"t = {time:g} s", fontsize=9, loc="left")
-    axes[-1, 0].set_xlabel("x [m]")
-    if scatter is not None:
-        fig.colorbar(scatter, ax=axes[:, 0].tolist(), label="sand speed [m/s]", shrink=0.5)
-    fig.suptitle("Underwater granular collapse: sand (points), water fraction (blue)", fontsize=10)
     path = os.path.join(out, "snapshots.png")
-    fig.savefig(path, dpi=130)
-    plt.close(fig)
+    water_and_points_figure(path, args.times, water, soil, extent, 0.3, "sand speed [m/s]",
+                            "Underwater granular collapse: sand (points), water fraction (blue)",
+                            panel_height=1.6, point_size=1.0)
     print(path)
     return 0
 

@@ -16,15 +16,14 @@ import argparse
 import os
 import sys
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from cosim_outputs import first_wave, nearest, openfoam_grid, snapshots, wave_gauges  # noqa: E402
+from cosim_outputs import (  # noqa: E402
+    first_wave, openfoam_grid, snapshots, water_and_points_figure, wave_gauges)
 
 
 def main():
@@ -70,38 +69,9 @@ def main():
         return 0
     origin, spacing, (nx, ny) = openfoam_grid(water_dir)
     extent = [origin[0], origin[0] + nx * spacing[0], origin[1], origin[1] + ny * spacing[1]]
-    fig, axes = plt.subplots(len(args.times), 1, figsize=(8.0, 1.9 * len(args.times) + 0.6), squeeze=False,
-                             constrained_layout=True)
-    scatter = None
-    for ax, time in zip(axes[:, 0], args.times):
-        w, s = nearest(water, time), nearest(soil, time)
-        if w:
-            with h5py.File(w, "r") as f:
-                share = f["fields/alpha_water"][:] * f["fields/fluid_fraction"][:] \
-                    if "fluid_fraction" in f["fields"] else f["fields/alpha_water"][:]
-            ax.imshow(share, origin="lower", extent=extent, cmap="Blues", vmin=0.0, vmax=1.6,
-                      interpolation="nearest", aspect="equal")
-        if s:
-            with h5py.File(s, "r") as f:
-                xy = f["geometry/xyz"][:, :2]
-                body = f["fields/body"][:]
-                speed = np.linalg.norm(f["fields/velocity"][:, :2], axis=1)
-            plane = body != 0
-            ax.scatter(xy[plane, 0], xy[plane, 1], s=0.3, color="0.6", rasterized=True)
-            grains = body == 0
-            scatter = ax.scatter(xy[grains, 0], xy[grains, 1], c=speed[grains], s=1.5, cmap="magma_r",
-                                 vmin=0.0, vmax=2.5, rasterized=True)
-        ax.set_xlim(extent[0], extent[1])
-        ax.set_ylim(extent[2], extent[3])
-        ax.set_ylabel("y [m]")
-        ax.set_title(f"t = {time:g} s", fontsize=9, loc="left")
-    axes[-1, 0].set_xlabel("x [m]")
-    if scatter is not None:
-        fig.colorbar(scatter, ax=axes[:, 0].tolist(), label="grain speed [m/s]", shrink=0.5)
-    fig.suptitle("Subaerial granular slide: grains (points), water fraction (blue)", fontsize=10)
     path = os.path.join(out, "snapshots.png")
-    fig.savefig(path, dpi=130)
-    plt.close(fig)
+    water_and_points_figure(path, args.times, water, soil, extent, 2.5, "grain speed [m/s]",
+                            "Subaerial granular slide: grains (points), water fraction (blue)")
     print(path)
     return 0
 

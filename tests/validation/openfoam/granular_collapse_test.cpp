@@ -22,8 +22,7 @@
 #include <vector>
 
 #include "hdf5_reader.hpp"
-#include "replaced_text.hpp"
-#include "run_process.hpp"
+#include "shortened_coupled_job.hpp"
 
 namespace cosim::testing {
 namespace {
@@ -40,14 +39,9 @@ TEST(OpenFoamGranularCollapse, TheColumnSitsInHydrostaticWaterAndSpreads) {
 #else
   const double end_time = 0.01;
 #endif
-  const fs::path source = fs::path(COSIM_SOURCE_DIR) / "configs/openfoam_coupled/granular_collapse";
-  const fs::path dir = fresh_directory("openfoam_granular_collapse");
-  write_text(dir / "job.yaml", replaced(read_text(source / "job.yaml"), "end_time: 2.0",
-                                        fmt::format("end_time: {}", end_time)));
-  for (const char* f : {"soil.yaml", "water.yaml"}) write_text(dir / f, read_text(source / f));
-  const ProcessResult r = run({binary("cosim").string(), "run", (dir / "job.yaml").string(),
-                               "--output", (dir / "run").string()},
-                              std::chrono::seconds(10800));
+  ProcessResult r;
+  const fs::path dir = run_shortened_coupled_job(
+      "granular_collapse", "openfoam_granular_collapse", end_time, std::chrono::seconds(10800), r);
   ASSERT_EQ(r.exit_code, 0) << r.output;
 
   // time, then p, p_rgh, ux, uy, water fraction at the column's base and in

@@ -20,8 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "replaced_text.hpp"
-#include "run_process.hpp"
+#include "shortened_coupled_job.hpp"
 
 namespace cosim::testing {
 namespace {
@@ -36,14 +35,9 @@ TEST(OpenFoamSubaerialSlide, TheGrainsRaiseAWaveThatReachesTheGaugesInOrder) {
 #else
   const double end_time = 0.03;
 #endif
-  const fs::path source = fs::path(COSIM_SOURCE_DIR) / "configs/openfoam_coupled/subaerial_slide";
-  const fs::path dir = fresh_directory("openfoam_subaerial_slide");
-  write_text(dir / "job.yaml", replaced(read_text(source / "job.yaml"), "end_time: 2.0",
-                                        fmt::format("end_time: {}", end_time)));
-  for (const char* f : {"soil.yaml", "water.yaml"}) write_text(dir / f, read_text(source / f));
-  const ProcessResult r = run({binary("cosim").string(), "run", (dir / "job.yaml").string(),
-                               "--output", (dir / "run").string()},
-                              std::chrono::seconds(7200));
+  ProcessResult r;
+  const fs::path dir = run_shortened_coupled_job(
+      "subaerial_slide", "openfoam_subaerial_slide", end_time, std::chrono::seconds(7200), r);
   ASSERT_EQ(r.exit_code, 0) << r.output;
 
   // time, then the surface elevation at G1..G4
