@@ -125,30 +125,52 @@ TEST_F(OpenFoamAdapterRun, RunsWindowByWindowAndKeepsOnlyTheLatestTime) {
   EXPECT_LE(std::abs(water["relative_change"].get<double>()), 1e-4);
 }
 
-TEST_F(OpenFoamAdapterRun, AFailingOpenFoamRunExitsThreeWithItsLogAndKeepsTheCase) {
-  const fs::path dir = fresh_directory("openfoam_adapter_failing");
+// The small tank's case made by the adapter in <dir>/made, then copied to
+// <dir>/user_case as a user's case with `text` of its `file` replaced by
+// `by`; returns <dir>/user.yaml, which runs it.
+fs::path users_copy_of_the_made_case(const fs::path& dir, const std::string& file,
+                                     const std::string& text, const std::string& by) {
   write_text(dir / "case.yaml", small_tank);
-  ASSERT_EQ(run_adapter(dir / "case.yaml", dir / "made").exit_code, 0);
-  // The made case as a user's case, its pressure solver unknown to OpenFOAM.
+  EXPECT_EQ(run_adapter(dir / "case.yaml", dir / "made").exit_code, 0);
   const fs::path user = dir / "user_case";
   fs::copy(dir / "made" / "case", user, fs::copy_options::recursive);
   fs::remove_all(user / "0.02");
-  std::string solution = read_text(user / "system" / "fvSolution");
-  solution.replace(
-      solution.find("solver PCG;\n        preconditioner DIC;\n        tolerance 1e-7;"), 11,
-      "solver XYZ;");
-  write_text(user / "system" / "fvSolution", solution);
-  std::string text = small_tank;
-  text.replace(text.find("generate:"), text.find("end_time:") - text.find("generate:"),
-               "directory: user_case\n");
-  write_text(dir / "user.yaml", text);
-  const auto r = run_adapter(dir / "user.yaml", dir / "out");
+  std::string content = read_text(user / file);
+  EXPECT_NE(content.find(text), std::string::npos) << text;
+  if (content.find(text) != std::string::npos) content.replace(content.find(text), text.size(), by);
+  write_text(user / file, content);
+  std::string config = small_tank;
+  config.replace(config.find("generate:"), config.find("end_time:") - config.find("generate:"),
+                 "directory: user_case\n");
+  write_text(dir / "user.yaml", config);
+  return dir / "user.yaml";
+}
+
+TEST_F(OpenFoamAdapterRun, AFailingOpenFoamRunExitsThreeWithItsLogAndKeepsTheCase) {
+  const fs::path dir = fresh_directory("openfoam_adapter_failing");
+  // The user's pressure solver is unknown to OpenFOAM.
+  const fs::path config = users_copy_of_the_made_case(
+      dir, "system/fvSolution", "solver PCG;\n        preconditioner DIC;\n        tolerance 1e-7;",
+      "solver XYZ;\n        preconditioner DIC;\n        tolerance 1e-7;");
+  const auto r = run_adapter(config, dir / "out");
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_NE(r.output.find("OpenFOAM's interFoam"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("XYZ"), std::string::npos) << r.output;  // the log's last lines
   EXPECT_TRUE(fs::exists(dir / "out" / "case" / "system" / "fvSolution"));
   const auto summary = nlohmann::json::parse(read_text(dir / "out" / "summary.json"));
   EXPECT_EQ(summary["status"]["exit_code"], 3);
+}
+
+// A user's case is asked for its fluids by OpenFOAM's own foamDictionary: a
+// density left out is bad input naming the file and the entry.
+TEST_F(OpenFoamAdapterRun, AUsersCaseWithoutAFluidsDensityExitsTwoNamingFileAndEntry) {
+  const fs::path dir = fresh_directory("openfoam_adapter_user_fluids");
+  const fs::path config =
+      users_copy_of_the_made_case(dir, "constant/transportProperties", "rho 1000;", "");
+  const auto r = run_adapter(config, dir / "out");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("constant/transportProperties"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("water/rho"), std::string::npos) << r.output;
 }
 
 }  // namespace

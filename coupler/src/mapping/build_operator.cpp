@@ -1,6 +1,8 @@
 #include "cosim/mapping/build_operator.hpp"
 
 #include <string>
+#include <utility>
+#include <variant>
 
 #include "cosim/error.hpp"
 #include "kernel_map.hpp"
@@ -14,6 +16,27 @@ bool is_structured(const Mesh& m) {
 }
 bool is_cloud(const Mesh& m) {
   return m.kind() == MeshKind::point_cloud || m.kind() == MeshKind::cell_cloud;
+}
+
+// The same cloud: the same elements, at the same places, with the same volumes.
+bool same_cloud(const Mesh& a, const Mesh& b) {
+  if (a.kind() != b.kind()) return false;
+  if (const auto* p = std::get_if<PointCloud>(&a.geometry)) {
+    const auto& q = std::get<PointCloud>(b.geometry);
+    return p->dim == q.dim && p->positions == q.positions && p->volumes == q.volumes;
+  }
+  if (const auto* c = std::get_if<CellCloud>(&a.geometry)) {
+    const auto& d = std::get<CellCloud>(b.geometry);
+    return c->dim == d.dim && c->centres == d.centres && c->volumes == d.volumes;
+  }
+  return false;
+}
+
+Operator identity(const Mesh& from, const Mesh& to, Constraint constraint) {
+  const auto n = static_cast<Eigen::Index>(from.size());
+  Weights weights(n, n);
+  weights.setIdentity();
+  return Operator(constraint, std::move(weights), from.name, to.name);
 }
 
 std::string describe(const Mesh& m) {
@@ -38,6 +61,7 @@ Operator build_operator(const Mesh& from, const Mesh& to, Constraint constraint,
   const bool grid_cloud = from.kind() == MeshKind::uniform_grid && is_cloud(to);
   if (cloud_grid || grid_cloud)
     return detail::build_kernel_operator(from, to, constraint, options.kernel);
+  if (same_cloud(from, to)) return identity(from, to, constraint);
   reject(from, to, constraint,
          "supported pairs are grid/line <-> grid/line and point/cell cloud <-> uniform grid "
          "(map through a uniform grid)");

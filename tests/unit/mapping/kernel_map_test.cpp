@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <random>
 
+#include "cosim/error.hpp"
 #include "cosim/mapping/build_operator.hpp"
 #include "mapping_test_support.hpp"
 
@@ -200,6 +201,25 @@ TEST(KernelMap, CellCloudBehavesLikeParticles) {
   const Operator to_cells = build_operator(grid, cells, Constraint::consistent);
   const auto constant = to_cells.apply(std::vector<double>(grid.size(), 0.4));
   for (const double v : constant) EXPECT_NEAR(v, 0.4, 1e-15);
+}
+
+// A participant's cloud and the exchange on that same cloud (a user's
+// OpenFOAM mesh as the momentum exchange's mesh): values pass unchanged,
+// so amounts are kept exactly; a cloud that differs is still refused.
+TEST(KernelMap, ACloudMapsToItselfAsTheIdentity) {
+  std::mt19937_64 rng(5);
+  const PointCloud points = random_particles(2, 300, 0.0, 1.0, rng);
+  const Mesh cells{"openfoam_cells", CellCloud{2, points.positions, points.volumes}};
+  const Mesh same{"openfoam_cells", CellCloud{2, points.positions, points.volumes}};
+  for (const Constraint c : {Constraint::conservative, Constraint::consistent}) {
+    const Operator map = build_operator(cells, same, c);
+    const auto values = random_values(2 * cells.size(), rng);
+    EXPECT_EQ(map.apply(values, 2), values);
+  }
+  PointCloud moved = points;
+  moved.positions[0] += 1e-3;
+  const Mesh other{"other", CellCloud{2, moved.positions, moved.volumes}};
+  EXPECT_THROW(build_operator(cells, other, Constraint::consistent), cosim::InputError);
 }
 
 TEST(KernelMap, ConservativeParticleToGridIsTheTransposeOfGridToParticleInterpolation) {

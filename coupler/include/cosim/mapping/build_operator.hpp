@@ -20,6 +20,8 @@ namespace cosim::mapping {
 //     consistent is interpolation with these weights; cloud→grid consistent is
 //     the kernel- and volume-weighted average; the conservative maps are the
 //     transposes of the consistent maps of the reverse pair.
+//   a point cloud / cell cloud ↔ the same cloud (equal positions and volumes,
+//     e.g. a participant's mesh and the exchange on it): the identity.
 //
 // Elements with nothing to map:
 //   conservative: a source element that overlaps no target element (or lies

@@ -69,6 +69,10 @@ Installation find_installation(const std::vector<std::string>& names) {
         set && *set ? "as set" : "unset, the Debian location tried", installation_hint()));
   }
   ::setenv("WM_PROJECT_DIR", installation.project_dir.c_str(), 1);
+  // The applications warn in their logs when PWD is not the working directory.
+  std::error_code cwd_error;
+  const std::filesystem::path cwd = std::filesystem::current_path(cwd_error);
+  if (!cwd_error) ::setenv("PWD", cwd.c_str(), 1);
   return installation;
 }
 

@@ -65,7 +65,7 @@ void check_generated_grid(const GeneratedCase& g, const std::vector<double>& cen
 
 CaseMesh read_case_mesh(const Installation& installation, const fs::path& case_dir,
                         const fs::path& log_dir, const std::optional<GeneratedCase>& generated,
-                        const std::string& name) {
+                        const CaseProperties& properties, const std::string& name) {
   run_application(installation, "postProcess", {"-func", "writeCellCentres", "-time", "0"},
                   case_dir, log_dir / "postProcess.log");
   run_application(installation, "postProcess", {"-func", "writeCellVolumes", "-time", "0"},
@@ -95,10 +95,16 @@ CaseMesh read_case_mesh(const Installation& installation, const fs::path& case_d
     grid.location = cosim::GridLocation::cell;
     m.mesh = {name, grid};
   } else {
+    // A 2D case's cells in its x-y plane, per unit depth.
     cosim::CellCloud cloud;
-    cloud.dim = 3;
-    cloud.centres = m.centres;
-    cloud.volumes = m.volumes;
+    cloud.dim = properties.dimension;
+    const auto dim = static_cast<std::size_t>(cloud.dim);
+    cloud.centres.resize(cells * dim);
+    cloud.volumes.resize(cells);
+    for (std::size_t c = 0; c < cells; ++c) {
+      for (std::size_t d = 0; d < dim; ++d) cloud.centres[c * dim + d] = m.centres[3 * c + d];
+      cloud.volumes[c] = properties.declared_volume(m.volumes[c]);
+    }
     m.mesh = {name, cloud};
   }
   cosim::validate(m.mesh);

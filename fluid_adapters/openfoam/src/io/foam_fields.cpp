@@ -1,6 +1,7 @@
 #include "openfoam/io/foam_fields.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "openfoam/foam/field_file.hpp"
 
@@ -51,13 +52,17 @@ double mixture_viscosity(const FoamFields& f, std::size_t c, const FluidProperti
   return a * water.viscosity + (1.0 - a) * air.viscosity;
 }
 
-void complete_pressure(FoamFields& f, const std::vector<double>& centres, const Vector3& g,
-                       const FluidProperties& water, const FluidProperties& air) {
+void complete_pressure(FoamFields& f, const std::vector<double>& centres,
+                       const CaseProperties& properties) {
   if (!f.p.empty()) return;
+  const Vector3& g = properties.gravity;
+  const double gh_reference =
+      std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) * properties.reference_height;
   f.p.resize(f.p_rgh.size());
   for (std::size_t c = 0; c < f.p.size(); ++c) {
-    const double gh = g[0] * centres[3 * c] + g[1] * centres[3 * c + 1] + g[2] * centres[3 * c + 2];
-    f.p[c] = f.p_rgh[c] + mixture_density(f, c, water, air) * gh;
+    const double gh =
+        g[0] * centres[3 * c] + g[1] * centres[3 * c + 1] + g[2] * centres[3 * c + 2] + gh_reference;
+    f.p[c] = f.p_rgh[c] + mixture_density(f, c, properties.water, properties.air) * gh;
   }
 }
 

@@ -20,6 +20,7 @@
 #include "cosim/io/snapshot_writer.hpp"
 #include "cosim/io/time_series_writer.hpp"
 #include "cosim/participant.hpp"
+#include "openfoam/case/case_properties.hpp"
 #include "openfoam/case/decomposition.hpp"
 #include "openfoam/case/existing_case.hpp"
 #include "openfoam/case/generated_case.hpp"
@@ -27,10 +28,12 @@
 #include "openfoam/cloud/soil_cloud.hpp"
 #include "openfoam/foam/control_dict.hpp"
 #include "openfoam/foam/field_file.hpp"
+#include "openfoam/foam/foam_dictionary.hpp"
 #include "openfoam/foam/foam_application.hpp"
 #include "openfoam/foam/time_directories.hpp"
 #include "openfoam/io/case_layout.hpp"
 #include "openfoam/io/case_mesh.hpp"
+#include "openfoam/io/cell_neighbours.hpp"
 #include "openfoam/io/foam_fields.hpp"
 #include "openfoam/io/soil_coupling.hpp"
 #include "openfoam/porosity/porosity_zones.hpp"
@@ -101,7 +104,10 @@ class CaseRun {
       auto scope = summary_.phases().measure("setup");
       set_up_case();
     }
-    SoilCoupling coupling(c_, mesh_);
+    SoilCoupling coupling(c_, mesh_, properties_,
+                          c_.generate ? CellNeighbours::of_grid(c_.generate->cells)
+                                      : CellNeighbours::of_mesh(case_dir_ / "constant" / "polyMesh",
+                                                                mesh_.volumes.size()));
     cosim::Participant participant(options_.endpoint.name_or("openfoam"), options_.endpoint);
     // The coupler hears why this participant stopped before it stops the
     // others.
@@ -122,8 +128,15 @@ class CaseRun {
   void set_up_case() {
     std::vector<std::string> applications{c_.solver, "postProcess"};
     const bool make_mesh = c_.generate || !fs::is_directory(c_.directory / "constant" / "polyMesh");
+    // A user's case has its water set by its own setFieldsDict, if it has one.
+    const bool set_fields =
+        c_.generate || fs::is_regular_file(c_.directory / "system" / "setFieldsDict");
     if (make_mesh) applications.push_back("blockMesh");
-    if (c_.generate) applications.push_back("setFields");
+    if (set_fields) applications.push_back("setFields");
+    if (!c_.generate) {
+      for (const char* tool : {"foamDictionary", "checkMesh", "foamFormatConvert"})
+        applications.push_back(tool);
+    }
     if (c_.soil.model == SoilModel::porosity_zones) applications.push_back("topoSet");
     if (c_.processes > 1) {
       applications.push_back("decomposePar");
@@ -135,16 +148,25 @@ class CaseRun {
       fs::remove_all(case_dir_);
       write_generated_case(*c_.generate, case_dir_, c_.has_cloud() ? &c_.soil : nullptr);
     } else {
-      check_existing_case(c_.directory, c_.has_cloud());
+      check_existing_case(c_.directory);
       fs::remove_all(case_dir_);
       copy_existing_case(c_.directory, case_dir_);
     }
     fs::create_directories(log_dir_);
     write_controls(0.0, std::min(c_.window, c_.end_time));
     if (make_mesh) run_tool("blockMesh", {});
-    if (c_.generate) run_tool("setFields", {});
-    mesh_ =
-        read_case_mesh(installation_, case_dir_, log_dir_, c_.generate, SoilCoupling::mesh_name);
+    if (c_.generate) {
+      properties_ = properties_of(*c_.generate);
+    } else {
+      auto scope = summary_.phases().measure("preprocessing");
+      const DictionaryQuery query{installation_, case_dir_, log_dir_ / "foamDictionary.log"};
+      convert_copy_to_ascii(query);
+      if (c_.has_cloud()) prepare_cloud_in_copy(query, c_.soil);
+      properties_ = read_case_properties(installation_, case_dir_, log_dir_);
+    }
+    if (set_fields) run_tool("setFields", {});
+    mesh_ = read_case_mesh(installation_, case_dir_, log_dir_, c_.generate, properties_,
+                           SoilCoupling::mesh_name);
     if (c_.processes > 1) {
       // Decomposed once; the windows then run on the processors' directories.
       write_decompose_par_dict(case_dir_, c_.processes, c_.split);
@@ -159,6 +181,11 @@ class CaseRun {
                                   {"case_directory", case_dir_.string()},
                                   {"processes", c_.processes},
                                   {"generated", c_.generate.has_value()},
+                                  {"dimension", properties_.dimension},
+                                  {"water_density_kg/m^3", properties_.water.density},
+                                  {"water_viscosity_Pa_s", properties_.water.viscosity},
+                                  {"air_density_kg/m^3", properties_.air.density},
+                                  {"air_viscosity_Pa_s", properties_.air.viscosity},
                                   {"time_step_s", c_.time_step},
                                   {"window_s", c_.window},
                                   {"end_time_s", c_.end_time}});
@@ -395,10 +422,7 @@ class CaseRun {
 
   FoamFields read_fields(const std::string& time) const {
     FoamFields f = layout_->read(time, mesh_.mesh.dimension());
-    if (c_.generate) {
-      complete_pressure(f, mesh_.centres, c_.generate->gravity, c_.generate->water,
-                        c_.generate->air);
-    }
+    complete_pressure(f, mesh_.centres, properties_);
     return f;
   }
 
@@ -411,17 +435,15 @@ class CaseRun {
     snapshot_writer_->write(t, fields);
   }
 
-  // The water's volume sum alpha V (and mass with a generated case's
-  // density); per unit depth in 2D.
+  // The water's volume sum alpha V and mass; per unit depth in 2D.
   void record_water(const FoamFields& f, bool start) {
     double volume = 0.0;
     for (std::size_t c = 0; c < f.alpha_water.size(); ++c) {
       // MPPICInterFoam's alpha.water is per pore volume.
       const double pores = f.alphac.empty() ? 1.0 : f.alphac[c];
-      volume += pores * f.alpha_water[c] * mesh_.volumes[c];
+      volume += pores * f.alpha_water[c] * properties_.declared_volume(mesh_.volumes[c]);
     }
-    const bool plane = c_.generate && c_.generate->dimension == 2;
-    if (plane) volume /= c_.generate->upper[2] - c_.generate->origin[2];
+    const bool plane = properties_.dimension == 2;
     const auto set = [&](const std::string& name, double value, const std::string& unit) {
       if (start)
         summary_.set_conserved_start(name, value, unit);
@@ -429,7 +451,7 @@ class CaseRun {
         summary_.set_conserved_end(name, value, unit);
     };
     set("volume_water", volume, plane ? "m^2" : "m^3");
-    if (c_.generate) set("mass_water", volume * c_.generate->water.density, plane ? "kg/m" : "kg");
+    set("mass_water", volume * properties_.water.density, plane ? "kg/m" : "kg");
   }
 
   nlohmann::json windows_json() const {
@@ -457,6 +479,7 @@ class CaseRun {
   cosim::OutputSchedule snapshots_;
   double tolerance_;
   Installation installation_;
+  CaseProperties properties_;
   CaseMesh mesh_;
   std::optional<CaseLayout> layout_;
   std::optional<cosim::SnapshotWriter> snapshot_writer_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "cosim/error.hpp"
 #include "cosim/job/job.hpp"
@@ -32,21 +33,18 @@ cosim::FieldSpec field(const char* name, int components, const char* unit, doubl
 
 }  // namespace
 
-SoilCoupling::SoilCoupling(const CaseDescription& description, const CaseMesh& mesh)
-    : c_(description), mesh_(mesh), dim_(mesh.mesh.dimension()) {
-  if (!c_.generate) {
-    throw cosim::InputError(
-        cosim::SourceLocation{c_.file.string(), 0, 0}, "directory",
-        "coupling with a soil needs a generated case so far (`generate`: the fluids' density "
-        "and viscosity enter the parcels' drag)");
-  }
-  water_ = c_.generate->water;
-  air_ = c_.generate->air;
-}
+SoilCoupling::SoilCoupling(const CaseDescription& description, const CaseMesh& mesh,
+                           const CaseProperties& properties, CellNeighbours neighbours)
+    : c_(description),
+      mesh_(mesh),
+      properties_(properties),
+      neighbours_(std::move(neighbours)),
+      water_(properties.water),
+      air_(properties.air),
+      dim_(mesh.mesh.dimension()) {}
 
 double SoilCoupling::plane_volume(std::size_t c) const {
-  const double v = mesh_.volumes[c];
-  return dim_ == 2 ? v / (c_.generate->upper[2] - c_.generate->origin[2]) : v;
+  return properties_.declared_volume(mesh_.volumes[c]);
 }
 
 void SoilCoupling::declare(cosim::Participant& participant) const {
@@ -265,35 +263,23 @@ void SoilCoupling::extend_pressure_into_impermeable_cells(std::vector<double>& p
   // nothing (its water is locked by a drag of ~1e17), yet it reaches the
   // soil's points beside the solid through the pressure gradient: it is
   // replaced, front by front, by the mean of its cells' permeable (or
-  // already replaced) neighbours on the generated grid.
+  // already replaced) face neighbours.
   if (solid_fraction_.empty()) return;
-  const auto& n = c_.generate->cells;
   const std::size_t cells = p.size();
   std::vector<char> known(cells);
   for (std::size_t c = 0; c < cells; ++c)
     known[c] = solid_fraction_[c] < c_.soil.max_solid_fraction ? 1 : 0;
   std::vector<std::size_t> front;
   for (bool changed = true; changed;) {
-    changed = false;
     front.clear();
     for (std::size_t c = 0; c < cells; ++c) {
       if (known[c]) continue;
-      const long i = static_cast<long>(c) % n[0];
-      const long j = (static_cast<long>(c) / n[0]) % n[1];
-      const long k = static_cast<long>(c) / (static_cast<long>(n[0]) * n[1]);
       double sum = 0.0;
       int count = 0;
-      const long step[3] = {1, n[0], static_cast<long>(n[0]) * n[1]};
-      const long at[3] = {i, j, k};
-      for (int d = 0; d < 3; ++d) {
-        for (int side : {-1, 1}) {
-          const long next = at[d] + side;
-          if (next < 0 || next >= n[d]) continue;
-          const auto neighbour = static_cast<std::size_t>(static_cast<long>(c) + side * step[d]);
-          if (known[neighbour] == 1) {
-            sum += p[neighbour];
-            ++count;
-          }
+      for (std::size_t neighbour : neighbours_.of(c)) {
+        if (known[neighbour] == 1) {
+          sum += p[neighbour];
+          ++count;
         }
       }
       if (count > 0) {

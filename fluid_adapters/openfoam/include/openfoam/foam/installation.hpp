@@ -18,11 +18,11 @@ struct Installation {
   const std::filesystem::path& application(const std::string& name) const;
 };
 
-// Finds the applications `names` on PATH and the project
-// directory (WM_PROJECT_DIR when set, else /usr/share/openfoam, holding
+// Finds the applications `names` on PATH and the project directory
+// (WM_PROJECT_DIR when set, else /usr/share/openfoam, holding
 // etc/controlDict), and sets WM_PROJECT_DIR for the applications started
-// later. OpenFOAM missing throws cosim::InputError (exit 2) saying how to
-// install it.
+// later (and PWD, which they expect to be the working directory). OpenFOAM
+// missing throws cosim::InputError (exit 2) saying how to install it.
 Installation find_installation(const std::vector<std::string>& names);
 
 // The message the adapter prints when OpenFOAM is missing (also used by the

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "openfoam/case/case_description.hpp"
+#include "openfoam/case/case_properties.hpp"
 
 namespace openfoam {
 
@@ -31,9 +32,9 @@ double mixture_density(const FoamFields& f, std::size_t c, const FluidProperties
 double mixture_viscosity(const FoamFields& f, std::size_t c, const FluidProperties& water,
                          const FluidProperties& air);
 
-// p where it was not written yet (time 0): p_rgh + rho g.x, OpenFOAM's
-// relation with its reference height 0.
-void complete_pressure(FoamFields& f, const std::vector<double>& centres, const Vector3& gravity,
-                       const FluidProperties& water, const FluidProperties& air);
+// p where it was not written yet (time 0): interFoam's
+// p = p_rgh + rho (g . x + |g| hRef).
+void complete_pressure(FoamFields& f, const std::vector<double>& centres,
+                       const CaseProperties& properties);
 
 }  // namespace openfoam

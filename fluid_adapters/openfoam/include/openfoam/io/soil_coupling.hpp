@@ -8,6 +8,7 @@
 #include "openfoam/case/case_description.hpp"
 #include "openfoam/cloud/soil_cloud.hpp"
 #include "openfoam/io/case_mesh.hpp"
+#include "openfoam/io/cell_neighbours.hpp"
 #include "openfoam/io/foam_fields.hpp"
 
 namespace openfoam {
@@ -40,7 +41,8 @@ namespace openfoam {
 // pressure of a compacting skeleton (Terzaghi) through stock MPPICInterFoam.
 class SoilCoupling {
  public:
-  SoilCoupling(const CaseDescription& description, const CaseMesh& mesh);
+  SoilCoupling(const CaseDescription& description, const CaseMesh& mesh,
+               const CaseProperties& properties, CellNeighbours neighbours);
 
   void declare(cosim::Participant& participant) const;
 
@@ -91,6 +93,8 @@ class SoilCoupling {
 
   const CaseDescription& c_;
   const CaseMesh& mesh_;
+  CaseProperties properties_;
+  CellNeighbours neighbours_;
   FluidProperties water_;
   FluidProperties air_;
   int dim_;
