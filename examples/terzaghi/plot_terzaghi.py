@@ -33,10 +33,11 @@ def oedometric_modulus(e, nu):
 
 
 SETTINGS = {
-    # c_v [m^2/s], load ramp [s] (as in the job's soil.yaml)
+    # c_v [m^2/s], load ramp [s] and its shape (as in the job's soil.yaml)
     "pan2021": (0.527e-3 ** 2 * 0.3 ** 3 / (150 * 0.7 ** 2) * oedometric_modulus(1e7, 0.3) / 1e-3,
-                2.27e-3),
-    "tran": (oedometric_modulus(1e7, 0.3) * 0.3 ** 3 * 1e-6 / (180 * 0.7 ** 2 * 1e-3), 4.54e-3),
+                2.27e-3, "linear"),
+    "tran": (oedometric_modulus(1e7, 0.3) * 0.3 ** 3 * 1e-6 / (180 * 0.7 ** 2 * 1e-3), 6.81e-3,
+             "cycloidal"),
 }
 
 
@@ -55,11 +56,14 @@ def step_solution(z, t, cv):
     return 4 * LOAD / math.pi * total
 
 
-def ramp_solution(z, t, cv, ramp):
+def ramp_solution(z, t, cv, ramp, shape):
+    """The step solution convolved with the load's rate: linear, or cycloidal
+    (s/T - sin(2 pi s/T) / (2 pi), its rate (1 - cos(2 pi s/T)) / T)."""
     if ramp <= 0:
         return step_solution(z, t, cv)
     s = np.linspace(0.0, min(t, ramp), 201)
-    return np.trapz([step_solution(z, t - si, cv) for si in s], s) / ramp
+    rate = (1 - np.cos(2 * np.pi * s / ramp)) / ramp if shape == "cycloidal" else np.full_like(s, 1 / ramp)
+    return np.trapz([step_solution(z, t - si, cv) * ri for si, ri in zip(s, rate)], s)
 
 
 def main():
@@ -69,7 +73,7 @@ def main():
     parser.add_argument("--tv", type=float, nargs="+", default=[0.01, 0.1, 0.5, 1.0])
     parser.add_argument("--output")
     args = parser.parse_args()
-    cv, ramp = SETTINGS[args.setting]
+    cv, ramp, shape = SETTINGS[args.setting]
     with open(os.path.join(args.run, "water", "gauges.csv")) as f:
         rows = list(csv.reader(f))
     header, data = rows[0], np.array([[float(x) for x in r] for r in rows[1:]])
@@ -86,8 +90,8 @@ def main():
             continue
         p = data[row, columns] - ATMOSPHERE
         z = np.linspace(0.0, HEIGHT, 101)
-        exact = [ramp_solution(zi, data[row, 0], cv, ramp) for zi in z]
-        at_gauges = np.array([ramp_solution(zi, data[row, 0], cv, ramp) for zi in heights])
+        exact = [ramp_solution(zi, data[row, 0], cv, ramp, shape) for zi in z]
+        at_gauges = np.array([ramp_solution(zi, data[row, 0], cv, ramp, shape) for zi in heights])
         error = np.max(abs(p - at_gauges)) / LOAD
         print(f"T_v = {tv}: largest error {100 * error:.2f} % of p0")
         ax.plot(np.array(exact) / LOAD, HEIGHT - z, color=colour, label=f"Terzaghi, T_v = {tv}")

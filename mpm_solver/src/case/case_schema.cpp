@@ -200,7 +200,10 @@ Schema load_schema() {
       .optional("pressure", Schema::number().unit("Pa"),
                 "Pressure against the face's outward normal; give `traction` or `pressure`.")
       .optional("ramp_time", Schema::number().non_negative().unit("s").default_value("0"),
-                "Linear ramp from zero.");
+                "Ramp from zero over this time.")
+      .optional("ramp_shape", Schema::one_of({"linear", "cycloidal"}).default_value("linear"),
+                "linear: a constant rate; cycloidal: t/T - sin(2 pi t/T) / (2 pi), its rate zero "
+                "at both ends (rings no elastic wave whose period divides the ramp time).");
   return load;
 }
 

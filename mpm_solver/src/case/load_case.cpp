@@ -386,6 +386,7 @@ class CaseReader {
     if (traction) load.traction = read_vector(*traction, dim_);
     if (pressure) load.pressure = pressure->as<double>();
     load.ramp_time = node.get<double>("ramp_time", 0.0);
+    if (node.get("ramp_shape", "linear") == "cycloidal") load.ramp_shape = LoadSpec::RampShape::cycloidal;
     c_.loads.push_back(std::move(load));
   }
 

@@ -282,7 +282,7 @@ template <int Dim>
 void Solver<Dim>::Impl::apply_surface_loads(double dt) {
   std::fill(particles.external_force.begin(), particles.external_force.end(), Vec<Dim>::Zero());
   for (const LoadSpec& load : description.loads) {
-    const double ramp = load.ramp_time > 0.0 ? std::min(1.0, time / load.ramp_time) : 1.0;
+    const double ramp = load.ramp_factor(time);
     const int axis = load.face / 2;
     const double outward = load.face % 2 == 0 ? -1.0 : 1.0;
     for (const std::size_t p : load.particles) {

@@ -130,6 +130,33 @@ TEST(MpmCaseLoad, ReadsEveryPartOfAValidCase) {
   EXPECT_DOUBLE_EQ(c.output.probe_every, 0.001);
 }
 
+// A load's ramp: linear by default, or cycloidal (s - sin(2 pi s) / (2 pi)
+// of s = t / T: half the load at half the ramp, its rate zero at both ends).
+TEST(MpmCaseLoad, ALoadRampsLinearlyOrCycloidally) {
+  const std::string ramped =
+      replaced(valid_case, "pressure: 1000}", "pressure: 1000, ramp_time: 0.2}");
+  const LoadSpec linear = load_case_text(ramped, "case.yaml").loads.at(0);
+  EXPECT_EQ(linear.ramp_shape, LoadSpec::RampShape::linear);
+  EXPECT_DOUBLE_EQ(linear.ramp_factor(0.05), 0.25);
+  EXPECT_DOUBLE_EQ(linear.ramp_factor(0.3), 1.0);
+  const LoadSpec cycloidal =
+      load_case_text(replaced(ramped, "ramp_time: 0.2}", "ramp_time: 0.2, ramp_shape: cycloidal}"),
+                     "case.yaml")
+          .loads.at(0);
+  EXPECT_EQ(cycloidal.ramp_shape, LoadSpec::RampShape::cycloidal);
+  EXPECT_DOUBLE_EQ(cycloidal.ramp_factor(0.0), 0.0);
+  EXPECT_NEAR(cycloidal.ramp_factor(0.1), 0.5, 1e-15);
+  EXPECT_DOUBLE_EQ(cycloidal.ramp_factor(0.2), 1.0);
+  EXPECT_DOUBLE_EQ(cycloidal.ramp_factor(0.5), 1.0);
+  // Its rate at the ends: a small step changes it by O(step^3), not O(step).
+  const double h = 1e-4;
+  EXPECT_LT(cycloidal.ramp_factor(h), 1e-8);  // a linear ramp: 5e-4
+  EXPECT_GT(1.0 - cycloidal.ramp_factor(0.2 - h), 0.0);
+  EXPECT_LT(1.0 - cycloidal.ramp_factor(0.2 - h), 1e-8);
+  EXPECT_THAT(error_of(replaced(ramped, "ramp_time: 0.2}", "ramp_time: 0.2, ramp_shape: cubic}")),
+              HasSubstr("ramp_shape"));
+}
+
 TEST(MpmCaseLoad, ReadsTheGimpDomainUpdate) {
   std::string text = valid_case;
   text.replace(text.find("shape: gimp\n"), 12, "shape: gimp\ngimp_domain: deformed\n");

@@ -11,12 +11,14 @@
 // applied at once rings the column's undrained P-wave (period
 // 4 h / c_u = 2.27 ms, c_u^2 = (E_oed + K_f / n) / rho_mix), which
 // Terzaghi's quasi-static theory does not have and which the drag damps only
-// slowly. The jobs therefore raise the load linearly over whole periods of
-// that wave (one for Pan's column, two for Tran's), after which no wave is
+// slowly. The jobs therefore raise the load over whole periods of that wave
+// (linearly over one for Pan's column; over three for Tran's, along a
+// cycloidal ramp whose zero rate at both ends leaves ~2 % of the wave during
+// the rise, where a linear ramp over two left 8 %), after which no wave is
 // left, and the reference is Terzaghi's solution convolved with the same
 // ramp (exact by superposition). In Tran's setting T_v = 0.01 falls at
-// 2.4 ms, within the first period of the wave: no dynamic model with this
-// water is quasi-static there, so that error is printed, not asserted.
+// 2.4 ms, about one period of the wave: no load history can be applied by
+// then without ringing it, so that error is printed, not asserted.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -39,6 +41,7 @@ struct Setting {
   const char* job;
   double consolidation;  // c_v [m^2/s]
   double ramp_time;      // [s], as in the job's soil.yaml
+  bool cycloidal_ramp;   // the ramp's shape, as in the job's soil.yaml
   double first_gauge;    // height of gauge 0 [m]; gauges every `spacing`
   double spacing;
   std::vector<double> asserted_time_factors;
@@ -57,6 +60,7 @@ void check(const Setting& setting) {
   TerzaghiColumn column;
   column.consolidation = setting.consolidation;
   column.ramp_time = setting.ramp_time;
+  column.cycloidal_ramp = setting.cycloidal_ramp;
   const PressureGauges pressures{gauges, setting.first_gauge, setting.spacing, 4, atmosphere};
   const auto compare = [&](double time_factor, bool asserted) {
     const ProfileError e = largest_profile_error(column, pressures, time_factor);
@@ -65,7 +69,7 @@ void check(const Setting& setting) {
         "{}: T_v = {:.2f} (t = {:.5f} s): largest error {:.2f} % of p0 at z = {:.3f} m ({:.0f} vs "
         "{:.0f} Pa){}\n",
         setting.name, time_factor, e.time, 100.0 * error, e.at, e.measured, e.exact,
-        asserted ? " (tolerance 3 %)" : " (printed only: within the first acoustic period)");
+        asserted ? " (tolerance 3 %)" : " (printed only: within the load's rise)");
     if (asserted) {
       EXPECT_LE(error, 0.03) << setting.name << " at T_v = " << time_factor;
     }
@@ -82,6 +86,7 @@ TEST(TerzaghiPairing, PanEtAlColumnFollowsTerzaghisSolution) {
          "configs/ice_coupled/terzaghi/job.yaml",
          k * oedometric_modulus(1e7, 0.3) / mu,
          2.27e-3,
+         false,
          0.01,
          0.02,
          {0.01, 0.1, 0.5, 1.0},
@@ -96,7 +101,8 @@ TEST(TerzaghiPairing, TranEtAlColumnFollowsTerzaghisSolution) {
   check({"tran",
          "configs/ice_coupled/terzaghi_tran/job.yaml",
          cv,
-         4.54e-3,
+         6.81e-3,
+         true,
          0.005,
          0.01,
          {0.1, 0.5, 1.0},

@@ -126,7 +126,13 @@ struct LoadSpec {
   int face = 3;                        // y+ by default
   std::optional<Vec3d> traction;       // [Pa]
   std::optional<double> pressure;      // [Pa]
-  double ramp_time = 0.0;              // linear ramp from 0 [s]
+  double ramp_time = 0.0;              // ramp from 0 [s]
+  // How the load rises over ramp_time: linear (at a constant rate), or
+  // cycloidal, t/T - sin(2 pi t/T) / (2 pi), whose rate starts and ends at 0.
+  enum class RampShape { linear, cycloidal } ramp_shape = RampShape::linear;
+
+  // The share of the load applied at `time`.
+  double ramp_factor(double time) const;
 };
 
 // A probe writes one CSV row per output of a quantity of one particle
