@@ -35,7 +35,7 @@ def oedometric_modulus(e, nu):
 SETTINGS = {
     # c_v [m^2/s], load ramp [s] and its shape (as in the job's soil.yaml)
     "pan2021": (0.527e-3 ** 2 * 0.3 ** 3 / (150 * 0.7 ** 2) * oedometric_modulus(1e7, 0.3) / 1e-3,
-                2.27e-3, "linear"),
+                4.54e-3, "cycloidal"),
     "tran": (oedometric_modulus(1e7, 0.3) * 0.3 ** 3 * 1e-6 / (180 * 0.7 ** 2 * 1e-3), 6.81e-3,
              "cycloidal"),
 }
