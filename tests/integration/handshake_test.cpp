@@ -138,5 +138,37 @@ TEST_F(Handshake, RefusesDeclarationsThatContradictTheJob) {
   EXPECT_EQ(result_.get(), "ok");
 }
 
+// A read declared optional that the job does not send is admitted: the
+// participant keeps its default and learns from is_sent() that it comes not;
+// the same read, not optional, is refused, naming what to add to the job.
+TEST_F(Handshake, AdmitsAnOptionalReadTheJobDoesNotSend) {
+  CouplingEndpoint endpoint{hub_.endpoint(), "solo", "the-job", job_.config_hash, 20.0};
+  FieldSpec flux{.name = "solid_volume_flux", .mesh = "grid", .unit = "m/s"};
+  {
+    Participant p("solo", endpoint);
+    p.declare_mesh(Mesh{"grid", UniformGrid{1, {0, 0, 0}, {0.1, 1, 1}, {10, 1, 1}}});
+    p.declare_read(flux, 0.0);
+    try {
+      p.initialize(0.0, 0.01);
+      FAIL() << "admitted";
+    } catch (const Error& e) {
+      EXPECT_THAT(e.what(), HasSubstr("reads 'solid_volume_flux', which the job does not send"));
+    }
+  }
+  Participant p("solo", endpoint);
+  p.declare_mesh(Mesh{"grid", UniformGrid{1, {0, 0, 0}, {0.1, 1, 1}, {10, 1, 1}}});
+  flux.optional = true;
+  p.declare_read(flux, 0.25);
+  EXPECT_FALSE(p.is_sent("solid_volume_flux"));
+  p.initialize(0.0, 0.01);
+  EXPECT_FALSE(p.is_sent("solid_volume_flux"));
+  while (p.is_coupling_ongoing()) {
+    EXPECT_EQ(p.read("solid_volume_flux"), std::vector<double>(10, 0.25));
+    p.advance(std::min(0.002, p.max_time_step()));
+  }
+  p.finalize();
+  EXPECT_EQ(result_.get(), "ok");
+}
+
 }  // namespace
 }  // namespace cosim

@@ -28,6 +28,9 @@ struct FieldSpec {
   bool allow_nonfinite = false;
   double lower_bound = -std::numeric_limits<double>::infinity();
   double upper_bound = std::numeric_limits<double>::infinity();
+  // A read the job may leave out: the participant then keeps the default and
+  // learns it from Participant::is_sent() (a field only some jobs provide).
+  bool optional = false;
 };
 
 const char* to_string(Quantity quantity);

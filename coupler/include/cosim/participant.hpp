@@ -116,6 +116,10 @@ class Participant {
   // over a window the shares add up exactly to the integral received.
   void read_increment(std::string_view field, double dt, std::span<double> values);
 
+  // Whether the job sends this read (known from initialize() on; false
+  // standalone). An optional read the job leaves out keeps its default.
+  bool is_sent(std::string_view field) const;
+
   // Size of a field's value array (mesh elements x components).
   std::size_t field_size(std::string_view field) const;
   const CouplingTimings& timings() const;

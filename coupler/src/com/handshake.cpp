@@ -23,6 +23,7 @@ json field_to_json(const FieldSpec& f) {
          {"allow_nonfinite", f.allow_nonfinite}};
   if (std::isfinite(f.lower_bound)) j["lower_bound"] = f.lower_bound;
   if (std::isfinite(f.upper_bound)) j["upper_bound"] = f.upper_bound;
+  if (f.optional) j["optional"] = true;
   return j;
 }
 
@@ -41,6 +42,7 @@ FieldSpec field_from_json(const json& j) {
   f.allow_nonfinite = j.at("allow_nonfinite").get<bool>();
   if (j.contains("lower_bound")) f.lower_bound = j["lower_bound"].get<double>();
   if (j.contains("upper_bound")) f.upper_bound = j["upper_bound"].get<double>();
+  if (j.contains("optional")) f.optional = j["optional"].get<bool>();
   if (f.components < 1 || f.components > 9)
     throw std::invalid_argument(fmt::format("field '{}' has {} components", f.name, f.components));
   return f;
@@ -79,7 +81,8 @@ std::string to_json(const Welcome& w) {
               {"end_time", w.end_time},
               {"window", w.window},
               {"extrapolation", w.extrapolation == Extrapolation::linear ? "linear" : "constant"},
-              {"timeout_s", w.timeout_s}}
+              {"timeout_s", w.timeout_s},
+              {"sends", w.sends}}
       .dump();
 }
 
@@ -114,6 +117,7 @@ Welcome parse_welcome(const std::string& text, const std::string& peer) {
     w.extrapolation = j.at("extrapolation").get<std::string>() == "linear" ? Extrapolation::linear
                                                                            : Extrapolation::constant;
     w.timeout_s = j.at("timeout_s").get<double>();
+    w.sends = j.at("sends").get<std::vector<std::string>>();
     if (!(w.window > 0.0) || !(w.end_time >= w.start_time) || !(w.timeout_s > 0.0))
       throw std::invalid_argument("impossible schedule");
     return w;

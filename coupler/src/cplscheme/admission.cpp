@@ -58,7 +58,7 @@ std::optional<std::string> admission_refusal(const job::Job& job, const std::str
   if (auto r = check_fields(spec->writes, hello.writes, "writes", spec->name)) return r;
   if (auto r = check_fields(spec->reads, hello.reads, "reads", spec->name)) return r;
   for (const FieldSpec& f : hello.reads)
-    if (!spec->reads.count(f.name))
+    if (!f.optional && !spec->reads.count(f.name))
       return fmt::format(
           "participant '{}' reads '{}', which the job does not send it (add it to "
           "its `reads` and to `exchange`)",

@@ -210,9 +210,12 @@ struct Coupler::Impl {
     // The coupler judges which participant hangs; the others wait longer
     // than it does so that they do not time out first and take the blame.
     welcome.timeout_s = 2.0 * job.window_timeout_s + 10.0;
-    for (const auto& [name, peer] : peers)
+    for (const auto& [name, peer] : peers) {
+      welcome.sends.clear();
+      for (const auto& [field, mesh] : job.participant(name)->reads) welcome.sends.push_back(field);
       send(name, com::make_text_message(MessageType::welcome, options.job_id, com::coupler_peer, 0,
                                         job.start_time, com::to_json(welcome)));
+    }
   }
 
   static const FieldSpec& declared(const std::vector<FieldSpec>& fields, const std::string& name) {

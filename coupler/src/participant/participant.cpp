@@ -459,6 +459,12 @@ void Participant::read_increment(std::string_view field, double dt, std::span<do
   }
 }
 
+bool Participant::is_sent(std::string_view field) const {
+  (void)impl_->read_buffer(field);  // a field it does not read is a usage error
+  const auto& sends = impl_->schedule.sends;
+  return impl_->admitted && std::find(sends.begin(), sends.end(), field) != sends.end();
+}
+
 std::size_t Participant::field_size(std::string_view field) const {
   if (auto w = impl_->writes.find(field); w != impl_->writes.end()) return w->second.values.size();
   return impl_->read_buffer(field).current.size();

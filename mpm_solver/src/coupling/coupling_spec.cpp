@@ -29,13 +29,14 @@ Schema exchange_grid_schema() {
              "MPM cells per exchange cell in each direction.")
       .optional("writes",
                 field_list({names::solid_fraction, names::solid_velocity, names::solid_bulk_density,
-                            names::permeability, names::grain_size, names::solid_temperature,
-                            names::solid_heat_capacity})
+                            names::permeability, names::grain_size, names::solid_volume_flux,
+                            names::solid_temperature, names::solid_heat_capacity})
                     .default_value("[solid_fraction, solid_velocity, solid_bulk_density, "
                                    "permeability, grain_size], and solid_temperature, "
                                    "solid_heat_capacity when the case conducts heat"),
                 "Fields written per cell at every window end; the thermal ones need heat "
-                "conduction.")
+                "conduction. solid_volume_flux (sum of phi_i U_i) is for fluids that take the "
+                "solids' displaced volume from it.")
       .optional("reads",
                 field_list({names::pore_pressure, names::pore_pressure_force, names::impulse,
                             names::heat})

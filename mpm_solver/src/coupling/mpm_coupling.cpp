@@ -186,6 +186,7 @@ void MpmCoupling<Dim>::declare() {
     write(n::solid_bulk_density, 1, "kg/m^3", 0.0);
     write(n::permeability, 1, "m^2", 0.0);
     write(n::grain_size, 1, "m", 0.0);
+    write(n::solid_volume_flux, Dim, "m/s", none);
     write(n::solid_temperature, 1, "K", 0.0);
     write(n::solid_heat_capacity, 1, "J/(m^3 K)", 0.0);
     if (s.exchange_reads(n::pore_pressure))
@@ -230,7 +231,8 @@ void MpmCoupling<Dim>::write_fields() {
   const bool porous = s.exchange_writes(n::solid_fraction) ||
                       s.exchange_writes(n::solid_velocity) ||
                       s.exchange_writes(n::solid_bulk_density) ||
-                      s.exchange_writes(n::permeability) || s.exchange_writes(n::grain_size);
+                      s.exchange_writes(n::permeability) || s.exchange_writes(n::grain_size) ||
+                      s.exchange_writes(n::solid_volume_flux);
   if (porous) {
     const auto& g = *s.spec.exchange_grid;
     const auto held = held_particles(particles, s.solver.grid(), s.roles, s.solver.description().boundaries,
@@ -247,6 +249,7 @@ void MpmCoupling<Dim>::write_fields() {
     if (s.exchange_writes(n::solid_bulk_density)) s.channel->write(n::solid_bulk_density, f.solid_bulk_density);
     if (s.exchange_writes(n::permeability)) s.channel->write(n::permeability, f.permeability);
     if (s.exchange_writes(n::grain_size)) s.channel->write(n::grain_size, f.grain_size);
+    if (s.exchange_writes(n::solid_volume_flux)) s.channel->write(n::solid_volume_flux, f.solid_volume_flux);
   }
   if (s.exchange_writes(n::solid_temperature) || s.exchange_writes(n::solid_heat_capacity)) {
     const ThermalFields f = thermal_fields(*s.exchange, particles);

@@ -47,6 +47,7 @@ PorousFields porous_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& 
 
   out.solid_fraction.assign(n, 0.0);
   out.solid_velocity.assign(n * dim, 0.0);
+  out.solid_volume_flux.assign(n * dim, 0.0);
   out.solid_bulk_density.assign(n, 0.0);
   out.permeability.assign(n, 0.0);
   out.grain_size.assign(n, 0.0);
@@ -72,6 +73,13 @@ PorousFields porous_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& 
     }
     double& phi = out.solid_fraction[c];
     phi = volume / cell_volume;
+    // Capped with phi below: the flux of the solid the cell holds.
+    const double held_share = phi > 1.0 ? 1.0 / phi : 1.0;
+    for (std::size_t k = 0; k < dim; ++k) {
+      const std::size_t i = c * dim + k;
+      out.solid_volume_flux[i] =
+          held_share * (free.volume_momentum[i] + held_sums.volume_momentum[i]) / cell_volume;
+    }
     if (phi > 1.0) {
       // Not counted: the overfill the spreading leaves (0.1 % of the cell at most, and round-off).
       if (phi > 1.0 + 1e-3) ++out.capped_cells;

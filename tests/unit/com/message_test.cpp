@@ -159,20 +159,28 @@ TEST(Handshake, HelloAndWelcomeRoundTrip) {
   f.lower_bound = 0.0;
   f.upper_bound = 0.64;
   h.writes = {f};
+  FieldSpec optional_read = f;
+  optional_read.name = "pore_pressure";
+  optional_read.optional = true;
+  h.reads = {optional_read};
   const Hello back = parse_hello(to_json(h), "soil");
   EXPECT_EQ(back.participant, "soil");
   ASSERT_EQ(back.writes.size(), 1u);
   EXPECT_EQ(back.writes[0].upper_bound, 0.64);
   EXPECT_EQ(back.writes[0].quantity, Quantity::extensive);
+  EXPECT_FALSE(back.writes[0].optional);
+  ASSERT_EQ(back.reads.size(), 1u);
+  EXPECT_TRUE(back.reads[0].optional);
   EXPECT_THROW(parse_hello("{\"participant\": 3}", "soil"), ProtocolError);
-  Welcome w{"00ff", 0.0, 1.0, 0.01, Extrapolation::linear, 30.0};
+  Welcome w{"00ff", 0.0, 1.0, 0.01, Extrapolation::linear, 30.0, {"pore_pressure"}};
   const Welcome wb = parse_welcome(to_json(w), "coupler");
+  EXPECT_EQ(wb.sends, std::vector<std::string>{"pore_pressure"});
   EXPECT_EQ(wb.window, 0.01);
   EXPECT_EQ(wb.config_hash, "00ff");
   EXPECT_EQ(wb.extrapolation, Extrapolation::linear);
   EXPECT_THROW(
       parse_welcome(
-          R"({"config_hash":"0","start_time":0,"end_time":1,"window":-1,"extrapolation":"constant","timeout_s":1})",
+          R"({"config_hash":"0","start_time":0,"end_time":1,"window":-1,"extrapolation":"constant","timeout_s":1,"sends":[]})",
           "c"),
       ProtocolError);
 }

@@ -285,7 +285,8 @@ TEST(MpmCouplingExchangeGrid, ClusteredPointsHandTheirExcessToTheCellTheyLeftSho
 TEST(MpmCouplingExchangeGrid, ACellSharedByABedAndSlidingSandMovesWithTheSand) {
   // Each cell of the row: its lower half a rigid bed at rest, its upper half sand sliding at 2 m/s.
   // The bed's mass is the larger, but the sand fills 30 % of the cell: not held, and the cell takes
-  // the sand's velocity (mass-weighted over both it would be 0.30 m/s); phi_s counts both.
+  // the sand's velocity (mass-weighted over both it would be 0.30 m/s); phi_s counts both. The
+  // solids' volume flux is the sand's alone, 0.3 x 2 m/s (phi_s U_s would say 1.6).
   const auto grid = unit_square_grid<2>(4, 1);
   Particles<2> particles;
   testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.125), 0.125, 0.0, 8900.0, 0);
@@ -304,6 +305,8 @@ TEST(MpmCouplingExchangeGrid, ACellSharedByABedAndSlidingSandMovesWithTheSand) {
     EXPECT_EQ(f.held[c], 0);
     EXPECT_NEAR(f.solid_velocity[c * 2], 2.0, 1e-12);
     EXPECT_NEAR(f.solid_fraction[c], 0.8, 1e-12);
+    EXPECT_NEAR(f.solid_volume_flux[c * 2], 0.6, 1e-12);
+    EXPECT_NEAR(f.solid_volume_flux[c * 2 + 1], 0.0, 1e-12);
     EXPECT_NEAR(f.solid_bulk_density[c], 0.5 * 8900.0 + 0.5 * 0.6 * 2650.0, 1e-9);
   }
 }

@@ -37,6 +37,7 @@ struct Welcome {
   double window = 0.0;
   Extrapolation extrapolation = Extrapolation::constant;
   double timeout_s = 600.0;  // longest wait for the coupler (beyond its own window timeout)
+  std::vector<std::string> sends;  // the participant's reads the job sends it
 };
 
 std::string to_json(const Hello& hello);

@@ -16,6 +16,9 @@ namespace {
 namespace mx = cosim::job::momentum_exchange_fields;
 constexpr const char* pore_pressure = "pore_pressure";
 constexpr const char* water_fraction = "water_fraction";
+// The solids' volume flux sum_i phi_i U_i, when the job sends it (mpm_solver
+// writes it on request); otherwise phi_s U_s.
+constexpr const char* solid_volume_flux = "solid_volume_flux";
 // mpm_solver marks a held (rigid) body's bulk density above this [kg/m^3].
 constexpr double held_solid_bulk_density = 1e20;
 
@@ -53,6 +56,9 @@ void SoilCoupling::declare(cosim::Participant& participant) const {
   participant.declare_read(field(mx::solid_velocity, dim_, "m/s"), 0.0);
   participant.declare_read(field(mx::drag_coefficient, 1, "kg/(m^3 s)", 0.0), 0.0);
   participant.declare_read(field(mx::solid_bulk_density, 1, "kg/m^3", 0.0), 0.0);
+  cosim::FieldSpec flux = field(solid_volume_flux, dim_, "m/s");
+  flux.optional = true;
+  participant.declare_read(flux, 0.0);
   participant.declare_write(field(pore_pressure, 1, "Pa"));
   participant.declare_write(field(mx::fluid_velocity, dim_, "m/s"));
   participant.declare_write(field(mx::fluid_bulk_density, 1, "kg/m^3", 0.0));
@@ -73,6 +79,17 @@ void SoilCoupling::read_soil(const cosim::Participant& participant) {
   participant.read(mx::drag_coefficient, drag_);
   solid_density_.resize(cells);
   participant.read(mx::solid_bulk_density, solid_density_);
+  const auto dim = static_cast<std::size_t>(dim_);
+  volume_flux_.resize(cells * dim);
+  if (participant.is_sent(solid_volume_flux)) {
+    participant.read(solid_volume_flux, volume_flux_);
+  } else {
+    for (std::size_t c = 0; c < cells; ++c) {
+      const double phi_s = 1.0 - pore_fraction(c);
+      for (std::size_t k = 0; k < dim; ++k)
+        volume_flux_[c * dim + k] = phi_s * solid_velocity_[c * dim + k];
+    }
+  }
 }
 
 std::vector<double> SoilCoupling::fluid_fraction(const cosim::Participant& participant) {
@@ -128,9 +145,12 @@ const SoilParcels& SoilCoupling::parcels(const cosim::Participant& participant,
     const CloudDragInput input{phi_s, water_.density, water_.viscosity, std::sqrt(speed2)};
     const double d = ergun_wen_yu_grain_size_within_range(input, drag_[c] / n);
     diameter_[c] = d;
+    // With the displaced water the solver's water moves at u_f + F / n (F the
+    // solids' volume flux): the parcels at U_s + F / n keep the drag's U_s - u_f.
     double u[3] = {0.0, 0.0, 0.0};
-    const double shift = soil.displaced_water ? 1.0 / n : 1.0;
-    for (std::size_t k = 0; k < dim; ++k) u[k] = shift * solid_velocity_[c * dim + k];
+    for (std::size_t k = 0; k < dim; ++k) {
+      u[k] = solid_velocity_[c * dim + k] + (soil.displaced_water ? volume_flux_[c * dim + k] / n : 0.0);
+    }
     const double grain_volume = std::numbers::pi * d * d * d / 6.0;
     // A hair off the cell's centre: a parcel starting exactly there (the apex
     // of all the cell's tets) can stall OpenFOAM v1912's tracking for good.
@@ -154,7 +174,7 @@ SoilCoupling::MomentumCheck SoilCoupling::write(cosim::Participant& participant,
       if (diameter_.empty() || diameter_[c] <= 0.0) continue;
       const double n = pore_fraction(c);
       for (std::size_t d = 0; d < dim; ++d)
-        end.velocity[c * dim + d] -= (1.0 - n) * solid_velocity_[c * dim + d] / n;
+        end.velocity[c * dim + d] -= volume_flux_[c * dim + d] / n;
     }
   }
   fluid_velocity_ = end.velocity;

@@ -22,6 +22,13 @@ inline constexpr const char* solid_velocity = mx::solid_velocity;
 inline constexpr const char* solid_bulk_density = mx::solid_bulk_density;
 inline constexpr const char* permeability = mx::permeability;
 inline constexpr const char* grain_size = mx::grain_size;
+// On mpm_grid, written [m/s] (Dim components): the solids' volume flux
+// sum_i phi_i U_i per cell, the solid term of the mixture's continuity
+// (Tran et al., MPMICE, eq. 75). It differs from phi_s solid_velocity where
+// a held body (a rigid bed at rest) shares a cell with a moving one: there
+// solid_velocity is the moving body's (the drag's relative velocity) while
+// phi_s counts both.
+inline constexpr const char* solid_volume_flux = "solid_volume_flux";
 // On mpm_grid, read: pore pressure [Pa] (intensive state) and the momentum
 // the solid receives from the implicit exchange [kg m/s] (extensive window
 // integral, Dim components).

@@ -35,6 +35,7 @@ namespace mpm::coupling {
 struct PorousFields {
   std::vector<double> solid_fraction;
   std::vector<double> solid_velocity;  // Dim per cell, cell-major
+  std::vector<double> solid_volume_flux;  // sum_i phi_i U_i [m/s], Dim per cell
   std::vector<double> solid_bulk_density;
   std::vector<double> permeability;
   std::vector<double> grain_size;

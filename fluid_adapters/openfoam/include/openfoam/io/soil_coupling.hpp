@@ -37,7 +37,11 @@ namespace openfoam {
 // div(n u) = 0 where the mixture's is div(n u_f + phi_s U_s) = 0. The
 // solver's u is then the physical u_f + phi_s U_s / n exactly, and with the
 // parcels moving at U_s / n its drag sees the physical U_s - u_f; the fields
-// read back are shifted to the physical u_f. This is what carries the pore
+// read back are shifted to the physical u_f. Where a held body (a rigid
+// bed) shares a cell with a moving one, phi_s U_s overstates the solids'
+// volume flux (phi_s counts the bed, U_s is the moving body's): the job then
+// sends mpm_solver's `solid_volume_flux` F = sum phi_i U_i (an optional read),
+// the solver's u is u_f + F / n and the parcels move at U_s + F / n. This is what carries the pore
 // pressure of a compacting skeleton (Terzaghi) through stock MPPICInterFoam.
 class SoilCoupling {
  public:
@@ -100,6 +104,7 @@ class SoilCoupling {
   int dim_;
   std::vector<double> solid_fraction_;
   std::vector<double> solid_velocity_;  // dim per cell
+  std::vector<double> volume_flux_;     // the solids' sum phi_i U_i [m/s], dim per cell
   std::vector<double> drag_;
   std::vector<double> solid_density_;   // rho_bar_s; above 1e20: a held (rigid) solid
   std::vector<double> diameter_;        // per cell; 0 where no parcel
