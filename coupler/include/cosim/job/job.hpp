@@ -106,6 +106,10 @@ inline constexpr const char* solid_velocity = "solid_velocity";          // U_s 
 inline constexpr const char* solid_bulk_density = "solid_bulk_density";  // rho_bar_s [kg/m^3]
 inline constexpr const char* grain_size = "grain_size";      // [m], laws reading it per cell
 inline constexpr const char* permeability = "permeability";  // [m^2], idem
+// sum_i phi_i U_i [m/s], for fluids that take the solids' displaced volume
+// from it (an optional read: where a held body shares a cell with a moving
+// one it differs from phi_s U_s)
+inline constexpr const char* solid_volume_flux = "solid_volume_flux";
 // written by the fluid
 inline constexpr const char* fluid_velocity = "fluid_velocity";          // U_f [m/s]
 inline constexpr const char* fluid_bulk_density = "fluid_bulk_density";  // rho_bar_f [kg/m^3]

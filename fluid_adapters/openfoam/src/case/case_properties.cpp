@@ -4,7 +4,6 @@
 #include <spdlog/spdlog.h>
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "cosim/error.hpp"
@@ -29,19 +28,18 @@ FluidProperties fluid(const DictionaryQuery& query, const std::string& phase) {
   return {rho, rho * nu};
 }
 
-// The numbers in the first "(...)" after `label` in checkMesh's report.
+// The numbers in the `which`-th (from 0) "(...)" after `label` in checkMesh's report.
 std::vector<double> reported_vector(const std::string& report, const std::string& label,
                                     std::size_t which, const fs::path& log) {
-  std::size_t at = report.find(label);
-  if (at == std::string::npos) {
+  std::size_t begin = report.find(label);
+  if (begin == std::string::npos) {
     throw cosim::Error(cosim::ExitCode::participant_failed,
                        fmt::format("checkMesh's report ({}) has no '{}'", log.string(), label));
   }
-  at += label.size();
-  for (std::size_t k = 0; k <= which; ++k) at = report.find('(', at) + 1;
-  --at;
-  const std::size_t end = report.find(')', at);
-  std::istringstream in(report.substr(at + 1, end - at - 1));
+  begin += label.size();  // the label itself has parentheses
+  for (std::size_t k = 0; k <= which; ++k) begin = report.find('(', begin) + 1;
+  const std::size_t end = report.find(')', begin);
+  std::istringstream in(report.substr(begin, end - begin));
   std::vector<double> v;
   for (double x = 0.0; in >> x;) v.push_back(x);
   return v;
@@ -73,12 +71,7 @@ CaseProperties read_case_properties(const Installation& installation, const fs::
   }
 
   const fs::path log = log_dir / "checkMesh.log";
-  fs::remove(log);
-  run_application(installation, "checkMesh", {}, case_dir, log);
-  std::ifstream in(log);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string report = buffer.str();
+  const std::string report = application_output(installation, "checkMesh", {}, case_dir, log);
   const std::vector<double> directions =
       reported_vector(report, "solution (non-empty) directions", 0, log);
   const std::vector<double> lower = reported_vector(report, "Overall domain bounding box", 0, log);

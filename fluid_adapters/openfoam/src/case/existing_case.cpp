@@ -96,10 +96,6 @@ void copy_existing_case(const fs::path& case_dir, const fs::path& run_case_dir) 
   }
 }
 
-}  // namespace openfoam
-
-namespace openfoam {
-
 namespace {
 
 // Whether an OpenFOAM file of the copy is written in binary or compressed.

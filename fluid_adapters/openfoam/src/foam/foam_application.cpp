@@ -143,4 +143,13 @@ ApplicationTiming run_application(const Installation& installation, const std::s
   return timing;
 }
 
+std::string application_output(const Installation& installation, const std::string& name,
+                               std::vector<std::string> arguments,
+                               const std::filesystem::path& case_dir,
+                               const std::filesystem::path& log_file) {
+  const std::size_t start = size_of_file(log_file);
+  run_application(installation, name, std::move(arguments), case_dir, log_file);
+  return read_from(log_file, start);
+}
+
 }  // namespace openfoam

@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
 #include "cosim/error.hpp"
@@ -17,20 +15,6 @@ namespace openfoam {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::uintmax_t size_of(const fs::path& file) {
-  std::error_code ec;
-  const auto size = fs::file_size(file, ec);
-  return ec ? 0 : size;
-}
-
-std::string text_from(const fs::path& file, std::uintmax_t offset) {
-  std::ifstream in(file, std::ios::binary);
-  in.seekg(static_cast<std::streamoff>(offset));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
 
 [[noreturn]] void bad_entry(const fs::path& file, const std::string& entry,
                             const std::string& why) {
@@ -70,19 +54,18 @@ std::string dictionary_value(const DictionaryQuery& query, const fs::path& file,
   if (!fs::is_regular_file(query.case_dir / file, ec)) {
     bad_entry(query.case_dir / file, entry, "missing: the file is not in the case");
   }
-  const std::uintmax_t start = size_of(query.log_file);
+  std::string output;
   try {
-    run_application(query.installation, "foamDictionary",
-                    {"-precision", "17", (query.case_dir / file).string(), "-entry", entry,
-                     "-value"},
-                    query.case_dir, query.log_file);
+    output = application_output(query.installation, "foamDictionary",
+                                {"-precision", "17", (query.case_dir / file).string(), "-entry",
+                                 entry, "-value"},
+                                query.case_dir, query.log_file);
   } catch (const cosim::Error&) {
     bad_entry(query.case_dir / file, entry,
               fmt::format("OpenFOAM's foamDictionary finds no such entry (see {})",
                           query.log_file.string()));
   }
   // The value is the output's last line (OpenFOAM may warn before it).
-  std::string output = text_from(query.log_file, start);
   while (!output.empty() && std::isspace(static_cast<unsigned char>(output.back()))) output.pop_back();
   const std::size_t line = output.rfind('\n');
   return line == std::string::npos ? output : output.substr(line + 1);

@@ -16,9 +16,6 @@ namespace {
 namespace mx = cosim::job::momentum_exchange_fields;
 constexpr const char* pore_pressure = "pore_pressure";
 constexpr const char* water_fraction = "water_fraction";
-// The solids' volume flux sum_i phi_i U_i, when the job sends it (mpm_solver
-// writes it on request); otherwise phi_s U_s.
-constexpr const char* solid_volume_flux = "solid_volume_flux";
 // mpm_solver marks a held (rigid) body's bulk density above this [kg/m^3].
 constexpr double held_solid_bulk_density = 1e20;
 
@@ -56,7 +53,7 @@ void SoilCoupling::declare(cosim::Participant& participant) const {
   participant.declare_read(field(mx::solid_velocity, dim_, "m/s"), 0.0);
   participant.declare_read(field(mx::drag_coefficient, 1, "kg/(m^3 s)", 0.0), 0.0);
   participant.declare_read(field(mx::solid_bulk_density, 1, "kg/m^3", 0.0), 0.0);
-  cosim::FieldSpec flux = field(solid_volume_flux, dim_, "m/s");
+  cosim::FieldSpec flux = field(mx::solid_volume_flux, dim_, "m/s");
   flux.optional = true;
   participant.declare_read(flux, 0.0);
   participant.declare_write(field(pore_pressure, 1, "Pa"));
@@ -81,8 +78,8 @@ void SoilCoupling::read_soil(const cosim::Participant& participant) {
   participant.read(mx::solid_bulk_density, solid_density_);
   const auto dim = static_cast<std::size_t>(dim_);
   volume_flux_.resize(cells * dim);
-  if (participant.is_sent(solid_volume_flux)) {
-    participant.read(solid_volume_flux, volume_flux_);
+  if (participant.is_sent(mx::solid_volume_flux)) {
+    participant.read(mx::solid_volume_flux, volume_flux_);
   } else {
     for (std::size_t c = 0; c < cells; ++c) {
       const double phi_s = 1.0 - pore_fraction(c);

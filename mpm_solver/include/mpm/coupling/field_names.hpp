@@ -28,7 +28,7 @@ inline constexpr const char* grain_size = mx::grain_size;
 // a held body (a rigid bed at rest) shares a cell with a moving one: there
 // solid_velocity is the moving body's (the drag's relative velocity) while
 // phi_s counts both.
-inline constexpr const char* solid_volume_flux = "solid_volume_flux";
+inline constexpr const char* solid_volume_flux = mx::solid_volume_flux;
 // On mpm_grid, read: pore pressure [Pa] (intensive state) and the momentum
 // the solid receives from the implicit exchange [kg m/s] (extensive window
 // integral, Dim components).

@@ -32,4 +32,12 @@ ApplicationTiming run_application(const Installation& installation, const std::s
                                   const std::filesystem::path& log_file, int processes = 1,
                                   std::chrono::seconds timeout = std::chrono::hours(24));
 
+// Runs a (serial, short) application as run_application does and returns
+// what it wrote to `log_file` in this run: the report of checkMesh, the
+// value foamDictionary prints.
+std::string application_output(const Installation& installation, const std::string& name,
+                               std::vector<std::string> arguments,
+                               const std::filesystem::path& case_dir,
+                               const std::filesystem::path& log_file);
+
 }  // namespace openfoam
