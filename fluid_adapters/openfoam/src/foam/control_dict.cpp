@@ -10,6 +10,22 @@
 
 namespace openfoam {
 
+namespace {
+
+// OpenFOAM's function objects run after each step while the time is within
+// half a step of [timeStart, timeEnd]: the one step at `write_density_at`.
+std::string density_writer(const ControlSettings& s) {
+  if (!s.write_density_at) return {};
+  return fmt::format(
+      "\nfunctions\n{{\n    densityBeforeWindowEnd\n    {{\n        type writeObjects;\n"
+      "        libs (\"libutilityFunctionObjects.so\");\n        objects (rho);\n"
+      "        writeControl timeStep;\n        writeInterval 1;\n"
+      "        timeStart {0:.17g};\n        timeEnd {0:.17g};\n    }}\n}}\n",
+      *s.write_density_at);
+}
+
+}  // namespace
+
 // startFrom latestTime with a fixed deltaT keeps the window ends exact;
 // runTimeModifiable off spares the solver polling its dictionaries. The
 // Courant limits are read by the VOF solvers even with a fixed step.
@@ -24,7 +40,8 @@ std::string control_dict(const ControlSettings& s) {
              "timeFormat general;\ntimePrecision {};\n"
              "runTimeModifiable false;\nadjustTimeStep no;\nmaxCo 1;\nmaxAlphaCo 1;\n"
              "maxDeltaT 1;\n",
-             s.application, s.end_time, s.time_step, s.write_every, time_precision);
+             s.application, s.end_time, s.time_step, s.write_every, time_precision) +
+         density_writer(s);
 }
 
 void write_control_dict(const std::filesystem::path& case_dir, const ControlSettings& settings) {

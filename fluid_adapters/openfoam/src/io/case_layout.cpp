@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "cosim/error.hpp"
 #include "openfoam/foam/field_file.hpp"
 
@@ -93,6 +95,32 @@ FoamFields CaseLayout::read(const std::string& name, int dim) const {
   return whole;
 }
 
+std::vector<double> CaseLayout::read_scalar(const std::string& name,
+                                            const std::string& field) const {
+  if (processes_ <= 1)
+    return read_internal_field(case_dir_ / name / field, FieldType::scalar, cells_);
+  std::vector<double> whole(cells_, 0.0);
+  for (int p = 0; p < processes_; ++p) {
+    const auto& addressing = addressing_[static_cast<std::size_t>(p)];
+    gather(whole,
+           read_internal_field(processor_dir(case_dir_, p) / name / field, FieldType::scalar,
+                               addressing.size()),
+           addressing, 1);
+  }
+  return whole;
+}
+
+bool CaseLayout::has(const std::string& name, const std::string& field) const {
+  return fs::is_regular_file(roots().front() / name / field);
+}
+
+std::optional<TimeDirectory> CaseLayout::at(double time, double tolerance) const {
+  for (const TimeDirectory& t : time_directories(roots().front())) {
+    if (std::abs(t.time - time) <= tolerance) return t;
+  }
+  return std::nullopt;
+}
+
 void CaseLayout::write_cloud(const std::string& name, const SoilParcels& parcels,
                              double parcel_density) const {
   if (processes_ <= 1) {
@@ -129,6 +157,17 @@ void CaseLayout::write_scalar_field(const std::string& name, const std::string& 
       part[local] = values[static_cast<std::size_t>(addressing[local])];
     write_vol_field(processor_dir(case_dir_, p) / name / field, name,
                     {FieldType::scalar, dimensions, part, boundary});
+  }
+}
+
+void CaseLayout::remove_time(const std::string& name) const {
+  for (const fs::path& root : roots()) {
+    std::error_code ec;
+    fs::remove_all(root / name, ec);
+    if (ec) {
+      throw cosim::Error(cosim::ExitCode::participant_failed,
+                         fmt::format("cannot remove {}: {}", (root / name).string(), ec.message()));
+    }
   }
 }
 

@@ -35,6 +35,7 @@
 #include "openfoam/io/case_mesh.hpp"
 #include "openfoam/io/cell_neighbours.hpp"
 #include "openfoam/io/foam_fields.hpp"
+#include "openfoam/io/restart_inertia.hpp"
 #include "openfoam/io/soil_coupling.hpp"
 #include "openfoam/porosity/porosity_zones.hpp"
 
@@ -75,6 +76,7 @@ class CaseRun {
       set_up_case();
     }
     FoamFields fields = read_fields("0");
+    write_start_fluid_fraction(fields.alphac);
     record_water(fields, true);
     write_outputs(0.0, fields);
     summary_.write();
@@ -214,7 +216,10 @@ class CaseRun {
     }
     // The pores the soil leaves the water at the start (MPPICInterFoam sees
     // them from its first start on).
-    if (!zones) fields.alphac = coupling.fluid_fraction(participant);
+    if (!zones) {
+      fields.alphac = coupling.fluid_fraction(participant);
+      write_start_fluid_fraction(fields.alphac);
+    }
     record_water(fields, true);
     write_outputs(0.0, fields);
     summary_.write();
@@ -375,16 +380,51 @@ class CaseRun {
     gauges_->append(row);
   }
 
-  // The controlDict of a start from `start` to `end`: every field written at `end`.
+  // The controlDict of a start from `start` to `end`: every field written at
+  // `end`; MPPICInterFoam's density also one step before (restart_inertia.hpp).
   void write_controls(double start, double end) {
+    const long steps = steps_in(end - start);
+    std::optional<double> density_at;
+    if (c_.has_cloud() && steps > 1) density_at = end - c_.time_step;
     write_control_dict(case_dir_, {.application = c_.solver,
                                    .end_time = end,
                                    .time_step = c_.time_step,
-                                   .write_every = steps_in(end - start)});
+                                   .write_every = steps,
+                                   .write_density_at = density_at});
+  }
+
+  // MPPICInterFoam's first start: the fluid fraction it starts from (1
+  // without soil) as its alphac file, whose product with rho gives the first
+  // step its inertia (without the file it reads 0).
+  void write_start_fluid_fraction(std::vector<double>& fluid_fraction) {
+    if (!c_.has_cloud()) return;
+    if (fluid_fraction.empty()) fluid_fraction.assign(mesh_.volumes.size(), 1.0);
+    layout_->write_scalar_field(layout_->latest()->name, "alphac", "[0 0 0 0 0 0 0]",
+                                fluid_fraction);
+  }
+
+  // MPPICInterFoam's next start given the inertia of the step it would have
+  // taken next in one continuous run (restart_inertia.hpp): alphac rho_(n-1)
+  // / rho_n into the end directory `end`, `before` the time one step earlier.
+  void restore_restart_inertia(const std::string& end, const std::string& before,
+                               const std::vector<double>& fluid_fraction) {
+    const std::vector<double> lagged =
+        restart_fluid_fraction(fluid_fraction, density_at(before), density_at(end));
+    layout_->write_scalar_field(end, "alphac", "[0 0 0 0 0 0 0]", lagged);
+  }
+
+  // The solver's mixture density at time `name`: its rho file, or, at the
+  // start (not written yet), alpha rho_w + (1 - alpha) rho_a as it forms it.
+  std::vector<double> density_at(const std::string& name) const {
+    if (layout_->has(name, "rho")) return layout_->read_scalar(name, "rho");
+    std::vector<double> rho = layout_->read_scalar(name, "alpha.water");
+    for (double& a : rho) a = a * properties_.water.density + (1.0 - a) * properties_.air.density;
+    return rho;
   }
 
   // One start of the solver from its latest time directory (`start`) to `end`.
   FoamFields run_window(double start, double end) {
+    const std::string start_name = layout_->latest()->name;
     WindowTiming timing;
     timing.end_time = end;
     Clock::time_point phase = Clock::now();
@@ -406,6 +446,19 @@ class CaseRun {
                       latest ? latest->name : "none"));
     }
     FoamFields fields = read_fields(latest->name);
+    if (c_.has_cloud()) {
+      const long steps = steps_in(end - start);
+      const auto before = steps == 1 ? std::optional<TimeDirectory>(TimeDirectory{start, start_name})
+                                     : layout_->at(end - c_.time_step, tolerance_);
+      if (!before) {
+        throw cosim::Error(cosim::ExitCode::participant_failed,
+                           fmt::format("OpenFOAM's {} did not write its density at t = {} s, one "
+                                       "step before the window's end (case kept in {})",
+                                       c_.solver, end - c_.time_step, case_dir_.string()));
+      }
+      restore_restart_inertia(latest->name, before->name, fields.alphac);
+      if (steps > 1) layout_->remove_time(before->name);
+    }
     timing.read = seconds_since(phase);
     if (!c_.keep_time_directories) {
       const std::array<std::string, 2> keep{"0", latest->name};

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace openfoam {
@@ -18,6 +19,10 @@ struct ControlSettings {
   double end_time = 0.0;
   double time_step = 0.0;
   long write_every = 1;  // steps
+  // When set, the mixture density `rho` alone is also written at this time
+  // (MPPICInterFoam: the step before the window's end; see
+  // restart_inertia.hpp).
+  std::optional<double> write_density_at;
 };
 
 std::string control_dict(const ControlSettings& settings);

@@ -31,6 +31,12 @@ class CaseLayout {
   std::optional<TimeDirectory> latest() const;
   // The fields at time `name`, over the whole mesh.
   FoamFields read(const std::string& name, int dim) const;
+  // One scalar field at time `name`, over the whole mesh.
+  std::vector<double> read_scalar(const std::string& name, const std::string& field) const;
+  // Whether time `name` holds `field` (processor0's when decomposed).
+  bool has(const std::string& name, const std::string& field) const;
+  // The time directory of `time` (to `tolerance`), none when absent.
+  std::optional<TimeDirectory> at(double time, double tolerance) const;
   // The window's parcels (cells of the whole mesh) into time `name`.
   void write_cloud(const std::string& name, const SoilParcels& parcels,
                    double parcel_density) const;
@@ -38,6 +44,8 @@ class CaseLayout {
   // constraint patches as their type) written into time `name`.
   void write_scalar_field(const std::string& name, const std::string& field,
                           const std::string& dimensions, std::span<const double> values) const;
+  // Removes time `name` (every processor's).
+  void remove_time(const std::string& name) const;
   // Removes every time directory but `keep`.
   void remove_times_except(std::span<const std::string> keep) const;
 
