@@ -142,9 +142,14 @@ void CaseLayout::write_cloud(const std::string& name, const SoilParcels& parcels
 void CaseLayout::write_scalar_field(const std::string& name, const std::string& field,
                                     const std::string& dimensions,
                                     std::span<const double> values) const {
+  // The constraint patches as their type; a processor patch's value is not
+  // `$internalField` (a nonuniform list cannot be expanded twice): OpenFOAM
+  // takes it from the neighbouring processor when it evaluates the patch.
   const std::string boundary =
       "    \".*\"\n    {\n        type zeroGradient;\n    }\n"
-      "    #includeEtc \"caseDicts/setConstraintTypes\"\n";
+      "    #includeEtc \"caseDicts/setConstraintTypes\"\n"
+      "    processor\n    {\n        type processor;\n        value uniform 0;\n    }\n"
+      "    processorCyclic\n    {\n        type processorCyclic;\n        value uniform 0;\n    }\n";
   if (processes_ <= 1) {
     write_vol_field(case_dir_ / name / field, name,
                     {FieldType::scalar, dimensions, values, boundary});
