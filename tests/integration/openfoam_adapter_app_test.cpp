@@ -130,9 +130,9 @@ TEST_F(OpenFoamAdapterRun, RunsWindowByWindowAndKeepsOnlyTheLatestTime) {
 
 // MPPICInterFoam's restart: started afresh every step, the small tank's dam
 // break moves as in one start (restart_inertia.hpp restores the inertia a
-// restart loses; without it the restarted water ran ahead by 0.02 m/s within
-// five steps, and by 19.5 m/s, 15 times its speed, by the 20th); decomposed
-// on two processes it moves as on one.
+// restart loses; without it this tank's water is 19.5 m/s, 15 times its
+// speed, off one start's by the 20th); decomposed on two processes it moves
+// as on one.
 TEST_F(OpenFoamAdapterRun, MppicInterFoamRestartedEveryStepMovesAsInOneStart) {
   const fs::path dir = fresh_directory("openfoam_adapter_mppic_restart");
   std::string text = small_tank;
