@@ -9,10 +9,9 @@
 // releasing column a little below, and the water's volume be kept;
 // -DCOSIM_FULL_VALIDATION=ON runs
 // the paper's 2 s (~1.5 h): the column must spread beyond the gate, lose
-// height, and come to rest. That full run does not pass yet: the job fails
-// at t = 0.91 s, after the free surface has become unstable (see
-// examples/granular_collapse/README.md); the flag's assertions state what it
-// must do once that is fixed.
+// height, and come to rest. The job used to fail at t = 0.91 s after its
+// free surface grew unstable, which OpenFOAM's restarts caused; since they
+// keep the solver's inertia it runs on (examples/granular_collapse/README.md).
 //
 // Needs OpenFOAM (openfoam_test_main.cpp).
 #include <fmt/format.h>
