@@ -479,6 +479,7 @@ void Coupler::run() {
     spdlog::info("all {} participants connected; {} windows of {} s from t = {} s to {} s",
                  s.peers.size(), windows, s.job.window, s.job.start_time, s.job.end_time);
     s.next_output_time = s.job.start_time;
+    auto last_summary = std::chrono::steady_clock::now();
     for (s.window = 0; s.window <= windows; ++s.window) {
       s.collect_window();
       s.map_and_send();
@@ -490,7 +491,12 @@ void Coupler::run() {
       if (s.energy_exchange)
         s.summary.set_metric("max_energy_exchange_balance_error", s.max_energy_balance_error, "1");
       progress.update(s.window, s.window_time(s.window));
-      if (s.window % 100 == 0) s.summary.write();
+      s.summary.set_progress(s.window_time(s.window), s.job.end_time);
+      const auto now = std::chrono::steady_clock::now();
+      if (s.window % 100 == 0 || now - last_summary > std::chrono::seconds(2)) {
+        s.summary.write();
+        last_summary = now;
+      }
     }
     progress.finish();
   } catch (const std::exception& e) {

@@ -18,7 +18,8 @@ namespace {
 
 constexpr std::array reserved_keys{"program",    "version",     "config",      "status",
                                    "started_at", "updated_at",  "finished_at", "steps",
-                                   "windows",    "wall_time_s", "conserved",   "metrics"};
+                                   "windows",    "wall_time_s", "conserved",   "metrics",
+                                   "progress"};
 
 nlohmann::json optional_number(const std::optional<double>& value) {
   return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
@@ -124,6 +125,8 @@ nlohmann::json RunSummary::to_json() const {
   j["finished_at"] = finished_at_ ? json(iso8601_utc(*finished_at_)) : json(nullptr);
   j["steps"] = steps_;
   j["windows"] = windows_;
+  j["progress"] = {{"simulated_time_s", optional_number(simulated_time_)},
+                   {"end_time_s", optional_number(end_time_)}};
 
   json phases = json::object();
   for (const auto& [phase, seconds] : phases_.phases()) phases[phase] = seconds;

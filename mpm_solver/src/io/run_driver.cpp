@@ -196,6 +196,7 @@ class CaseRun {
         last_progress = wall;
         steps_at_progress = solver_.step_count();
         summary_.set_steps(static_cast<std::int64_t>(solver_.step_count()));
+        summary_.set_progress(now, end_time_);
         summary_.write();
       }
     }

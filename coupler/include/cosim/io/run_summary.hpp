@@ -26,7 +26,8 @@ namespace cosim {
 //   started_at, updated_at, finished_at (ISO 8601 UTC; finished_at null until
 //   finish), steps, windows, wall_time_s {total, phases {name: s}},
 //   conserved {name: {unit, start, end, relative_change}},
-//   metrics {name: {value, unit}}, plus any sections added with set_section.
+//   metrics {name: {value, unit}}, progress {simulated_time_s, end_time_s}
+//   (null until set), plus any sections added with set_section.
 class RunSummary {
  public:
   RunSummary(std::filesystem::path output_dir, std::string program);
@@ -34,6 +35,11 @@ class RunSummary {
   void set_config(const std::filesystem::path& config_path, std::uint64_t config_hash);
   void set_steps(std::int64_t steps) { steps_ = steps; }
   void set_windows(std::int64_t windows) { windows_ = windows; }
+  // How far the simulation has got, for whoever watches the run (`cosim bench`).
+  void set_progress(double simulated_time, double end_time) {
+    simulated_time_ = simulated_time;
+    end_time_ = end_time;
+  }
   void set_conserved_start(const std::string& name, double value, const std::string& unit);
   void set_conserved_end(const std::string& name, double value, const std::string& unit);
   void set_metric(const std::string& name, double value, const std::string& unit);
@@ -74,6 +80,8 @@ class RunSummary {
   std::string message_;
   std::int64_t steps_ = 0;
   std::int64_t windows_ = 0;
+  std::optional<double> simulated_time_;
+  std::optional<double> end_time_;
   std::map<std::string, Conserved> conserved_;
   std::map<std::string, Metric> metrics_;
   std::map<std::string, nlohmann::json> sections_;

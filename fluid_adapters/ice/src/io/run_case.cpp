@@ -173,6 +173,7 @@ class CaseRun {
         spdlog::info("t = {:.6g} s / {:.6g} s, step {}, dt = {:.3g} s, CG iterations {}", now,
                      c_.end_time, steps_, dt, report.pressure_iterations);
         summary_.set_steps(static_cast<std::int64_t>(steps_));
+        summary_.set_progress(now, c_.end_time);
         summary_.write();
       }
     }

@@ -86,6 +86,8 @@ class CaseRun {
       fields = run_window(t, end);
       t = end;
       finish_window(t, fields, t >= c_.end_time - tolerance_);
+      summary_.set_progress(t, c_.end_time);
+      if (windows_.size() % 20 == 0) summary_.write();
     }
     spdlog::info("completed: t = {:.6g} s in {} windows, {} OpenFOAM steps", t, windows_.size(),
                  steps_);

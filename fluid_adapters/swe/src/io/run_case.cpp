@@ -195,6 +195,7 @@ class CaseRun {
         spdlog::info("t = {:.6g} s / {:.6g} s, step {}, dt = {:.3g} s, eta max {:.6g} m, speed max {:.4g} m/s", now,
                      end_time_, steps_, dt, s.eta_max, s.speed_max);
         summary_.set_steps(static_cast<std::int64_t>(steps_));
+        summary_.set_progress(now, end_time_);
         summary_.write();
       }
     }
