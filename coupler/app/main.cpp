@@ -1,4 +1,5 @@
-// cosim: runs coupled jobs (`cosim run`), checks them (`cosim validate`).
+// cosim: runs coupled jobs (`cosim run`), checks them (`cosim validate`),
+// compares solver pairings on benchmark suites (`cosim bench`).
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -11,6 +12,9 @@
 #include <iostream>
 #include <random>
 
+#include "cosim/bench/analytic_solution.hpp"
+#include "cosim/bench/bench.hpp"
+#include "cosim/bench/suite.hpp"
 #include "cosim/com/mpi_transport.hpp"
 #include "cosim/com/zmq_transport.hpp"
 #include "cosim/cplscheme/coupler.hpp"
@@ -234,6 +238,26 @@ int main(int argc, char** argv) {
 
   auto* help_config = app.add_subcommand("help-config", "List every key of a job file");
 
+  cosim::bench::BenchRunOptions bench_options;
+  std::string resolution = "coarse";
+  bool bench_help_config = false;
+  auto* bench_cmd = app.add_subcommand(
+      "bench", "Run a suite of scenarios across solver pairings and write a comparison report");
+  bench_cmd->add_option("suite", bench_options.bench.suite_file,
+                        "the suite's YAML file (kind: bench_suite)");
+  bench_cmd->add_option("-o,--output", bench_options.bench.output,
+                        "report directory (results.csv, report.md, plots/, runs/)");
+  bench_cmd
+      ->add_option("--resolution", resolution,
+                   "coarse (finishes in CI) or full (the papers' resolution)")
+      ->check(CLI::IsMember({"coarse", "full"}));
+  bench_cmd->add_option("--only", bench_options.bench.only, "run only these scenarios");
+  bench_cmd->add_option("-j,--jobs", bench_options.bench.jobs, "runs at a time (default 1)")
+      ->check(CLI::Range(1, 64));
+  bench_cmd->add_option("--verbosity", bench_options.verbosity, "quiet | normal | verbose | trace");
+  bench_cmd->add_flag("--help-config", bench_help_config,
+                      "list every key of a suite file and the analytic solutions, and exit");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -256,6 +280,21 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*run_cmd) return run(run_options);
+    if (*bench_cmd) {
+      if (bench_help_config) {
+        std::cout << cosim::bench::suite_schema().help("Bench suite file (kind: bench_suite)")
+                  << "\n"
+                  << cosim::bench::analytic_solutions_help();
+        return 0;
+      }
+      if (bench_options.bench.suite_file.empty() || bench_options.bench.output.empty())
+        throw cosim::InputError("cosim bench: give the suite file and --output <dir>");
+      bench_options.bench.resolution =
+          resolution == "full" ? cosim::bench::Resolution::full : cosim::bench::Resolution::coarse;
+      bench_options.terminal = ::isatty(STDERR_FILENO) != 0;
+      bench_options.interrupted = &interrupted;
+      return cosim::bench::run_bench(bench_options);
+    }
     std::cerr << app.help();
     return cosim::to_int(cosim::ExitCode::bad_input);
   } catch (const cosim::Error& e) {

@@ -14,11 +14,13 @@
 
 #include <cmath>
 
-#include "darcy/darcy_column.hpp"
+#include "cosim/bench/darcy_column.hpp"
 #include "run_process.hpp"
 
 namespace cosim::testing {
 namespace {
+
+using bench::DarcyColumn;
 
 namespace fs = std::filesystem;
 

@@ -44,6 +44,33 @@ void refuse_duplicate_keys(const YAML::Node& node, const SourceFile& source,
   }
 }
 
+// YAML's merge key (`<<: *anchor`), which yaml-cpp leaves as a plain key:
+// the anchored mapping's entries (or those of a list of mappings, the first
+// winning) are added where the mapping does not give them itself.
+void expand_merge_keys(YAML::Node node) {
+  if (node.IsSequence()) {
+    for (auto item : node) expand_merge_keys(item);
+    return;
+  }
+  if (!node.IsMap()) return;
+  if (const YAML::Node merged = node["<<"]) {
+    expand_merge_keys(merged);
+    std::vector<YAML::Node> sources;
+    if (merged.IsSequence()) {
+      for (const auto& item : merged) sources.push_back(item);
+    } else {
+      sources.push_back(merged);
+    }
+    node.remove("<<");
+    for (const auto& from : sources) {
+      if (!from.IsMap()) continue;
+      for (const auto& entry : from)
+        if (!node[entry.first.Scalar()]) node[entry.first] = entry.second;
+    }
+  }
+  for (auto entry : node) expand_merge_keys(entry.second);
+}
+
 // yaml-cpp reports a tab in the indentation as whatever it could not parse
 // next; name the tab, the usual cause, when one precedes the error.
 std::string tab_hint(const std::string& text, int error_line) {
@@ -74,6 +101,7 @@ YAML::Node parse(const std::string& text, const SourceFile& source) {
                      "a second YAML document ('---') follows the first; a cosim file holds one");
   }
   refuse_duplicate_keys(documents.front(), source, "");
+  expand_merge_keys(documents.front());
   return documents.front();
 }
 

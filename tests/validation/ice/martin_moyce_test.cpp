@@ -1,6 +1,6 @@
 // Martin & Moyce (1952) dam break, n^2 = 2 (configs/ice/martin_moyce.yaml):
 // the surge front x_front / a against t sqrt(2 g / a) compared with the
-// experiment (data/martin_moyce_1952.csv) for t sqrt(2 g / a) <= 3; water
+// experiment (configs/bench/reference/martin_moyce_1952.csv) for t sqrt(2 g / a) <= 3; water
 // mass conserved. The front is the downstream edge of the last cell of the
 // floor row holding more water than air.
 //
@@ -42,7 +42,7 @@ double front_position(const IceSolver<2>& solver) {
 
 TEST(IceMartinMoyce, SurgeFrontFollowsTheExperiment) {
   const std::vector<mm::Point> measured =
-      mm::experiment_front(std::string(COSIM_ICE_DATA) + "/martin_moyce_1952.csv");
+      mm::experiment_front(std::string(COSIM_REFERENCE_DATA) + "/martin_moyce_1952.csv");
   ASSERT_GE(measured.size(), 10u);
   CaseDescription c = load_case(validation::config("martin_moyce.yaml"));
   const double a = mm::column_width;

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "exact_riemann.hpp"
+#include "cosim/bench/gas_riemann_problem.hpp"
 #include "ice_validation_run.hpp"
 
 namespace ice {
@@ -26,9 +26,9 @@ SodResult run_sod(int cells) {
   const auto before = solver->totals();
   validation::run_until(*solver, c, c.end_time);
   const auto after = solver->totals();
-  const cosim::testing::ExactRiemannSolution exact({1.0, 0.0, 1.0e5}, {0.125, 0.0, 1.0e4}, 1.4);
+  const cosim::bench::ExactRiemannSolution exact({1.0, 0.0, 1.0e5}, {0.125, 0.0, 1.0e4}, 1.4);
   const auto reference =
-      cosim::testing::cell_averages(exact, 1.4, 0.0, 1.0, cells, 0.5, c.end_time);
+      cosim::bench::cell_averages(exact, 1.4, 0.0, 1.0, cells, 0.5, c.end_time);
   SodResult r;
   double total = 0.0;
   int star_cells = 0;
@@ -51,7 +51,7 @@ SodResult run_sod(int cells) {
 }
 
 TEST(IceSod, DensityConvergesToTheExactRiemannSolution) {
-  const cosim::testing::ExactRiemannSolution exact({1.0, 0.0, 1.0e5}, {0.125, 0.0, 1.0e4}, 1.4);
+  const cosim::bench::ExactRiemannSolution exact({1.0, 0.0, 1.0e5}, {0.125, 0.0, 1.0e4}, 1.4);
   double previous = 1.0;
   for (const int cells : {100, 200, 400}) {
     const SodResult r = run_sod(cells);

@@ -27,7 +27,7 @@
 #include <string>
 
 #include "run_process.hpp"
-#include "terzaghi/terzaghi_consolidation.hpp"
+#include "terzaghi/terzaghi_gauges.hpp"
 
 namespace cosim::testing {
 namespace {

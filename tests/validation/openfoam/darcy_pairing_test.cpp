@@ -24,12 +24,14 @@
 #include <iterator>
 #include <string>
 
-#include "darcy/darcy_column.hpp"
+#include "cosim/bench/darcy_column.hpp"
 #include "replaced_text.hpp"
 #include "run_process.hpp"
 
 namespace cosim::testing {
 namespace {
+
+using bench::DarcyColumn;
 
 namespace fs = std::filesystem;
 

@@ -36,7 +36,7 @@ double sum_of(const nlohmann::json& values) {
 
 TEST(OpenFoamMartinMoyce, SurgeFrontFollowsTheExperimentLikeTheIceSolver) {
   const std::vector<mm::Point> measured =
-      mm::experiment_front(std::string(COSIM_ICE_DATA) + "/martin_moyce_1952.csv");
+      mm::experiment_front(std::string(COSIM_REFERENCE_DATA) + "/martin_moyce_1952.csv");
   ASSERT_GE(measured.size(), 10u);
   const fs::path output = cosim::testing::fresh_directory("openfoam_martin_moyce");
   const auto result =

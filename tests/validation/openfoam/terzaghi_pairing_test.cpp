@@ -26,7 +26,7 @@
 
 #include "replaced_text.hpp"
 #include "run_process.hpp"
-#include "terzaghi/terzaghi_consolidation.hpp"
+#include "terzaghi/terzaghi_gauges.hpp"
 
 namespace cosim::testing {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "exact_dam_break.hpp"
+#include "cosim/bench/shallow_water_dam_break.hpp"
 #include "swe/solver_1d.hpp"
 
 // Dam break onto a dry flat frictionless bed (Ritter): h0 = 1 m for x < 4 m,
@@ -35,7 +35,7 @@ std::vector<double> edges_of(std::size_t n, bool uneven) {
 }
 
 TEST(Ritter, WetFrontAndRarefactionHeadOnADryBed) {
-  const swe_test::ExactDamBreak exact(h0, 0.0, x0, g);
+  const cosim::bench::ExactDamBreak exact(h0, 0.0, x0, g);
   const double c0 = std::sqrt(g * h0);
   for (bool uneven : {false, true}) {
     for (auto flux : {swe::FluxKind::roe, swe::FluxKind::hllc}) {

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "exact_dam_break.hpp"
+#include "cosim/bench/shallow_water_dam_break.hpp"
 #include "swe/solver_1d.hpp"
 
 // Stoker's dam break as in Zheng et al., Sec. 4.2: [0, 1] m, h = 1 m for
@@ -42,7 +42,7 @@ std::vector<double> paper_non_uniform(double dx_fine, double dx_coarse) {
   return e;
 }
 
-double l1_depth_error(const swe::Solver1d& s, const swe_test::ExactDamBreak& exact) {
+double l1_depth_error(const swe::Solver1d& s, const cosim::bench::ExactDamBreak& exact) {
   constexpr int samples = 400;
   double error = 0.0;
   const auto& e = s.edges();
@@ -58,7 +58,7 @@ double l1_depth_error(const swe::Solver1d& s, const swe_test::ExactDamBreak& exa
   return error;
 }
 
-double run_stoker(const std::vector<double>& edges, swe::FluxKind flux, const swe_test::ExactDamBreak& exact) {
+double run_stoker(const std::vector<double>& edges, swe::FluxKind flux, const cosim::bench::ExactDamBreak& exact) {
   swe::Scheme scheme;
   scheme.flux = flux;
   scheme.limiter = swe::LimiterKind::van_leer;
@@ -80,7 +80,7 @@ double run_stoker(const std::vector<double>& edges, swe::FluxKind flux, const sw
 }
 
 TEST(Stoker, ShockSpeedMatchesThePaper) {
-  const swe_test::ExactDamBreak exact(1.0, 0.5, 0.5, g);
+  const cosim::bench::ExactDamBreak exact(1.0, 0.5, 0.5, g);
   fmt::print("exact middle state h* = {:.6f} m, u* = {:.6f} m/s, shock speed {:.5f} m/s (paper C_s = 2.9579)\n",
              exact.middle_depth(), exact.middle_velocity(), exact.front_speed());
   EXPECT_LT(std::abs(exact.front_speed() - 2.9579), 1e-3);
@@ -91,7 +91,7 @@ TEST(Stoker, ShockSpeedMatchesThePaper) {
 }
 
 TEST(Stoker, L1DepthErrorOnThePapersMeshes) {
-  const swe_test::ExactDamBreak exact(1.0, 0.5, 0.5, g);
+  const cosim::bench::ExactDamBreak exact(1.0, 0.5, 0.5, g);
   struct Mesh {
     std::string name, family;
     std::vector<double> edges;

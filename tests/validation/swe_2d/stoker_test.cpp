@@ -9,7 +9,7 @@
 #include <cmath>
 #include <vector>
 
-#include "exact_dam_break.hpp"
+#include "cosim/bench/shallow_water_dam_break.hpp"
 #include "swe/solver_2d.hpp"
 
 namespace {
@@ -17,7 +17,7 @@ namespace {
 constexpr double g = 9.81, h_left = 1.0, h_right = 0.5, dam = 0.5, end_time = 0.1;
 
 // L1 error of h along the long direction (x when along_x, else y).
-double stoker_l1_error(bool along_x, const swe_test::ExactDamBreak& exact) {
+double stoker_l1_error(bool along_x, const cosim::bench::ExactDamBreak& exact) {
   const int n = 100, across = 3;
   const double dx = 1.0 / n;
   const swe::Boundary open{swe::BoundaryKind::transmissive, 0.0}, wall{swe::BoundaryKind::wall, 0.0};
@@ -45,7 +45,7 @@ double stoker_l1_error(bool along_x, const swe_test::ExactDamBreak& exact) {
 }
 
 TEST(Swe2dStoker, MatchesTheExactDamBreakAlongXAndY) {
-  const swe_test::ExactDamBreak exact(h_left, h_right, dam, g);
+  const cosim::bench::ExactDamBreak exact(h_left, h_right, dam, g);
   const double tolerance = 5e-3;
   const double along_x = stoker_l1_error(true, exact), along_y = stoker_l1_error(false, exact);
   fmt::print("Stoker dam break (h_m = {:.5f} m), t = {} s, 100 x 3 cells: L1(h) along x = {:.3e} m, "

@@ -58,7 +58,7 @@ struct Reference {
 // seed002_table3_clay_column_still_water.csv: R_ws, t -> the four numbers.
 std::map<std::pair<double, double>, Reference> read_table3() {
   const fs::path file =
-      fs::path(COSIM_SOURCE_DIR) / "tests" / "validation" / "swe_pairing" / "reference" / "zheng_table3_clay_column_still_water.csv";
+      fs::path(COSIM_SOURCE_DIR) / "configs" / "bench" / "reference" / "zheng_table3_clay_column_still_water.csv";
   std::ifstream in(file);
   if (!in) throw std::runtime_error("cannot read " + file.string());
   std::map<std::pair<double, double>, Reference> table;

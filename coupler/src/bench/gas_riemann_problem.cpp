@@ -1,9 +1,9 @@
-#include "exact_riemann.hpp"
+#include "cosim/bench/gas_riemann_problem.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-namespace cosim::testing {
+namespace cosim::bench {
 
 ExactRiemannSolution::ExactRiemannSolution(GasState left, GasState right, double gamma)
     : left_(left), right_(right), gamma_(gamma) {
@@ -110,4 +110,4 @@ std::vector<GasState> cell_averages(const ExactRiemannSolution& solution, double
   return averages;
 }
 
-}  // namespace cosim::testing
+}  // namespace cosim::bench

@@ -2,11 +2,10 @@
 
 #include <cmath>
 
-// Tran et al., MPMICE, "Fluid flow through isothermal porous media", for
-// tests: water driven by dp through a column of length L of grains of size
+// Tran et al., MPMICE, "Fluid flow through isothermal porous media": water driven by dp through a column of length L of grains of size
 // d at solid fraction phi_s moves through the pores at
 //   U_f = (1/n) d^2 (1 - phi_s)^3 / (180 phi_s^2 mu) dp / L,  n = 1 - phi_s  (eq. 98).
-namespace cosim::testing {
+namespace cosim::bench {
 
 struct DarcyColumn {
   double grain_size = 1.0e-3;  // d [m]
@@ -20,4 +19,4 @@ struct DarcyColumn {
   }
 };
 
-}  // namespace cosim::testing
+}  // namespace cosim::bench

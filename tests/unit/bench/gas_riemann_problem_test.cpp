@@ -1,11 +1,11 @@
-#include "exact_riemann.hpp"
+#include "cosim/bench/gas_riemann_problem.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 
-namespace cosim::testing {
+namespace cosim::bench {
 namespace {
 
 struct ToroTest {
@@ -58,4 +58,4 @@ TEST(ExactRiemann, RefusesVacuumAndBadStates) {
 }
 
 }  // namespace
-}  // namespace cosim::testing
+}  // namespace cosim::bench

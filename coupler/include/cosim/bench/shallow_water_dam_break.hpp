@@ -7,7 +7,7 @@
 // flat frictionless bed, still water on both sides (Toro, Shock-capturing
 // methods for free-surface shallow flows, 2001, Ch. 5): depth h_l for
 // x < x0, h_r (>= 0) beyond.
-namespace swe_test {
+namespace cosim::bench {
 
 class ExactDamBreak {
  public:
@@ -67,4 +67,4 @@ class ExactDamBreak {
   double h_star_ = 0.0, u_star_ = 0.0, shock_speed_ = 0.0;
 };
 
-}  // namespace swe_test
+}  // namespace cosim::bench

@@ -4,8 +4,8 @@
 
 // The exact solution of the Riemann problem of the 1D Euler equations for an
 // ideal gas (Toro, Riemann Solvers and Numerical Methods for Fluid
-// Dynamics, 3rd ed., ch. 4): the reference of the Sod validation.
-namespace cosim::testing {
+// Dynamics, 3rd ed., ch. 4): the reference of Sod's shock tube.
+namespace cosim::bench {
 
 struct GasState {
   double density = 0.0;
@@ -44,4 +44,4 @@ std::vector<GasState> cell_averages(const ExactRiemannSolution& solution, double
                                     double x_lower, double x_upper, int cells, double x0, double t,
                                     int samples = 64);
 
-}  // namespace cosim::testing
+}  // namespace cosim::bench

@@ -3,17 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <vector>
 
 // Terzaghi's one-dimensional consolidation of a column of height h, drained
-// at the top and impermeable at the bottom, for tests: the excess pore
+// at the top and impermeable at the bottom: the excess pore
 // pressure under a load p0 applied at once (Pan et al. 2021, eq. 82; Tran
 // et al., MPMICE, eq. 99 with z measured from the top), and under a load
 // p0 f(t) ramped from zero over t_ramp, by superposition of the first:
 //   p_ramp(z, t) = int_0^min(t, t_ramp) p(z, t - s) f'(s) ds,
 // f linear (f' = 1 / t_ramp) or cycloidal (f = s/T - sin(2 pi s/T) / (2 pi),
 // f' = (1 - cos(2 pi s/T)) / T), as the MPM's loads ramp.
-namespace cosim::testing {
+namespace cosim::bench {
 
 // The skeleton's constrained (oedometric) modulus E (1 - nu) / ((1 + nu) (1 - 2 nu)).
 inline double oedometric_modulus(double youngs_modulus, double poisson_ratio) {
@@ -62,49 +61,4 @@ struct TerzaghiColumn {
   double time_of(double time_factor) const { return time_factor * height * height / consolidation; }
 };
 
-// A gauges.csv of pressures along a column: time in the first column, then
-// per gauge `stride` columns, the pressure first; gauge g sits at height
-// first_height + spacing g; `offset` (the ambient pressure) is subtracted.
-struct PressureGauges {
-  const std::vector<std::vector<double>>& rows;
-  double first_height = 0.0;
-  double spacing = 0.0;
-  std::size_t stride = 1;
-  double offset = 0.0;
-};
-
-struct ProfileError {
-  double time = 0.0;      // of the row compared [s]
-  double error = 0.0;     // largest |p - p_exact| over the gauges / p0
-  double at = 0.0;        // its height [m]
-  double measured = 0.0;  // p there [Pa]
-  double exact = 0.0;     // the solution there [Pa]
-};
-
-// The row nearest to `time_factor` against the column's solution.
-inline ProfileError largest_profile_error(const TerzaghiColumn& column, const PressureGauges& g,
-                                          double time_factor) {
-  const double t = column.time_of(time_factor);
-  const auto row = std::min_element(g.rows.begin(), g.rows.end(), [&](auto& a, auto& b) {
-    return std::abs(a[0] - t) < std::abs(b[0] - t);
-  });
-  ProfileError e;
-  e.time = (*row)[0];
-  const std::size_t count = (row->size() - 1) / g.stride;
-  double worst = -1.0;
-  for (std::size_t k = 0; k < count; ++k) {
-    const double z = g.first_height + g.spacing * static_cast<double>(k);
-    const double p = (*row)[1 + g.stride * k] - g.offset;
-    const double reference = column.excess_pressure(z, e.time);
-    if (std::abs(p - reference) > worst) {
-      worst = std::abs(p - reference);
-      e.at = z;
-      e.measured = p;
-      e.exact = reference;
-    }
-  }
-  e.error = worst / column.load;
-  return e;
-}
-
-}  // namespace cosim::testing
+}  // namespace cosim::bench

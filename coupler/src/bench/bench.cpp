@@ -1,0 +1,186 @@
+#include "cosim/bench/bench.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "cosim/bench/quantity.hpp"
+#include "cosim/bench/report.hpp"
+#include "cosim/bench/runner.hpp"
+#include "cosim/io/content_hash.hpp"
+#include "cosim/io/files.hpp"
+#include "cosim/io/logging.hpp"
+#include "cosim/io/run_summary.hpp"
+#include "cosim/runtime/supervisor.hpp"
+
+namespace cosim::bench {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string machine_description() {
+  std::ifstream cpu("/proc/cpuinfo");
+  std::string line, model;
+  while (std::getline(cpu, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+  }
+  return fmt::format("{}, {} cores", model.empty() ? "unknown CPU" : model,
+                     std::thread::hardware_concurrency());
+}
+
+// The coupler's own share of a coupled run's wall time: transport, mapping,
+// exchange and output, against the total (the rest is waiting for the
+// participants to compute).
+std::optional<double> coupling_share(const PlannedRun& run) {
+  if (!run.coupled) return std::nullopt;
+  std::ifstream in(run.output() / "summary.json");
+  if (!in) return std::nullopt;
+  try {
+    const auto j = nlohmann::json::parse(in);
+    const double total = j.at("wall_time_s").at("total").get<double>();
+    double own = 0.0;
+    for (const auto& [phase, seconds] : j.at("wall_time_s").at("phases").items())
+      if (phase != "waiting") own += seconds.get<double>();
+    return total > 0.0 ? std::optional<double>(own / total) : std::nullopt;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+RunResult evaluate_run(const PlannedRun& run, const RunRecord& record) {
+  RunResult result{&run, record, coupling_share(run), {}};
+  const RunLayout layout{run.backend->backend, run.coupled, run.directory / "input", run.output()};
+  for (const auto& m : run.scenario->metrics) {
+    if (!record.completed()) {
+      result.metrics.push_back(
+          unavailable(m, run.backend->backend, fmt::format("the run {}", record.state)));
+      continue;
+    }
+    try {
+      result.metrics.push_back(evaluate(m, run.backend->backend, measure(m.quantity, layout)));
+    } catch (const std::exception& e) {
+      result.metrics.push_back(unavailable(m, run.backend->backend, e.what()));
+    }
+    const MetricResult& x = result.metrics.back();
+    spdlog::info("{} {}: {} {}{}{}", run.id(), m.name, x.value ? fmt::format("{:.6g}", *x.value) : "-",
+                 m.unit, x.error ? fmt::format(", error {:.4g}", *x.error) : "",
+                 fmt::format(" ({}{})", to_string(x.verdict), x.note.empty() ? "" : ": " + x.note));
+  }
+  return result;
+}
+
+// bench_plots.py next to the build's share directory, or in the source tree.
+std::optional<fs::path> plot_script() {
+  for (const fs::path& candidate :
+       {runtime::self_directory() / ".." / "share" / "cosim" / "bench_plots.py",
+        fs::path(COSIM_BENCH_SHARE_DIR) / "bench_plots.py"}) {
+    if (fs::exists(candidate)) return fs::weakly_canonical(candidate);
+  }
+  return std::nullopt;
+}
+
+// Draws the manifest's figures with Debian's matplotlib; says why not when it cannot.
+bool draw_plots(const fs::path& plots, std::string& why) {
+  const auto script = plot_script();
+  if (!script) {
+    why = "bench_plots.py was not found next to the cosim executable";
+    return false;
+  }
+  const fs::path python = "/usr/bin/python3";
+  if (!fs::exists(python)) {
+    why = "/usr/bin/python3 is missing (apt-get install python3-matplotlib)";
+    return false;
+  }
+  runtime::Supervisor supervisor;
+  runtime::ChildSpec child{"bench_plots", python, {script->string(), plots.string()},
+                           plots / "bench_plots.log"};
+  supervisor.start(child);
+  const auto exits = supervisor.wait_all(std::chrono::milliseconds(600000));
+  if (exits.empty() || !exits.front().success()) {
+    supervisor.stop_all(std::chrono::milliseconds(1000));
+    why = fmt::format("bench_plots.py failed (see {})", (plots / "bench_plots.log").string());
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int run_bench(const BenchRunOptions& o) {
+  Suite suite = load_suite(o.bench.suite_file);
+  for (auto& s : suite.scenarios)
+    std::erase_if(s.metrics, [&](const MetricSpec& m) {
+      return m.resolution && *m.resolution != o.bench.resolution;
+    });
+  const fs::path output = fs::absolute(o.bench.output);
+  create_output_directory(output);
+  init_logging(output, "cosim", parse_verbosity(o.verbosity));
+  RunSummary summary(output, "cosim bench");
+  summary.set_config(fs::absolute(o.bench.suite_file), hash_bytes(suite.text));
+  summary.set_section("bench", {{"suite", suite.name},
+                                {"resolution", to_string(o.bench.resolution)},
+                                {"jobs", o.bench.jobs},
+                                {"only", o.bench.only}});
+  summary.write();
+  int code = 0;
+  const int finished = run_and_finish(summary, [&] {
+    BenchOptions options = o.bench;
+    options.output = output;
+    const auto runs = plan_runs(suite, options);
+    spdlog::info("suite '{}' ({}): {} runs at resolution {}, up to {} at a time; outputs in {}",
+                 suite.name, o.bench.suite_file.string(), runs.size(),
+                 to_string(o.bench.resolution), o.bench.jobs, output.string());
+    const std::string started_at = iso8601_utc(std::chrono::system_clock::now());
+    const auto records = [&] {
+      auto scope = summary.phases().measure("runs");
+      return run_all(runs, {o.bench.jobs, o.terminal, o.interrupted});
+    }();
+    std::vector<RunResult> results;
+    {
+      auto scope = summary.phases().measure("evaluation");
+      for (std::size_t i = 0; i < runs.size(); ++i) results.push_back(evaluate_run(runs[i], records[i]));
+    }
+    auto scope = summary.phases().measure("report");
+    write_results_csv(output / "results.csv", results);
+    ReportContext context{machine_description(), started_at, o.bench.resolution, false, {}};
+    write_plot_manifest(output / "plots", suite, results);
+    context.plots = draw_plots(output / "plots", context.plots_note);
+    if (!context.plots) spdlog::warn("no plots: {}", context.plots_note);
+    write_report(output / "report.md", suite, results, context);
+
+    std::map<Verdict, int> verdicts;
+    int failed = 0;
+    for (const auto& r : results) {
+      failed += r.record.completed() ? 0 : 1;
+      for (const auto& x : r.metrics) ++verdicts[x.verdict];
+    }
+    summary.set_metric("runs", static_cast<double>(results.size()), "1");
+    summary.set_metric("runs_not_finished", failed, "1");
+    summary.set_metric("metrics_within_tolerance", verdicts[Verdict::pass], "1");
+    summary.set_metric("metrics_outside_tolerance", verdicts[Verdict::fail], "1");
+    summary.set_metric("metrics_unavailable", verdicts[Verdict::unavailable], "1");
+    spdlog::info("{} runs, {} not finished; metrics: {} within tolerance, {} outside, {} measured, "
+                 "{} unavailable; report: {}",
+                 results.size(), failed, verdicts[Verdict::pass], verdicts[Verdict::fail],
+                 verdicts[Verdict::measured], verdicts[Verdict::unavailable],
+                 (output / "report.md").string());
+    if (failed > 0) {
+      code = to_int(ExitCode::participant_failed);
+      throw Error(ExitCode::participant_failed,
+                  fmt::format("{} of {} runs did not finish (see report.md)", failed, results.size()));
+    }
+  });
+  return finished != 0 ? finished : code;
+}
+
+}  // namespace cosim::bench

@@ -1,0 +1,169 @@
+#include "cosim/bench/pairing.hpp"
+
+#include <fmt/format.h>
+
+#include <vector>
+
+namespace cosim::bench {
+
+namespace {
+
+YAML::Node field_map(const std::vector<std::string>& fields, const std::string& mesh) {
+  YAML::Node map(YAML::NodeType::Map);
+  for (const auto& f : fields) map[f] = mesh;
+  return map;
+}
+
+YAML::Node sequence_of(const std::vector<std::string>& items) {
+  YAML::Node seq(YAML::NodeType::Sequence);
+  for (const auto& i : items) seq.push_back(i);
+  return seq;
+}
+
+YAML::Node flow_map(std::initializer_list<std::pair<const char*, std::string>> entries) {
+  YAML::Node map(YAML::NodeType::Map);
+  for (const auto& [k, v] : entries) map[k] = v;
+  map.SetStyle(YAML::EmitterStyle::Flow);
+  return map;
+}
+
+YAML::Node participant(const std::string& executable, const std::string& config,
+                       const std::string& mesh, const std::string& mesh_kind, int dim,
+                       const std::vector<std::string>& writes,
+                       const std::vector<std::string>& reads) {
+  YAML::Node p;
+  p["executable"] = executable;
+  p["config"] = config;
+  YAML::Node m;
+  m["kind"] = mesh_kind;
+  m["dim"] = dim;
+  m.SetStyle(YAML::EmitterStyle::Flow);
+  p["meshes"][mesh] = m;
+  p["writes"] = field_map(writes, mesh);
+  p["reads"] = field_map(reads, mesh);
+  p["writes"].SetStyle(YAML::EmitterStyle::Flow);
+  p["reads"].SetStyle(YAML::EmitterStyle::Flow);
+  return p;
+}
+
+struct Crossing {
+  std::string field;
+  bool to_fluid = true;
+  std::string mapping = "consistent";
+};
+
+int soil_dimension(const InputFile& soil) {
+  const std::string d = scalar_at(soil.root(), "dimension", "2");
+  return d == "3" ? 3 : (d == "1" ? 1 : 2);
+}
+
+void porous_pairing(Backend backend, const Scenario& s, PairedJob& out,
+                    const std::string& soil_file, const std::string& fluid_file) {
+  const Coupling& c = *s.coupling;
+  if (!c.drag.IsDefined() || c.drag.IsNull())
+    throw InputError(s.where, "coupling.drag",
+                     fmt::format("scenario '{}': the {} pairing needs a drag law", s.name,
+                                 to_string(backend)));
+  const bool ice = backend == Backend::ice;
+  const int dim = soil_dimension(out.soil);
+  std::vector<std::string> soil_writes{"solid_fraction", "solid_velocity", "solid_bulk_density"};
+  for (const char* per_cell : {"permeability", "grain_size"})
+    if (c.drag[per_cell] && c.drag[per_cell].IsScalar() && c.drag[per_cell].Scalar() == "field")
+      soil_writes.emplace_back(per_cell);
+  std::vector<std::string> soil_reads{"pore_pressure", "momentum_exchange_impulse"};
+  std::vector<std::string> fluid_writes{"pore_pressure", "fluid_velocity", "fluid_bulk_density",
+                                        "momentum_exchange_impulse"};
+  std::vector<std::string> fluid_reads{"solid_fraction", "solid_velocity", "solid_bulk_density",
+                                       "drag_coefficient"};
+  std::vector<Crossing> crossings{{"solid_fraction"}, {"solid_velocity"}, {"solid_bulk_density"}};
+  for (const auto& optional : c.optional_reads) {
+    if (optional == "solid_volume_flux" && !ice) {
+      soil_writes.push_back(optional);
+      fluid_reads.push_back(optional);
+      crossings.push_back({optional});
+    }
+  }
+  crossings.push_back({"pore_pressure", false});
+  if (ice) {
+    // The pressure's force on the solid in each cell, as the fluid feels the
+    // same gradient (Tran et al., MPMICE, eq. 48).
+    soil_reads.emplace_back("pore_pressure_force");
+    fluid_writes.emplace_back("pore_pressure_force");
+    crossings.push_back({"pore_pressure_force", false, "conservative"});
+  }
+
+  const std::string fluid_mesh = ice ? "ice_cells" : "openfoam_cells";
+  // A user's own OpenFOAM case is a cloud of cells, a generated one a grid.
+  const bool cell_cloud = !ice && out.fluid.root()["directory"].IsDefined();
+  YAML::Node job = out.job.root();
+  job["participants"][fluid_participant] =
+      participant(ice ? "ice_fluid" : "openfoam_adapter", fluid_file, fluid_mesh,
+                  cell_cloud ? "cell_cloud" : "uniform_grid", dim, fluid_writes, fluid_reads);
+  job["participants"][soil_participant] = participant(
+      "mpm_solver", soil_file, "mpm_grid", "uniform_grid", dim, soil_writes, soil_reads);
+  for (const auto& x : crossings) {
+    job["exchange"].push_back(flow_map({{"field", x.field},
+                                        {"from", x.to_fluid ? soil_participant : fluid_participant},
+                                        {"to", x.to_fluid ? fluid_participant : soil_participant},
+                                        {"mapping", x.mapping}}));
+  }
+  YAML::Node exchange;
+  exchange["fluid"] = fluid_participant;
+  exchange["solid"] = soil_participant;
+  exchange["mesh"] = std::string(fluid_participant) + "." + fluid_mesh;
+  exchange["drag"] = YAML::Clone(c.drag);
+  exchange["drag"].SetStyle(YAML::EmitterStyle::Flow);
+  exchange["solved_by"] = "fluid";
+  job["momentum_exchange"] = exchange;
+
+  YAML::Node grid = out.soil.root()["coupling"]["exchange_grid"];
+  grid["writes"] = sequence_of(soil_writes);
+  grid["reads"] = sequence_of(soil_reads);
+  if (ice) out.fluid.root()["coupling"]["drag"] = "ice";
+}
+
+void bed_pairing(PairedJob& out, const std::string& soil_file, const std::string& fluid_file) {
+  const int dim = soil_dimension(out.soil);
+  YAML::Node job = out.job.root();
+  job["participants"][soil_participant] =
+      participant("mpm_solver", soil_file, "mpm_surface", "uniform_grid", dim - 1,
+                  {"bed_elevation"}, {"bed_traction"});
+  job["participants"][fluid_participant] =
+      participant("swe_fluid", fluid_file, "swe_cells", dim == 2 ? "nonuniform_line" : "uniform_grid",
+                  dim - 1, {"bed_traction"}, {"bed_elevation"});
+  job["exchange"].push_back(flow_map({{"field", "bed_elevation"},
+                                      {"from", soil_participant},
+                                      {"to", fluid_participant},
+                                      {"mapping", "consistent"}}));
+  job["exchange"].push_back(flow_map({{"field", "bed_traction"},
+                                      {"from", fluid_participant},
+                                      {"to", soil_participant},
+                                      {"mapping", "consistent"}}));
+  YAML::Node surface = out.soil.root()["coupling"]["surface"];
+  surface["writes"] = sequence_of({"bed_elevation"});
+  surface["reads"] = sequence_of({"bed_traction"});
+  YAML::Node fluid = out.fluid.root()["coupling"];
+  fluid["reads"] = sequence_of({"bed_elevation"});
+  fluid["writes"] = sequence_of({"bed_traction"});
+}
+
+}  // namespace
+
+PairedJob make_paired_job(Backend backend, const Scenario& scenario, InputFile soil,
+                          InputFile fluid, const std::string& job_name,
+                          const std::string& soil_file, const std::string& fluid_file) {
+  YAML::Node job;
+  job["kind"] = "job";
+  job["name"] = job_name;
+  job["end_time"] = scenario.coupling->end_time;
+  job["window"] = scenario.coupling->window;
+  PairedJob out{InputFile::from_node(job, "job"), std::move(soil), std::move(fluid)};
+  if (backend == Backend::swe)
+    bed_pairing(out, soil_file, fluid_file);
+  else
+    porous_pairing(backend, scenario, out, soil_file, fluid_file);
+  out.job.root()["output"]["every"] = 0;
+  return out;
+}
+
+}  // namespace cosim::bench

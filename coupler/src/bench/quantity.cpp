@@ -1,0 +1,307 @@
+#include "cosim/bench/quantity.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "cosim/bench/csv_table.hpp"
+#include "cosim/bench/pairing.hpp"
+#include "cosim/config/document.hpp"
+#include "cosim/error.hpp"
+#include "cosim/io/snapshot_reader.hpp"
+
+namespace cosim::bench {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+[[noreturn]] void missing(const std::string& what) {
+  throw Error(ExitCode::bad_input, what);
+}
+
+double number_or(const YAML::Node& params, const char* key, double fallback) {
+  return params[key] ? params[key].as<double>() : fallback;
+}
+
+// A number that may differ per backend (e.g. the pressure datum:
+// absolute in ICE, gauge in OpenFOAM): `offset: 101325` or
+// `offset: {ice: 101325, openfoam: 0}`.
+double per_backend(const YAML::Node& params, const char* key, Backend backend, double fallback) {
+  const YAML::Node v = params[key];
+  if (!v) return fallback;
+  if (v.IsMap()) return v[to_string(backend)] ? v[to_string(backend)].as<double>() : fallback;
+  return v.as<double>();
+}
+
+std::string text_or(const YAML::Node& params, const char* key, const std::string& fallback) {
+  return params[key] ? params[key].as<std::string>() : fallback;
+}
+
+// A time series reduced as `at` says: end, max, min, series, or the row
+// nearest a time.
+Measurement reduce(const std::vector<double>& t, std::vector<double> v, const YAML::Node& params,
+                   Backend backend, const std::string& what) {
+  if (t.empty()) missing(what + ": no rows");
+  const double offset = per_backend(params, "offset", backend, 0.0);
+  const double divide_by = number_or(params, "divide_by", 1.0);
+  for (double& x : v) x = (x - offset) / divide_by;
+  const std::string at = text_or(params, "at", "end");
+  Measurement m;
+  m.abscissa = "t [s]";
+  if (at == "series") {
+    m.x = t;
+    m.y = v;
+  } else if (at == "end") {
+    m.value = v.back();
+  } else if (at == "max") {
+    m.value = *std::max_element(v.begin(), v.end());
+  } else if (at == "min") {
+    m.value = *std::min_element(v.begin(), v.end());
+  } else {
+    const double when = params["at"].as<double>();
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < t.size(); ++i)
+      if (std::abs(t[i] - when) < std::abs(t[best] - when)) best = i;
+    m.value = v[best];
+    m.time = t[best];
+  }
+  return m;
+}
+
+// The snapshot at `time` (the last without one). A snapshot further than
+// `time_tolerance` (default 5 % of the time) from it is refused rather than
+// silently measured at another time, e.g. when the run ended earlier.
+std::size_t snapshot_at(const SnapshotReader& snapshots, const YAML::Node& p) {
+  if (!p["time"]) return snapshots.count() - 1;
+  const double t = p["time"].as<double>();
+  const std::size_t s = snapshots.nearest(t);
+  const double tolerance = number_or(p, "time_tolerance", 0.05 * t + 1e-12);
+  if (std::abs(snapshots.times()[s] - t) > tolerance)
+    missing(fmt::format("no snapshot within {:.3g} s of t = {:.6g} s (the nearest is at {:.6g} s; "
+                        "the last at {:.6g} s)",
+                        tolerance, t, snapshots.times()[s], snapshots.times().back()));
+  return s;
+}
+
+Measurement gauge(const YAML::Node& p, const RunLayout& run) {
+  const fs::path file = run.fluid(text_or(p, "participant", "")) / gauge_file(run.backend);
+  const auto table = CsvTable::read(file);
+  const std::string column =
+      gauge_column(run.backend, p["name"].as<std::string>(), p["variable"].as<std::string>());
+  return reduce(table.column(table.header().front()), table.column(column), p, run.backend,
+                file.string() + " " + column);
+}
+
+Measurement time_series(const YAML::Node& p, const RunLayout& run) {
+  const fs::path file = run.output / p["file"].as<std::string>();
+  const auto table = CsvTable::read(file);
+  const std::string column = p["column"].as<std::string>();
+  return reduce(table.column(table.header().front()), table.column(column), p, run.backend,
+                file.string() + " " + column);
+}
+
+std::array<double, 3> point_of(const YAML::Node& node) {
+  std::array<double, 3> p{0.0, 0.0, 0.0};
+  for (std::size_t d = 0; d < node.size() && d < 3; ++d) p[d] = node[d].as<double>();
+  return p;
+}
+
+Measurement profile(const YAML::Node& p, const RunLayout& run) {
+  const SnapshotReader snapshots(run.fluid(text_or(p, "participant", "")),
+                                 snapshot_base(run.backend));
+  const std::size_t s = snapshot_at(snapshots, p);
+  const StoredField stored = stored_field(run.backend, p["field"].as<std::string>());
+  const auto field = snapshots.field(s, stored.dataset);
+  const auto from = point_of(p["from"]);
+  const auto to = point_of(p["to"]);
+  const int points = p["points"] ? p["points"].as<int>() : 50;
+  const std::string axis = text_or(p, "axis", "x");
+  const std::size_t a = axis == "x" ? 0 : (axis == "y" ? 1 : 2);
+  const double offset = per_backend(p, "offset", run.backend, 0.0);
+  const double divide_by = number_or(p, "divide_by", 1.0);
+  Measurement m;
+  m.time = snapshots.times()[s];
+  m.abscissa = axis + " [m]";
+  for (int i = 0; i < points; ++i) {
+    const double w = static_cast<double>(i) / (points - 1);
+    std::array<double, 3> at{};
+    for (std::size_t d = 0; d < 3; ++d) at[d] = from[d] + w * (to[d] - from[d]);
+    const std::size_t e = snapshots.element_at(s, at);
+    m.x.push_back(at[a]);
+    m.y.push_back((field.at(e, stored.component) - offset) / divide_by);
+  }
+  return m;
+}
+
+// The front along the floor: the downstream edge of the last bottom-row cell
+// holding more water than the threshold, in every snapshot.
+Measurement water_front(const YAML::Node& p, const RunLayout& run) {
+  const SnapshotReader snapshots(run.fluid(text_or(p, "participant", "")),
+                                 snapshot_base(run.backend));
+  const double threshold = number_or(p, "threshold", 0.5);
+  const double length_scale = number_or(p, "length_scale", 1.0);
+  const double time_scale = number_or(p, "time_scale", 1.0);
+  const std::string field = run.backend == Backend::swe ? "depth" : "water_fraction";
+  const StoredField stored = stored_field(run.backend, field);
+  Measurement m;
+  m.abscissa = "t [s]";
+  if (p["start"]) {
+    m.x.push_back(p["start"][0].as<double>());
+    m.y.push_back(p["start"][1].as<double>());
+  }
+  for (std::size_t s = 0; s < snapshots.count(); ++s) {
+    const auto values = snapshots.field(s, stored.dataset);
+    const auto centres = snapshots.positions(s);
+    double front = 0.0;
+    if (const auto& g = snapshots.grid()) {
+      for (int i = 0; i < g->cells[0]; ++i)
+        if (values.at(static_cast<std::size_t>(i)) > threshold)
+          front = g->origin[0] + (i + 1) * g->spacing[0];
+    } else {
+      // A line: cell edges halfway between centres.
+      for (std::size_t e = 0; e < centres.size(); ++e) {
+        if (values.at(e) <= threshold) continue;
+        const double half = e + 1 < centres.size() ? 0.5 * (centres[e + 1][0] - centres[e][0])
+                                                   : (e > 0 ? 0.5 * (centres[e][0] - centres[e - 1][0])
+                                                            : 0.0);
+        front = std::max(front, centres[e][0] + half);
+      }
+    }
+    const double t = snapshots.times()[s] * time_scale;
+    if (!m.x.empty() && t <= m.x.back()) continue;
+    m.x.push_back(t);
+    m.y.push_back(front / length_scale);
+  }
+  return m;
+}
+
+struct Points {
+  double time = 0.0;
+  std::vector<std::array<double, 3>> xyz;
+  std::vector<double> speed;
+};
+
+// The moving bodies of an MPM case: those not rigid, by index in `bodies`.
+std::set<int> moving_bodies(const fs::path& soil_case) {
+  std::set<int> moving;
+  const auto doc = config::Document::load_file(soil_case);
+  const YAML::Node bodies = doc.root().yaml()["bodies"];
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    if (!bodies[b]["rigid"]) moving.insert(static_cast<int>(b));
+  return moving;
+}
+
+Points moving_points(const SnapshotReader& snapshots, std::size_t s, const std::set<int>& moving) {
+  Points out;
+  out.time = snapshots.times()[s];
+  const auto xyz = snapshots.positions(s);
+  const auto body = snapshots.field(s, "body");
+  const auto velocity = snapshots.field(s, "velocity");
+  for (std::size_t i = 0; i < xyz.size(); ++i) {
+    if (!moving.count(static_cast<int>(body.at(i)))) continue;
+    out.xyz.push_back(xyz[i]);
+    double v2 = 0.0;
+    for (int c = 0; c < velocity.components; ++c) v2 += velocity.at(i, c) * velocity.at(i, c);
+    out.speed.push_back(std::sqrt(v2));
+  }
+  if (out.xyz.empty()) missing("the soil's snapshots hold no point of a moving body");
+  return out;
+}
+
+// Zheng et al.'s toe: the furthest point within `band` of the lowest one.
+double toe(const Points& p, double band) {
+  double bottom = std::numeric_limits<double>::infinity();
+  for (const auto& x : p.xyz) bottom = std::min(bottom, x[1]);
+  double front = -std::numeric_limits<double>::infinity();
+  for (const auto& x : p.xyz)
+    if (x[1] <= bottom + band) front = std::max(front, x[0]);
+  return front;
+}
+
+double measure_points(const std::string& measure, const Points& now, const Points& start,
+                      double band) {
+  const auto extreme = [](const Points& p, std::size_t axis, bool largest) {
+    double v = largest ? -std::numeric_limits<double>::infinity()
+                       : std::numeric_limits<double>::infinity();
+    for (const auto& x : p.xyz) v = largest ? std::max(v, x[axis]) : std::min(v, x[axis]);
+    return v;
+  };
+  if (measure == "front" || measure == "front_series") return extreme(now, 0, true);
+  if (measure == "back") return extreme(now, 0, false);
+  if (measure == "height" || measure == "height_series") return extreme(now, 1, true);
+  if (measure == "height_change") return extreme(now, 1, true) / extreme(start, 1, true);
+  if (measure == "runout") return toe(now, band) - toe(start, band);
+  if (measure == "toe") return toe(now, band);
+  if (measure == "max_speed") return *std::max_element(now.speed.begin(), now.speed.end());
+  missing("unknown soil measure '" + measure + "'");
+}
+
+Measurement soil(const YAML::Node& p, const RunLayout& run) {
+  const std::string participant = text_or(p, "participant", soil_participant);
+  const fs::path dir = run.backend == Backend::mpm ? run.output : run.participant(participant);
+  const SnapshotReader snapshots(dir, "particles");
+  const auto moving = moving_bodies(run.soil_case());
+  const std::string what = p["measure"].as<std::string>();
+  const double band = number_or(p, "base_band", 0.1);
+  const double divide_by = number_or(p, "divide_by", 1.0);
+  const Points start = moving_points(snapshots, 0, moving);
+  Measurement m;
+  if (what.size() > 7 && what.substr(what.size() - 7) == "_series") {
+    m.abscissa = "t [s]";
+    for (std::size_t s = 0; s < snapshots.count(); ++s) {
+      m.x.push_back(snapshots.times()[s]);
+      m.y.push_back(measure_points(what, moving_points(snapshots, s, moving), start, band) /
+                    divide_by);
+    }
+    return m;
+  }
+  const std::size_t s = snapshot_at(snapshots, p);
+  m.time = snapshots.times()[s];
+  m.value = measure_points(what, moving_points(snapshots, s, moving), start, band) / divide_by;
+  return m;
+}
+
+Measurement summary(const YAML::Node& p, const RunLayout& run) {
+  const fs::path file = (p["participant"] ? run.participant(p["participant"].as<std::string>())
+                                          : run.output) /
+                        "summary.json";
+  std::ifstream in(file);
+  if (!in) missing("cannot read " + file.string());
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const std::exception& e) {
+    missing(fmt::format("{}: {}", file.string(), e.what()));
+  }
+  const std::string pointer = p["value"].as<std::string>();
+  try {
+    const auto& v = j.at(nlohmann::json::json_pointer(pointer));
+    if (!v.is_number()) missing(fmt::format("{}: {} is not a number", file.string(), pointer));
+    Measurement m;
+    m.value = v.get<double>() / number_or(p, "divide_by", 1.0);
+    return m;
+  } catch (const nlohmann::json::exception&) {
+    missing(fmt::format("{}: no number at {}", file.string(), pointer));
+  }
+}
+
+}  // namespace
+
+Measurement measure(const QuantitySpec& q, const RunLayout& run) {
+  static const std::map<std::string, std::function<Measurement(const YAML::Node&, const RunLayout&)>>
+      kinds{{"gauge", gauge},       {"time_series", time_series}, {"profile", profile},
+            {"water_front", water_front}, {"soil", soil},               {"summary", summary}};
+  const auto it = kinds.find(q.kind);
+  if (it == kinds.end()) missing("unknown quantity kind '" + q.kind + "'");
+  return it->second(q.params, run);
+}
+
+}  // namespace cosim::bench
