@@ -25,8 +25,8 @@ import numpy as np
 G = 9.81
 H_S = 1.0
 INSTANTS = (0.5, 1.0, 5.0)
-DEFAULT_REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests", "validation",
-                                 "swe_pairing", "reference", "zheng_table3_clay_column_still_water.csv")
+DEFAULT_REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "configs", "bench",
+                                 "reference", "zheng_table3_clay_column_still_water.csv")
 
 
 def snapshots(run_dir):

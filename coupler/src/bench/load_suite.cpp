@@ -111,6 +111,20 @@ BackendRuns read_backend(const std::string& name, const config::Node& node, bool
   if (b.form == InputForm::standalone_case && b.backend == Backend::coupler)
     node["case"].fail("the coupler has no standalone case: give a `job`");
   b.overrides = read_override_set(node, roles_of(b.form));
+  const char* form_key = b.form == InputForm::standalone_case ? "case"
+                         : b.form == InputForm::coupled_fluid ? "fluid"
+                                                              : "job";
+  for (const auto& [key, resolution] :
+       {std::pair{"coarse", Resolution::coarse}, std::pair{"full", Resolution::full}}) {
+    const auto block = node.find(key);
+    if (!block) continue;
+    for (const char* other : {"case", "fluid", "job"})
+      if (block->has(other) && std::string(other) != form_key)
+        (*block)[other].fail_at_key(
+            fmt::format("this backend runs a `{}`; give another {} here, not a {}", form_key,
+                        form_key, other));
+    if (auto f = block->find(form_key)) b.file_at[resolution] = f->as_path();
+  }
   if (auto levels = node.find("levels")) {
     std::set<std::string> labels;
     for (const auto& l : levels->items()) {
@@ -142,14 +156,16 @@ QuantitySpec read_quantity(const config::Node& node) {
       auto at = params.find(key);
       if (!at) continue;
       const auto text = at->yaml().Scalar();
-      if (!(text == "end" || text == "max" || text == "min" || text == "series")) {
+      if (!(text == "end" || text == "max" || text == "min" || text == "series" ||
+            text == "first_above")) {
         const double t = at->as<double>();
         if (t < 0.0) at->fail("a time must not be negative");
       }
     }
   }
   if (kinds != 1)
-    node.fail("give exactly one kind: gauge, time_series, profile, water_front, soil or summary");
+    node.fail("give exactly one kind: gauge, time_series, profile, water_front, soil, summary "
+              "or wall_gradient");
   return q;
 }
 

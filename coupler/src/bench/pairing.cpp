@@ -116,6 +116,9 @@ void porous_pairing(Backend backend, const Scenario& s, PairedJob& out,
   exchange["solved_by"] = "fluid";
   job["momentum_exchange"] = exchange;
 
+  // A soil shared by several pairings may carry the blocks of each; this
+  // pairing keeps its own.
+  out.soil.root()["coupling"].remove("surface");
   YAML::Node grid = out.soil.root()["coupling"]["exchange_grid"];
   grid["writes"] = sequence_of(soil_writes);
   grid["reads"] = sequence_of(soil_reads);
@@ -139,6 +142,11 @@ void bed_pairing(PairedJob& out, const std::string& soil_file, const std::string
                                       {"from", fluid_participant},
                                       {"to", soil_participant},
                                       {"mapping", "consistent"}}));
+  if (!out.soil.root()["coupling"]["surface"]["cells"])
+    throw InputError(SourceLocation{out.soil.source().string(), 0, 0}, "coupling.surface.cells",
+                     "the shallow-water pairing needs the soil's surface grid "
+                     "(coupling: {surface: {cells: [...]}})");
+  out.soil.root()["coupling"].remove("exchange_grid");
   YAML::Node surface = out.soil.root()["coupling"]["surface"];
   surface["writes"] = sequence_of({"bed_elevation"});
   surface["reads"] = sequence_of({"bed_traction"});

@@ -65,6 +65,14 @@ Measurement reduce(const std::vector<double>& t, std::vector<double> v, const YA
     m.value = *std::max_element(v.begin(), v.end());
   } else if (at == "min") {
     m.value = *std::min_element(v.begin(), v.end());
+  } else if (at == "first_above") {
+    // The time the value first exceeds the threshold (a wave's arrival).
+    const double threshold = number_or(params, "threshold", 0.0);
+    const auto first = std::find_if(v.begin(), v.end(), [&](double x) { return x > threshold; });
+    if (first == v.end())
+      missing(fmt::format("{}: never above {:g} (largest {:g})", what, threshold,
+                          *std::max_element(v.begin(), v.end())));
+    m.value = t[static_cast<std::size_t>(first - v.begin())];
   } else {
     const double when = params["at"].as<double>();
     std::size_t best = 0;
@@ -114,12 +122,71 @@ std::array<double, 3> point_of(const YAML::Node& node) {
   return p;
 }
 
+// The free surface over a grid cell of a VOF or multi-material fluid: the
+// top of the domain minus the air in the cell's column, sum a dy, with a the
+// air's share of the fluid (not of the cell: a porous cell's grains are
+// under water). `water` holds the water's share of the fluid (OpenFOAM's
+// alpha.water), or with `air` both materials' volume fractions (ICE).
+double water_column_height(const SnapshotReader::Grid& g, const SnapshotReader::Field& water,
+                           const SnapshotReader::Field* air, std::size_t element) {
+  const auto nx = static_cast<std::size_t>(g.cells[0]);
+  const auto ny = static_cast<std::size_t>(g.cells[1]);
+  const std::size_t i = element % nx;
+  const std::size_t k = element / (nx * ny);
+  double height = g.origin[1] + g.spacing[1] * static_cast<double>(ny);
+  for (std::size_t j = 0; j < ny; ++j) {
+    const std::size_t e = (k * ny + j) * nx + i;
+    const double w = water.at(e);
+    const double a = air != nullptr ? air->at(e) : 1.0 - w;
+    const double fluid = air != nullptr ? w + a : 1.0;
+    if (fluid > 1e-12) height -= a / fluid * g.spacing[1];
+  }
+  return height;
+}
+
+// The normal derivative of a field at a wall of a grid, averaged along it:
+// second order one-sided from the wall's value and the first two cells,
+// (-8 f_w + 9 f_1 - f_2) / (3 h), signed along the axis.
+Measurement wall_gradient(const YAML::Node& p, const RunLayout& run) {
+  const SnapshotReader snapshots(run.fluid(text_or(p, "participant", "")),
+                                 snapshot_base(run.backend));
+  if (!snapshots.grid()) missing("wall_gradient needs a fluid on a uniform grid");
+  const auto& g = *snapshots.grid();
+  const std::size_t s = snapshot_at(snapshots, p);
+  const StoredField stored = stored_field(run.backend, p["field"].as<std::string>());
+  const auto f = snapshots.field(s, stored.dataset);
+  const std::string wall = p["wall"].as<std::string>();
+  const std::size_t axis = wall[0] == 'x' ? 0 : 1;
+  const bool low = wall.substr(2) == "min";
+  const double wall_value = p["wall_value"].as<double>();
+  const int n_axis = g.cells[axis], n_along = g.cells[1 - axis];
+  const auto at = [&](int along, int from_wall) {
+    const int i = low ? from_wall : n_axis - 1 - from_wall;
+    const int x = axis == 0 ? i : along, y = axis == 0 ? along : i;
+    return f.at(static_cast<std::size_t>(y * g.cells[0] + x), stored.component);
+  };
+  double sum = 0.0;
+  for (int k = 0; k < n_along; ++k) {
+    const double inward = (-8.0 * wall_value + 9.0 * at(k, 0) - at(k, 1)) / (3.0 * g.spacing[axis]);
+    sum += low ? inward : -inward;
+  }
+  Measurement m;
+  m.time = snapshots.times()[s];
+  m.value = sum / n_along / number_or(p, "divide_by", 1.0);
+  return m;
+}
+
 Measurement profile(const YAML::Node& p, const RunLayout& run) {
   const SnapshotReader snapshots(run.fluid(text_or(p, "participant", "")),
                                  snapshot_base(run.backend));
   const std::size_t s = snapshot_at(snapshots, p);
-  const StoredField stored = stored_field(run.backend, p["field"].as<std::string>());
+  const std::string name = p["field"].as<std::string>();
+  const bool surface_of_cells = name == "free_surface" && snapshots.grid().has_value();
+  const StoredField stored = stored_field(run.backend, surface_of_cells ? "water_fraction" : name);
   const auto field = snapshots.field(s, stored.dataset);
+  std::optional<SnapshotReader::Field> air;
+  if (surface_of_cells && snapshots.has_field(s, "volume_fraction_air"))
+    air = snapshots.field(s, "volume_fraction_air");
   const auto from = point_of(p["from"]);
   const auto to = point_of(p["to"]);
   const int points = p["points"] ? p["points"].as<int>() : 50;
@@ -135,8 +202,11 @@ Measurement profile(const YAML::Node& p, const RunLayout& run) {
     std::array<double, 3> at{};
     for (std::size_t d = 0; d < 3; ++d) at[d] = from[d] + w * (to[d] - from[d]);
     const std::size_t e = snapshots.element_at(s, at);
+    const double value = surface_of_cells
+                             ? water_column_height(*snapshots.grid(), field, air ? &*air : nullptr, e)
+                             : field.at(e, stored.component);
     m.x.push_back(at[a]);
-    m.y.push_back((field.at(e, stored.component) - offset) / divide_by);
+    m.y.push_back((value - offset) / divide_by);
   }
   return m;
 }
@@ -298,7 +368,8 @@ Measurement summary(const YAML::Node& p, const RunLayout& run) {
 Measurement measure(const QuantitySpec& q, const RunLayout& run) {
   static const std::map<std::string, std::function<Measurement(const YAML::Node&, const RunLayout&)>>
       kinds{{"gauge", gauge},       {"time_series", time_series}, {"profile", profile},
-            {"water_front", water_front}, {"soil", soil},               {"summary", summary}};
+            {"water_front", water_front}, {"soil", soil},               {"summary", summary},
+            {"wall_gradient", wall_gradient}};
   const auto it = kinds.find(q.kind);
   if (it == kinds.end()) missing("unknown quantity kind '" + q.kind + "'");
   return it->second(q.params, run);

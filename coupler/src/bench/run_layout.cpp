@@ -84,6 +84,7 @@ StoredField stored_field(Backend backend, const std::string& field) {
   switch (backend) {
     case Backend::ice:
       if (field == "pressure" || field == "density") return {field, 0};
+      if (field == "temperature") return {"temperature_water", 0};
       if (field == "water_fraction") return {"volume_fraction_water", 0};
       break;
     case Backend::openfoam:

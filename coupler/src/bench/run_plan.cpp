@@ -83,11 +83,13 @@ void prepare(PlannedRun& run, Resolution resolution) {
 
   const fs::path input = run.directory / "input";
   create_output_directory(input);
+  const auto other = b.file_at.find(resolution);
+  const fs::path file = other != b.file_at.end() ? other->second : b.file;
   RunKey key;
   const fs::path out = run.output();
   switch (b.form) {
     case InputForm::standalone_case: {
-      InputFile c = InputFile::read(b.file);
+      InputFile c = InputFile::read(file);
       c.apply_all(overrides, "case");
       c.write(input / "case.yaml");
       key.add("case", c);
@@ -97,7 +99,7 @@ void prepare(PlannedRun& run, Resolution resolution) {
       break;
     }
     case InputForm::ready_job: {
-      InputFile job = InputFile::read(b.file);
+      InputFile job = InputFile::read(file);
       job.apply_all(overrides, "job");
       job.write(input / "job.yaml");
       key.add("job", job);
@@ -107,7 +109,7 @@ void prepare(PlannedRun& run, Resolution resolution) {
     }
     case InputForm::coupled_fluid: {
       InputFile soil = InputFile::read(s.coupling->soil);
-      InputFile fluid = InputFile::read(b.file);
+      InputFile fluid = InputFile::read(file);
       soil.apply_all(overrides, "soil");
       fluid.apply_all(overrides, "fluid");
       const fs::path soil_file = input / "soil.yaml";

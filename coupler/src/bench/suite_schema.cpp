@@ -16,8 +16,17 @@ const char* const overrides_doc =
     "case | job; the key path is dotted, sequence items by index (bodies.0.porous.porosity).";
 
 Schema resolution_schema() {
-  Schema s = Schema::object("Overrides that apply at one resolution only.");
+  Schema s = Schema::object("What changes at one resolution only.");
   s.optional("set", overrides_schema(), overrides_doc);
+  return s;
+}
+
+Schema backend_resolution_schema() {
+  Schema s = resolution_schema();
+  s.optional("case", Schema::path().must_exist(), "Another case file at this resolution.")
+      .optional("fluid", Schema::path().must_exist(), "Another fluid case at this resolution.")
+      .optional("job", Schema::path().must_exist(),
+                "Another job at this resolution (e.g. a paper's grid in full/).");
   return s;
 }
 
@@ -43,8 +52,10 @@ Schema backend_schema() {
                 "pairing (the job is built by the bench).")
       .optional("job", Schema::path().must_exist(), "A ready job (kind: job), run as it is.")
       .optional("set", overrides_schema(), overrides_doc)
-      .optional("coarse", resolution_schema(), "Overrides at --resolution coarse.")
-      .optional("full", resolution_schema(), "Overrides at --resolution full.")
+      .optional("coarse", backend_resolution_schema(),
+                "Overrides (or another file of the same form) at --resolution coarse.")
+      .optional("full", backend_resolution_schema(),
+                "Overrides (or another file of the same form) at --resolution full.")
       .optional("levels", Schema::sequence(level_schema()).length(1, 32),
                 "Run the backend on several grids (error against resolution).");
   return s;
@@ -91,7 +102,10 @@ Schema gauge_schema() {
                                 "water_fraction", "surface_elevation", "depth", "speed"}),
                 "What it recorded.")
       .optional("at", Schema::any().default_value("end"),
-                "end | max | min | series | a time [s] (the nearest row).")
+                "end | max | min | series | first_above (the time the value first exceeds "
+                "`threshold`) | a time [s] (the nearest row).")
+      .optional("threshold", Schema::number().default_value("0"),
+                "at: first_above: the value to exceed (after the offset).")
       .optional("offset", offset_schema(), offset_doc);
   with_common_keys(s, true);
   return s;
@@ -113,8 +127,10 @@ Schema profile_schema() {
   Schema s = Schema::object("A field along a straight line, from the snapshot nearest a time.");
   s.required("field",
              Schema::one_of({"pressure", "density", "velocity_x", "velocity_y", "water_fraction",
-                             "depth", "free_surface"}),
-             "The field (each backend's own name for it is looked up).")
+                             "depth", "free_surface", "temperature"}),
+             "The field (each backend's own name for it is looked up; free_surface of a 2D "
+             "fluid on cells is the domain's top minus the air in the column, sum a dy with a "
+             "the air's share of each cell's fluid).")
       .required("from", Schema::vector(1, 3), "Start of the line [m].")
       .required("to", Schema::vector(1, 3), "End of the line [m].")
       .optional("points", Schema::integer().range(2, 100000).default_value("50"),
@@ -142,6 +158,23 @@ Schema water_front_schema() {
                 "Times are multiplied by it (e.g. sqrt(2 g / a)).")
       .optional("start", Schema::vector(2, 2),
                 "A first point (time, position) before the first snapshot, e.g. [0, 1].");
+  with_common_keys(s, true);
+  return s;
+}
+
+Schema wall_gradient_schema() {
+  Schema s = Schema::object(
+      "The normal derivative of a field at a wall of a fluid's grid, along the axis, averaged "
+      "over the wall (second order one-sided from the wall's value): e.g. a Nusselt number with "
+      "divide_by = -dT / H.");
+  s.required("field", Schema::one_of({"temperature", "pressure", "velocity_x", "velocity_y"}),
+             "The field.")
+      .required("wall", Schema::one_of({"x_min", "x_max", "y_min", "y_max"}), "The wall.")
+      .required("wall_value", Schema::number(), "The field's value on the wall.")
+      .optional("time", Schema::number().non_negative().unit("s"),
+                "Snapshot time (default: the last).")
+      .optional("time_tolerance", Schema::number().non_negative().unit("s"),
+                "How far the snapshot may be from `time` (default 5 % of it).");
   with_common_keys(s, true);
   return s;
 }
@@ -184,6 +217,7 @@ Schema quantity_schema() {
       .optional("profile", profile_schema(), "A field along a line.")
       .optional("water_front", water_front_schema(), "The water's front against time.")
       .optional("soil", soil_schema(), "The soil's extent.")
+      .optional("wall_gradient", wall_gradient_schema(), "A field's gradient at a wall.")
       .optional("summary", summary_value_schema(), "A number of a summary.json.");
   return s;
 }

@@ -60,6 +60,7 @@ struct BackendRuns {
   Backend backend = Backend::ice;
   InputForm form = InputForm::standalone_case;
   std::filesystem::path file;
+  std::map<Resolution, std::filesystem::path> file_at;  // another file at one resolution
   OverrideSet overrides;
   std::vector<Level> levels;  // empty: one run
   SourceLocation where;

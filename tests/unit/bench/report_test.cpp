@@ -1,0 +1,96 @@
+#include <gtest/gtest.h>
+
+#include "bench_scratch.hpp"
+#include "cosim/bench/csv_table.hpp"
+#include "cosim/bench/report.hpp"
+
+namespace cosim::bench {
+namespace {
+
+using testing::Scratch;
+
+struct TwoBackends {
+  Suite suite;
+  std::vector<PlannedRun> runs;
+  std::vector<RunResult> results;
+
+  TwoBackends() {
+    Scenario s;
+    s.name = "column";
+    s.title = "A column";
+    MetricSpec m;
+    m.name = "speed";
+    m.label = "speed |u|";
+    m.unit = "m/s";
+    m.reference.kind = "value";
+    s.metrics.push_back(m);
+    BackendRuns ice, foam;
+    ice.backend = Backend::ice;
+    foam.backend = Backend::openfoam;
+    s.backends = {ice, foam};
+    suite.name = "small";
+    suite.title = "Small";
+    suite.scenarios.push_back(s);
+    const Scenario& scenario = suite.scenarios[0];
+    for (const auto& b : scenario.backends) {
+      PlannedRun r;
+      r.scenario = &scenario;
+      r.backend = &b;
+      runs.push_back(r);
+    }
+    const auto result = [](double error, double wall, Verdict v) {
+      RunResult r;
+      r.record.state = "completed";
+      r.record.wall_time_s = wall;
+      MetricResult x;
+      x.value = 1.0 + error;
+      x.reference = 1.0;
+      x.reference_label = "exact";
+      x.error = error;
+      x.tolerance = 0.05;
+      x.verdict = v;
+      r.metrics.push_back(x);
+      return r;
+    };
+    results = {result(0.01, 30.0, Verdict::pass), result(0.2, 3.0, Verdict::fail)};
+    results[0].run = &runs[0];
+    results[1].run = &runs[1];
+  }
+};
+
+TEST(Report, OneCsvRowPerRunAndMetric) {
+  Scratch dir;
+  TwoBackends b;
+  write_results_csv(dir.path() / "results.csv", b.results);
+  const CsvTable t = CsvTable::read(dir.path() / "results.csv");
+  ASSERT_EQ(t.rows(), 2u);
+  EXPECT_EQ(t.text(0, t.index("backend")), "ice");
+  EXPECT_EQ(t.text(1, t.index("verdict")), "fail");
+  EXPECT_DOUBLE_EQ(t.row(0)[t.index("error")], 0.01);
+  EXPECT_DOUBLE_EQ(t.row(1)[t.index("wall_time_s")], 3.0);
+}
+
+TEST(Report, SaysWhichPairingWasClosestAndWhichCheapest) {
+  TwoBackends b;
+  const std::string s = scenario_summary(b.suite.scenarios[0], {&b.results[0], &b.results[1]});
+  EXPECT_NE(s.find("Closest to the reference: **ice**"), std::string::npos) << s;
+  EXPECT_NE(s.find("Cheapest: **openfoam**"), std::string::npos) << s;
+  EXPECT_NE(s.find("openfoam is outside tolerance on 1 metric"), std::string::npos) << s;
+}
+
+TEST(Report, TheMarkdownTableKeepsItsColumns) {
+  Scratch dir;
+  TwoBackends b;
+  write_report(dir.path() / "report.md", b.suite, b.results, {"test machine", "now", Resolution::coarse, false, "none"});
+  std::ifstream in(dir.path() / "report.md");
+  std::string line, row;
+  while (std::getline(in, line))
+    if (line.rfind("| speed", 0) == 0) row = line;
+  ASSERT_FALSE(row.empty());
+  EXPECT_NE(row.find("speed \\|u\\|"), std::string::npos) << row;  // the label's bars escaped
+  EXPECT_EQ(std::count(row.begin(), row.end(), '|') - std::count(row.begin(), row.end(), '\\'), 5)
+      << row;
+}
+
+}  // namespace
+}  // namespace cosim::bench
