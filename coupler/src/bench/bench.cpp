@@ -118,10 +118,14 @@ bool draw_plots(const fs::path& plots, std::string& why) {
 
 int run_bench(const BenchRunOptions& o) {
   Suite suite = load_suite(o.bench.suite_file);
-  for (auto& s : suite.scenarios)
-    std::erase_if(s.metrics, [&](const MetricSpec& m) {
-      return m.resolution && *m.resolution != o.bench.resolution;
-    });
+  // Metrics of the other resolution are dropped. (Copied, not erased in
+  // place: assigning a YAML::Node rebinds the storage it shares.)
+  for (auto& s : suite.scenarios) {
+    std::vector<MetricSpec> kept;
+    for (const auto& m : s.metrics)
+      if (!m.resolution || *m.resolution == o.bench.resolution) kept.push_back(m);
+    s.metrics = std::move(kept);
+  }
   const fs::path output = fs::absolute(o.bench.output);
   create_output_directory(output);
   init_logging(output, "cosim", parse_verbosity(o.verbosity));

@@ -14,15 +14,40 @@ namespace cosim::bench {
 
 namespace {
 
+std::string trimmed(const std::string& cell) {
+  const auto first = cell.find_first_not_of(" \t\r");
+  const auto last = cell.find_last_not_of(" \t\r");
+  return first == std::string::npos ? "" : cell.substr(first, last - first + 1);
+}
+
+// The cells of one line: a cell in double quotes may hold commas, and "" is a
+// quote within it (RFC 4180, as results.csv writes them).
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> cells;
-  std::stringstream in(line);
   std::string cell;
-  while (std::getline(in, cell, ',')) {
-    const auto first = cell.find_first_not_of(" \t\r");
-    const auto last = cell.find_last_not_of(" \t\r");
-    cells.push_back(first == std::string::npos ? "" : cell.substr(first, last - first + 1));
+  bool quoted = false, was_quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        cell += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        cell += c;
+      }
+    } else if (c == '"') {
+      quoted = was_quoted = true;
+    } else if (c == ',') {
+      cells.push_back(was_quoted ? cell : trimmed(cell));
+      cell.clear();
+      was_quoted = false;
+    } else {
+      cell += c;
+    }
   }
+  cells.push_back(was_quoted ? cell : trimmed(cell));
   return cells;
 }
 

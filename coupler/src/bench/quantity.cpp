@@ -318,7 +318,7 @@ Measurement soil(const YAML::Node& p, const RunLayout& run) {
   const std::string participant = text_or(p, "participant", soil_participant);
   const fs::path dir = run.backend == Backend::mpm ? run.output : run.participant(participant);
   const SnapshotReader snapshots(dir, "particles");
-  const auto moving = moving_bodies(run.soil_case());
+  const auto moving = moving_bodies(run.soil_case(participant));
   const std::string what = p["measure"].as<std::string>();
   const double band = number_or(p, "base_band", 0.1);
   const double divide_by = number_or(p, "divide_by", 1.0);

@@ -89,11 +89,12 @@ std::string percent_or_number(const MetricSpec& m, double error) {
 std::string result_cell(const MetricSpec& m, const RunResult& r, const MetricResult& x) {
   if (!r.record.completed()) return fmt::format("run {}", r.record.state);
   if (x.verdict == Verdict::unavailable) return "unavailable";
-  std::string text = x.value ? short_number(x.value) : std::string("curve");
+  // A number shows itself and its error in brackets; a curve, its error.
+  std::string text = x.value ? short_number(x.value) : std::string();
   if (x.error) {
-    text += fmt::format(" (error {}", percent_or_number(m, *x.error));
-    if (x.tolerance) text += fmt::format(" ≤ {}", percent_or_number(m, *x.tolerance));
-    text += ")";
+    std::string error = fmt::format("error {}", percent_or_number(m, *x.error));
+    if (x.tolerance) error += fmt::format(" ≤ {}", percent_or_number(m, *x.tolerance));
+    text += text.empty() ? error : " (" + error + ")";
   }
   if (x.verdict == Verdict::pass) text += " ✓";
   if (x.verdict == Verdict::fail) text += " ✗";
@@ -297,7 +298,7 @@ void write_report(const fs::path& file, const Suite& suite, const std::vector<Ru
                   const ReportContext& context) {
   std::ostringstream md;
   md << "# " << suite.title << "\n\n";
-  if (!suite.about.empty()) md << suite.about << "\n\n";
+  if (!suite.about.empty()) md << suite.about << "\n";
   std::map<Verdict, int> verdicts;
   int reused = 0, failed = 0;
   for (const auto& r : results) {
@@ -321,7 +322,7 @@ void write_report(const fs::path& file, const Suite& suite, const std::vector<Ru
     if (it == grouped.end()) continue;
     const auto& runs = it->second;
     md << "## " << s.title << "\n\n";
-    if (!s.about.empty()) md << s.about << "\n\n";
+    if (!s.about.empty()) md << s.about << "\n";
     const std::string summary = scenario_summary(s, runs);
     if (!summary.empty()) md << summary << "\n\n";
     md << "| metric | reference |";

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "cosim/bench/pairing.hpp"
+#include "cosim/config/document.hpp"
 #include "cosim/error.hpp"
 
 namespace cosim::bench {
@@ -17,8 +18,16 @@ fs::path RunLayout::fluid(const std::string& name) const {
   return participant(name.empty() ? std::string(fluid_participant) : name);
 }
 
-fs::path RunLayout::soil_case() const {
-  return coupled ? input / "soil.yaml" : input / "case.yaml";
+fs::path RunLayout::soil_case(const std::string& participant) const {
+  if (!coupled) return input / "case.yaml";
+  // The job names the participant's config (absolute in the run's copy).
+  const auto job = config::Document::load_file(input / "job.yaml");
+  const YAML::Node config = job.root().yaml()["participants"][participant]["config"];
+  if (!config)
+    throw Error(ExitCode::bad_input,
+                fmt::format("{}: no participant '{}' with a config (give the soil's participant)",
+                            (input / "job.yaml").string(), participant));
+  return config.as<std::string>();
 }
 
 namespace {

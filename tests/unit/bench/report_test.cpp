@@ -45,7 +45,7 @@ struct TwoBackends {
       MetricResult x;
       x.value = 1.0 + error;
       x.reference = 1.0;
-      x.reference_label = "exact";
+      x.reference_label = "exact (eq. 1, \"a\")";
       x.error = error;
       x.tolerance = 0.05;
       x.verdict = v;
@@ -68,6 +68,7 @@ TEST(Report, OneCsvRowPerRunAndMetric) {
   EXPECT_EQ(t.text(1, t.index("verdict")), "fail");
   EXPECT_DOUBLE_EQ(t.row(0)[t.index("error")], 0.01);
   EXPECT_DOUBLE_EQ(t.row(1)[t.index("wall_time_s")], 3.0);
+  EXPECT_EQ(t.text(0, t.index("reference_label")), "exact (eq. 1, \"a\")");  // quoted in the file
 }
 
 TEST(Report, SaysWhichPairingWasClosestAndWhichCheapest) {

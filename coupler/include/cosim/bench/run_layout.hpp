@@ -20,8 +20,9 @@ struct RunLayout {
   std::filesystem::path participant(const std::string& name) const;
   // The fluid's directory (coupled: its participant's, `water` unless given).
   std::filesystem::path fluid(const std::string& name = {}) const;
-  // The MPM case the run used (coupled: input/soil.yaml; mpm: input/case.yaml).
-  std::filesystem::path soil_case() const;
+  // The MPM case the run used: a standalone run's input/case.yaml, or the
+  // config the run's job gives the participant.
+  std::filesystem::path soil_case(const std::string& participant) const;
 };
 
 // The header of a gauge's column in the backend's gauges.csv (mpm:
