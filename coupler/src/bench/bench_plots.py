@@ -14,6 +14,7 @@ Each becomes PLOTS_DIR/<file>. Needs Debian's python3-matplotlib.
 import json
 import os
 import sys
+import textwrap
 
 import matplotlib
 
@@ -63,7 +64,7 @@ def main():
     for fig in manifest["figures"]:
         figure, ax = plt.subplots(figsize=(6.4, 4.0))
         draw[fig["kind"]](fig, ax)
-        ax.set_title(fig["title"], fontsize=9)
+        ax.set_title("\n".join(textwrap.wrap(fig["title"], 80)), fontsize=9)
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=8)
         figure.tight_layout()

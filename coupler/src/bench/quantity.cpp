@@ -222,7 +222,7 @@ Measurement water_front(const YAML::Node& p, const RunLayout& run) {
   const std::string field = run.backend == Backend::swe ? "depth" : "water_fraction";
   const StoredField stored = stored_field(run.backend, field);
   Measurement m;
-  m.abscissa = "t [s]";
+  m.abscissa = time_scale == 1.0 ? "t [s]" : fmt::format("t x {:.5g} [1]", time_scale);
   if (p["start"]) {
     m.x.push_back(p["start"][0].as<double>());
     m.y.push_back(p["start"][1].as<double>());

@@ -44,6 +44,16 @@ std::string first_line(const std::string& text) {
   return text.substr(0, text.find('\n'));
 }
 
+// A failed run's message in one line: how it ended and the last line of its
+// console (usually the error that ended it).
+std::string failure_line(const std::string& message) {
+  const std::string first = first_line(message);
+  const auto last_break = message.find_last_of('\n');
+  if (last_break == std::string::npos) return first;
+  const auto start = message.find_first_not_of(' ', last_break + 1);
+  return start == std::string::npos ? first : first + ": " + message.substr(start);
+}
+
 std::string run_label(const PlannedRun& run) {
   return run.level != nullptr ? fmt::format("{} ({})", run.backend_name(), run.level->label)
                               : run.backend_name();
@@ -58,6 +68,20 @@ std::string quantity_name(const QuantitySpec& q) {
 
 std::string plot_name(const std::string& scenario, const std::string& what) {
   return directory_name(scenario + "__" + what) + ".png";
+}
+
+// The figure of a metric's curves: the first metric measuring the same
+// quantity names it.
+std::string curve_plot(const Scenario& s, std::size_t index) {
+  const auto text = [](const QuantitySpec& q) {
+    YAML::Emitter out;
+    out << q.params;
+    return q.kind + out.c_str();
+  };
+  for (std::size_t i = 0; i < index; ++i)
+    if (text(s.metrics[i].quantity) == text(s.metrics[index].quantity))
+      return plot_name(s.name, s.metrics[i].name);
+  return plot_name(s.name, s.metrics[index].name);
 }
 
 bool has_curve(const MetricSpec& m, const std::vector<const RunResult*>& runs, std::size_t index) {
@@ -112,7 +136,7 @@ void write_results_csv(const fs::path& file, const std::vector<RunResult>& resul
     const auto row = [&](const std::string& metric, const std::string& unit,
                          const MetricResult* x) {
       std::string note = x != nullptr ? x->note : std::string();
-      if (!r.record.completed()) note = first_line(r.record.message);
+      if (!r.record.completed()) note = failure_line(r.record.message);
       out += fmt::format(
           "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", cell(run.scenario->name),
           run.backend_name(), cell(run.level_label()),
@@ -139,9 +163,10 @@ std::vector<fs::path> write_plot_manifest(const fs::path& dir, const Suite& suit
     const auto it = grouped.find(&s);
     if (it == grouped.end()) continue;
     const auto& runs = it->second;
+    std::set<std::string> drawn;  // metrics measuring the same curve share one figure
     for (std::size_t i = 0; i < s.metrics.size(); ++i) {
       const MetricSpec& m = s.metrics[i];
-      if (has_curve(m, runs, i)) {
+      if (has_curve(m, runs, i) && drawn.insert(curve_plot(s, i)).second) {
         json curves = json::array();
         json reference = nullptr;
         for (const RunResult* r : runs) {
@@ -151,7 +176,7 @@ std::vector<fs::path> write_plot_manifest(const fs::path& dir, const Suite& suit
           if (reference.is_null() && !x.reference_x.empty())
             reference = {{"label", x.reference_label}, {"x", x.reference_x}, {"y", x.reference_y}};
         }
-        const std::string file = plot_name(s.name, m.name);
+        const std::string file = curve_plot(s, i);
         figures.push_back({{"kind", "curves"},
                            {"file", file},
                            {"title", fmt::format("{}: {}", s.title, m.label)},
@@ -282,7 +307,7 @@ std::string scenario_summary(const Scenario& s, const std::vector<const RunResul
   for (const RunResult* r : all_runs) {
     if (!r->record.completed())
       sentences.push_back(fmt::format("**{}** did not finish ({}): {}", run_label(*r->run),
-                                      r->record.state, first_line(r->record.message)));
+                                      r->record.state, failure_line(r->record.message)));
     int failing = 0;
     for (const auto& x : r->metrics) failing += x.verdict == Verdict::fail ? 1 : 0;
     if (failing > 0)
@@ -364,10 +389,10 @@ void write_report(const fs::path& file, const Suite& suite, const std::vector<Ru
     for (const auto& n : notes) md << "- " << n << "\n";
     if (!notes.empty()) md << "\n";
     if (context.plots) {
+      std::set<std::string> shown;
       for (std::size_t i = 0; i < s.metrics.size(); ++i) {
-        if (has_curve(s.metrics[i], runs, i))
-          md << fmt::format("![{}](plots/{})\n", md_cell(s.metrics[i].label),
-                            plot_name(s.name, s.metrics[i].name));
+        if (has_curve(s.metrics[i], runs, i) && shown.insert(curve_plot(s, i)).second)
+          md << fmt::format("![{}](plots/{})\n", md_cell(s.metrics[i].label), curve_plot(s, i));
         if (has_levels(runs) && s.metrics[i].reference.kind != "none")
           md << fmt::format("![error of {} against resolution](plots/{})\n", s.metrics[i].name,
                             plot_name(s.name, s.metrics[i].name + "_convergence"));
