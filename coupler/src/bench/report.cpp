@@ -125,6 +125,34 @@ std::string result_cell(const MetricSpec& m, const RunResult& r, const MetricRes
   return text;
 }
 
+// The observed order of convergence between successive levels of a
+// refinement study, log(e_1 / e_2) / log(n_2 / n_1), per backend and metric.
+std::vector<std::string> convergence_notes(const Scenario& s,
+                                           const std::vector<const RunResult*>& runs) {
+  std::vector<std::string> notes;
+  for (std::size_t i = 0; i < s.metrics.size(); ++i) {
+    std::map<std::string, std::vector<std::pair<double, double>>> levels;
+    for (const RunResult* r : runs) {
+      const MetricResult& x = r->metrics[i];
+      if (r->run->level == nullptr || !x.error || !std::isfinite(*x.error) || *x.error <= 0.0)
+        continue;
+      levels[r->run->backend_name()].emplace_back(r->run->level->cells, *x.error);
+    }
+    for (const auto& [backend, points] : levels) {
+      if (points.size() < 2) continue;
+      std::string orders;
+      for (std::size_t k = 1; k < points.size(); ++k)
+        orders += fmt::format("{}{:.2f} ({:g} to {:g} cells)", k > 1 ? ", " : "",
+                              std::log(points[k - 1].second / points[k].second) /
+                                  std::log(points[k].first / points[k - 1].first),
+                              points[k - 1].first, points[k].first);
+      notes.push_back(
+          fmt::format("{}, {}: observed order of convergence {}", backend, s.metrics[i].name, orders));
+    }
+  }
+  return notes;
+}
+
 }  // namespace
 
 void write_results_csv(const fs::path& file, const std::vector<RunResult>& results) {
@@ -299,10 +327,12 @@ std::string scenario_summary(const Scenario& s, const std::vector<const RunResul
     if (dearest == nullptr || r->record.wall_time_s > dearest->record.wall_time_s) dearest = r;
   }
   if (completed > 1) {
+    const double ratio = dearest->record.wall_time_s / cheapest->record.wall_time_s;
     sentences.push_back(fmt::format(
-        "Cheapest: **{}** ({:.3g} s of wall time; {} took {:.3g} s, {:.2g}x as long).",
+        "Cheapest: **{}** ({:.3g} s of wall time; {} took {:.3g} s, {} as long).",
         run_label(*cheapest->run), cheapest->record.wall_time_s, run_label(*dearest->run),
-        dearest->record.wall_time_s, dearest->record.wall_time_s / cheapest->record.wall_time_s));
+        dearest->record.wall_time_s,
+        ratio >= 10.0 ? fmt::format("{:.0f} times", ratio) : fmt::format("{:.2g} times", ratio)));
   }
   for (const RunResult* r : all_runs) {
     if (!r->record.completed())
@@ -386,6 +416,7 @@ void write_report(const fs::path& file, const Suite& suite, const std::vector<Ru
         if (!r->metrics[i].note.empty() && r->record.completed())
           notes.push_back(fmt::format("{}, {}: {}", run_label(*r->run), s.metrics[i].name,
                                       first_line(r->metrics[i].note)));
+    for (const auto& n : convergence_notes(s, runs)) notes.push_back(n);
     for (const auto& n : notes) md << "- " << n << "\n";
     if (!notes.empty()) md << "\n";
     if (context.plots) {

@@ -58,6 +58,18 @@ std::optional<double> simulated_time(const PlannedRun& run) {
   return std::nullopt;
 }
 
+// The wall time a run measured itself (its summary.json), finer than the
+// runner's polling.
+std::optional<double> own_wall_time(const PlannedRun& run) {
+  std::ifstream in(run.output() / "summary.json");
+  if (!in) return std::nullopt;
+  try {
+    return nlohmann::json::parse(in).at("wall_time_s").at("total").get<double>();
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
 struct Active {
   std::size_t index = 0;
   Clock::time_point started;
@@ -163,7 +175,8 @@ std::vector<RunRecord> run_all(const std::vector<PlannedRun>& runs, const Runner
   };
   const auto finish = [&](std::size_t i, const runtime::ChildExit& e, Clock::time_point started) {
     RunRecord& r = records[i];
-    r.wall_time_s = std::chrono::duration<double>(Clock::now() - started).count();
+    r.wall_time_s = own_wall_time(runs[i]).value_or(
+        std::chrono::duration<double>(Clock::now() - started).count());
     r.exit_code = e.signal != 0 ? 128 + e.signal : e.exit_status;
     r.state = e.success() ? "completed" : (interrupted() ? "interrupted" : "failed");
     if (!e.success()) r.message = failure_message(runs[i], e);
