@@ -136,8 +136,7 @@ int run_bench(const BenchRunOptions& o) {
                                 {"jobs", o.bench.jobs},
                                 {"only", o.bench.only}});
   summary.write();
-  int code = 0;
-  const int finished = run_and_finish(summary, [&] {
+  return run_and_finish(summary, [&] {
     BenchOptions options = o.bench;
     options.output = output;
     const auto runs = plan_runs(suite, options);
@@ -178,13 +177,10 @@ int run_bench(const BenchRunOptions& o) {
                  results.size(), failed, verdicts[Verdict::pass], verdicts[Verdict::fail],
                  verdicts[Verdict::measured], verdicts[Verdict::unavailable],
                  (output / "report.md").string());
-    if (failed > 0) {
-      code = to_int(ExitCode::participant_failed);
+    if (failed > 0)
       throw Error(ExitCode::participant_failed,
                   fmt::format("{} of {} runs did not finish (see report.md)", failed, results.size()));
-    }
   });
-  return finished != 0 ? finished : code;
 }
 
 }  // namespace cosim::bench
