@@ -196,6 +196,7 @@ std::vector<RunRecord> run_all(const std::vector<PlannedRun>& runs, const Runner
       std::error_code ec;
       fs::remove_all(run.output(), ec);
       fs::remove(record_path(run), ec);
+      fs::remove(run.directory / "console.log", ec);
       runtime::ChildSpec child;
       child.name = run.id();
       child.args = run.args;
