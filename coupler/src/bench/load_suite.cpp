@@ -152,15 +152,13 @@ QuantitySpec read_quantity(const config::Node& node) {
     q.key_path = params.key_path();
     q.where = params.key_location();
     ++kinds;
-    for (const char* key : {"at"}) {
-      auto at = params.find(key);
-      if (!at) continue;
+    // `at` is a reduction's name or a time.
+    if (auto at = params.find("at")) {
       const auto text = at->yaml().Scalar();
       if (!(text == "end" || text == "max" || text == "min" || text == "series" ||
-            text == "first_above")) {
-        const double t = at->as<double>();
-        if (t < 0.0) at->fail("a time must not be negative");
-      }
+            text == "first_above") &&
+          at->as<double>() < 0.0)
+        at->fail("a time must not be negative");
     }
   }
   if (kinds != 1)
