@@ -255,6 +255,8 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("-j,--jobs", bench_options.bench.jobs, "runs at a time (default 1)")
       ->check(CLI::Range(1, 64));
   bench_cmd->add_option("--verbosity", bench_options.verbosity, "quiet | normal | verbose | trace");
+  bench_cmd->add_flag("--dry-run", bench_options.dry_run,
+                      "write each run's inputs and list the runs (kept or to run), run nothing");
   bench_cmd->add_flag("--help-config", bench_help_config,
                       "list every key of a suite file and the analytic solutions, and exit");
 

@@ -77,6 +77,15 @@ TEST(CosimBench, AFailedRunIsARowThatSaysWhyAndTheRestAreMeasured) {
   EXPECT_EQ(summary["metrics"]["runs_not_finished"]["value"], 1);
   EXPECT_TRUE(fs::exists(dir / "report" / "plots" / "stoker__depth_l1_convergence.png"));
 
+  // A dry run says which runs would be kept.
+  const ProcessResult dry = run({binary("cosim").string(), "bench", (dir / "suite.yaml").string(),
+                                 "--output", (dir / "report").string(), "--dry-run"},
+                                std::chrono::seconds(60));
+  EXPECT_EQ(dry.exit_code, 0) << dry.output;
+  EXPECT_NE(dry.output.find("stoker/swe@50 cells"), std::string::npos) << dry.output;
+  EXPECT_NE(dry.output.find("(kept)"), std::string::npos) << dry.output;
+  EXPECT_NE(dry.output.find("broken/swe"), std::string::npos);
+
   // Again: the two finished runs are kept, the broken one is tried again.
   r = bench();
   EXPECT_EQ(r.exit_code, 3);

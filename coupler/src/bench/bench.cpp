@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -143,6 +144,15 @@ int run_bench(const BenchRunOptions& o) {
     spdlog::info("suite '{}' ({}): {} runs at resolution {}, up to {} at a time; outputs in {}",
                  suite.name, o.bench.suite_file.string(), runs.size(),
                  to_string(o.bench.resolution), o.bench.jobs, output.string());
+    if (o.dry_run) {
+      for (const auto& run : runs) {
+        const RunRecord previous = read_record(run);
+        const bool kept = previous.completed() && previous.key == run.key;
+        std::printf("%-40s %-12s %s %s\n", run.id().c_str(), kept ? "(kept)" : "(to run)",
+                    run.executable.c_str(), fmt::format("{}", fmt::join(run.args, " ")).c_str());
+      }
+      return;
+    }
     const std::string started_at = iso8601_utc(std::chrono::system_clock::now());
     const auto records = [&] {
       auto scope = summary.phases().measure("runs");

@@ -14,6 +14,7 @@ struct BenchRunOptions {
   BenchOptions bench;
   bool terminal = false;
   std::string verbosity = "normal";
+  bool dry_run = false;  // write the inputs and list the runs, run nothing
   const std::atomic<bool>* interrupted = nullptr;
 };
 
