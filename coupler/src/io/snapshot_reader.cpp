@@ -7,7 +7,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
-#include <regex>
+#include <cctype>
 #include <sstream>
 
 #include "cosim/error.hpp"
@@ -57,39 +57,64 @@ double time_attribute(hid_t file, const fs::path& name) {
   return t;
 }
 
-// The grid of a CoRectMesh index: dimensions (nodes) and origin/spacing,
-// slowest direction first in the file.
+// The text between `open` (after `from`) and the next `close`, or nothing.
+std::optional<std::string> between(const std::string& s, const std::string& open,
+                                   const std::string& close, std::size_t& from) {
+  const auto start = s.find(open, from);
+  if (start == std::string::npos) return std::nullopt;
+  const auto end = s.find(close, start + open.size());
+  if (end == std::string::npos) return std::nullopt;
+  from = end + close.size();
+  return s.substr(start + open.size(), end - start - open.size());
+}
+
+template <class T>
+std::vector<T> numbers(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<T> out;
+  for (T x{}; in >> x;) out.push_back(x);
+  return out;
+}
+
+// The grid of a CoRectMesh index: the topology's node counts and the first
+// two XML data items, origin and spacing, all slowest direction first.
 std::optional<SnapshotReader::Grid> grid_of_index(const fs::path& xdmf) {
   std::ifstream in(xdmf);
   if (!in) return std::nullopt;
   std::stringstream text;
   text << in.rdbuf();
   const std::string s = text.str();
-  static const std::regex topology(R"re(TopologyType="(2|3)DCoRectMesh" Dimensions="([0-9 ]+)")re");
-  static const std::regex item(R"re(<DataItem Format="XML"[^>]*>([^<]+)</DataItem>)re");
-  std::smatch m;
-  if (!std::regex_search(s, m, topology)) return std::nullopt;
   SnapshotReader::Grid g;
-  g.dimension = m[1] == "2" ? 2 : 3;
-  std::vector<int> nodes;
-  std::istringstream dims(m[2].str());
-  for (int n = 0; dims >> n;) nodes.push_back(n);
-  std::vector<std::vector<double>> items;
-  for (auto it = std::sregex_iterator(s.begin(), s.end(), item);
-       it != std::sregex_iterator() && items.size() < 2; ++it) {
-    std::istringstream values((*it)[1].str());
-    std::vector<double> v;
-    for (double x = 0; values >> x;) v.push_back(x);
-    items.push_back(v);
-  }
-  if (static_cast<int>(nodes.size()) != g.dimension || items.size() < 2) return std::nullopt;
-  for (int d = 0; d < g.dimension; ++d) {
-    const auto slow = static_cast<std::size_t>(g.dimension - 1 - d);
-    g.cells[static_cast<std::size_t>(d)] = nodes[slow] - 1;
-    g.origin[static_cast<std::size_t>(d)] = items[0][slow];
-    g.spacing[static_cast<std::size_t>(d)] = items[1][slow];
+  std::size_t at = s.find("DCoRectMesh\"");
+  if (at == std::string::npos || at == 0) return std::nullopt;
+  g.dimension = s[at - 1] == '3' ? 3 : 2;
+  const auto nodes = between(s, "Dimensions=\"", "\"", at);
+  const auto origin = between(s, "<DataItem Format=\"XML\"", "</DataItem>", at);
+  const auto spacing = between(s, "<DataItem Format=\"XML\"", "</DataItem>", at);
+  if (!nodes || !origin || !spacing) return std::nullopt;
+  const auto counts = numbers<int>(*nodes);
+  const auto o = numbers<double>(origin->substr(origin->find('>') + 1));
+  const auto h = numbers<double>(spacing->substr(spacing->find('>') + 1));
+  const auto dim = static_cast<std::size_t>(g.dimension);
+  if (counts.size() != dim || o.size() != dim || h.size() != dim) return std::nullopt;
+  for (std::size_t d = 0; d < dim; ++d) {
+    const std::size_t slow = dim - 1 - d;
+    g.cells[d] = counts[slow] - 1;
+    g.origin[d] = o[slow];
+    g.spacing[d] = h[slow];
   }
   return g;
+}
+
+// `<base>_<six digits>.h5`.
+bool is_snapshot_name(const std::string& file, const std::string& base) {
+  const std::string suffix = ".h5";
+  if (file.size() != base.size() + 1 + 6 + suffix.size() || file.rfind(base + "_", 0) != 0 ||
+      file.compare(file.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return false;
+  return std::all_of(file.begin() + static_cast<std::ptrdiff_t>(base.size() + 1),
+                     file.end() - static_cast<std::ptrdiff_t>(suffix.size()),
+                     [](unsigned char c) { return std::isdigit(c) != 0; });
 }
 
 // Cell centres of a line (2-node segments) or the points of a cloud.
@@ -117,12 +142,11 @@ std::vector<std::array<double, 3>> element_positions(hid_t file, const fs::path&
 
 SnapshotReader::SnapshotReader(fs::path directory, std::string base)
     : directory_(std::move(directory)), base_(std::move(base)) {
-  const std::regex name(base_ + R"(_([0-9]{6})\.h5)");
   std::map<std::string, fs::path> found;
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(directory_, ec)) {
     const std::string file = entry.path().filename().string();
-    if (std::regex_match(file, name)) found[file] = entry.path();
+    if (is_snapshot_name(file, base_)) found[file] = entry.path();
   }
   if (found.empty())
     throw Error(ExitCode::bad_input, fmt::format("{}: no snapshots {}_*.h5 (was the output "
