@@ -13,15 +13,26 @@ namespace openfoam {
 namespace {
 
 // OpenFOAM's function objects run after each step while the time is within
-// half a step of [timeStart, timeEnd]: the one step at `write_density_at`.
-std::string density_writer(const ControlSettings& s) {
-  if (!s.write_density_at) return {};
+// half a step of [timeStart, timeEnd].
+std::string object_writer(const char* name, const char* object, double first, double last) {
   return fmt::format(
-      "\nfunctions\n{{\n    densityBeforeWindowEnd\n    {{\n        type writeObjects;\n"
-      "        libs (\"libutilityFunctionObjects.so\");\n        objects (rho);\n"
+      "    {0}\n    {{\n        type writeObjects;\n"
+      "        libs (\"libutilityFunctionObjects.so\");\n        objects ({1});\n"
       "        writeControl timeStep;\n        writeInterval 1;\n"
-      "        timeStart {0:.17g};\n        timeEnd {0:.17g};\n    }}\n}}\n",
-      *s.write_density_at);
+      "        timeStart {2:.17g};\n        timeEnd {3:.17g};\n    }}\n",
+      name, object, first, last);
+}
+
+std::string function_objects(const ControlSettings& s) {
+  if (!s.write_density_at && !s.write_steps_between) return {};
+  std::string text = "\nfunctions\n{\n";
+  if (s.write_density_at)
+    text += object_writer("densityBeforeWindowEnd", "rho", *s.write_density_at, *s.write_density_at);
+  if (s.write_steps_between) {
+    text += object_writer("exchangeWithinWindow", "p \"kinematicCloud:UTrans\"",
+                          s.write_steps_between->first, s.write_steps_between->second);
+  }
+  return text + "}\n";
 }
 
 }  // namespace
@@ -41,7 +52,7 @@ std::string control_dict(const ControlSettings& s) {
              "runTimeModifiable false;\nadjustTimeStep no;\nmaxCo 1;\nmaxAlphaCo 1;\n"
              "maxDeltaT 1;\n",
              s.application, s.end_time, s.time_step, s.write_every, time_precision) +
-         density_writer(s);
+         function_objects(s);
 }
 
 void write_control_dict(const std::filesystem::path& case_dir, const ControlSettings& settings) {

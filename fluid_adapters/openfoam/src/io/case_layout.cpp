@@ -97,15 +97,25 @@ FoamFields CaseLayout::read(const std::string& name, int dim) const {
 
 std::vector<double> CaseLayout::read_scalar(const std::string& name,
                                             const std::string& field) const {
-  if (processes_ <= 1)
-    return read_internal_field(case_dir_ / name / field, FieldType::scalar, cells_);
-  std::vector<double> whole(cells_, 0.0);
+  return read_gathered(name, field, FieldType::scalar);
+}
+
+std::vector<double> CaseLayout::read_vector(const std::string& name,
+                                            const std::string& field) const {
+  return read_gathered(name, field, FieldType::vector);
+}
+
+std::vector<double> CaseLayout::read_gathered(const std::string& name, const std::string& field,
+                                              FieldType type) const {
+  if (processes_ <= 1) return read_internal_field(case_dir_ / name / field, type, cells_);
+  const std::size_t k = components(type);
+  std::vector<double> whole(cells_ * k, 0.0);
   for (int p = 0; p < processes_; ++p) {
     const auto& addressing = addressing_[static_cast<std::size_t>(p)];
     gather(whole,
-           read_internal_field(processor_dir(case_dir_, p) / name / field, FieldType::scalar,
+           read_internal_field(processor_dir(case_dir_, p) / name / field, type,
                                addressing.size()),
-           addressing, 1);
+           addressing, k);
   }
   return whole;
 }

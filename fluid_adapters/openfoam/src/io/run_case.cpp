@@ -37,6 +37,7 @@
 #include "openfoam/io/foam_fields.hpp"
 #include "openfoam/io/restart_inertia.hpp"
 #include "openfoam/io/soil_coupling.hpp"
+#include "openfoam/io/window_step_means.hpp"
 #include "openfoam/porosity/porosity_zones.hpp"
 
 namespace openfoam {
@@ -204,6 +205,7 @@ class CaseRun {
   }
 
   void exchange_windows(cosim::Participant& participant, SoilCoupling& coupling) {
+    coupled_ = true;
     const bool zones = c_.soil.model == SoilModel::porosity_zones;
     coupling.declare(participant);
     FoamFields fields = read_fields("0");
@@ -383,16 +385,21 @@ class CaseRun {
   }
 
   // The controlDict of a start from `start` to `end`: every field written at
-  // `end`; MPPICInterFoam's density also one step before (restart_inertia.hpp).
+  // `end`; MPPICInterFoam's density also one step before (restart_inertia.hpp)
+  // and, coupled, its pressure and drag at every step before the end
+  // (window_step_means.hpp).
   void write_controls(double start, double end) {
     const long steps = steps_in(end - start);
-    std::optional<double> density_at;
-    if (c_.has_cloud() && steps > 1) density_at = end - c_.time_step;
-    write_control_dict(case_dir_, {.application = c_.solver,
-                                   .end_time = end,
-                                   .time_step = c_.time_step,
-                                   .write_every = steps,
-                                   .write_density_at = density_at});
+    ControlSettings settings{.application = c_.solver,
+                             .end_time = end,
+                             .time_step = c_.time_step,
+                             .write_every = steps,
+                             .write_density_at = {}, .write_steps_between = {}};
+    if (c_.has_cloud() && steps > 1) {
+      settings.write_density_at = end - c_.time_step;
+      if (coupled_) settings.write_steps_between = {start + c_.time_step, end - c_.time_step};
+    }
+    write_control_dict(case_dir_, settings);
   }
 
   // MPPICInterFoam's first start: the fluid fraction it starts from (1
@@ -450,6 +457,11 @@ class CaseRun {
     FoamFields fields = read_fields(latest->name);
     if (c_.has_cloud()) {
       const long steps = steps_in(end - start);
+      if (coupled_ && steps > 1) {
+        const std::vector<std::string> step_times = window_step_times(start, steps);
+        average_over_window_steps(*layout_, step_times, fields, mesh_.mesh.dimension());
+        for (std::size_t k = 0; k + 1 < step_times.size(); ++k) layout_->remove_time(step_times[k]);
+      }
       const auto before = steps == 1 ? std::optional<TimeDirectory>(TimeDirectory{start, start_name})
                                      : layout_->at(end - c_.time_step, tolerance_);
       if (!before) {
@@ -473,6 +485,24 @@ class CaseRun {
     summary_.phases().add("field_read", timing.read);
     windows_.push_back(timing);
     return fields;
+  }
+
+  // The time directories of a window's steps before its end (the last of
+  // them also holds the density, restart_inertia.hpp).
+  std::vector<std::string> window_step_times(double start, long steps) const {
+    std::vector<std::string> names;
+    for (long k = 1; k < steps; ++k) {
+      const double t = start + static_cast<double>(k) * c_.time_step;
+      const auto step = layout_->at(t, tolerance_);
+      if (!step) {
+        throw cosim::Error(cosim::ExitCode::participant_failed,
+                           fmt::format("OpenFOAM's {} did not write its pressure at t = {} s, a "
+                                       "step of the window (case kept in {})",
+                                       c_.solver, t, case_dir_.string()));
+      }
+      names.push_back(step->name);
+    }
+    return names;
   }
 
   FoamFields read_fields(const std::string& time) const {
@@ -540,6 +570,9 @@ class CaseRun {
   std::optional<cosim::SnapshotWriter> snapshot_writer_;
   std::vector<WindowTiming> windows_;
   std::int64_t steps_ = 0;
+  // Exchanging with a soil: the pressure and drag sent are the window's means
+  // (window_step_means.hpp).
+  bool coupled_ = false;
   std::vector<std::size_t> gauge_cells_;
   std::vector<std::vector<std::size_t>> wave_columns_;
   std::optional<cosim::TimeSeriesWriter> gauges_;

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace openfoam {
 
@@ -23,6 +24,11 @@ struct ControlSettings {
   // (MPPICInterFoam: the step before the window's end; see
   // restart_inertia.hpp).
   std::optional<double> write_density_at;
+  // When set, the pressure `p` and the cloud's momentum source
+  // `kinematicCloud:UTrans` alone are also written at every step from the
+  // first to the last of these times (the window's steps before its end:
+  // the adapter sends their means over the window, window_step_means.hpp).
+  std::optional<std::pair<double, double>> write_steps_between;
 };
 
 std::string control_dict(const ControlSettings& settings);

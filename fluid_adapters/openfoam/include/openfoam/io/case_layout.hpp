@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "openfoam/cloud/soil_cloud.hpp"
+#include "openfoam/foam/field_file.hpp"
 #include "openfoam/foam/time_directories.hpp"
 #include "openfoam/io/foam_fields.hpp"
 
@@ -33,6 +34,9 @@ class CaseLayout {
   FoamFields read(const std::string& name, int dim) const;
   // One scalar field at time `name`, over the whole mesh.
   std::vector<double> read_scalar(const std::string& name, const std::string& field) const;
+  // One vector field (or a cloud's DimensionedField, e.g. kinematicCloud:UTrans) at time
+  // `name`, over the whole mesh: x, y, z per cell.
+  std::vector<double> read_vector(const std::string& name, const std::string& field) const;
   // Whether time `name` holds `field` (processor0's when decomposed).
   bool has(const std::string& name, const std::string& field) const;
   // The time directory of `time` (to `tolerance`), none when absent.
@@ -51,6 +55,8 @@ class CaseLayout {
 
  private:
   std::vector<std::filesystem::path> roots() const;
+  std::vector<double> read_gathered(const std::string& name, const std::string& field,
+                                    FieldType type) const;
 
   std::filesystem::path case_dir_;
   int processes_;

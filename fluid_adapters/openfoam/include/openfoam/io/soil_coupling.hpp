@@ -27,8 +27,9 @@ namespace openfoam {
 // window's end (ergun_wen_yu.hpp: the cloud's water takes the whole pressure
 // gradient); in air OpenFOAM's drag follows the air's viscosity and density.
 // The soil receives n times the reaction of that drag, as the cloud gave it
-// to the water (its UTrans x steps; the law on the window's end fields where
-// OpenFOAM wrote none): with the MPM's own -phi_s grad p the mixture's
+// to the water (its UTrans, the mean over the window's steps, x steps:
+// window_step_means.hpp; the law on the window's end fields where OpenFOAM
+// wrote none): with the MPM's own -phi_s grad p the mixture's
 // momentum is that of Tran et al., MPMICE, eqs. 7-8 (at steady state the
 // soil takes the whole seepage force grad p).
 //
