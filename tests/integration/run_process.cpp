@@ -1,6 +1,7 @@
 #include "run_process.hpp"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -28,8 +29,13 @@ pid_t spawn(const std::vector<std::string>& args, const std::filesystem::path& l
   for (auto& a : copy) argv.push_back(a.data());
   argv.push_back(nullptr);
   const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid == 0) {
+    // A test killed by CTest's timeout (or by hand) takes the program it runs
+    // with it: SIGTERM lets `cosim run` and `cosim bench` stop their own children.
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (::getppid() != parent) ::_exit(127);
     ::dup2(fd, 1);
     ::dup2(fd, 2);
     ::execv(argv[0], argv.data());
