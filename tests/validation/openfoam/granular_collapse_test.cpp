@@ -24,7 +24,8 @@
 #include <vector>
 
 #include "hdf5_reader.hpp"
-#include "shortened_coupled_job.hpp"
+#include "bench_smoke_run.hpp"
+#include "run_process.hpp"
 
 namespace cosim::testing {
 namespace {
@@ -41,14 +42,14 @@ TEST(OpenFoamGranularCollapse, TheColumnSitsInHydrostaticWaterAndSpreads) {
 #else
   const double end_time = 0.01;
 #endif
-  ProcessResult r;
-  const fs::path dir = run_shortened_coupled_job(
-      "granular_collapse", "openfoam_granular_collapse", end_time, std::chrono::seconds(10800), r);
-  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // seed001's bench-smoke test runs the job (configs/bench/seed001.yaml) to end_time.
+  const fs::path run = bench_smoke_run("seed001", "granular_collapse", "openfoam");
 
   // time, then p, p_rgh, ux, uy, water fraction at the column's base and in
   // the open water, then the three wave gauges' surface elevation
-  const auto gauges = read_csv(dir / "run" / "water" / "gauges.csv");
+  const auto gauges = read_csv(run / "water" / "gauges.csv");
+  ASSERT_FALSE(gauges.empty());
+  EXPECT_NEAR(gauges.back()[0], end_time, 1e-6) << "the bench's run ends at another time";
   ASSERT_GE(gauges.size(), 50u);
   ASSERT_EQ(gauges.front().size(), 14u);
   const auto& last = gauges.back();
@@ -58,20 +59,20 @@ TEST(OpenFoamGranularCollapse, TheColumnSitsInHydrostaticWaterAndSpreads) {
              "water {:.1f} Pa ({:+.2f} %), hydrostatic {:.1f} Pa (open water: tolerance 2 %)\n",
              last[0], gauge_height, last[1], 100.0 * base_error, last[6], 100.0 * open_error,
              hydrostatic);
-  const auto exchange = read_csv(dir / "run" / "water" / "soil_exchange.csv");
+  const auto exchange = read_csv(run / "water" / "soil_exchange.csv");
   ASSERT_FALSE(exchange.empty());
   fmt::print("cloud vs law momentum in the last window: {:.2e} (printed only: at one step per "
              "window the cloud drags with the window's start velocity, the law with its end's)\n",
              exchange.back()[5]);
   const auto water =
-      nlohmann::json::parse(read_text(dir / "run" / "water" / "summary.json"))["conserved"];
+      nlohmann::json::parse(read_text(run / "water" / "summary.json"))["conserved"];
   const double start = water["volume_water"]["start"].get<double>();
   const double end = water["volume_water"]["end"].get<double>();
   fmt::print("water volume {:.6f} -> {:.6f} m^2 ({:+.2e}; tolerance 1e-2)\n", start, end,
              end / start - 1.0);
   EXPECT_LE(std::abs(end / start - 1.0), 1e-2);
 
-  const auto soil = nlohmann::json::parse(read_text(dir / "run" / "soil" / "summary.json"));
+  const auto soil = nlohmann::json::parse(read_text(run / "soil" / "summary.json"));
   const double mass = soil["conserved"]["mass"]["end"].get<double>();
   const double mass_start = soil["conserved"]["mass"]["start"].get<double>();
   EXPECT_NEAR(mass, mass_start, 1e-12 * mass_start);
@@ -84,7 +85,7 @@ TEST(OpenFoamGranularCollapse, TheColumnSitsInHydrostaticWaterAndSpreads) {
   EXPECT_LE(std::abs(base_error), 0.05);
   EXPECT_LE(std::abs(open_error), 0.02);
   fs::path snapshot;
-  for (const auto& entry : fs::directory_iterator(dir / "run" / "soil"))
+  for (const auto& entry : fs::directory_iterator(run / "soil"))
     if (entry.path().extension() == ".h5" && entry.path() > snapshot) snapshot = entry.path();
   ASSERT_FALSE(snapshot.empty());
   const auto xyz = Hdf5Reader(snapshot).doubles("geometry/xyz").values;  // 3 per point

@@ -4,18 +4,20 @@
 // (tests/validation/ice/martin_moyce_test.cpp), so the two fluid backends
 // are compared on one case. The front is the downstream edge of the last
 // cell of the floor row holding more water than air, in each snapshot.
+// The run is the verification bench suite's (configs/bench/verification.yaml,
+// scenario martin_moyce), which its bench-smoke test runs first.
 //
 // Needs OpenFOAM (openfoam_test_main.cpp).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "bench_smoke_run.hpp"
 #include "hdf5_reader.hpp"
 #include "martin_moyce/surge_front.hpp"
 #include "run_process.hpp"
@@ -38,13 +40,7 @@ TEST(OpenFoamMartinMoyce, SurgeFrontFollowsTheExperimentLikeTheIceSolver) {
   const std::vector<mm::Point> measured =
       mm::experiment_front(std::string(COSIM_REFERENCE_DATA) + "/martin_moyce_1952.csv");
   ASSERT_GE(measured.size(), 10u);
-  const fs::path output = cosim::testing::fresh_directory("openfoam_martin_moyce");
-  const auto result =
-      cosim::testing::run({cosim::testing::binary("openfoam_adapter").string(), "--config",
-                           std::string(COSIM_SOURCE_DIR) + "/configs/openfoam/martin_moyce.yaml",
-                           "--output", output.string()},
-                          std::chrono::seconds(900));
-  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const fs::path output = cosim::testing::bench_smoke_run("verification", "martin_moyce", "openfoam");
 
   const double a = mm::column_width;
   const double dx = length_x / cells_x;

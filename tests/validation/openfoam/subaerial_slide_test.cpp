@@ -21,7 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "shortened_coupled_job.hpp"
+#include "bench_smoke_run.hpp"
+#include "run_process.hpp"
 
 namespace cosim::testing {
 namespace {
@@ -36,21 +37,21 @@ TEST(OpenFoamSubaerialSlide, TheGrainsRaiseAWaveThatReachesTheGaugesInOrder) {
 #else
   const double end_time = 0.03;
 #endif
-  ProcessResult r;
-  const fs::path dir = run_shortened_coupled_job(
-      "subaerial_slide", "openfoam_subaerial_slide", end_time, std::chrono::seconds(7200), r);
-  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // seed001's bench-smoke test runs the job (configs/bench/seed001.yaml) to end_time.
+  const fs::path run = bench_smoke_run("seed001", "subaerial_slide", "openfoam");
 
   // time, then the surface elevation at G1..G4
-  const auto gauges = read_csv(dir / "run" / "water" / "gauges.csv");
+  const auto gauges = read_csv(run / "water" / "gauges.csv");
+  ASSERT_FALSE(gauges.empty());
+  EXPECT_NEAR(gauges.back()[0], end_time, 1e-6) << "the bench's run ends at another time";
   ASSERT_GE(gauges.size(), 20u);
   ASSERT_EQ(gauges.front().size(), 5u);
   for (std::size_t g = 1; g <= 4; ++g) EXPECT_NEAR(gauges.front()[g], still_water, 1e-9);
-  const auto exchange = read_csv(dir / "run" / "water" / "soil_exchange.csv");
+  const auto exchange = read_csv(run / "water" / "soil_exchange.csv");
   ASSERT_FALSE(exchange.empty());
   EXPECT_GT(exchange.back()[1], 100.0);  // cells holding grains or plane, as parcels
   const auto summary =
-      nlohmann::json::parse(read_text(dir / "run" / "water" / "summary.json"))["conserved"];
+      nlohmann::json::parse(read_text(run / "water" / "summary.json"))["conserved"];
   const double start = summary["volume_water"]["start"].get<double>();
   const double end = summary["volume_water"]["end"].get<double>();
   fmt::print("water volume {:.6f} -> {:.6f} m^2 ({:+.2e}); cloud vs law momentum {:.2e}\n", start,
