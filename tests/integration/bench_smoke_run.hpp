@@ -3,11 +3,11 @@
 #include <fmt/format.h>
 
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 
-#include "run_process.hpp"
+#include "cosim/bench/run_plan.hpp"
+#include "cosim/bench/runner.hpp"
 
 namespace cosim::testing {
 
@@ -19,19 +19,16 @@ namespace cosim::testing {
 // when the run is missing or did not complete.
 inline std::filesystem::path bench_smoke_run(const std::string& suite, const std::string& scenario,
                                              const std::string& backend) {
-  namespace fs = std::filesystem;
-  const fs::path run = fs::path(COSIM_BINARY_DIR) / "test_runs" / ("bench_smoke_" + suite) /
-                       "runs" / scenario / backend;
-  const fs::path record = run / "bench_run.json";
-  if (!fs::exists(record))
+  bench::PlannedRun run;
+  run.directory = std::filesystem::path(COSIM_BINARY_DIR) / "test_runs" / ("bench_smoke_" + suite) /
+                  "runs" / bench::directory_name(scenario) / backend;
+  const bench::RunRecord record = bench::read_record(run);
+  if (!record.completed())
     throw std::runtime_error(fmt::format(
-        "{} is missing: the bench-smoke test of suite '{}' runs it (ctest -R bench_smoke_{})",
-        record.string(), suite, suite));
-  const auto state = nlohmann::json::parse(read_text(record));
-  if (state.value("state", "") != "completed")
-    throw std::runtime_error(fmt::format("{}/{} of suite '{}' did not complete: {}", scenario,
-                                         backend, suite, state.dump()));
-  return run / "out";
+        "run {}/{} of suite '{}' in {} is {} ({}): the bench-smoke test of the suite runs it "
+        "(ctest -R bench_smoke_{})",
+        scenario, backend, suite, run.directory.string(), record.state, record.message, suite));
+  return run.output();
 }
 
 }  // namespace cosim::testing
