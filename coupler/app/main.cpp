@@ -257,6 +257,13 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--verbosity", bench_options.verbosity, "quiet | normal | verbose | trace");
   bench_cmd->add_flag("--dry-run", bench_options.dry_run,
                       "write each run's inputs and list the runs (kept or to run), run nothing");
+  bool bench_resume = false, bench_overwrite = false;
+  bench_cmd->add_flag("--resume", bench_resume,
+                      "keep the finished runs of an earlier call with the same --output whose "
+                      "inputs did not change; run the rest");
+  bench_cmd->add_flag("--overwrite", bench_overwrite,
+                      "clear the report directory of an earlier call and start afresh")
+      ->excludes("--resume");
   bench_cmd->add_flag("--help-config", bench_help_config,
                       "list every key of a suite file and the analytic solutions, and exit");
 
@@ -293,6 +300,9 @@ int main(int argc, char** argv) {
         throw cosim::InputError("cosim bench: give the suite file and --output <dir>");
       bench_options.bench.resolution =
           resolution == "full" ? cosim::bench::Resolution::full : cosim::bench::Resolution::coarse;
+      bench_options.reuse = bench_resume      ? cosim::OutputReuse::resume
+                            : bench_overwrite ? cosim::OutputReuse::overwrite
+                                              : cosim::OutputReuse::refuse;
       bench_options.terminal = ::isatty(STDERR_FILENO) != 0;
       bench_options.interrupted = &interrupted;
       return cosim::bench::run_bench(bench_options);

@@ -1,5 +1,8 @@
 #include "cosim/io/files.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -21,6 +24,47 @@ void create_output_directory(const fs::path& directory) {
   if (!fs::is_directory(directory, ec))
     throw Error(ExitCode::bad_input,
                 "output path '" + directory.string() + "' exists and is not a directory");
+}
+
+void prepare_output_directory(const fs::path& directory, OutputReuse reuse,
+                              const std::vector<std::string>& markers) {
+  std::error_code ec;
+  if (!fs::exists(directory, ec) || (fs::is_directory(directory, ec) && fs::is_empty(directory, ec))) {
+    create_output_directory(directory);
+    return;
+  }
+  create_output_directory(directory);  // refuses a file in its place
+  if (reuse == OutputReuse::resume) return;
+  const auto is_marker = [&](const std::string& name) {
+    return std::find(markers.begin(), markers.end(), name) != markers.end();
+  };
+  bool earlier_run = false;
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(directory, ec)) {
+    names.push_back(entry.path().filename().string());
+    earlier_run = earlier_run || is_marker(names.back());
+  }
+  std::sort(names.begin(), names.end());
+  std::string shown;
+  for (std::size_t i = 0; i < std::min<std::size_t>(names.size(), 3); ++i)
+    shown += (i ? ", '" : "'") + names[i] + "'";
+  if (names.size() > 3) shown += ", ...";
+  if (reuse == OutputReuse::refuse)
+    throw Error(ExitCode::bad_input,
+                fmt::format("output directory '{}' is not empty ({} entries: {}); pass --overwrite "
+                            "to replace the run it holds, or choose another directory",
+                            directory.string(), names.size(), shown));
+  if (!earlier_run)
+    throw Error(ExitCode::bad_input,
+                fmt::format("output directory '{}' holds {} but no '{}': it is not an earlier run's "
+                            "directory, so --overwrite will not clear it; choose another directory",
+                            directory.string(), shown, markers.empty() ? "" : markers.front()));
+  for (const auto& name : names) {
+    fs::remove_all(directory / name, ec);
+    if (ec)
+      throw Error(ExitCode::bad_input, fmt::format("--overwrite: cannot remove '{}': {}",
+                                                   (directory / name).string(), ec.message()));
+  }
 }
 
 fs::path staging_path(const fs::path& path) {

@@ -3,6 +3,7 @@
 #include <atomic>
 
 #include "cosim/bench/run_plan.hpp"
+#include "cosim/io/files.hpp"
 
 // `cosim bench <suite.yaml> --output <dir>`: runs a suite's scenarios with
 // each of their backends (resuming a partly finished suite), measures the
@@ -15,6 +16,9 @@ struct BenchRunOptions {
   bool terminal = false;
   std::string verbosity = "normal";
   bool dry_run = false;  // write the inputs and list the runs, run nothing
+  // A non-empty --output: refused, cleared (--overwrite) or resumed
+  // (--resume: finished runs whose inputs did not change are kept).
+  OutputReuse reuse = OutputReuse::refuse;
   const std::atomic<bool>* interrupted = nullptr;
 };
 

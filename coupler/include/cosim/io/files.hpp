@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <string_view>
+#include <vector>
 
 // File-system helpers for run directories: output that a crash cannot leave
 // half-written (DESIGN.md §6: bad input must lose nothing already written).
@@ -11,6 +12,22 @@ namespace cosim {
 // the directory usually comes from `--output`) naming the directory when it
 // cannot be created or exists as something other than a directory.
 void create_output_directory(const std::filesystem::path& directory);
+
+// What a program may do with an output directory that already holds files.
+enum class OutputReuse {
+  refuse,     // the default: a non-empty directory is an error (nothing is touched)
+  overwrite,  // --overwrite: clear the earlier run it holds, then write afresh
+  resume,     // --resume (where the program can): keep what is there
+};
+
+// Makes `directory` ready for a run (DESIGN.md §6; two runs never mix in one
+// directory). Missing or empty: created. Non-empty: refused with
+// Error(bad_input) naming it and the flags, unless `reuse` says otherwise;
+// --overwrite clears it only when it holds one of `markers` (files every run
+// of the program writes, such as summary.json), so it never empties a
+// directory that is not an earlier run's.
+void prepare_output_directory(const std::filesystem::path& directory, OutputReuse reuse,
+                              const std::vector<std::string>& markers = {"summary.json"});
 
 // The hidden sibling `<dir>/.<name>.tmp` that atomic replacements of `path`
 // are staged in.
