@@ -65,7 +65,8 @@ constexpr std::uint32_t grid_record = 11;
 
 std::string to_json(const Hello& h) {
   json j{{"participant", h.participant}, {"config_hash", h.config_hash},
-         {"program", h.program},         {"pid", h.pid},
+         {"token", h.token},             {"program", h.program},
+         {"pid", h.pid},
          {"meshes", json::array()},      {"writes", json::array()},
          {"reads", json::array()}};
   for (const auto& m : h.meshes)
@@ -92,6 +93,7 @@ Hello parse_hello(const std::string& text, const std::string& peer) {
     Hello h;
     h.participant = j.at("participant").get<std::string>();
     h.config_hash = j.at("config_hash").get<std::string>();
+    h.token = j.value("token", std::string());
     h.program = j.at("program").get<std::string>();
     h.pid = j.at("pid").get<long>();
     for (const auto& m : j.at("meshes"))

@@ -21,6 +21,9 @@ struct MeshDeclaration {
 struct Hello {
   std::string participant;
   std::string config_hash;
+  // The secret the coupler handed this participant's process (never on a
+  // command line); the coupler admits a hello only with the right one.
+  std::string token;
   std::string program;
   long pid = 0;
   std::vector<MeshDeclaration> meshes;
