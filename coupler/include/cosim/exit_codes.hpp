@@ -1,5 +1,7 @@
 #pragma once
 
+#include <string_view>
+
 // Process exit codes shared by `cosim` and every solver (DESIGN.md §6).
 namespace cosim {
 
@@ -12,5 +14,31 @@ enum class ExitCode : int {
 };
 
 constexpr int to_int(ExitCode code) { return static_cast<int>(code); }
+
+// "bad_input", "numerical_failure", ...: how summary.json and the abort
+// message of the coupling protocol name an exit code.
+constexpr const char* to_string(ExitCode code) {
+  switch (code) {
+    case ExitCode::success:
+      return "success";
+    case ExitCode::internal_error:
+      return "internal_error";
+    case ExitCode::bad_input:
+      return "bad_input";
+    case ExitCode::participant_failed:
+      return "participant_failed";
+    case ExitCode::numerical_failure:
+      return "numerical_failure";
+  }
+  return "unknown";
+}
+
+// The code named by to_string, or internal_error for any other text.
+constexpr ExitCode exit_code_from_string(std::string_view name) {
+  for (ExitCode code : {ExitCode::success, ExitCode::bad_input, ExitCode::participant_failed,
+                        ExitCode::numerical_failure})
+    if (name == to_string(code)) return code;
+  return ExitCode::internal_error;
+}
 
 }  // namespace cosim

@@ -2,12 +2,15 @@
 
 #include <sys/types.h>
 
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "cosim/exit_codes.hpp"
 
 // Starts participant processes and makes sure none outlives the coupler:
 // each child leads its own process group (so its own children are stopped
@@ -19,6 +22,9 @@ struct ChildSpec {
   std::filesystem::path executable;
   std::vector<std::string> args;   // without argv[0]
   std::filesystem::path log_file;  // receives the child's stdout and stderr
+  // Set in the child's environment, on top of this process's (secrets go
+  // here, never into args: any local user can read a command line).
+  std::vector<std::pair<std::string, std::string>> environment = {};
 };
 
 struct ChildExit {
@@ -28,6 +34,9 @@ struct ChildExit {
   int signal = 0;       // when killed by a signal
   bool success() const { return signal == 0 && exit_status == 0; }
   std::string describe() const;  // "exited with status 4" / "was killed by SIGKILL"
+  // What the coupler makes of it: a participant's bad input (2) and
+  // numerical failure (4) pass through; anything else is participant_failed.
+  ExitCode coupled_exit_code() const;
 };
 
 class Supervisor {
@@ -37,16 +46,29 @@ class Supervisor {
   Supervisor(const Supervisor&) = delete;
   Supervisor& operator=(const Supervisor&) = delete;
 
+  // Starts the child; a program that cannot be executed (missing, not
+  // executable, a command line beyond the kernel's limits) is an Error
+  // naming it, raised here rather than reported later as the child's exit.
   pid_t start(const ChildSpec& spec);
   // Reaps children that have exited, without blocking.
   std::vector<ChildExit> reap();
-  // Waits up to `timeout` for all children to exit by themselves.
-  std::vector<ChildExit> wait_all(std::chrono::milliseconds timeout);
+  // Waits up to `timeout` for all children to exit by themselves; stops
+  // waiting early, returning what exited so far, when `stop` becomes true.
+  std::vector<ChildExit> wait_all(std::chrono::milliseconds timeout,
+                                  const std::atomic<bool>* stop = nullptr);
+  // Waits up to `timeout` for the child `name` alone; its exit, or nothing
+  // when it is still running (or was not started). Others that exit
+  // meanwhile are reaped and kept for exited().
+  std::optional<ChildExit> wait_for(const std::string& name, std::chrono::milliseconds timeout);
   // SIGTERM to every child's process group, then SIGKILL after `grace`;
   // reaps them all.
   std::vector<ChildExit> stop_all(std::chrono::milliseconds grace);
 
   std::size_t running() const { return children_.size(); }
+  // The names of the children still running, quoted: "'left', 'right'".
+  std::string running_names() const;
+  // Every child reaped so far, in the order they were reaped.
+  const std::vector<ChildExit>& exited() const { return exited_; }
   std::optional<pid_t> pid_of(const std::string& name) const;
   const std::filesystem::path& log_file(const std::string& name) const;
 
@@ -57,6 +79,7 @@ class Supervisor {
   };
   std::map<pid_t, Child> children_;
   std::map<std::string, std::filesystem::path> logs_;
+  std::vector<ChildExit> exited_;
 };
 
 // Finds a participant's program: a path containing '/' as given (relative to
