@@ -55,8 +55,9 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
-  hub = std::make_unique<com::MpiHub>();
-  (void)hub->receive(60s);  // the echo rank's hello
+  hub = std::make_unique<com::MpiHub>(std::vector<std::string>{"echo"});
+  const auto hello = hub->receive(60s);  // the echo rank's hello
+  hub->admit(hello->peer, "echo");
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   hub->send("echo",

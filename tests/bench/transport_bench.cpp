@@ -41,10 +41,11 @@ void round_trips(benchmark::State& state, bool tcp, std::size_t doubles) {
   std::thread peer([&] { echo(client); });
   const std::vector<double> values(doubles, 1.0);
   const com::Message m = com::make_field_message("bench", "coupler", 0, 0.0, "f", "m", values, 1);
-  // The first message tells the hub the peer exists.
+  // The first message tells the hub the peer exists; it is admitted as "echo".
   client.send(com::coupler_peer,
               com::make_text_message(com::MessageType::hello, "bench", "echo", 0, 0.0, "hi"));
-  (void)hub.receive(10s);
+  const auto hello = hub.receive(10s);
+  hub.admit(hello->peer, "echo");
   for (auto _ : state) {
     hub.send("echo", m);
     auto r = hub.receive(10s);
@@ -120,7 +121,7 @@ exchange:
   const Mesh grid{"grid", UniformGrid{3, {0, 0, 0}, {0.01, 0.01, 0.01}, {100, 100, 100}}};
   auto make = [&](const std::string& name, const std::string& out, const std::string& in) {
     auto p = std::make_unique<Participant>(
-        name, CouplingEndpoint{hub.endpoint(), name, "bench", job.config_hash, 60.0});
+        name, CouplingEndpoint{hub.endpoint(), name, "bench", job.config_hash, 60.0, ""});
     p->declare_mesh(grid);
     p->declare_write(FieldSpec{out, "grid", 1, "1", Quantity::intensive, TimeTreatment::state});
     p->declare_read(FieldSpec{in, "grid", 1, "1", Quantity::intensive, TimeTreatment::state});

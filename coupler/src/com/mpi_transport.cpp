@@ -154,12 +154,16 @@ Received receive_from(MPI_Comm comm, int source, const std::string& peer_hint) {
 }  // namespace
 
 struct MpiHub::Impl {
-  std::map<std::string, int> rank_of;
+  std::vector<std::string> participants;  // by world rank - 1
+  std::map<std::string, int> rank_of;     // admitted participants
   std::map<int, std::string> name_of;
   int world_size = 0;
+
+  static std::string label(int rank) { return fmt::format("world rank {}", rank); }
 };
 
-MpiHub::MpiHub() : impl_(std::make_unique<Impl>()) {
+MpiHub::MpiHub(std::vector<std::string> participants) : impl_(std::make_unique<Impl>()) {
+  impl_->participants = std::move(participants);
   MpiEnvironment::instance().acquire();
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -178,10 +182,47 @@ std::string MpiHub::describe() const {
   return fmt::format("MPI hub (world rank 0 of {})", impl_->world_size);
 }
 
+std::string MpiHub::participant_of_rank(int rank) const {
+  if (rank < 1 || rank > static_cast<int>(impl_->participants.size())) return {};
+  return impl_->participants[static_cast<std::size_t>(rank - 1)];
+}
+
+void MpiHub::abort_job(int exit_code) {
+  MPI_Abort(MPI_COMM_WORLD, exit_code);
+  std::_Exit(exit_code);  // MPI_Abort does not return; in case it does
+}
+
+// The launch line puts participant i at world rank i + 1: a rank is admitted
+// as that participant only.
+void MpiHub::admit(const std::string& connection, const std::string& participant) {
+  for (int rank = 1; rank < impl_->world_size; ++rank) {
+    if (Impl::label(rank) != connection) continue;
+    const std::string expected = participant_of_rank(rank);
+    if (participant != expected)
+      throw ProtocolError(connection, fmt::format("said hello as '{}', but the mpirun line starts "
+                                                  "participant '{}' at this rank",
+                                                  participant, expected));
+    if (impl_->rank_of.count(participant))
+      throw std::logic_error("admit: participant '" + participant + "' is already admitted");
+    impl_->rank_of[participant] = rank;
+    impl_->name_of[rank] = participant;
+    return;
+  }
+  throw std::logic_error("admit: no connection '" + connection + "'");
+}
+
 void MpiHub::send(const std::string& peer, const Message& message) {
   auto it = impl_->rank_of.find(peer);
-  if (it == impl_->rank_of.end()) throw ProtocolError(peer, "has not said hello (cannot send)");
-  send_to(MpiEnvironment::instance().coupling(), it->second, peer, message);
+  if (it != impl_->rank_of.end()) {
+    send_to(MpiEnvironment::instance().coupling(), it->second, peer, message);
+    return;
+  }
+  for (int rank = 1; rank < impl_->world_size; ++rank)
+    if (Impl::label(rank) == peer && !impl_->name_of.count(rank)) {
+      send_to(MpiEnvironment::instance().coupling(), rank, peer, message);
+      return;
+    }
+  throw ProtocolError(peer, "has not said hello (cannot send)");
 }
 
 std::optional<Received> MpiHub::receive(std::chrono::milliseconds timeout) {
@@ -189,21 +230,20 @@ std::optional<Received> MpiHub::receive(std::chrono::milliseconds timeout) {
   auto source = probe_header(comm, MPI_ANY_SOURCE, timeout);
   if (!source) return std::nullopt;
   auto known = impl_->name_of.find(*source);
-  const std::string hint =
-      known != impl_->name_of.end() ? known->second : fmt::format("world rank {}", *source);
-  Received r = receive_from(comm, *source, hint);
-  if (known == impl_->name_of.end()) {
-    if (r.message.header.type != MessageType::hello)
-      throw ProtocolError(hint, "spoke before saying hello");
-    const std::string& name = r.message.header.sender;
-    if (impl_->rank_of.count(name))
-      throw ProtocolError(hint, fmt::format("claims the name '{}' already taken by rank {}", name,
-                                            impl_->rank_of[name]));
-    impl_->rank_of[name] = *source;
-    impl_->name_of[*source] = name;
+  const bool admitted = known != impl_->name_of.end();
+  const std::string peer = admitted ? known->second : Impl::label(*source);
+  try {
+    Received r = receive_from(comm, *source, peer);
+    r.admitted = admitted;
+    return r;
+  } catch (const ProtocolError& e) {
+    if (admitted) throw;
+    Received r;
+    r.peer = peer;
+    r.admitted = false;
+    r.malformed = e.what();
+    return r;
   }
-  r.peer = impl_->name_of[*source];
-  return r;
 }
 
 struct MpiClient::Impl {
@@ -240,9 +280,12 @@ namespace {
 }  // namespace
 
 struct MpiHub::Impl {};
-MpiHub::MpiHub() { no_mpi(); }
+MpiHub::MpiHub(std::vector<std::string>) { no_mpi(); }
 MpiHub::~MpiHub() = default;
 int MpiHub::world_size() const { return 0; }
+std::string MpiHub::participant_of_rank(int) const { return {}; }
+void MpiHub::abort_job(int exit_code) { std::_Exit(exit_code); }
+void MpiHub::admit(const std::string&, const std::string&) { no_mpi(); }
 void MpiHub::send(const std::string&, const Message&) { no_mpi(); }
 std::optional<Received> MpiHub::receive(std::chrono::milliseconds) { no_mpi(); }
 std::string MpiHub::describe() const { return "MPI (not built)"; }

@@ -4,6 +4,8 @@
 
 #include <array>
 #include <cstdlib>
+#include <map>
+#include <set>
 #include <system_error>
 #include <zmq.hpp>
 
@@ -11,6 +13,7 @@
 
 #include "cosim/com/allocator_tuning.hpp"
 #include "cosim/error.hpp"
+#include "private_directory.hpp"
 
 namespace cosim::com {
 
@@ -71,21 +74,17 @@ bool receive_header_and_payload(zmq::socket_t& socket, zmq::message_t& header,
   return true;
 }
 
-bool is_loopback(const std::string& host) {
-  return host == "127.0.0.1" || host == "localhost" || host == "::1" ||
-         host.rfind("127.", 0) == 0;
+// The address to bind for `host`: ZeroMQ takes an interface's IP address
+// (IPv6 in brackets), not a host name.
+std::string tcp_bind_address(const std::string& host) {
+  if (host == "localhost") return "127.0.0.1";
+  if (host.find(':') != std::string::npos && host.front() != '[') return "[" + host + "]";
+  return host;
 }
 
-std::filesystem::path make_private_directory() {
-  const char* base = std::getenv("TMPDIR");
-  std::string root = (base && std::string(base).size() < 60) ? base : "/tmp";
-  std::string pattern = root + "/cosim-XXXXXX";
-  // mkdtemp creates the directory with mode 0700.
-  if (::mkdtemp(pattern.data()) == nullptr)
-    throw Error(ExitCode::bad_input, fmt::format("cannot create a private directory for ipc "
-                                                 "endpoints under {}: {}",
-                                                 root, std::strerror(errno)));
-  return pattern;
+bool is_loopback(const std::string& host) {
+  return host == "127.0.0.1" || host == "localhost" || host == "::1" || host == "[::1]" ||
+         host.rfind("127.", 0) == 0;
 }
 
 }  // namespace
@@ -99,29 +98,48 @@ zmq::context_t make_context() {
 struct ZmqHub::Impl {
   zmq::context_t context = make_context();
   zmq::socket_t socket{context, zmq::socket_type::router};
-  std::filesystem::path directory;
+  std::optional<PrivateDirectory> directory;
   std::string endpoint;
+  // Connections by their ZeroMQ routing id (assigned by this socket: a
+  // client cannot choose it, so it cannot pose as another).
+  std::map<std::string, std::string> label_of;     // routing id -> label or participant
+  std::map<std::string, std::string> routing_of;   // label or participant -> routing id
+  std::set<std::string> admitted;
+  std::size_t connections = 0;
+
+  const std::string& label(const std::string& routing_id) {
+    auto it = label_of.find(routing_id);
+    if (it != label_of.end()) return it->second;
+    const std::string l = fmt::format("connection #{}", ++connections);
+    routing_of[l] = routing_id;
+    return label_of[routing_id] = l;
+  }
 };
 
 ZmqHub::ZmqHub(const ZmqHubOptions& options) : impl_(std::make_unique<Impl>()) {
   auto& s = impl_->socket;
   s.set(zmq::sockopt::router_mandatory, 1);
-  // A participant that reconnects under its name (after a refused attempt)
-  // takes the name over.
-  s.set(zmq::sockopt::router_handover, 1);
   s.set(zmq::sockopt::linger, linger_ms);
   s.set(zmq::sockopt::sndhwm, 0);
   s.set(zmq::sockopt::rcvhwm, 0);
   if (options.scheme == ZmqScheme::ipc) {
-    impl_->directory = make_private_directory();
-    impl_->endpoint = "ipc://" + (impl_->directory / "coupler.sock").string();
+    impl_->directory.emplace(PrivateDirectory::create("cosim"));
+    impl_->endpoint = "ipc://" + (impl_->directory->path() / "coupler.sock").string();
     s.bind(impl_->endpoint);
   } else {
     if (!is_loopback(options.tcp_host) && !options.allow_non_loopback)
       throw InputError(fmt::format("transport: binding tcp on '{}' (not loopback) needs "
                                    "'zmq.allow_non_loopback: true' in the job",
                                    options.tcp_host));
-    s.bind(fmt::format("tcp://{}:*", options.tcp_host));
+    const std::string address = tcp_bind_address(options.tcp_host);
+    if (address.front() == '[') s.set(zmq::sockopt::ipv6, 1);
+    try {
+      s.bind(fmt::format("tcp://{}:*", address));
+    } catch (const zmq::error_t& e) {
+      throw InputError(fmt::format("zmq.host: cannot bind tcp on '{}': {} (give the IP address of "
+                                   "a local interface, e.g. 127.0.0.1 or ::1)",
+                                   options.tcp_host, e.what()));
+    }
     impl_->endpoint = s.get(zmq::sockopt::last_endpoint);
   }
 }
@@ -129,19 +147,35 @@ ZmqHub::ZmqHub(const ZmqHubOptions& options) : impl_(std::make_unique<Impl>()) {
 ZmqHub::~ZmqHub() {
   impl_->socket.close();
   impl_->context.close();
-  if (!impl_->directory.empty()) {
-    std::error_code ignored;
-    std::filesystem::remove_all(impl_->directory, ignored);
-  }
 }
 
 const std::string& ZmqHub::endpoint() const { return impl_->endpoint; }
-const std::filesystem::path& ZmqHub::private_directory() const { return impl_->directory; }
+const std::filesystem::path& ZmqHub::private_directory() const {
+  static const std::filesystem::path none;
+  return impl_->directory ? impl_->directory->path() : none;
+}
 std::string ZmqHub::describe() const { return "zeromq hub at " + impl_->endpoint; }
 
+void ZmqHub::admit(const std::string& connection, const std::string& participant) {
+  Impl& s = *impl_;
+  auto it = s.routing_of.find(connection);
+  if (it == s.routing_of.end() || s.admitted.count(connection))
+    throw std::logic_error("admit: no connection '" + connection + "' awaiting admission");
+  if (s.routing_of.count(participant))
+    throw std::logic_error("admit: participant '" + participant + "' is already admitted");
+  const std::string routing_id = it->second;
+  s.routing_of.erase(it);
+  s.routing_of[participant] = routing_id;
+  s.label_of[routing_id] = participant;
+  s.admitted.insert(participant);
+}
+
 void ZmqHub::send(const std::string& peer, const Message& message) {
+  auto it = impl_->routing_of.find(peer);
+  if (it == impl_->routing_of.end())
+    throw ProtocolError(peer, "is not connected (cannot send to it)");
   try {
-    send_parts(impl_->socket, &peer, message);
+    send_parts(impl_->socket, &it->second, message);
   } catch (const zmq::error_t& e) {
     if (e.num() == EHOSTUNREACH) throw ProtocolError(peer, "is not connected (cannot send to it)");
     throw;
@@ -149,17 +183,23 @@ void ZmqHub::send(const std::string& peer, const Message& message) {
 }
 
 std::optional<Received> ZmqHub::receive(std::chrono::milliseconds timeout) {
-  auto& s = impl_->socket;
-  if (!wait_readable(s, timeout)) return std::nullopt;
+  Impl& s = *impl_;
+  if (!wait_readable(s.socket, timeout)) return std::nullopt;
   zmq::message_t identity, header, payload;
-  (void)s.recv(identity, zmq::recv_flags::none);
-  std::string peer = identity.to_string();
-  if (!receive_header_and_payload(s, header, payload))
-    throw ProtocolError(peer, "sent a message that is not [header][payload]");
+  (void)s.socket.recv(identity, zmq::recv_flags::none);
   Received r;
-  r.peer = std::move(peer);
-  r.message.header = decode_header(
-      std::span(static_cast<const std::byte*>(header.data()), header.size()), r.peer);
+  r.peer = s.label(identity.to_string());
+  r.admitted = s.admitted.count(r.peer) > 0;
+  try {
+    if (!receive_header_and_payload(s.socket, header, payload))
+      throw ProtocolError(r.peer, "sent a message that is not [header][payload]");
+    r.message.header = decode_header(
+        std::span(static_cast<const std::byte*>(header.data()), header.size()), r.peer);
+  } catch (const ProtocolError& e) {
+    if (r.admitted) throw;
+    r.malformed = e.what();
+    return r;
+  }
   r.message.payload = from_zmq(std::move(payload));
   return r;
 }
@@ -168,6 +208,7 @@ struct ZmqClient::Impl {
   zmq::context_t context = make_context();
   zmq::socket_t socket{context, zmq::socket_type::dealer};
   std::string endpoint;
+  std::string name;
 };
 
 ZmqClient::ZmqClient(const std::string& endpoint, const std::string& participant_name)
@@ -176,11 +217,14 @@ ZmqClient::ZmqClient(const std::string& endpoint, const std::string& participant
     throw InputError(fmt::format("coupling endpoint '{}' is not an ipc:// or tcp:// address",
                                  endpoint));
   impl_->endpoint = endpoint;
+  impl_->name = participant_name;
+  // The hub assigns the routing id: a participant proves who it is by its
+  // hello (name and run token), never by choosing an identity.
   auto& s = impl_->socket;
-  s.set(zmq::sockopt::routing_id, participant_name);
   s.set(zmq::sockopt::linger, linger_ms);
   s.set(zmq::sockopt::sndhwm, 0);
   s.set(zmq::sockopt::rcvhwm, 0);
+  if (endpoint.find("://[") != std::string::npos) s.set(zmq::sockopt::ipv6, 1);
   s.connect(endpoint);
 }
 
@@ -189,7 +233,9 @@ ZmqClient::~ZmqClient() {
   impl_->context.close();
 }
 
-std::string ZmqClient::describe() const { return "zeromq client of " + impl_->endpoint; }
+std::string ZmqClient::describe() const {
+  return fmt::format("zeromq client '{}' of {}", impl_->name, impl_->endpoint);
+}
 
 void ZmqClient::send(const std::string& peer, const Message& message) {
   if (peer != coupler_peer)

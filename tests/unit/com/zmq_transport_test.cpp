@@ -18,6 +18,14 @@ void round_trip(ZmqHub& hub) {
   client.send(coupler_peer, make_field_message("j", "water", 3, 0.25, "p", "grid", values, 1));
   auto r = hub.receive(5s);
   ASSERT_TRUE(r);
+  // Not a participant until the hub admits the connection under a name.
+  EXPECT_FALSE(r->admitted);
+  EXPECT_NE(r->peer, "water");
+  hub.admit(r->peer, "water");
+  client.send(coupler_peer, make_field_message("j", "water", 3, 0.25, "p", "grid", values, 1));
+  r = hub.receive(5s);
+  ASSERT_TRUE(r);
+  EXPECT_TRUE(r->admitted);
   EXPECT_EQ(r->peer, "water");
   EXPECT_EQ(r->message.header.window, 3u);
   EXPECT_EQ(r->message.payload.doubles(), values);
@@ -64,6 +72,45 @@ TEST(ZmqTransport, SendingToAnUnknownPeerIsAProtocolError) {
   EXPECT_THROW(
       hub.send("nobody", make_text_message(MessageType::finish, "j", coupler_peer, 0, 0.0, "")),
       ProtocolError);
+}
+
+// A second client under the same participant name gets its own connection:
+// messages it sends are not the admitted participant's, and what is sent to
+// the participant never reaches it.
+TEST(ZmqTransport, AnotherConnectionCannotTakeOverAnAdmittedName) {
+  ZmqHub hub;
+  ZmqClient real(hub.endpoint(), "water");
+  real.send(coupler_peer, make_text_message(MessageType::hello, "j", "water", 0, 0.0, "{}"));
+  auto hello = hub.receive(5s);
+  ASSERT_TRUE(hello);
+  hub.admit(hello->peer, "water");
+  ZmqClient impostor(hub.endpoint(), "water");
+  impostor.send(coupler_peer, make_text_message(MessageType::hello, "j", "water", 0, 0.0, "{}"));
+  auto from_impostor = hub.receive(5s);
+  ASSERT_TRUE(from_impostor);
+  EXPECT_FALSE(from_impostor->admitted);
+  EXPECT_NE(from_impostor->peer, "water");
+  hub.send("water", make_text_message(MessageType::finish, "j", coupler_peer, 1, 0.0, "yours"));
+  EXPECT_TRUE(real.receive(5s));
+  EXPECT_FALSE(impostor.receive(200ms));
+}
+
+// Garbage from a connection that is not a participant comes back as
+// `malformed`, never as an exception; from an admitted participant it is a
+// ProtocolError naming it.
+TEST(ZmqTransport, MalformedFramesOfStrangersAreReportedNotThrown) {
+  ZmqHub hub;
+  ZmqClient client(hub.endpoint(), "water");
+  Message foreign = make_text_message(MessageType::hello, "j", "water", 0, 0.0, "{}");
+  foreign.header.version = protocol_version + 1;
+  client.send(coupler_peer, foreign);
+  auto r = hub.receive(5s);
+  ASSERT_TRUE(r);
+  ASSERT_TRUE(r->malformed);
+  EXPECT_THAT(*r->malformed, ::testing::HasSubstr("protocol version"));
+  hub.admit(r->peer, "water");
+  client.send(coupler_peer, foreign);
+  EXPECT_THROW(hub.receive(5s), ProtocolError);
 }
 
 TEST(ZmqTransport, ClientRefusesAnEndpointThatIsNotZeroMq) {

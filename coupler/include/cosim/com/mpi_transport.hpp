@@ -3,6 +3,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "cosim/com/transport.hpp"
 
@@ -17,14 +18,25 @@ namespace cosim::com {
 // True when this process was started by mpirun (Open MPI's environment).
 bool launched_by_mpirun();
 
-class MpiHub final : public Transport {
+class MpiHub final : public Hub {
  public:
-  MpiHub();
+  // `participants` in the order of the mpirun line: participant i runs at
+  // world rank i + 1, and a rank is admitted as that participant only.
+  explicit MpiHub(std::vector<std::string> participants);
   ~MpiHub() override;
   MpiHub(const MpiHub&) = delete;
   MpiHub& operator=(const MpiHub&) = delete;
 
   int world_size() const;
+  // The participant the launch line starts at `rank`; empty for rank 0 and
+  // ranks beyond the job's.
+  std::string participant_of_rank(int rank) const;
+  // Ends every process of the MPI job with `exit_code` (MPI_Abort): after a
+  // failure the other ranks may never reach MPI_Finalize (a stopped or hung
+  // participant), which would block this one forever.
+  [[noreturn]] void abort_job(int exit_code);
+
+  void admit(const std::string& connection, const std::string& participant) override;
   void send(const std::string& peer, const Message& message) override;
   std::optional<Received> receive(std::chrono::milliseconds timeout) override;
   std::string describe() const override;

@@ -7,7 +7,9 @@
 #include "cosim/com/transport.hpp"
 
 // ZeroMQ transports: the coupler binds one ROUTER socket, each participant
-// connects a DEALER socket whose routing id is its participant name.
+// connects a DEALER socket. The ROUTER assigns every connection its routing
+// id; the coupler admits a connection under a participant's name once its
+// hello checks out, so no client can take over another's name.
 namespace cosim::com {
 
 enum class ZmqScheme { ipc, tcp };
@@ -20,7 +22,7 @@ struct ZmqHubOptions {
   bool allow_non_loopback = false;
 };
 
-class ZmqHub final : public Transport {
+class ZmqHub final : public Hub {
  public:
   explicit ZmqHub(const ZmqHubOptions& options = {});
   ~ZmqHub() override;
@@ -30,9 +32,11 @@ class ZmqHub final : public Transport {
   // The address participants connect to (ipc://<private dir>/coupler.sock or
   // tcp://127.0.0.1:<port>).
   const std::string& endpoint() const;
-  // ipc only: the private directory (mode 0700) removed by the destructor.
+  // ipc only: the private directory (mode 0700) removed by the destructor;
+  // those of earlier hubs whose process died are removed at construction.
   const std::filesystem::path& private_directory() const;
 
+  void admit(const std::string& connection, const std::string& participant) override;
   void send(const std::string& peer, const Message& message) override;
   std::optional<Received> receive(std::chrono::milliseconds timeout) override;
   std::string describe() const override;
