@@ -43,7 +43,14 @@ struct CouplingEndpoint {
   std::string name;         // the participant's name in the job
   std::string job_id;       // the job this participant was started for
   std::string config_hash;  // hash of the job config it was started for
+  // How long to wait for the coupler's welcome; `cosim run` passes its own
+  // --connect-timeout, so the coupler, which judges, gives up first.
   double connect_timeout_s = 60.0;
+  // The run token `cosim run` hands this process in the COSIM_TOKEN
+  // environment variable (never on the command line): taken from there
+  // when empty, and the variable removed so the solver's own child
+  // processes do not inherit it.
+  std::string token = {};
 
   bool is_standalone() const { return uri.empty(); }
   // The job's name for this participant, or the solver's own when standalone.
@@ -104,7 +111,9 @@ class Participant {
   void write(std::string_view field, std::span<const double> values);
 
   // Ends a step of length dt (<= max_time_step()). When it completes the
-  // window, sends the written fields and waits for the partner's.
+  // window, sends the written fields and waits for the partner's. A stop
+  // requested by a signal (runtime/stop_request.hpp) throws here, between
+  // steps, so the solver ends as on an error and records why.
   void advance(double dt);
 
   // State fields: the latest received values (linearly extrapolated inside
@@ -128,6 +137,8 @@ class Participant {
   // transport. Called by the destructor if not before.
   void finalize();
   // Tells the coupler this participant failed, with a reason, then releases.
+  // Called while handling a cosim::Error, the error's exit code goes with
+  // it (the coupler passes a numerical failure on as its own exit code).
   void abort(std::string_view reason);
 
  private:

@@ -2,17 +2,21 @@
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
+#include <sys/prctl.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
 #include <limits>
 
 #include "cosim/com/handshake.hpp"
 #include "cosim/com/mpi_transport.hpp"
 #include "cosim/com/zmq_transport.hpp"
 #include "cosim/error.hpp"
+#include "cosim/runtime/stop_request.hpp"
 
 namespace cosim {
 
@@ -23,6 +27,9 @@ namespace {
 
 // Steps that end within this fraction of a window from its end complete it.
 constexpr double window_end_tolerance = 1e-9;
+constexpr const char* token_variable = "COSIM_TOKEN";
+// A wait for the coupler wakes this often to look for a stop request.
+constexpr auto stop_check_interval = std::chrono::milliseconds(100);
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -44,7 +51,7 @@ void add_coupling_options(CLI::App& app, CouplingEndpoint& endpoint) {
   group
       ->add_option("--cosim-connect-timeout", endpoint.connect_timeout_s,
                    "seconds to wait for the coupler's welcome")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(0.1, 1.0e6));
 }
 
 struct WriteBuffer {
@@ -118,10 +125,13 @@ struct Participant::Impl {
     const auto start = Clock::now();
     const auto deadline = start + std::chrono::milliseconds(static_cast<long>(timeout_s * 1000.0));
     std::optional<com::Received> received;
-    // An empty receive before the deadline is a signal's wake-up: wait on.
-    while (!received && Clock::now() < deadline)
-      received = transport->receive(
-          std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now()));
+    // An empty receive before the deadline is a signal's wake-up or a slice
+    // ending: look for a stop request and wait on.
+    while (!received && Clock::now() < deadline) {
+      runtime::throw_if_stop_requested();
+      const auto slice = std::min<Clock::duration>(deadline - Clock::now(), stop_check_interval);
+      received = transport->receive(std::chrono::ceil<std::chrono::milliseconds>(slice));
+    }
     timings.waiting += seconds_since(start);
     if (!received)
       throw ProtocolError(com::coupler_peer,
@@ -135,10 +145,32 @@ struct Participant::Impl {
     if (m.header.job_id != endpoint.job_id)
       throw ProtocolError(com::coupler_peer, fmt::format("message for job '{}', this is job '{}'",
                                                          m.header.job_id, endpoint.job_id));
+    if (m.header.sender != com::coupler_peer)
+      throw ProtocolError(com::coupler_peer,
+                          fmt::format("message signed by '{}', not by the coupler", m.header.sender));
     if (m.header.type == MessageType::abort)
       throw Error(ExitCode::participant_failed,
                   fmt::format("the coupler aborted the run: {}", m.payload.text()));
     return std::move(m);
+  }
+
+  // The abort message: the reason, and the exit code this process ends
+  // with (in the header's field name), when it ends on a cosim::Error.
+  com::Message abort_message(std::string_view reason) const {
+    com::Message m = com::make_text_message(MessageType::abort, endpoint.job_id, name, window,
+                                            time, reason);
+    ExitCode code = ExitCode::participant_failed;
+    if (std::current_exception()) {
+      try {
+        throw;
+      } catch (const Error& e) {
+        code = e.code();
+      } catch (...) {
+        code = ExitCode::internal_error;
+      }
+    }
+    m.header.field = to_string(code);
+    return m;
   }
 
   void send_window_data() {
@@ -230,6 +262,9 @@ Participant::Participant(std::string name, CouplingEndpoint endpoint)
   impl_->name = std::move(name);
   impl_->endpoint = std::move(endpoint);
   if (impl_->name.empty()) throw Error(ExitCode::bad_input, "a participant needs a name");
+  if (impl_->endpoint.token.empty() && !impl_->endpoint.is_standalone())
+    if (const char* token = std::getenv(token_variable)) impl_->endpoint.token = token;
+  ::unsetenv(token_variable);
 }
 
 Participant::~Participant() {
@@ -297,6 +332,9 @@ void Participant::initialize(double start_time, double end_time) {
     return;
   }
 
+  // Whoever started this participant (cosim, or mpirun's daemon) going away
+  // takes it along: a coupled participant never outlives its run.
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   const std::string& uri = s.endpoint.uri;
   if (uri.rfind("mpi://", 0) == 0)
     s.transport = std::make_unique<com::MpiClient>(s.name);
@@ -306,6 +344,7 @@ void Participant::initialize(double start_time, double end_time) {
   com::Hello hello;
   hello.participant = s.name;
   hello.config_hash = s.endpoint.config_hash;
+  hello.token = s.endpoint.token;
   hello.pid = static_cast<long>(::getpid());
   hello.program = "cosim participant " COSIM_VERSION;
   for (const auto& [mesh_name, entry] : s.meshes)
@@ -392,6 +431,7 @@ void Participant::advance(double dt) {
   Impl& s = *impl_;
   if (!s.initialized) usage_error(s.name, "advance() before initialize()");
   if (!is_coupling_ongoing()) usage_error(s.name, "advance() after the end of the coupling");
+  runtime::throw_if_stop_requested();
   const double remaining = s.window_end() - s.time;
   const double tolerance = window_end_tolerance * s.schedule.window;
   if (!(dt > 0.0) || !std::isfinite(dt))
@@ -492,8 +532,7 @@ void Participant::abort(std::string_view reason) {
   s.finalized = true;
   if (s.transport && s.admitted && !s.finished) {
     try {
-      s.send(com::make_text_message(MessageType::abort, s.endpoint.job_id, s.name, s.window, s.time,
-                                    reason));
+      s.send(s.abort_message(reason));
     } catch (...) {
     }
   }
