@@ -58,11 +58,35 @@ double abs_sum(std::span<const double> v) {
   return s;
 }
 
+// Connections that are not participants (a stranger on the endpoint, a
+// process of another run) are logged, not obeyed; the first few in full,
+// then one line in a thousand, so a flood cannot fill the log.
+class StrangerLog {
+ public:
+  void dropped(const std::string& connection, const std::string& what) {
+    ++count_;
+    if (count_ <= 10 || count_ % 1000 == 0)
+      spdlog::warn("ignored {} from {}, which is not a participant of this run ({} so far)", what,
+                   connection, count_);
+  }
+
+ private:
+  std::size_t count_ = 0;
+};
+
+bool same_secret(const std::string& a, const std::string& b) {
+  if (a.size() != b.size()) return false;
+  unsigned char difference = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    difference |= static_cast<unsigned char>(a[i] ^ b[i]);
+  return difference == 0;
+}
+
 }  // namespace
 
 struct Coupler::Impl {
   const job::Job& job;
-  com::Transport& transport;
+  com::Hub& transport;
   runtime::Supervisor* supervisor;
   RunSummary& summary;
   CouplerOptions options;
@@ -76,8 +100,9 @@ struct Coupler::Impl {
   std::size_t window = 0;
   double max_conservation_error = 0.0;
   double next_output_time = 0.0;
+  StrangerLog strangers;
 
-  Impl(const job::Job& j, com::Transport& t, runtime::Supervisor* s, RunSummary& sum,
+  Impl(const job::Job& j, com::Hub& t, runtime::Supervisor* s, RunSummary& sum,
        CouplerOptions o)
       : job(j), transport(t), supervisor(s), summary(sum), options(std::move(o)) {
     for (const auto& p : job.participants) peers[p.name].spec = &p;
@@ -96,7 +121,7 @@ struct Coupler::Impl {
       throw Error(ExitCode::participant_failed, "interrupted by a signal; participants stopped");
     if (!supervisor) return;
     for (const runtime::ChildExit& e : supervisor->reap())
-      throw Error(ExitCode::participant_failed,
+      throw Error(e.coupled_exit_code(),
                   fmt::format("participant '{}' (pid {}) {} during window {}{}", e.name, e.pid,
                               e.describe(), window, last_lines_of(e.name)));
   }
@@ -163,42 +188,83 @@ struct Coupler::Impl {
     }
   }
 
+  // A hello from a connection not yet admitted: the participant it names is
+  // admitted when its run token, job, config and declarations check out.
+  void consider_hello(const com::Received& r, std::size_t& connected) {
+    const com::Header& h = r.message.header;
+    com::Hello hello;
+    try {
+      com::validate_payload(r.message, r.peer, false);
+      hello = com::parse_hello(r.message.payload.text(), r.peer);
+    } catch (const ProtocolError& e) {
+      refuse(r.peer, e.what());
+      return;
+    }
+    if (!options.tokens.empty()) {
+      auto token = options.tokens.find(h.sender);
+      if (token == options.tokens.end() || !same_secret(hello.token, token->second)) {
+        strangers.dropped(r.peer, fmt::format("a hello as '{}' without its run token", h.sender));
+        refuse(r.peer, "not admitted: this run admits only the processes it started");
+        return;
+      }
+    }
+    if (auto reason = admission_refusal(job, options.job_id, h, hello)) {
+      refuse(r.peer, *reason);
+      return;
+    }
+    Peer& peer = peers.at(h.sender);
+    if (peer.connected) {
+      refuse(r.peer, fmt::format("participant '{}' is already connected", h.sender));
+      return;
+    }
+    try {
+      transport.admit(r.peer, h.sender);
+    } catch (const ProtocolError& e) {
+      refuse(r.peer, e.what());
+      return;
+    }
+    peer.connected = true;
+    peer.hello = hello;
+    ++connected;
+    spdlog::info("participant '{}' connected ({}, pid {})", h.sender, hello.program, hello.pid);
+  }
+
+  std::string not_connected() const {
+    std::string names;
+    for (const auto& [name, peer] : peers)
+      if (!peer.connected) names += (names.empty() ? "'" : ", '") + name + "'";
+    return names;
+  }
+
   void admit_participants() {
     const auto deadline = Clock::now() + std::chrono::milliseconds(
                                              static_cast<long>(options.connect_timeout_s * 1e3));
     std::size_t connected = 0;
     while (connected < peers.size()) {
-      std::optional<com::Received> r;
-      try {
-        r = receive(deadline,
-                    fmt::format("participants to connect ({} of {} did)", connected, peers.size()));
-      } catch (const ProtocolError& e) {
-        // A peer speaking another protocol version or garbage: refuse it and
+      const std::optional<com::Received> r = receive(
+          deadline, fmt::format("{} to connect ({} of {} did)", not_connected(), connected,
+                                peers.size()));
+      if (r->malformed) {
+        // A peer speaking another protocol version or garbage: say why, and
         // keep waiting for the real participants.
-        refuse(e.peer(), e.what());
+        strangers.dropped(r->peer, "a malformed message");
+        refuse(r->peer, *r->malformed);
         continue;
       }
       const com::Header& h = r->message.header;
+      if (r->admitted) {
+        check_signature(r->peer, h);
+        if (h.type == MessageType::abort) throw participant_abort(r->peer, r->message);
+        throw ProtocolError(r->peer,
+                            fmt::format("sent '{}' before every participant had connected",
+                                        com::to_string(h.type)));
+      }
       if (h.type == MessageType::abort) continue;  // a refused peer saying goodbye
       if (h.type != MessageType::hello) {
-        refuse(r->peer, fmt::format("sent '{}' before hello", com::to_string(h.type)));
+        strangers.dropped(r->peer, fmt::format("a '{}' message", com::to_string(h.type)));
         continue;
       }
-      com::validate_payload(r->message, r->peer, false);
-      const com::Hello hello = com::parse_hello(r->message.payload.text(), r->peer);
-      if (auto reason = admission_refusal(job, options.job_id, h, hello)) {
-        refuse(r->peer, *reason);
-        continue;
-      }
-      Peer& peer = peers.at(r->peer);
-      if (peer.connected) {
-        refuse(r->peer, fmt::format("participant '{}' is already connected", r->peer));
-        continue;
-      }
-      peer.connected = true;
-      peer.hello = hello;
-      ++connected;
-      spdlog::info("participant '{}' connected ({}, pid {})", r->peer, hello.program, hello.pid);
+      consider_hello(*r, connected);
     }
     check_exchange_declarations();
     com::Welcome welcome;
@@ -238,13 +304,41 @@ struct Coupler::Impl {
                                           peers.at(job.energy_exchange->solid).hello);
   }
 
+  // Every message of an admitted participant names this job and the
+  // participant itself.
+  void check_signature(const std::string& name, const com::Header& h) const {
+    if (h.job_id != options.job_id)
+      throw ProtocolError(name, fmt::format("sent a '{}' message for job '{}' in job '{}'",
+                                            com::to_string(h.type), h.job_id, options.job_id));
+    if (h.sender != name)
+      throw ProtocolError(name, fmt::format("sent a '{}' message signed '{}'",
+                                            com::to_string(h.type), h.sender));
+  }
+
+  // A participant that reports its own failure is given a moment to finish
+  // its record (summary.json, the last lines of its log) and exit; its exit
+  // status then says what failed (a numerical failure passes through as
+  // cosim's exit 4). Without a supervisor (MPI) the code it declared does.
+  Error participant_abort(const std::string& name, const com::Message& m) {
+    ExitCode code = exit_code_from_string(m.header.field);
+    if (code != ExitCode::bad_input && code != ExitCode::numerical_failure)
+      code = ExitCode::participant_failed;
+    std::string how = "aborted";
+    if (supervisor) {
+      if (auto exit = supervisor->wait_for(name, options.failure_grace)) {
+        code = exit->coupled_exit_code();
+        how = "aborted and " + exit->describe();
+      }
+    }
+    return Error(code, fmt::format("participant '{}' {} in window {}: {}{}", name, how, window,
+                                   m.payload.text(), last_lines_of(name)));
+  }
+
   void handle_window_message(const std::string& name, const com::Message& m) {
     Peer& peer = peers.at(name);
     const com::Header& h = m.header;
-    if (h.type == MessageType::abort)
-      throw Error(ExitCode::participant_failed,
-                  fmt::format("participant '{}' aborted in window {}: {}{}", name, window,
-                              m.payload.text(), last_lines_of(name)));
+    check_signature(name, h);
+    if (h.type == MessageType::abort) throw participant_abort(name, m);
     if (h.window != window)
       throw ProtocolError(name, fmt::format("sent a '{}' message for window {} during window {}",
                                             com::to_string(h.type), h.window, window));
@@ -319,8 +413,16 @@ struct Coupler::Impl {
     while (done < peers.size()) {
       auto r = receive(deadline, fmt::format("window {} from {} (window_timeout {} s)", window,
                                              pending(), job.window_timeout_s));
-      if (!peers.count(r->peer)) {
-        refuse(r->peer, "the run has started; late or unknown participants are refused");
+      if (!r->admitted) {
+        if (r->malformed) {
+          strangers.dropped(r->peer, "a malformed message");
+        } else if (r->message.header.type == MessageType::hello) {
+          strangers.dropped(r->peer, fmt::format("a late hello as '{}'", r->message.header.sender));
+          refuse(r->peer, "the run has started; late or unknown participants are refused");
+        } else {
+          strangers.dropped(r->peer,
+                            fmt::format("a '{}' message", com::to_string(r->message.header.type)));
+        }
         continue;
       }
       const bool was_done = peers.at(r->peer).window_done;
@@ -464,7 +566,7 @@ struct Coupler::Impl {
   }
 };
 
-Coupler::Coupler(const job::Job& job, com::Transport& transport, runtime::Supervisor* supervisor,
+Coupler::Coupler(const job::Job& job, com::Hub& transport, runtime::Supervisor* supervisor,
                  RunSummary& summary, CouplerOptions options)
     : impl_(std::make_unique<Impl>(job, transport, supervisor, summary, std::move(options))) {}
 

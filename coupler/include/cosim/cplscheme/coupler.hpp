@@ -1,7 +1,9 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -22,13 +24,19 @@ struct CouplerOptions {
   bool progress_on_terminal = false;
   // Set by a signal handler to stop the run between messages.
   const std::atomic<bool>* interrupted = nullptr;
+  // Participant name -> the run token handed to its process; when given, a
+  // hello is admitted only with its participant's token.
+  std::map<std::string, std::string> tokens;
+  // How long a participant that reported its own failure may take to finish
+  // its record (summary.json, log) and exit, before the run is stopped.
+  std::chrono::milliseconds failure_grace{5000};
 };
 
 class Coupler {
  public:
   // `supervisor` watches the participants' processes; null under mpirun,
   // which does that itself.
-  Coupler(const job::Job& job, com::Transport& transport, runtime::Supervisor* supervisor,
+  Coupler(const job::Job& job, com::Hub& transport, runtime::Supervisor* supervisor,
           RunSummary& summary, CouplerOptions options);
   ~Coupler();
   Coupler(const Coupler&) = delete;
