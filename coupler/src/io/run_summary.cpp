@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <ctime>
+#include <fstream>
 #include <utility>
 
 #include "cosim/error.hpp"
@@ -23,22 +24,6 @@ constexpr std::array reserved_keys{"program",    "version",     "config",      "
 
 nlohmann::json optional_number(const std::optional<double>& value) {
   return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
-}
-
-const char* exit_code_name(ExitCode code) {
-  switch (code) {
-    case ExitCode::success:
-      return "success";
-    case ExitCode::internal_error:
-      return "internal_error";
-    case ExitCode::bad_input:
-      return "bad_input";
-    case ExitCode::participant_failed:
-      return "participant_failed";
-    case ExitCode::numerical_failure:
-      return "numerical_failure";
-  }
-  return "unknown";
 }
 
 }  // namespace
@@ -118,7 +103,7 @@ nlohmann::json RunSummary::to_json() const {
                  {"hash", config_hash_ ? json(to_hex16(*config_hash_)) : json(nullptr)}};
   j["status"] = {{"state", exit_code_ ? "finished" : "running"},
                  {"exit_code", exit_code_ ? json(to_int(*exit_code_)) : json(nullptr)},
-                 {"exit_status", exit_code_ ? json(exit_code_name(*exit_code_)) : json(nullptr)},
+                 {"exit_status", exit_code_ ? json(to_string(*exit_code_)) : json(nullptr)},
                  {"message", message_}};
   j["started_at"] = iso8601_utc(started_at_);
   j["updated_at"] = iso8601_utc(std::chrono::system_clock::now());
@@ -155,6 +140,31 @@ nlohmann::json RunSummary::to_json() const {
 void RunSummary::write() const {
   write_file_atomically(
       path_, to_json().dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+}
+
+bool record_failure_in_summary(const std::filesystem::path& path, ExitCode code,
+                               const std::string& message, bool overrule_success) {
+  nlohmann::json j;
+  try {
+    std::ifstream in(path);
+    if (!in) return false;
+    j = nlohmann::json::parse(in);
+    const auto& status = j.at("status");
+    const bool running = status.at("state") == "running";
+    if (!running && !(overrule_success && status.at("exit_code") == 0)) return false;
+  } catch (const std::exception&) {
+    return false;
+  }
+  const std::string now = iso8601_utc(std::chrono::system_clock::now());
+  j["status"] = {{"state", "finished"},
+                 {"exit_code", to_int(code)},
+                 {"exit_status", to_string(code)},
+                 {"message", message}};
+  j["updated_at"] = now;
+  j["finished_at"] = now;
+  write_file_atomically(path,
+                        j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+  return true;
 }
 
 void RunSummary::finish(ExitCode code, const std::string& message) {

@@ -93,6 +93,16 @@ class RunSummary {
 // other exception; errors are logged. Returns the process exit code.
 int run_and_finish(RunSummary& summary, const std::function<void()>& body);
 
+// Records in the summary.json at `path` that its run failed, when the run
+// could not say so itself (killed by a signal, ended by an MPI abort): a
+// state still "running" (or, with `overrule_success`, finished with success:
+// a coupled run that failed after its coupler rank had finished) becomes
+// finished with `code` and `message`; the rest is kept. A failure it
+// recorded itself is kept (it knows better). Returns whether it changed the
+// file.
+bool record_failure_in_summary(const std::filesystem::path& path, ExitCode code,
+                               const std::string& message, bool overrule_success = false);
+
 // ISO 8601 UTC with milliseconds, e.g. "2024-05-01T12:34:56.789Z".
 std::string iso8601_utc(std::chrono::system_clock::time_point time);
 

@@ -1,0 +1,336 @@
+#include "run_command.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+#include <sys/random.h>
+#include <unistd.h>
+
+#include <array>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <string_view>
+
+#include "cosim/com/mpi_transport.hpp"
+#include "cosim/com/zmq_transport.hpp"
+#include "cosim/cplscheme/coupler.hpp"
+#include "cosim/error.hpp"
+#include "cosim/io/files.hpp"
+#include "cosim/io/logging.hpp"
+#include "cosim/io/run_summary.hpp"
+#include "cosim/io/tail_lines.hpp"
+#include "cosim/job/job.hpp"
+#include "cosim/runtime/mpi_launch.hpp"
+#include "cosim/runtime/stop_request.hpp"
+#include "cosim/runtime/supervisor.hpp"
+
+namespace cosim::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+using std::chrono::milliseconds;
+
+// How long participants told to abort may take to finish their records
+// before they are asked (SIGTERM), then made (SIGKILL), to stop.
+constexpr milliseconds abort_grace{3000};
+constexpr milliseconds stop_grace{3000};
+
+std::string new_job_id(const std::string& name) {
+  std::random_device device;
+  return fmt::format("{}-{:08x}", name, device());
+}
+
+// 128 random bits from the kernel, as hex.
+std::string new_run_token() {
+  std::array<unsigned char, 16> bytes{};
+  std::size_t got = 0;
+  while (got < bytes.size()) {
+    const ssize_t n = ::getrandom(bytes.data() + got, bytes.size() - got, 0);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw Error(ExitCode::internal_error, "getrandom failed: no run token");
+    got += static_cast<std::size_t>(n);
+  }
+  std::string hex;
+  for (unsigned char b : bytes) hex += fmt::format("{:02x}", b);
+  return hex;
+}
+
+std::vector<std::string> participant_names(const job::Job& job) {
+  std::vector<std::string> names;
+  for (const auto& p : job.participants) names.push_back(p.name);
+  return names;
+}
+
+// Ends every participant still running after a failed or interrupted run:
+// those the coupler told to abort get a moment to finish their records and
+// exit by themselves, the rest are stopped; a participant that died without
+// finishing its summary.json (a signal) has it finished by the coupler.
+void end_participants(runtime::Supervisor& supervisor, const fs::path& output) {
+  supervisor.wait_all(abort_grace);
+  supervisor.stop_all(stop_grace);
+  for (const runtime::ChildExit& e : supervisor.exited())
+    if (!e.success())
+      record_failure_in_summary(output / e.name / "summary.json", e.coupled_exit_code(),
+                               fmt::format("participant '{}' {} (recorded by cosim)", e.name,
+                                           e.describe()));
+}
+
+// The participants run as children of this process, talking over ZeroMQ.
+void run_with_zmq(const job::Job& job, const RunOptions& o, RunSummary& summary) {
+  com::ZmqHubOptions hub_options;
+  hub_options.scheme = job.zmq.scheme == "tcp" ? com::ZmqScheme::tcp : com::ZmqScheme::ipc;
+  hub_options.tcp_host = job.zmq.host;
+  hub_options.allow_non_loopback = job.zmq.allow_non_loopback;
+  com::ZmqHub hub(hub_options);
+  spdlog::info("job '{}' (id {}, config hash {}): {}", job.name, o.job_id, job.config_hash,
+               hub.describe());
+
+  // Every executable is found before any process starts.
+  std::vector<fs::path> executables;
+  for (const auto& p : job.participants)
+    executables.push_back(runtime::resolve_executable(p.executable, job.file.parent_path()));
+
+  runtime::Supervisor supervisor;
+  const fs::path output = fs::absolute(o.output);
+  cplscheme::CouplerOptions options;
+  for (std::size_t i = 0; i < job.participants.size(); ++i) {
+    const auto& p = job.participants[i];
+    runtime::ChildSpec child;
+    child.name = p.name;
+    child.executable = executables[i];
+    child.args = runtime::participant_arguments(p, output, hub.endpoint(), o.job_id,
+                                                job.config_hash, o.connect_timeout_s);
+    options.tokens[p.name] = new_run_token();
+    child.environment = {{"COSIM_TOKEN", options.tokens[p.name]}};
+    create_output_directory(output / p.name);
+    child.log_file = output / p.name / "console.log";
+    try {
+      const pid_t pid = supervisor.start(child);
+      spdlog::info("started participant '{}' (pid {}): {} {}", p.name, pid,
+                   child.executable.string(), runtime::shell_join(child.args));
+    } catch (...) {
+      end_participants(supervisor, output);
+      throw;
+    }
+  }
+
+  options.output_dir = output;
+  options.job_id = o.job_id;
+  options.connect_timeout_s = o.connect_timeout_s;
+  options.progress_on_terminal = ::isatty(STDERR_FILENO) != 0;
+  options.interrupted = &runtime::stop_flag();
+  cplscheme::Coupler coupler(job, hub, &supervisor, summary, options);
+  try {
+    coupler.run();
+  } catch (...) {
+    end_participants(supervisor, output);
+    throw;
+  }
+  // After `finish`, each participant writes its output and exits by itself.
+  const auto window_timeout = milliseconds(static_cast<long>(job.window_timeout_s * 1000.0));
+  const auto exits = supervisor.wait_all(window_timeout, &runtime::stop_flag());
+  if (runtime::stop_requested()) {
+    end_participants(supervisor, output);
+    throw Error(ExitCode::participant_failed,
+                fmt::format("{} after the last window; participants stopped",
+                            runtime::describe_stop()));
+  }
+  for (const auto& e : exits) {
+    if (e.success()) continue;
+    end_participants(supervisor, output);
+    throw Error(e.coupled_exit_code(),
+                fmt::format("participant '{}' {} after the run", e.name, e.describe()));
+  }
+  if (supervisor.running() > 0) {
+    const std::string names = supervisor.running_names();
+    end_participants(supervisor, output);
+    throw Error(ExitCode::participant_failed,
+                fmt::format("participant(s) {} did not exit within window_timeout ({} s) after "
+                            "the end of the run",
+                            names, job.window_timeout_s));
+  }
+}
+
+// Under mpirun: this process is world rank 0, the participants are the other
+// applications of the MPMD launch. A failed run ends the whole MPI job
+// (MPI_Abort) once its record is written: the other ranks may never reach
+// MPI_Finalize (a stopped participant), and waiting there would hang.
+int run_under_mpirun(const job::Job& job, const RunOptions& o, RunSummary& summary) {
+  com::MpiHub hub(participant_names(job));
+  const int code = run_and_finish(summary, [&] {
+    const int expected = 1 + static_cast<int>(job.participants.size());
+    if (hub.world_size() != expected)
+      throw InputError(fmt::format("the mpirun line has {} processes; job '{}' needs {} (the "
+                                   "coupler and one per participant): use `cosim run {} "
+                                   "--print-mpi-command`",
+                                   hub.world_size(), job.name, expected, o.job_file));
+    cplscheme::CouplerOptions options;
+    options.output_dir = fs::absolute(o.output);
+    options.job_id = o.job_id;
+    options.connect_timeout_s = o.connect_timeout_s;
+    options.interrupted = &runtime::stop_flag();
+    cplscheme::Coupler coupler(job, hub, nullptr, summary, options);
+    coupler.run();
+  });
+  if (code != 0) {
+    spdlog::default_logger()->flush();
+    hub.abort_job(code);
+  }
+  return code;
+}
+
+// The participant Open MPI names in its report of a rank that died ("process
+// rank 2 with PID 4242 on node x exited on signal 9 (Killed)."): the launch
+// line puts participant i at rank i + 1.
+std::string dead_rank_report(const job::Job& job, const fs::path& mpirun_log) {
+  constexpr std::string_view rank_marker = "process rank ";
+  constexpr std::string_view pid_marker = " with PID ";
+  for (const auto& line : tail_lines(mpirun_log, 200)) {
+    const auto at = line.find(rank_marker);
+    if (at == std::string::npos) continue;
+    std::size_t end = 0;
+    int rank = 0;
+    try {
+      rank = std::stoi(line.substr(at + rank_marker.size()), &end);
+    } catch (const std::exception&) {
+      continue;
+    }
+    std::string pid = "?";
+    if (const auto p = line.find(pid_marker); p != std::string::npos)
+      pid = line.substr(p + pid_marker.size(), line.find(' ', p + pid_marker.size()) -
+                                                   (p + pid_marker.size()));
+    std::string what = " died";
+    if (const auto e = line.find("exited"); e != std::string::npos) what = " " + line.substr(e);
+    while (!what.empty() && (what.back() == '.' || what.back() == ' ')) what.pop_back();
+    if (rank == 0) return fmt::format("the coupler (world rank 0, pid {}){}", pid, what);
+    if (rank > 0 && rank <= static_cast<int>(job.participants.size()))
+      return fmt::format("participant '{}' (world rank {}, pid {}){}",
+                         job.participants[static_cast<std::size_t>(rank - 1)].name, rank, pid,
+                         what);
+  }
+  return {};
+}
+
+// Whether the coupler rank has finished its record (the run is over; what is
+// left is the participants' exit).
+bool summary_finished(const fs::path& summary) {
+  std::ifstream in(summary);
+  if (!in) return false;
+  try {
+    return nlohmann::json::parse(in).at("status").at("state") == "finished";
+  } catch (const std::exception&) {
+    return false;  // being replaced at this moment
+  }
+}
+
+// Not under mpirun: start mpirun with the job's MPMD line and supervise it.
+// When a rank dies, mpirun ends the others, the coupler's among them, before
+// it can write its record: this process names the dead participant and
+// finishes the run's summary.json.
+int launch_mpirun(const job::Job& job, const RunOptions& o) {
+  const auto cmd = runtime::mpi_command(job, o.job_file, o.output, o.job_id, o.connect_timeout_s);
+  const fs::path output = fs::absolute(o.output);
+  runtime::Supervisor supervisor;
+  runtime::ChildSpec child;
+  child.name = "mpirun";
+  child.executable = runtime::resolve_executable("mpirun", ".");
+  child.args.assign(cmd.begin() + 1, cmd.end());
+  child.log_file = output / "mpirun.log";
+  std::cerr << "cosim: launching " << runtime::shell_join(cmd) << "\n";
+  supervisor.start(child);
+  const auto finish = [&](ExitCode code, const std::string& message) {
+    std::cerr << "cosim: error: " << message << "\n";
+    std::ofstream(output / "log.txt", std::ios::app) << "[cosim] [error] " << message << "\n";
+    record_failure_in_summary(output / "summary.json", code, message, true);
+    for (const auto& p : job.participants)
+      record_failure_in_summary(output / p.name / "summary.json", ExitCode::participant_failed,
+                               "stopped when the MPI job ended (recorded by cosim)");
+    return to_int(code);
+  };
+  const auto window_timeout = milliseconds(static_cast<long>(job.window_timeout_s * 1000.0));
+  std::optional<std::chrono::steady_clock::time_point> run_over_at;
+  auto last_look = std::chrono::steady_clock::now();
+  for (;;) {
+    if (runtime::stop_requested()) {
+      supervisor.stop_all(stop_grace);
+      return finish(ExitCode::participant_failed,
+                    fmt::format("{}; the MPI job was stopped", runtime::describe_stop()));
+    }
+    const auto now = std::chrono::steady_clock::now();
+    if (!run_over_at && now - last_look > std::chrono::seconds(1)) {
+      last_look = now;
+      if (summary_finished(output / "summary.json")) run_over_at = now;
+    }
+    if (run_over_at && now - *run_over_at > window_timeout + stop_grace) {
+      std::string names;
+      for (const auto& p : job.participants)
+        if (!summary_finished(output / p.name / "summary.json"))
+          names += (names.empty() ? "'" : ", '") + p.name + "'";
+      supervisor.stop_all(stop_grace);
+      return finish(ExitCode::participant_failed,
+                    fmt::format("participant(s) {} did not exit within window_timeout ({} s) "
+                                "after the end of the run; the MPI job was stopped",
+                                names.empty() ? "(unknown)" : names, job.window_timeout_s));
+    }
+    auto exits = supervisor.wait_all(milliseconds(200), &runtime::stop_flag());
+    if (exits.empty()) continue;
+    const auto& e = exits.front();
+    if (e.success()) return 0;
+    const int s = e.exit_status;
+    const ExitCode code = (s == 2 || s == 3 || s == 4) ? static_cast<ExitCode>(s)
+                                                       : ExitCode::participant_failed;
+    const std::string dead = dead_rank_report(job, child.log_file);
+    return finish(code, fmt::format("mpirun {}{}; see {}", e.describe(),
+                                    dead.empty() ? "" : ": " + dead, child.log_file.string()));
+  }
+}
+
+}  // namespace
+
+int run_job(const RunOptions& o) {
+  const job::Job job = job::load_job(o.job_file);
+  RunOptions opts = o;
+  if (opts.job_id.empty()) opts.job_id = new_job_id(job.name);
+  const bool under_mpirun = com::launched_by_mpirun();
+  if (job.transport == job::TransportKind::mpi && !under_mpirun) {
+    if (o.print_mpi_command) {
+      std::cout << runtime::shell_join(runtime::mpi_command(job, o.job_file, o.output, opts.job_id,
+                                                            o.connect_timeout_s))
+                << "\n";
+      return 0;
+    }
+    prepare_output_directory(o.output, o.overwrite ? OutputReuse::overwrite : OutputReuse::refuse);
+    return launch_mpirun(job, opts);
+  }
+  if (o.print_mpi_command)
+    throw InputError(fmt::format("{}: job '{}' uses transport '{}'; --print-mpi-command "
+                                 "needs 'transport: mpi'",
+                                 o.job_file, job.name, "zmq"));
+
+  // Under mpirun the launching cosim has prepared the directory (and writes
+  // mpirun.log into it).
+  if (!under_mpirun)
+    prepare_output_directory(o.output, o.overwrite ? OutputReuse::overwrite : OutputReuse::refuse);
+  init_logging(o.output, "cosim", parse_verbosity(o.verbosity));
+  RunSummary summary(o.output, "cosim run");
+  summary.set_config(fs::absolute(o.job_file), std::stoull(job.config_hash, nullptr, 16));
+  summary.set_section(
+      "job", {{"name", job.name},
+              {"id", opts.job_id},
+              {"transport", job.transport == job::TransportKind::mpi ? "mpi" : "zmq"},
+              {"window_s", job.window},
+              {"start_time_s", job.start_time},
+              {"end_time_s", job.end_time}});
+  summary.write();
+  const int code = job.transport == job::TransportKind::mpi
+                       ? run_under_mpirun(job, opts, summary)
+                       : run_and_finish(summary, [&] { run_with_zmq(job, opts, summary); });
+  if (code != 0) return code;
+  spdlog::info("job '{}' completed: {} windows, wall time {:.3f} s; outputs in {}", job.name,
+               job.windows(), summary.phases().total_seconds(), fs::absolute(o.output).string());
+  return 0;
+}
+
+}  // namespace cosim::app

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <string>
+
+// `cosim run <job.yaml> --output <dir>`: starts the job's participants,
+// couples them until the end time, and leaves the run directory complete
+// whatever happens (summary.json finished, log lines kept, no process left).
+namespace cosim::app {
+
+// The connect timeout's range [s]: long enough for a slow start, short
+// enough that a deadline computed from it cannot overflow.
+inline constexpr double min_connect_timeout_s = 0.1;
+inline constexpr double max_connect_timeout_s = 1.0e6;
+
+struct RunOptions {
+  std::string job_file;
+  std::string output;
+  std::string job_id;  // set by the MPI launch; a fresh one otherwise
+  std::string verbosity = "normal";
+  bool print_mpi_command = false;
+  bool overwrite = false;  // clear the earlier run a non-empty --output holds
+  double connect_timeout_s = 120.0;
+};
+
+// Returns the process exit code (DESIGN.md §6).
+int run_job(const RunOptions& options);
+
+}  // namespace cosim::app
