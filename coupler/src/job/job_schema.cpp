@@ -112,7 +112,9 @@ Schema make_job_schema() {
   Schema s = Schema::file("job",
                           "A coupled run: participants, the fields they exchange, and "
                           "the coupling windows.");
-  s.required("name", Schema::string().non_empty(), "Name of the job (used in logs and reports).")
+  s.required("name", Schema::string().non_empty(),
+             "Name of the job (used in logs, reports and the job id): up to 100 letters, digits, "
+             "'.', '_' and '-'.")
       .optional("start_time", Schema::number().non_negative().unit("s").default_value("0"),
                 "Simulated start time.")
       .required("end_time", Schema::number().positive().unit("s"), "Simulated end time.")
@@ -123,10 +125,13 @@ Schema make_job_schema() {
       .optional("zmq", zmq_schema(), "ZeroMQ options.")
       .optional("extrapolation", Schema::one_of({"constant", "linear"}).default_value("constant"),
                 "How a participant sees its partner's fields inside a window.")
-      .optional("window_timeout", Schema::number().positive().unit("s").default_value("600"),
-                "Longest wall time a window may take before a participant is declared hung.")
+      .optional("window_timeout",
+                Schema::number().range(1e-3, 1e6).unit("s").default_value("600"),
+                "Longest wall time a window may take before a participant is declared hung; "
+                "also how long participants may take to exit after the last window.")
       .required("participants", Schema::map_of(participant_schema()).length(1, 64),
-                "The solver processes, by name.")
+                "The solver processes, by name (up to 64 letters, digits, '_' and '-'; also the "
+                "name of each one's output directory).")
       .optional("exchange", Schema::sequence(exchange_schema()).default_value("[]"),
                 "The fields exchanged each window.")
       .optional("momentum_exchange", momentum_exchange_schema().default_value("none"),

@@ -1,7 +1,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <string_view>
 
 #include "cosim/com/transport.hpp"
 #include "cosim/config/document.hpp"
@@ -255,6 +257,19 @@ std::string hash_inputs(const config::Document& doc, const Job& job) {
   return h.hex();
 }
 
+// A name that goes into file names, command lines and messages: short, of
+// letters, digits and `extra` punctuation.
+void check_name(const config::Node& where, const std::string& name, std::size_t max_length,
+                std::string_view extra, const char* what) {
+  const bool plain = std::all_of(name.begin(), name.end(), [&](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || extra.find(c) != std::string_view::npos;
+  });
+  if (name.empty() || name.size() > max_length || !plain)
+    where.fail(fmt::format("{} '{}' must be 1 to {} letters, digits and '{}'", what,
+                           name.size() > 64 ? name.substr(0, 64) + "..." : name, max_length,
+                           extra));
+}
+
 }  // namespace
 
 const ParticipantSpec* Job::participant(const std::string& n) const {
@@ -275,6 +290,7 @@ Job load_job(const std::filesystem::path& file) {
   Job job;
   job.file = file;
   job.name = root["name"].as<std::string>();
+  check_name(root["name"], job.name, 100, "._-", "the job's name");
   job.start_time = root.get<double>("start_time", 0.0);
   job.end_time = root["end_time"].as<double>();
   job.window = root["window"].as<double>();
@@ -297,10 +313,20 @@ Job load_job(const std::filesystem::path& file) {
                           ? com::Extrapolation::linear
                           : com::Extrapolation::constant;
   job.window_timeout_s = root.get<double>("window_timeout", 600.0);
-  if (auto o = root.find("output")) job.output_every = o->get<double>("every", 0.0);
+  if (auto o = root.find("output")) {
+    job.output_every = o->get<double>("every", 0.0);
+    if (job.output_every > 0.0 && (job.end_time - job.start_time) / job.output_every > 1e6)
+      (*o)["every"].fail(fmt::format("{} s gives more than a million snapshots over the run",
+                                     job.output_every));
+  }
 
   for (const auto& [name, p] : root["participants"].entries()) {
     if (name == com::coupler_peer) p.fail_at_key("'coupler' is reserved for the coupler itself");
+    if (name.size() > 64 || name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTU"
+                                                   "VWXYZ0123456789_-") != std::string::npos)
+      p.fail_at_key(fmt::format("participant name '{}' must be 1 to 64 letters, digits, '_' and "
+                                "'-'",
+                                name.size() > 64 ? name.substr(0, 64) + "..." : name));
     job.participants.push_back(read_participant(name, p));
   }
   check_exchanges(job, root);
