@@ -2,8 +2,8 @@
 // refinement study (two grids of Stoker's dam break) and a scenario whose
 // case is broken. The broken run is a row that says it failed and why, the
 // others are measured, the bench exits 3 (a run failed), and a second
-// `cosim bench` on the same directory keeps the finished runs and runs the
-// rest again. Bad arguments exit 2 before anything runs.
+// `cosim bench --resume` on the same directory keeps the finished runs and
+// runs the rest again. Bad arguments exit 2 before anything runs.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -51,12 +51,13 @@ scenarios:
 TEST(CosimBench, AFailedRunIsARowThatSaysWhyAndTheRestAreMeasured) {
   const fs::path dir = fresh_directory("cosim_bench_small");
   write_text(dir / "suite.yaml", suite_text(fs::path(COSIM_SOURCE_DIR) / "configs"));
-  const auto bench = [&] {
-    return run({binary("cosim").string(), "bench", (dir / "suite.yaml").string(), "--output",
-                (dir / "report").string()},
-               std::chrono::seconds(300));
+  const auto bench = [&](std::vector<std::string> flags) {
+    std::vector<std::string> args{binary("cosim").string(), "bench", (dir / "suite.yaml").string(),
+                                  "--output", (dir / "report").string()};
+    args.insert(args.end(), flags.begin(), flags.end());
+    return run(args, std::chrono::seconds(300));
   };
-  ProcessResult r = bench();
+  ProcessResult r = bench({});
   EXPECT_EQ(r.exit_code, 3) << r.output;
   const std::string csv = read_text(dir / "report" / "results.csv");
   fmt::print("{}", csv);
@@ -78,16 +79,14 @@ TEST(CosimBench, AFailedRunIsARowThatSaysWhyAndTheRestAreMeasured) {
   EXPECT_TRUE(fs::exists(dir / "report" / "plots" / "stoker__depth_l1_convergence.png"));
 
   // A dry run says which runs would be kept.
-  const ProcessResult dry = run({binary("cosim").string(), "bench", (dir / "suite.yaml").string(),
-                                 "--output", (dir / "report").string(), "--dry-run"},
-                                std::chrono::seconds(60));
+  const ProcessResult dry = bench({"--resume", "--dry-run"});
   EXPECT_EQ(dry.exit_code, 0) << dry.output;
   EXPECT_NE(dry.output.find("stoker/swe@50 cells"), std::string::npos) << dry.output;
   EXPECT_NE(dry.output.find("(kept)"), std::string::npos) << dry.output;
   EXPECT_NE(dry.output.find("broken/swe"), std::string::npos);
 
-  // Again: the two finished runs are kept, the broken one is tried again.
-  r = bench();
+  // Resumed: the two finished runs are kept, the broken one is tried again.
+  r = bench({"--resume"});
   EXPECT_EQ(r.exit_code, 3);
   const std::string log = read_text(dir / "report" / "log.txt");
   EXPECT_NE(log.find("stoker/swe@50 cells: finished by an earlier run"), std::string::npos) << log;

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "demo_job.hpp"
 #include "run_process.hpp"
 
 namespace cosim::testing {
@@ -16,61 +17,6 @@ namespace {
 
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
-
-struct JobOptions {
-  std::string transport = "zmq";
-  std::string extrapolation = "constant";
-  std::string scheme = "ipc";
-  double end_time = 0.05;
-  double window_timeout = 60.0;
-  std::string left_args = "[]";
-  std::string right_args = "[]";
-};
-
-// Writes the demo job with the given options, and its participants'
-// configs, into `dir`; returns the job file.
-fs::path write_job(const fs::path& dir, const JobOptions& o) {
-  const fs::path demo = fs::path(COSIM_SOURCE_DIR) / "configs" / "demo";
-  fs::copy_file(demo / "left.yaml", dir / "left.yaml", fs::copy_options::overwrite_existing);
-  fs::copy_file(demo / "right.yaml", dir / "right.yaml", fs::copy_options::overwrite_existing);
-  const std::string job = fmt::format(R"(kind: job
-name: e2e
-end_time: {}
-window: 2.5e-3
-transport: {}
-extrapolation: {}
-zmq: {{scheme: {}}}
-window_timeout: {}
-participants:
-  left:
-    executable: cosim_test_participant
-    config: left.yaml
-    args: {}
-    meshes: {{grid: {{kind: uniform_grid, dim: 2}}}}
-    writes: {{temperature: grid, heat: grid}}
-    reads: {{pressure: grid}}
-  right:
-    executable: cosim_test_participant
-    config: right.yaml
-    args: {}
-    meshes: {{grid: {{kind: uniform_grid, dim: 2}}}}
-    writes: {{pressure: grid}}
-    reads: {{temperature: grid, heat: grid}}
-exchange:
-  - {{field: temperature, from: left, to: right, mapping: consistent}}
-  - {{field: heat, from: left, to: right, mapping: conservative}}
-  - {{field: pressure, from: right, to: left, mapping: consistent}}
-)",
-                                      o.end_time, o.transport, o.extrapolation, o.scheme,
-                                      o.window_timeout, o.left_args, o.right_args);
-  write_text(dir / "job.yaml", job);
-  return dir / "job.yaml";
-}
-
-ProcessResult cosim_run(const fs::path& job, const fs::path& output, int timeout_s = 120) {
-  return run({binary("cosim").string(), "run", job.string(), "--output", output.string()},
-             std::chrono::seconds(timeout_s));
-}
 
 // What the writer integrated over window k is what the reader applied, over
 // its own sub-steps, in window k + 1.
@@ -202,14 +148,24 @@ TEST(CosimRun, TerminatedCouplerStopsItsParticipantsAndRecordsWhy) {
   EXPECT_EQ(summary["status"]["exit_code"], 3);
 }
 
-TEST(CosimRun, FailingParticipantIsNamedWithItsReason) {
+// The participant's numerical failure (its exit 4) is cosim's exit 4, and
+// the participant's own record is complete: it was let finish before the
+// others were stopped.
+TEST(CosimRun, FailingParticipantIsNamedWithItsReasonAndItsRecordKept) {
   const fs::path dir = fresh_directory("e2e_crash");
   JobOptions o;
   o.left_args = "[--crash-at-window, '3']";
   const auto r = cosim_run(write_job(dir, o), dir / "run");
-  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_EQ(r.exit_code, 4) << r.output;
   EXPECT_THAT(r.output, HasSubstr("participant 'left'"));
   EXPECT_THAT(r.output, HasSubstr("crash requested at window 3"));
+  const auto left = nlohmann::json::parse(read_text(dir / "run" / "left" / "summary.json"));
+  EXPECT_EQ(left["status"]["state"], "finished");
+  EXPECT_EQ(left["status"]["exit_code"], 4);
+  EXPECT_THAT(read_text(dir / "run" / "left" / "console.log"),
+              HasSubstr("crash requested at window 3"));
+  const auto right = nlohmann::json::parse(read_text(dir / "run" / "right" / "summary.json"));
+  EXPECT_EQ(right["status"]["state"], "finished");
 }
 
 TEST(CosimRun, HungParticipantTimesOutWithExit3) {
@@ -266,7 +222,7 @@ TEST(CosimRun, LinearExtrapolationIsExactForFieldsLinearInTime) {
   const auto held = write_job(dir, o);
   write_time_linear_fields(dir);
   const auto lagging = cosim_run(held, dir / "run_constant");
-  EXPECT_EQ(lagging.exit_code, 3);
+  EXPECT_EQ(lagging.exit_code, 4);  // the reader's numerical failure, passed through
   EXPECT_THAT(lagging.output, HasSubstr("read 'temperature'"));
 }
 

@@ -47,6 +47,7 @@ class Handshake : public ::testing::Test {
     options.output_dir = dir_;
     options.job_id = "the-job";
     options.connect_timeout_s = 20.0;
+    options.tokens = tokens();
     coupler_ = std::make_unique<cplscheme::Coupler>(job_, hub_, nullptr, *summary_, options);
     result_ = std::async(std::launch::async, [this] {
       try {
@@ -58,9 +59,12 @@ class Handshake : public ::testing::Test {
     });
   }
 
+  virtual std::map<std::string, std::string> tokens() const { return {}; }
+
   // A participant that does what the job expects, with the given identity.
-  void run_participant(const std::string& job_id, const std::string& hash) {
-    CouplingEndpoint endpoint{hub_.endpoint(), "solo", job_id, hash, 20.0};
+  void run_participant(const std::string& job_id, const std::string& hash,
+                       const std::string& token = {}) {
+    CouplingEndpoint endpoint{hub_.endpoint(), "solo", job_id, hash, 20.0, token};
     Participant p("solo", endpoint);
     p.declare_mesh(Mesh{"grid", UniformGrid{1, {0, 0, 0}, {0.1, 1, 1}, {10, 1, 1}}});
     p.initialize(0.0, 0.01);
@@ -125,7 +129,7 @@ TEST_F(Handshake, RefusesAnotherProtocolVersionSayingWhich) {
 }
 
 TEST_F(Handshake, RefusesDeclarationsThatContradictTheJob) {
-  CouplingEndpoint endpoint{hub_.endpoint(), "solo", "the-job", job_.config_hash, 20.0};
+  CouplingEndpoint endpoint{hub_.endpoint(), "solo", "the-job", job_.config_hash, 20.0, ""};
   Participant p("solo", endpoint);
   p.declare_mesh(Mesh{"grid", UniformGrid{2, {0, 0, 0}, {0.1, 0.1, 1}, {10, 10, 1}}});
   try {
@@ -142,7 +146,7 @@ TEST_F(Handshake, RefusesDeclarationsThatContradictTheJob) {
 // participant keeps its default and learns from is_sent() that it comes not;
 // the same read, not optional, is refused, naming what to add to the job.
 TEST_F(Handshake, AdmitsAnOptionalReadTheJobDoesNotSend) {
-  CouplingEndpoint endpoint{hub_.endpoint(), "solo", "the-job", job_.config_hash, 20.0};
+  CouplingEndpoint endpoint{hub_.endpoint(), "solo", "the-job", job_.config_hash, 20.0, ""};
   FieldSpec flux{.name = "solid_volume_flux", .mesh = "grid", .unit = "m/s"};
   {
     Participant p("solo", endpoint);
@@ -167,6 +171,30 @@ TEST_F(Handshake, AdmitsAnOptionalReadTheJobDoesNotSend) {
     p.advance(std::min(0.002, p.max_time_step()));
   }
   p.finalize();
+  EXPECT_EQ(result_.get(), "ok");
+}
+
+// With run tokens (as `cosim run` hands them out), a hello without its
+// participant's token is refused, even one that names the right job and
+// config; the process holding the token is admitted after it.
+class HandshakeWithTokens : public Handshake {
+ protected:
+  std::map<std::string, std::string> tokens() const override {
+    return {{"solo", "0f1e2d3c4b5a69788796a5b4c3d2e1f0"}};
+  }
+};
+
+TEST_F(HandshakeWithTokens, RefusesAHelloWithoutItsTokenAndAdmitsTheTokenHolder) {
+  for (const std::string token : {"", "0f1e2d3c4b5a69788796a5b4c3d2e1f1"}) {
+    try {
+      run_participant("the-job", job_.config_hash, token);
+      FAIL() << "admitted with token '" << token << "'";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ExitCode::bad_input);
+      EXPECT_THAT(e.what(), HasSubstr("admits only the processes it started"));
+    }
+  }
+  run_participant("the-job", job_.config_hash, "0f1e2d3c4b5a69788796a5b4c3d2e1f0");
   EXPECT_EQ(result_.get(), "ok");
 }
 

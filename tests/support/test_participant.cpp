@@ -4,11 +4,13 @@
 // inside every window, checks the fields it reads against the analytic
 // functions its partner writes, and logs every total it sends and receives
 // to <output>/<field>_<direction>.csv so tests can check conservation. Fault
-// injection (--crash-at-window, --hang-at-window) exercises the coupler's
-// supervision.
+// injection (--crash-at-window, --hang-at-window, --raise <signal> --raise-at
+// <phase>) exercises the coupler's supervision.
 
 #include <fmt/format.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -24,8 +26,10 @@
 #include "cosim/config/schema.hpp"
 #include "cosim/error.hpp"
 #include "cosim/io/files.hpp"
+#include "cosim/io/run_summary.hpp"
 #include "cosim/io/time_series_writer.hpp"
 #include "cosim/participant.hpp"
+#include "cosim/runtime/stop_request.hpp"
 
 namespace {
 
@@ -173,8 +177,27 @@ double total(const std::vector<double>& v) {
   return std::accumulate(v.begin(), v.end(), 0.0);
 }
 
+// A signal the participant sends itself at one phase of the run:
+// `startup` (before it connects), `window:N` (at the start of window N) or
+// `end` (after the last window, before it finalizes).
+struct RaisedSignal {
+  int signal = 0;
+  std::string phase;
+  void at(const std::string& now) const {
+    if (signal != 0 && phase == now) ::raise(signal);
+  }
+};
+
+int signal_number(const std::string& name) {
+  for (const auto& [n, number] : std::initializer_list<std::pair<const char*, int>>{
+           {"SIGKILL", SIGKILL}, {"SIGSTOP", SIGSTOP}, {"SIGSEGV", SIGSEGV},
+           {"SIGTERM", SIGTERM}, {"SIGABRT", SIGABRT}})
+    if (name == n) return number;
+  throw cosim::InputError("--raise: unknown signal '" + name + "'");
+}
+
 int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std::string& output,
-        long crash_at_window, long hang_at_window) {
+        long crash_at_window, long hang_at_window, const RaisedSignal& raised) {
   cosim::create_output_directory(output);
   std::ofstream(std::filesystem::path(output) / "pid") << ::getpid() << "\n";
   // One CSV per field and direction: <output>/<field>_<sent|applied|read>.csv
@@ -209,6 +232,7 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
   // Initial data: state fields at the start time.
   for (const auto& w : config.writes) participant.write(w.spec.name, values_of(w, 0.0));
 
+  raised.at("startup");
   participant.initialize(0.0, config.end_time);
 
   std::vector<double> velocity;  // dynamics state, element-major
@@ -277,6 +301,7 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
     apply_impulse();
     while (participant.is_coupling_ongoing()) {
       const std::size_t window = participant.window_index();
+      raised.at(fmt::format("window:{}", window));
       if (crash_at_window > 0 && static_cast<long>(window) == crash_at_window)
         throw cosim::NumericalError(fmt::format("crash requested at window {}", window));
       if (hang_at_window > 0 && static_cast<long>(window) == hang_at_window)
@@ -333,6 +358,7 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
     participant.abort(e.what());  // the coupler learns why before it stops the run
     throw;
   }
+  raised.at("end");
   participant.finalize();
   return 0;
 }
@@ -340,14 +366,20 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
 }  // namespace
 
 int main(int argc, char** argv) {
+  cosim::runtime::install_stop_handlers();
   CLI::App app{"cosim_test_participant: analytic fields for the coupler's tests"};
-  std::string config_file, output;
+  std::string config_file, output, raise_signal;
   long crash_at_window = 0, hang_at_window = 0;
+  bool validate = false;
+  RaisedSignal raised;
   cosim::CouplingEndpoint endpoint;
   app.add_option("--config", config_file, "test_participant YAML")->required();
-  app.add_option("--output", output, "output directory")->required();
+  app.add_option("--output", output, "output directory");
+  app.add_flag("--validate", validate, "check the config and exit");
   app.add_option("--crash-at-window", crash_at_window, "fail at the start of this window");
   app.add_option("--hang-at-window", hang_at_window, "stop answering at this window");
+  app.add_option("--raise", raise_signal, "send itself this signal (SIGKILL, SIGSTOP, SIGSEGV...)");
+  app.add_option("--raise-at", raised.phase, "when: startup | window:<N> | end");
   cosim::add_coupling_options(app, endpoint);
   try {
     app.parse(argc, argv);
@@ -355,7 +387,20 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : cosim::to_int(cosim::ExitCode::bad_input);
   }
   try {
-    return run(load_config(config_file), endpoint, output, crash_at_window, hang_at_window);
+    const Config config = load_config(config_file);
+    if (validate) {
+      std::cout << fmt::format("{}: valid test_participant, {} cells\n", config_file,
+                               config.mesh.size());
+      return 0;
+    }
+    if (output.empty()) throw cosim::InputError("--output is required");
+    if (!raise_signal.empty()) raised.signal = signal_number(raise_signal);
+    cosim::create_output_directory(output);
+    cosim::RunSummary summary(output, "cosim_test_participant");
+    summary.write();
+    return cosim::run_and_finish(summary, [&] {
+      run(config, endpoint, output, crash_at_window, hang_at_window, raised);
+    });
   } catch (const cosim::Error& e) {
     std::cerr << "cosim_test_participant: error: " << e.what() << "\n";
     return cosim::to_int(e.code());

@@ -1,0 +1,199 @@
+// The promises of `cosim run` and `cosim validate` on absurd or hostile
+// input (DESIGN.md §6): a located message and exit 2 for bad input, timeouts
+// passed down and kept to a sane range, runs never mixed in one directory,
+// participant configs checked by `cosim validate`, signals obeyed in every
+// wait, and nothing of a killed coupler left behind.
+
+#include <fmt/format.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <csignal>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "demo_job.hpp"
+#include "run_process.hpp"
+
+namespace cosim::testing {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+TEST(RunContract, ConnectTimeoutIsPassedToParticipantsAndKeptInRange) {
+  const fs::path dir = fresh_directory("contract_connect_timeout");
+  const fs::path job = write_job(dir, {});
+  const auto r = cosim_run(job, dir / "run", 120, {"--connect-timeout", "7"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(read_text(dir / "run" / "log.txt"), HasSubstr("--cosim-connect-timeout 7"));
+  for (const char* absurd : {"1e10", "0", "-1", "nan"}) {
+    const auto bad = cosim_run(job, dir / ("run_" + std::string(absurd)), 30,
+                               {"--connect-timeout", absurd});
+    EXPECT_EQ(bad.exit_code, 2) << absurd << ": " << bad.output;
+    EXPECT_THAT(bad.output, HasSubstr("--connect-timeout"));
+  }
+}
+
+TEST(RunContract, AnAbsurdWindowTimeoutIsRefusedWithItsLine) {
+  const fs::path dir = fresh_directory("contract_window_timeout");
+  JobOptions o;
+  o.window_timeout = 1e300;
+  const auto r = cosim_run(write_job(dir, o), dir / "run", 30);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("job.yaml:8:"));
+  EXPECT_THAT(r.output, HasSubstr("window_timeout"));
+}
+
+// ZeroMQ binds an interface's address: the names of loopback are taken too.
+TEST(RunContract, LoopbackByNameOrIpv6Binds) {
+  const fs::path dir = fresh_directory("contract_hosts");
+  JobOptions o;
+  o.scheme = "tcp";
+  o.host = "localhost";
+  const auto by_name = cosim_run(write_job(dir, o), dir / "run_localhost");
+  EXPECT_EQ(by_name.exit_code, 0) << by_name.output;
+  o.host = "::1";
+  const auto ipv6 = cosim_run(write_job(dir, o), dir / "run_ipv6");
+  const bool has_ipv6_loopback = read_text("/proc/net/if_inet6").find("00000000000000000000000000000001") != std::string::npos;
+  if (has_ipv6_loopback) {
+    EXPECT_EQ(ipv6.exit_code, 0) << ipv6.output;
+    EXPECT_THAT(read_text(dir / "run_ipv6" / "log.txt"), HasSubstr("tcp://[::1]:"));
+  } else {
+    EXPECT_EQ(ipv6.exit_code, 2) << ipv6.output;
+    EXPECT_THAT(ipv6.output, HasSubstr("zmq.host"));
+  }
+}
+
+TEST(RunContract, HugeNamesAndPathsAreBadInput) {
+  const fs::path dir = fresh_directory("contract_huge");
+  const std::string job = read_text(write_job(dir, {}));
+  const std::string huge(10 * 1024 * 1024, 'a');
+  write_text(dir / "name.yaml", replaced(job, "name: e2e", "name: " + huge));
+  write_text(dir / "config.yaml", replaced(job, "config: left.yaml", "config: " + huge + ".yaml"));
+  write_text(dir / "participant.yaml", replaced(replaced(job, "  left:\n", "  " + huge + ":\n"),
+                                                "from: left", "from: " + huge));
+  for (const char* file : {"name.yaml", "config.yaml", "participant.yaml"}) {
+    for (const char* command : {"validate", "run"}) {
+      std::vector<std::string> args{binary("cosim").string(), command, (dir / file).string()};
+      if (std::string(command) == "run")
+        args.insert(args.end(), {"--output", (dir / "run").string()});
+      const auto r = run(args, std::chrono::seconds(60));
+      const std::string head = r.output.substr(0, 1000);
+      EXPECT_EQ(r.exit_code, 2) << command << " " << file << ": " << head;
+      EXPECT_THAT(head, HasSubstr(file)) << command << " " << file;
+      EXPECT_LT(r.output.size(), 10000u) << "the message repeats the huge value: " << head;
+    }
+  }
+  // A long path on the command line (the kernel passes up to 128 KiB).
+  const std::string long_path = (dir / std::string(100 * 1024, 'b')).string() + ".yaml";
+  const auto r = run({binary("cosim").string(), "validate", long_path}, std::chrono::seconds(30));
+  EXPECT_EQ(r.exit_code, 2) << r.output.substr(0, 2000);
+}
+
+TEST(RunContract, ANonEmptyOutputDirectoryIsRefusedUnlessOverwritten) {
+  const fs::path dir = fresh_directory("contract_output_reuse");
+  JobOptions o;
+  o.end_time = 0.025;
+  const fs::path job = write_job(dir, o);
+  ASSERT_EQ(cosim_run(job, dir / "run").exit_code, 0);
+  const std::string first_summary = read_text(dir / "run" / "summary.json");
+  write_text(dir / "run" / "left" / "stale_snapshot.h5", "from a longer run");
+
+  const auto again = cosim_run(job, dir / "run");
+  EXPECT_EQ(again.exit_code, 2) << again.output;
+  EXPECT_THAT(again.output, HasSubstr("--overwrite"));
+  EXPECT_EQ(read_text(dir / "run" / "summary.json"), first_summary) << "the refusal touched it";
+
+  const auto overwritten = cosim_run(job, dir / "run", 120, {"--overwrite"});
+  EXPECT_EQ(overwritten.exit_code, 0) << overwritten.output;
+  EXPECT_FALSE(fs::exists(dir / "run" / "left" / "stale_snapshot.h5"));
+  EXPECT_EQ(read_csv(dir / "run" / "right" / "temperature_read.csv").size(), 10u);
+
+  // --overwrite never empties a directory that is not an earlier run's.
+  fs::create_directories(dir / "precious");
+  write_text(dir / "precious" / "thesis.tex", "years of work");
+  const auto refused = cosim_run(job, dir / "precious", 30, {"--overwrite"});
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_TRUE(fs::exists(dir / "precious" / "thesis.tex"));
+}
+
+TEST(RunContract, ValidateChecksEveryParticipantConfig) {
+  const fs::path dir = fresh_directory("contract_validate");
+  const fs::path job = write_job(dir, {});
+  const auto good = run({binary("cosim").string(), "validate", job.string()}, std::chrono::seconds(30));
+  EXPECT_EQ(good.exit_code, 0) << good.output;
+  EXPECT_THAT(good.output, HasSubstr("left"));
+  EXPECT_THAT(good.output, HasSubstr("is valid"));
+
+  write_text(dir / "right.yaml", read_text(dir / "right.yaml") + "surprise_key: 1\n");
+  const auto bad = run({binary("cosim").string(), "validate", job.string()}, std::chrono::seconds(30));
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_THAT(bad.output, HasSubstr("right.yaml:"));
+  EXPECT_THAT(bad.output, HasSubstr("surprise_key"));
+  EXPECT_THAT(bad.output, HasSubstr("not valid"));
+}
+
+// A participant program that never answers `--validate`: cosim validate
+// waits for it, and a signal ends the wait at once, taking it along.
+TEST(RunContract, ValidateStopsOnASignal) {
+  const fs::path dir = fresh_directory("contract_validate_signal");
+  const fs::path job = write_job(dir, {});
+  write_text(dir / "sleeper.sh", "#!/bin/sh\necho $$ > " + (dir / "sleeper.pid").string() +
+                                     "\nexec sleep 600\n");
+  fs::permissions(dir / "sleeper.sh", fs::perms::owner_all);
+  write_text(job, replaced(read_text(job), "executable: cosim_test_participant",
+                           "executable: ./sleeper.sh"));
+  const pid_t validate =
+      spawn({binary("cosim").string(), "validate", job.string()}, dir / "validate.log");
+  const pid_t sleeper = wait_for_pid_file(dir / "sleeper.pid", std::chrono::seconds(30));
+  const auto start = Clock::now();
+  ASSERT_EQ(::kill(validate, SIGTERM), 0);
+  const auto r = wait_for(validate, dir / "validate.log", std::chrono::seconds(30));
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("signal 15"));
+  EXPECT_LT(std::chrono::duration<double>(Clock::now() - start).count(), 5.0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_FALSE(process_exists(sleeper));
+}
+
+// The private ipc directory of a coupler killed by SIGKILL is removed by the
+// next coupler that starts.
+TEST(RunContract, AKilledCouplersIpcDirectoryIsCleanedAtTheNextStart) {
+  const fs::path dir = fresh_directory("contract_stale_ipc");
+  JobOptions o;
+  o.end_time = 1000.0;
+  const fs::path job = write_job(dir, o);
+  const pid_t cosim = spawn({binary("cosim").string(), "run", job.string(), "--output",
+                             (dir / "killed").string()},
+                            dir / "killed.log");
+  wait_for_pid_file(dir / "killed" / "right" / "pid", std::chrono::seconds(30));
+  const std::string log = read_text(dir / "killed" / "log.txt");
+  const auto at = log.find("ipc://");
+  ASSERT_NE(at, std::string::npos) << log;
+  const fs::path socket = log.substr(at + 6, log.find_first_of(" \n", at) - at - 6);
+  const fs::path private_dir = socket.parent_path();
+  ASSERT_TRUE(fs::exists(private_dir));
+  ::kill(cosim, SIGKILL);
+  wait_for(cosim, dir / "killed.log", std::chrono::seconds(10));
+  EXPECT_TRUE(fs::exists(private_dir)) << "nothing to clean";
+
+  o.end_time = 0.01;
+  const auto next = cosim_run(write_job(dir, o), dir / "next");
+  EXPECT_EQ(next.exit_code, 0) << next.output;
+  EXPECT_FALSE(fs::exists(private_dir));
+  EXPECT_THAT(read_text(dir / "next" / "log.txt"), HasSubstr(private_dir.string()));
+}
+
+}  // namespace
+}  // namespace cosim::testing
