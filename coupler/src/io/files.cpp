@@ -27,14 +27,14 @@ void create_output_directory(const fs::path& directory) {
 }
 
 void prepare_output_directory(const fs::path& directory, OutputReuse reuse,
-                              const std::vector<std::string>& markers) {
+                              const std::vector<std::string>& markers, bool resumable) {
   std::error_code ec;
   if (!fs::exists(directory, ec) || (fs::is_directory(directory, ec) && fs::is_empty(directory, ec))) {
     create_output_directory(directory);
     return;
   }
   create_output_directory(directory);  // refuses a file in its place
-  if (reuse == OutputReuse::resume) return;
+  if (reuse == OutputReuse::resume || reuse == OutputReuse::prepared) return;
   const auto is_marker = [&](const std::string& name) {
     return std::find(markers.begin(), markers.end(), name) != markers.end();
   };
@@ -52,8 +52,9 @@ void prepare_output_directory(const fs::path& directory, OutputReuse reuse,
   if (reuse == OutputReuse::refuse)
     throw Error(ExitCode::bad_input,
                 fmt::format("output directory '{}' is not empty ({} entries: {}); pass --overwrite "
-                            "to replace the run it holds, or choose another directory",
-                            directory.string(), names.size(), shown));
+                            "to replace the run it holds, {}or choose another directory",
+                            directory.string(), names.size(), shown,
+                            resumable ? "--resume to continue it, " : ""));
   if (!earlier_run)
     throw Error(ExitCode::bad_input,
                 fmt::format("output directory '{}' holds {} but no '{}': it is not an earlier run's "
@@ -65,6 +66,12 @@ void prepare_output_directory(const fs::path& directory, OutputReuse reuse,
       throw Error(ExitCode::bad_input, fmt::format("--overwrite: cannot remove '{}': {}",
                                                    (directory / name).string(), ec.message()));
   }
+}
+
+bool is_inside(const fs::path& path, const fs::path& directory) {
+  const fs::path p = fs::weakly_canonical(fs::absolute(path));
+  const fs::path d = fs::weakly_canonical(fs::absolute(directory));
+  return std::mismatch(d.begin(), d.end(), p.begin(), p.end()).first == d.end();
 }
 
 fs::path staging_path(const fs::path& path) {

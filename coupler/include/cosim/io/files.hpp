@@ -18,16 +18,23 @@ enum class OutputReuse {
   refuse,     // the default: a non-empty directory is an error (nothing is touched)
   overwrite,  // --overwrite: clear the earlier run it holds, then write afresh
   resume,     // --resume (where the program can): keep what is there
+  prepared,   // started by `cosim run`: the coupler made the directory and writes into it too
 };
 
 // Makes `directory` ready for a run (DESIGN.md §6; two runs never mix in one
 // directory). Missing or empty: created. Non-empty: refused with
-// Error(bad_input) naming it and the flags, unless `reuse` says otherwise;
-// --overwrite clears it only when it holds one of `markers` (files every run
-// of the program writes, such as summary.json), so it never empties a
-// directory that is not an earlier run's.
+// Error(bad_input) naming it and the flags, unless `reuse` says otherwise
+// (resume and prepared keep what is there); --overwrite clears it only when
+// it holds one of `markers` (files every run of the program writes, such as
+// summary.json), so it never empties a directory that is not an earlier
+// run's. `resumable`: the refusal also offers --resume.
 void prepare_output_directory(const std::filesystem::path& directory, OutputReuse reuse,
-                              const std::vector<std::string>& markers = {"summary.json"});
+                              const std::vector<std::string>& markers = {"summary.json"},
+                              bool resumable = false);
+
+// Whether `path` is `directory` or lies inside it, as both resolve now (an
+// input that --overwrite of `directory` would delete).
+bool is_inside(const std::filesystem::path& path, const std::filesystem::path& directory);
 
 // The hidden sibling `<dir>/.<name>.tmp` that atomic replacements of `path`
 // are staged in.
