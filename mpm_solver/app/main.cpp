@@ -1,11 +1,13 @@
 // mpm_solver: the explicit material point method, standalone or as a
 // participant of a coupled job (`cosim run`).
 //
-//   mpm_solver --config case.yaml --output run/ [--threads N]
+//   mpm_solver --config case.yaml --output run/ [--overwrite] [--threads N]
+//   mpm_solver --validate --config case.yaml
 //   mpm_solver --help-config
 
 #include "cosim/solver_command_line.hpp"
 #include "mpm/case/case_schema.hpp"
+#include "mpm/case/load_case.hpp"
 #include "mpm/coupling/coupling_observer.hpp"
 #include "mpm/io/run_driver.hpp"
 
@@ -22,10 +24,16 @@ int main(int argc, char** argv) {
              options.output = line.output;
              options.threads = line.threads;
              options.verbosity = line.verbosity;
+             options.reuse = line.reuse;
              // Coupled (an endpoint from `cosim run`): the coupling concept's
              // observers drive a cosim::Participant alongside the time loop.
              if (line.endpoint.is_standalone()) return mpm::run_case(options);
              return mpm::run_case(options, mpm::coupling::coupling_observers(line.endpoint));
+           },
+       .validate =
+           [](const std::filesystem::path& config) {
+             mpm::CaseDescription c = mpm::load_case(config);
+             return cosim::ValidatedCase{c.name, std::move(c.size)};
            }},
       argc, argv);
 }

@@ -98,28 +98,41 @@ GridGeometry<Dim> covering(GridGeometry<Dim> grid, const Box<Dim>& bounds) {
   return grid;
 }
 
-template <int Dim, class Region>
-SeededParticles<Dim> seed_anywhere(const Region& region, const GridGeometry<Dim>& grid,
-                                   const SeedingPattern& pattern) {
-  return seed_region<Dim>(region, covering<Dim>(grid, region.bounding_box()), pattern);
+// The particles a region of `volume` gets: its share of the grid's cells
+// times the points per cell (the points near its boundary fall in or out).
+template <int Dim>
+double particles_in(double volume, const GridSpec& spec, const std::array<int, 3>& counts) {
+  double per_cell = 1.0, cell = 1.0;
+  for (int d = 0; d < Dim; ++d) {
+    per_cell *= counts[static_cast<std::size_t>(d)];
+    cell *= spec.spacing[d];
+  }
+  return volume / cell * per_cell;
 }
 
 template <int Dim>
 SeededParticles<Dim> seed(const Node& geometry, const GridSpec& spec,
-                          const std::array<int, 3>& counts, Seeding seeding) {
-  const auto [grid, pattern] = seeding_grid<Dim>(spec, counts, seeding);
+                          const std::array<int, 3>& counts, Seeding seeding,
+                          const BeforeSeeding& before_seeding) {
+  // A region is estimated before the seeding grid is even refined, then
+  // seeded on the grid grown to cover it.
+  const auto seed_inside = [&](const auto& region, double volume) {
+    before_seeding(particles_in<Dim>(volume, spec, counts));
+    const auto [grid, pattern] = seeding_grid<Dim>(spec, counts, seeding);
+    return seed_region<Dim>(region, covering<Dim>(grid, region.bounding_box()), pattern);
+  };
   if (auto box = geometry.find("box")) {
     Box<Dim> region{point<Dim>((*box)["min"]), point<Dim>((*box)["max"])};
     if (!(region.lower.array() < region.upper.array()).all())
       (*box)["max"].fail("box max must exceed min in every direction");
-    return seed_anywhere<Dim>(region, grid, pattern);
+    return seed_inside(region, (region.upper - region.lower).prod());
   }
   if (auto polygon = geometry.find("polygon")) {
     if constexpr (Dim == 2) {
       std::vector<Vec<2>> vertices;
       for (const Node& v : polygon->items()) vertices.push_back(point<2>(v));
       const Polygon region = located_at(*polygon, [&] { return Polygon(std::move(vertices)); });
-      return seed_anywhere<2>(region, grid, pattern);
+      return seed_inside(region, region.area());
     } else {
       polygon->fail_at_key("a polygon needs dimension: 2 (use a polyhedron in 3D)");
     }
@@ -135,15 +148,18 @@ SeededParticles<Dim> seed(const Node& geometry, const GridSpec& spec,
       }
       const Polyhedron region = located_at(
           *polyhedron, [&] { return Polyhedron(std::move(vertices), std::move(triangles)); });
-      return seed_anywhere<3>(region, grid, pattern);
+      return seed_inside(region, region.volume());
     } else {
       polyhedron->fail_at_key("a polyhedron needs dimension: 3 (use a polygon in 2D)");
     }
   }
+  // Listed particles: as many as the file holds, counted once read.
   const Node points = geometry["points"];
-  return located_at(points, [&] {
+  SeededParticles<Dim> listed = located_at(points, [&] {
     return read_particle_file<Dim>(points.as_path().string()).particles;
   });
+  before_seeding(static_cast<double>(listed.positions.size()));
+  return listed;
 }
 
 template <int Dim>
@@ -155,8 +171,10 @@ Vec3d widened(const Vec<Dim>& v) {
 
 template <int Dim>
 SeededBody seed_body(const Node& geometry, const GridSpec& grid,
-                     const std::array<int, 3>& particles_per_cell, Seeding seeding) {
-  const SeededParticles<Dim> particles = seed<Dim>(geometry, grid, particles_per_cell, seeding);
+                     const std::array<int, 3>& particles_per_cell, Seeding seeding,
+                     const BeforeSeeding& before_seeding) {
+  const SeededParticles<Dim> particles =
+      seed<Dim>(geometry, grid, particles_per_cell, seeding, before_seeding);
   SeededBody body;
   body.volumes = particles.volumes;
   for (const auto& x : particles.positions) body.positions.push_back(widened<Dim>(x));
@@ -167,9 +185,10 @@ SeededBody seed_body(const Node& geometry, const GridSpec& grid,
 }  // namespace
 
 SeededBody seed_body(const Node& geometry, int dimension, const GridSpec& grid,
-                     const std::array<int, 3>& particles_per_cell, Seeding seeding) {
-  if (dimension == 2) return seed_body<2>(geometry, grid, particles_per_cell, seeding);
-  return seed_body<3>(geometry, grid, particles_per_cell, seeding);
+                     const std::array<int, 3>& particles_per_cell, Seeding seeding,
+                     const BeforeSeeding& before_seeding) {
+  if (dimension == 2) return seed_body<2>(geometry, grid, particles_per_cell, seeding, before_seeding);
+  return seed_body<3>(geometry, grid, particles_per_cell, seeding, before_seeding);
 }
 
 }  // namespace mpm::case_loading

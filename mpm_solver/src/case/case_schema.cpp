@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "cosim/io/run_size.hpp"
 #include "mpm/coupling/coupling_spec.hpp"
 #include "mpm/material/material_parameters.hpp"
 #include "mpm/material/material_registry.hpp"
@@ -267,7 +268,8 @@ Schema mpm_case_schema() {
       .optional("coupling", coupling::coupling_schema(),
                 "What the solver exchanges when `cosim run` starts it (ignored standalone).")
       .optional("threads", Schema::integer().non_negative().default_value("0"),
-                "OpenMP threads; 0: the OpenMP default (--threads overrides).");
+                "OpenMP threads; 0: the OpenMP default (--threads overrides).")
+      .optional("limits", cosim::run_limits_schema(), "What the run may use.");
   return s;
 }
 

@@ -7,9 +7,11 @@
 #include <limits>
 
 #include "case/body_seeding.hpp"
+#include "case/case_size.hpp"
 #include "cosim/config/closest_key.hpp"
 #include "cosim/config/document.hpp"
 #include "cosim/error.hpp"
+#include "cosim/io/output_schedule.hpp"
 #include "mpm/case/case_schema.hpp"
 #include "mpm/case/velocity_history.hpp"
 #include "mpm/material/material_parameters.hpp"
@@ -108,6 +110,9 @@ class CaseReader {
     c_.gravity_ramp_time = root_.get<double>("gravity_ramp_time", 0.0);
     c_.damping = root_.get<double>("damping", 0.0);
     if (auto materials = root_.find("materials")) read_materials(*materials);
+    // The grid alone, then every body before it is seeded, must fit the limits.
+    demand_ = {dim_, c_.grid, c_.shape, case_loading::velocity_fields(root_)};
+    (void)checked_size(0.0);
     const Node bodies = root_["bodies"];
     for (const Node& body : bodies.items()) read_body(body);
     if (auto contact = root_.find("contact")) read_contact(*contact);
@@ -121,8 +126,12 @@ class CaseReader {
       c_.output.every = output->get<double>("every", 0.0);
       c_.output.grid = output->get<bool>("grid", false);
       c_.output.probe_every = output->get<double>("probe_every", 0.0);
+      for (const char* key : {"every", "probe_every"})
+        if (auto interval = output->find(key))
+          cosim::check_output_interval(*interval, c_.time.end_time);
     }
     c_.threads = root_.get<int>("threads", 0);
+    c_.size = checked_size(static_cast<double>(particle_count_));
     return std::move(c_);
   }
 
@@ -209,14 +218,19 @@ class CaseReader {
     }
 
     std::array<int, 3> ppc{2, 2, 2};
-    if (auto n = node.find("particles_per_cell")) ppc = read_counts(*n, dim_, "particles_per_cell");
+    const auto ppc_node = node.find("particles_per_cell");
+    if (ppc_node) ppc = read_counts(*ppc_node, dim_, "particles_per_cell");
     const auto seeding = read_choice(node, "seeding", case_loading::Seeding::regular,
                                      {{"regular", case_loading::Seeding::regular},
                                       {"r2", case_loading::Seeding::r2}});
     const Node geometry = node["geometry"];
     if (geometry.size() != 1)
       geometry.fail("give exactly one of `box`, `polygon`, `polyhedron` and `points`");
-    auto seeded = case_loading::seed_body(geometry, dim_, c_.grid, ppc, seeding);
+    auto seeded =
+        case_loading::seed_body(geometry, dim_, c_.grid, ppc, seeding, [&](double estimate) {
+          (void)checked_size(static_cast<double>(particle_count_) + estimate);
+          if (ppc_node) check_seeding_counts(*ppc_node, ppc);
+        });
     if (seeded.positions.empty())
       geometry.fail(fmt::format(
           "body '{}' seeds no particles (region smaller than the particle spacing?)", body.name));
@@ -422,8 +436,35 @@ class CaseReader {
     c_.probes.push_back(std::move(probe));
   }
 
+  // The seeding counts a cell's points, and the cells of the grid refined by
+  // unequal counts per direction, with int.
+  void check_seeding_counts(const Node& node, const std::array<int, 3>& ppc) const {
+    constexpr double most = std::numeric_limits<int>::max();
+    const bool refined = ppc[1] != ppc[0] || (dim_ == 3 && ppc[2] != ppc[0]);
+    double per_cell = 1.0;
+    for (int d = 0; d < dim_; ++d) {
+      const auto k = static_cast<std::size_t>(d);
+      per_cell *= ppc[k];
+      if (refined && static_cast<double>(ppc[k]) * c_.grid.cells[k] > most)
+        node.fail(fmt::format("{} particles per cell along {} grid cells make more seeding cells "
+                              "than its counters hold ({})",
+                              ppc[k], c_.grid.cells[k], cosim::grouped(most)));
+    }
+    if (per_cell > most)
+      node.fail(fmt::format("{} particles per cell, more than the seeding's counters hold ({})",
+                            cosim::grouped(per_cell), cosim::grouped(most)));
+  }
+
+  // The run's size with `particles`, refused above what the case's limits allow.
+  cosim::RunSize checked_size(double particles) const {
+    cosim::RunSize size = case_loading::run_size(demand_, particles, root_);
+    cosim::check_run_size(size, root_);
+    return size;
+  }
+
   Node root_;
   CaseDescription c_;
+  case_loading::GridDemand demand_;
   int dim_ = 2;
   std::vector<std::string> body_names_;
   std::vector<std::size_t> body_offsets_;

@@ -298,6 +298,9 @@ void run_loaded(const RunOptions& options, const StepObservers& observers,
                description.name, options.config.string(), description.dimension,
                description.bodies.size(), particles, to_string(description.shape),
                omp_get_max_threads(), description.time.end_time);
+  spdlog::info("size: {} (limits.memory_gib {:g})", description.size.describe(),
+               description.size.memory_limit_gib);
+  summary.set_section("size", description.size.to_json());
   summary.write();
   if (description.dimension == 2) {
     run_dimension<2>(description, options, summary, observers.for_2d);
@@ -309,7 +312,7 @@ void run_loaded(const RunOptions& options, const StepObservers& observers,
 }  // namespace
 
 int run_case(const RunOptions& options, const StepObservers& observers) {
-  cosim::create_output_directory(options.output);
+  cosim::prepare_output_directory(options.output, options.reuse);
   cosim::init_logging(options.output, "mpm_solver", options.verbosity);
   cosim::RunSummary summary(options.output, "mpm_solver");
   summary.write();

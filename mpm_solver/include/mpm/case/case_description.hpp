@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "cosim/io/run_size.hpp"
 #include "mpm/core/tensor.hpp"
 #include "mpm/material/material.hpp"
 #include "mpm/shape/shape_kernel.hpp"
@@ -196,6 +197,7 @@ struct CaseDescription {
   std::vector<ProbeSpec> probes;
   OutputSpec output;
   int threads = 0;  // 0: OpenMP default
+  cosim::RunSize size;  // the particles seeded, the grid and their memory (set by the loader)
 };
 
 // The thermal properties of a body: its material's, or a rigid body's own;

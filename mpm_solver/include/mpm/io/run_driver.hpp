@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "cosim/exit_codes.hpp"
+#include "cosim/io/files.hpp"
 #include "cosim/io/logging.hpp"
 #include "mpm/io/step_observer.hpp"
 
@@ -15,15 +16,19 @@ struct RunOptions {
   int check_every = 100;         // check_state() interval in steps (and at every output)
   double progress_interval_s = 5.0;  // wall time between progress lines in the log
   cosim::Verbosity verbosity = cosim::Verbosity::normal;  // console; log.txt keeps info
+  cosim::OutputReuse reuse = cosim::OutputReuse::refuse;  // a non-empty `output`
 };
 
 // A standalone (or, with an observer, coupled) run of one case, as
-// DESIGN.md §6: sets up <output>/log.txt, loads the case, runs Solver<2|3>
+// DESIGN.md §6: prepares <output> (options.reuse: a directory holding an
+// earlier run is refused before anything is written, unless overwritten),
+// sets up <output>/log.txt, loads the case, runs Solver<2|3>
 // to the end time writing particle snapshots (particles.xdmf), grid
 // snapshots (grid.xdmf, with output.grid), probes.csv, and summary.json,
 // which is finished with the exit code and message on every path. Returns
 // the process exit code: 0, 2 bad input, 4 numerical failure, 1 internal
-// error (or the code of any other cosim::Error).
+// error (or the code of any other cosim::Error); a refused output directory
+// throws its cosim::Error instead, nothing written.
 int run_case(const RunOptions& options, const StepObservers& observers = {});
 
 }  // namespace mpm
