@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "cosim/io/run_size.hpp"
+
 namespace swe {
 
 using cosim::config::Schema;
@@ -155,7 +157,8 @@ Schema swe_case_schema() {
       .optional("output", output, "Outputs.")
       .optional("threads", Schema::integer().non_negative().default_value("0"),
                 "OpenMP threads; 0: OpenMP's default.")
-      .optional("coupling", coupling_schema(), "Exchange with a soil solver.");
+      .optional("coupling", coupling_schema(), "Exchange with a soil solver.")
+      .optional("limits", cosim::run_limits_schema(), "What the run may use.");
   return file;
 }
 

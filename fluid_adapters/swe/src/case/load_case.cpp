@@ -11,7 +11,9 @@
 #include "cosim/config/kind.hpp"
 #include "cosim/error.hpp"
 #include "cosim/io/content_hash.hpp"
+#include "cosim/io/output_schedule.hpp"
 #include "swe/case/case_schema.hpp"
+#include "swe/case/case_size.hpp"
 
 namespace swe {
 
@@ -66,24 +68,38 @@ class CaseReader {
           if (!(c.edges[i] > c.edges[i - 1]))
             mesh["edges"].fail(fmt::format("cell {} has zero or negative width: edges {:.9g} -> {:.9g}", i - 1,
                                            c.edges[i - 1], c.edges[i]));
+        c.size = checked_size(1, static_cast<double>(c.edges.size()) - 1.0);
       } else if (uniform) {
         const Node cells = mesh["cells"];
         const int n = cells.as<int>();
         if (n < 1) cells.fail(fmt::format("the number of cells must be >= 1, got {}", n));
         const double from = mesh["from"].as<double>(), to = mesh["to"].as<double>();
         if (!(to > from)) mesh["to"].fail(fmt::format("the line has zero or negative length: from {:.9g} to {:.9g}", from, to));
+        c.size = checked_size(1, n);
         c.edges.resize(static_cast<std::size_t>(n) + 1);
         for (int i = 0; i <= n; ++i) c.edges[static_cast<std::size_t>(i)] = from + (to - from) * i / n;
       } else {
-        double from = mesh["from"].as<double>();
-        c.edges = {from};
+        // Every stretch's cell count first: the size is checked before an edge is made.
+        struct Stretch {
+          double from, to, cells;
+        };
+        std::vector<Stretch> stretches;
+        double from = mesh["from"].as<double>(), cells = 0.0;
         for (const Node& segment : mesh["segments"].items()) {
           const double to = segment["to"].as<double>(), width = segment["width"].as<double>();
           if (!(to > from))
             segment["to"].fail(fmt::format("segment ends at {:.9g}, not beyond its start {:.9g}", to, from));
-          const int n = std::max(1, static_cast<int>(std::lround((to - from) / width)));
-          for (int i = 1; i <= n; ++i) c.edges.push_back(i == n ? to : from + (to - from) * i / n);
+          stretches.push_back({from, to, std::max(1.0, std::round((to - from) / width))});
+          cells += stretches.back().cells;
           from = to;
+        }
+        c.size = checked_size(1, cells);
+        c.edges = {stretches.front().from};
+        c.edges.reserve(static_cast<std::size_t>(cells) + 1);
+        for (const Stretch& s : stretches) {
+          const auto n = static_cast<std::int64_t>(s.cells);
+          for (std::int64_t i = 1; i <= n; ++i)
+            c.edges.push_back(i == n ? s.to : s.from + (s.to - s.from) * static_cast<double>(i) / static_cast<double>(n));
         }
       }
       lower_ = {c.edges.front(), 0.0};
@@ -104,6 +120,7 @@ class CaseReader {
         c.grid.cells[d] = counts[d];
         c.grid.spacing[d] = (upper[d] - origin[d]) / counts[d];
       }
+      c.size = checked_size(2, static_cast<double>(counts[0]) * static_cast<double>(counts[1]));
       lower_ = origin;
       upper_ = upper;
     }
@@ -238,6 +255,8 @@ class CaseReader {
     c.output_every = output->get<double>("every", 0.0);
     c.snapshots = output->get<bool>("snapshots", true);
     c.gauge_every = output->get<double>("gauge_every", 0.0);
+    for (const char* key : {"every", "gauge_every"})
+      if (auto interval = output->find(key)) cosim::check_output_interval(*interval, c.end_time);
     if (auto gauges = output->find("gauges")) {
       for (const Node& node : gauges->items()) {
         Gauge g;
@@ -277,6 +296,13 @@ class CaseReader {
     c.coupling.reads_bed = listed("reads", "bed_elevation");
     c.coupling.writes_traction = listed("writes", "bed_traction");
     if (coupling->get("bed_pressure", "hydrostatic") == "excess") c.coupling.pressure = BedPressure::excess;
+  }
+
+  // The run's size with `cells` cells, refused above what the case's limits allow.
+  cosim::RunSize checked_size(int dimension, double cells) const {
+    cosim::RunSize size = run_size(dimension, cells, root_);
+    cosim::check_run_size(size, root_);
+    return size;
   }
 
   bool inside(const std::array<double, 2>& x, int dimension, double margin) const {

@@ -295,7 +295,7 @@ class CaseRun {
 }  // namespace
 
 int run_case(const RunOptions& options, const cosim::CouplingEndpoint& endpoint) {
-  cosim::create_output_directory(options.output);
+  cosim::prepare_output_directory(options.output, options.reuse);
   cosim::init_logging(options.output, "swe_fluid", options.verbosity);
   cosim::RunSummary summary(options.output, "swe_fluid");
   return cosim::run_and_finish(summary, [&] {
@@ -308,6 +308,9 @@ int run_case(const RunOptions& options, const cosim::CouplingEndpoint& endpoint)
     if (threads > 0) omp_set_num_threads(threads);
     spdlog::info("case '{}': {}D, {} threads, end time {} s", description.name, description.dimension,
                  omp_get_max_threads(), description.end_time);
+    spdlog::info("size: {} (limits.memory_gib {:g})", description.size.describe(),
+                 description.size.memory_limit_gib);
+    summary.set_section("size", description.size.to_json());
     CaseRun run(description, options, endpoint, summary);
     run.run();
   });

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cosim/io/run_size.hpp"
 #include "swe/boundary.hpp"
 #include "swe/case/bed_shape.hpp"
 #include "swe/case/initial_condition.hpp"
@@ -70,6 +71,7 @@ struct CaseDescription {
   int threads = 0;            // 0: OpenMP's default
 
   CouplingSpec coupling;
+  cosim::RunSize size;  // its cells and their memory (set by the loader)
 };
 
 // The solver the case describes, with its bed and initial water laid.

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "cosim/io/files.hpp"
 #include "cosim/io/logging.hpp"
 #include "cosim/participant.hpp"
 
@@ -12,10 +13,13 @@ struct RunOptions {
   std::filesystem::path output;
   int threads = -1;  // -1: the case's `threads`
   cosim::Verbosity verbosity = cosim::Verbosity::normal;
+  cosim::OutputReuse reuse = cosim::OutputReuse::refuse;  // a non-empty `output`
 };
 
 // Runs a swe_case, standalone (empty endpoint) or as a participant of a
-// coupled job, and writes into options.output (DESIGN.md §6):
+// coupled job, and writes into options.output (DESIGN.md §6; a directory
+// holding an earlier run is refused, nothing written, unless options.reuse
+// says otherwise):
 //   summary.json, log.txt
 //   swe.xdmf + swe_<k>.h5   snapshots of h, eta, B, discharge, velocity
 //   gauges.csv              eta, h and speed at the case's gauges
