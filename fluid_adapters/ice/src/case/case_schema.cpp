@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "cosim/io/run_size.hpp"
 #include "ice/advection/limiter.hpp"
 #include "ice/eos/eos_registry.hpp"
 
@@ -207,7 +208,8 @@ Schema ice_case_schema() {
       .optional("output", output_schema(), "Outputs.")
       .optional("threads", Schema::integer().non_negative().default_value("0"),
                 "Threads; 0: the default.")
-      .optional("coupling", coupling_schema(), "Coupling with a porous solid.");
+      .optional("coupling", coupling_schema(), "Coupling with a porous solid.")
+      .optional("limits", cosim::run_limits_schema(), "What the run may use.");
   return file;
 }
 

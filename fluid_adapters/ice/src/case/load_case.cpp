@@ -4,12 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "cosim/config/document.hpp"
 #include "cosim/config/kind.hpp"
 #include "cosim/error.hpp"
 #include "cosim/io/content_hash.hpp"
+#include "cosim/io/output_schedule.hpp"
 #include "ice/case/case_schema.hpp"
+#include "ice/case/case_size.hpp"
 #include "ice/eos/eos_registry.hpp"
 
 namespace ice {
@@ -39,6 +42,8 @@ class CaseReader {
     if (auto g = root_.find("gravity")) c.gravity = vector_of(*g);
     c.end_time = root_["end_time"].as<double>();
     read_materials(c);
+    c.size = run_size(dimension_, cell_count(c), static_cast<int>(c.materials.size()), root_);
+    cosim::check_run_size(c.size, root_);
     read_exchange(c);
     read_initial(c);
     read_boundaries(c);
@@ -87,6 +92,23 @@ class CaseReader {
                                        c.upper[k], c.origin[k], axis_names[d]));
       }
     }
+    // Faces, one layer more than the cells along their normal, are indexed with int too.
+    for (int d = 0; d < dimension_; ++d) {
+      const double faces = cell_count(c) / c.cells[static_cast<std::size_t>(d)] *
+                           (c.cells[static_cast<std::size_t>(d)] + 1.0);
+      if (faces > std::numeric_limits<int>::max()) {
+        cells.fail(fmt::format("the grid has {} faces normal to {}, more than the solver's indices "
+                               "hold ({})",
+                               cosim::grouped(faces), axis_names[d],
+                               std::numeric_limits<int>::max()));
+      }
+    }
+  }
+
+  double cell_count(const CaseDescription& c) const {
+    double n = 1.0;
+    for (int d = 0; d < dimension_; ++d) n *= c.cells[static_cast<std::size_t>(d)];
+    return n;
   }
 
   void read_materials(CaseDescription& c) {
@@ -269,6 +291,8 @@ class CaseReader {
     c.output_every = node->get<double>("every", 0.0);
     c.snapshots = node->get<bool>("snapshots", true);
     c.gauge_every = node->get<double>("gauge_every", 0.0);
+    for (const char* key : {"every", "gauge_every"})
+      if (auto interval = node->find(key)) cosim::check_output_interval(*interval, c.end_time);
     if (auto gauges = node->find("gauges")) {
       for (const Node& g : gauges->items()) {
         GaugePoint p{g["name"].as<std::string>(), vector_of(g["point"])};

@@ -262,7 +262,7 @@ void run_dimension(const CaseDescription& c, const cosim::SolverCommandLine& opt
 
 int run_case(const cosim::SolverCommandLine& options) {
   const cosim::CouplingEndpoint& endpoint = options.endpoint;
-  cosim::create_output_directory(options.output);
+  cosim::prepare_output_directory(options.output, options.reuse);
   cosim::init_logging(options.output, "ice_fluid", options.verbosity);
   cosim::RunSummary summary(options.output, "ice_fluid");
   return cosim::run_and_finish(summary, [&] {
@@ -271,6 +271,9 @@ int run_case(const cosim::SolverCommandLine& options) {
       return load_case(options.config);
     }();
     summary.set_config(options.config, description.config_hash);
+    spdlog::info("size: {} (limits.memory_gib {:g})", description.size.describe(),
+                 description.size.memory_limit_gib);
+    summary.set_section("size", description.size.to_json());
     switch (description.dimension) {
       case 1:
         run_dimension<1>(description, options, endpoint, summary);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cosim/io/run_size.hpp"
 #include "ice/advection/limiter.hpp"
 #include "ice/eos/pressure_equilibration.hpp"
 #include "ice/io/state_output.hpp"
@@ -90,6 +91,7 @@ struct CaseDescription {
   std::vector<GaugePoint> gauges;
   int threads = 0;
   CouplingDescription coupling;
+  cosim::RunSize size;  // its cells and their memory (set by the loader)
 };
 
 }  // namespace ice
