@@ -1,5 +1,7 @@
 #include "openfoam/case/case_schema.hpp"
 
+#include "cosim/io/run_size.hpp"
+
 namespace openfoam {
 
 using cosim::config::Schema;
@@ -137,7 +139,8 @@ Schema openfoam_case_schema() {
                 "and the run fails (exit 3) with its log's last lines.")
       .optional("keep_time_directories", Schema::boolean().default_value("false"),
                 "Keep every window's OpenFOAM time directory (default: only the latest).")
-      .optional("output", output, "Outputs.");
+      .optional("output", output, "Outputs.")
+      .optional("limits", cosim::run_limits_schema(), "What the run may use.");
   return file;
 }
 

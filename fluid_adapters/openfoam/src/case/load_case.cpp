@@ -9,7 +9,9 @@
 #include "cosim/config/kind.hpp"
 #include "cosim/error.hpp"
 #include "cosim/io/content_hash.hpp"
+#include "cosim/io/output_schedule.hpp"
 #include "openfoam/case/case_schema.hpp"
+#include "openfoam/case/case_size.hpp"
 #include "openfoam/foam/control_dict.hpp"
 
 namespace openfoam {
@@ -56,6 +58,7 @@ class CaseReader {
     }
     if (auto output = root_.find("output")) {
       c.output_every = output->get<double>("every", 0.0);
+      if (auto every = output->find("every")) cosim::check_output_interval(*every, c.end_time);
       if (auto gauges = output->find("gauges")) {
         for (const Node& g : gauges->items()) {
           Gauge gauge{g["name"].as<std::string>(), {}};
@@ -88,6 +91,14 @@ class CaseReader {
         window && !is_whole_number_of_steps(c.window, c.time_step)) {
       window->fail(fmt::format("the window {} s is not a whole number of time steps of {} s",
                                c.window, c.time_step));
+    }
+    // Every window starts OpenFOAM afresh (about a second each).
+    if (auto window = root_.find("window");
+        window && c.end_time / c.window > cosim::max_output_count) {
+      window->fail(fmt::format("the window {} s starts OpenFOAM {:.3g} times over the run's {} s, "
+                               "more than {:g}; give a longer window",
+                               c.window, c.end_time / c.window, c.end_time,
+                               cosim::max_output_count));
     }
     if (!is_whole_number_of_steps(c.end_time, c.time_step)) {
       root_["end_time"].fail(
@@ -134,6 +145,8 @@ class CaseReader {
           soil->get<double>("minimum_solid_fraction", c.soil.minimum_solid_fraction);
       c.soil.displaced_water = soil->get<bool>("displaced_water", c.soil.displaced_water);
     }
+    c.size = run_size(c, root_);
+    cosim::check_run_size(c.size, root_);
     return c;
   }
 

@@ -584,10 +584,30 @@ class CaseRun {
   double shortest_relaxation_ = INFINITY;
 };
 
+// --overwrite clears the output directory: it must not hold the user's own
+// OpenFOAM case (a case that does not load is reported by the run itself).
+void check_overwrite_spares_the_case(const cosim::SolverCommandLine& options) {
+  if (options.reuse != cosim::OutputReuse::overwrite) return;
+  fs::path directory;
+  try {
+    directory = load_case(options.config).directory;
+  } catch (const cosim::Error&) {
+    return;
+  }
+  if (!directory.empty() && cosim::is_inside(directory, options.output))
+    throw cosim::InputError(fmt::format("--overwrite would clear '{}', which holds the OpenFOAM "
+                                        "case '{}' of {}",
+                                        options.output.string(), directory.string(),
+                                        options.config.string()));
+}
+
 }  // namespace
 
 int run_case(const cosim::SolverCommandLine& options) {
-  cosim::create_output_directory(options.output);
+  check_overwrite_spares_the_case(options);
+  // The run's case/ copy (its processor directories too) goes with the rest
+  // of an earlier run on --overwrite.
+  cosim::prepare_output_directory(options.output, options.reuse);
   cosim::init_logging(options.output, "openfoam_adapter", options.verbosity);
   cosim::RunSummary summary(options.output, "openfoam_adapter");
   return cosim::run_and_finish(summary, [&] {
@@ -596,6 +616,9 @@ int run_case(const cosim::SolverCommandLine& options) {
       return load_case(options.config);
     }();
     summary.set_config(options.config, description.config_hash);
+    spdlog::info("size: {} (limits.memory_gib {:g})", description.size.describe(),
+                 description.size.memory_limit_gib);
+    summary.set_section("size", description.size.to_json());
     CaseRun run(description, options, summary);
     if (options.endpoint.is_standalone())
       run.run();

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "cosim/io/run_size.hpp"
+
 namespace openfoam {
 
 using Vector3 = std::array<double, 3>;
@@ -111,6 +113,7 @@ struct CaseDescription {
   // per direction, their product the process count), run under mpirun.
   int processes = 1;
   std::array<int, 3> split{1, 1, 1};
+  cosim::RunSize size;  // its cells and the memory of the adapter and OpenFOAM (set by the loader)
 
   bool has_cloud() const { return solver == "MPPICInterFoam"; }
 };
