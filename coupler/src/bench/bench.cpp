@@ -128,7 +128,14 @@ int run_bench(const BenchRunOptions& o) {
     s.metrics = std::move(kept);
   }
   const fs::path output = fs::absolute(o.bench.output);
-  create_output_directory(output);
+  if (o.reuse == OutputReuse::overwrite && is_inside(o.bench.suite_file, output))
+    throw InputError(fmt::format("--overwrite would clear '{}', which holds the suite file '{}'",
+                                 output.string(), o.bench.suite_file.string()));
+  // A dry run clears nothing: with --overwrite it lists every run as to run.
+  prepare_output_directory(output,
+                           o.dry_run && o.reuse == OutputReuse::overwrite ? OutputReuse::resume
+                                                                          : o.reuse,
+                           {"summary.json"}, true);
   init_logging(output, "cosim", parse_verbosity(o.verbosity));
   RunSummary summary(output, "cosim bench");
   summary.set_config(fs::absolute(o.bench.suite_file), hash_bytes(suite.text));
@@ -147,7 +154,8 @@ int run_bench(const BenchRunOptions& o) {
     if (o.dry_run) {
       for (const auto& run : runs) {
         const RunRecord previous = read_record(run);
-        const bool kept = previous.completed() && previous.key == run.key;
+        const bool kept = o.reuse == OutputReuse::resume && previous.completed() &&
+                          previous.key == run.key;
         std::printf("%-40s %-12s %s %s\n", run.id().c_str(), kept ? "(kept)" : "(to run)",
                     run.executable.c_str(), fmt::format("{}", fmt::join(run.args, " ")).c_str());
       }

@@ -6,9 +6,12 @@
 #include "cosim/io/files.hpp"
 
 // `cosim bench <suite.yaml> --output <dir>`: runs a suite's scenarios with
-// each of their backends (resuming a partly finished suite), measures the
-// metrics, and writes <dir>/results.csv, <dir>/report.md with its plots in
-// <dir>/plots/, <dir>/summary.json and <dir>/log.txt.
+// each of their backends, measures the metrics, and writes <dir>/results.csv,
+// <dir>/report.md with its plots in <dir>/plots/, <dir>/summary.json and
+// <dir>/log.txt. A non-empty <dir> is refused unless --resume (a partly
+// finished suite goes on: finished runs with unchanged inputs are kept) or
+// --overwrite (cleared first); every run that runs starts in a cleared run
+// directory.
 namespace cosim::bench {
 
 struct BenchRunOptions {
