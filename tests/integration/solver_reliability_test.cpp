@@ -53,7 +53,7 @@ bodies:
     particles_per_cell: 2
 output: {every: 0.005}
 )",
-                 "particles_per_cell: 2", "particles_per_cell: 100000", "particles_000001.h5"};
+                 "particles_per_cell: 2", "particles_per_cell: 1000", "particles_000001.h5"};
 
 const Solver swe{"swe_fluid", "swe_case", "dam", R"(kind: swe_case
 name: dam
@@ -109,6 +109,12 @@ output: {every: 0.002}
                       "cells: [10, 5]", "cells: [50000, 20000]", "openfoam_000001.h5"};
 
 std::string test_name(const ::testing::TestParamInfo<Solver>& info) { return info.param.program; }
+
+// A file of an earlier run, its directories made.
+void earlier_file(const fs::path& file, const std::string& text) {
+  fs::create_directories(file.parent_path());
+  write_text(file, text);
+}
 
 class SolverPromises : public ::testing::TestWithParam<Solver> {
  protected:
@@ -175,7 +181,7 @@ TEST_P(SolverPromises, AnAbsurdOutputIntervalExitsTwoAtItsKey) {
 // snapshots of a longer run stayed).
 TEST_P(SolverPromises, ANonEmptyOutputIsRefusedBeforeAnythingIsWritten) {
   const fs::path out = dir_ / "out";
-  write_text(out / "summary.json", "{\"program\": \"an earlier run\"}");
+  earlier_file(out / "summary.json", "{\"program\": \"an earlier run\"}");
   const ProcessResult r = solver({"--output", out.string()}, GetParam().text);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_THAT(r.output, HasSubstr("is not empty"));
@@ -196,9 +202,9 @@ TEST_P(SolverPromises, OverwriteClearsTheEarlierRunAndTheSummaryStatesTheSize) {
   }
 #endif
   const fs::path out = dir_ / "out";
-  write_text(out / "summary.json", "{}");
-  write_text(out / "snapshot_000099.h5", "stale");
-  write_text(out / "case" / "processor0" / "9" / "U", "stale");  // an OpenFOAM case copy
+  earlier_file(out / "summary.json", "{}");
+  earlier_file(out / "snapshot_000099.h5", "stale");
+  earlier_file(out / "case" / "processor0" / "9" / "U", "stale");  // an OpenFOAM case copy
   const ProcessResult r = solver({"--output", out.string(), "--overwrite"}, s.text);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_FALSE(fs::exists(out / "snapshot_000099.h5"));
