@@ -190,7 +190,15 @@ Mesh decode_mesh_message(const Message& message, const std::string& peer) {
           throw std::invalid_argument(fmt::format("cells[{}] = {}", d, v[7 + d]));
         g.cells[d] = static_cast<std::int64_t>(v[7 + d]);
       }
+      if (v[10] != 1.0 && v[10] != 2.0 && v[10] != 3.0)
+        throw std::invalid_argument(fmt::format("dimension {}", v[10]));
       g.dim = static_cast<int>(v[10]);
+      // 1e9 cells each way would overflow the grid's size: at most 2^40
+      // values, as in any message.
+      double values = 1.0;
+      for (int d = 0; d < g.dim; ++d)
+        values *= static_cast<double>(g.extent()[static_cast<std::size_t>(d)]);
+      if (values > 0x1p40) throw std::invalid_argument(fmt::format("{:g} grid values", values));
       mesh.geometry = g;
     } else if (kind == MeshKind::nonuniform_line) {
       mesh.geometry = NonUniformLine{v};

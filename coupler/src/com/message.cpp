@@ -235,13 +235,24 @@ Header decode_header(std::span<const std::byte> bytes, const std::string& peer) 
 
 void validate_payload(const Message& message, const std::string& peer, bool allow_nonfinite) {
   const Header& h = message.header;
+  if ((h.type == MessageType::field || h.type == MessageType::mesh) &&
+      h.element != ElementType::float64)
+    throw ProtocolError(peer, fmt::format("{} '{}' on mesh '{}' does not carry float64 values",
+                                          to_string(h.type), h.field, h.mesh));
   const std::size_t esize = element_size(h.element);
   const std::uint64_t components = h.element == ElementType::float64 ? h.components : 1;
   if (h.element == ElementType::float64 && h.components == 0)
     throw ProtocolError(
         peer, fmt::format("{} '{}' declares zero components", to_string(h.type), h.field));
+  // Bounded before multiplying: a product past 2^64 wraps to a size that a
+  // short payload matches, and the values would be read far beyond it.
+  constexpr std::uint64_t max_values = std::uint64_t{1} << 40;
+  if (h.count > max_values || components > max_values / std::max<std::uint64_t>(h.count, 1))
+    throw ProtocolError(peer, fmt::format("{} '{}' on mesh '{}': the header announces {} x {} "
+                                          "values, more than 2^40",
+                                          to_string(h.type), h.field, h.mesh, h.count, components));
   const std::uint64_t expected = h.count * components * esize;
-  if (h.count > (std::uint64_t{1} << 40) || message.payload.size() != expected)
+  if (message.payload.size() != expected)
     throw ProtocolError(
         peer, fmt::format("{} '{}' on mesh '{}': payload has {} bytes, the header "
                           "announces {} x {} x {} = {}",
