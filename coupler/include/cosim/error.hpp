@@ -27,11 +27,12 @@ struct SourceLocation {
 };
 
 // Bad input: a config, mesh or argument that cannot be used. The message
-// reads `file:line:col: key 'a.b.c': what is wrong`.
+// reads `file:line:col: key 'a.b.c': what is wrong`, each part abbreviated
+// in the middle when absurdly long.
 class InputError : public Error {
  public:
   InputError(const SourceLocation& where, const std::string& key_path, const std::string& what);
-  explicit InputError(const std::string& what) : Error(ExitCode::bad_input, what) {}
+  explicit InputError(const std::string& what);
 
   const SourceLocation& where() const { return where_; }
   const std::string& key_path() const { return key_path_; }

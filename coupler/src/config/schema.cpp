@@ -275,8 +275,11 @@ void Schema::validate(const Node& node) const {
       return;
     case Type::path: {
       const std::filesystem::path resolved = node.as_path();
-      if (spec.must_exist && !std::filesystem::exists(resolved)) {
-        node.fail(fmt::format("no such file or directory: {}", resolved.string()));
+      std::error_code status;
+      if (spec.must_exist && !std::filesystem::exists(resolved, status)) {
+        node.fail(status ? fmt::format("cannot use the path {}: {}", resolved.string(),
+                                       status.message())
+                         : fmt::format("no such file or directory: {}", resolved.string()));
       }
       return;
     }
