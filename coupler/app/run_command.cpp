@@ -1,14 +1,16 @@
 #include "run_command.hpp"
 
+#include "mpi_launcher.hpp"
+
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
+#include <sys/prctl.h>
 #include <sys/random.h>
 #include <unistd.h>
 
 #include <array>
-#include <fstream>
+#include <csignal>
 #include <iostream>
-#include <nlohmann/json.hpp>
 #include <random>
 #include <string_view>
 
@@ -19,7 +21,6 @@
 #include "cosim/io/files.hpp"
 #include "cosim/io/logging.hpp"
 #include "cosim/io/run_summary.hpp"
-#include "cosim/io/tail_lines.hpp"
 #include "cosim/job/job.hpp"
 #include "cosim/runtime/mpi_launch.hpp"
 #include "cosim/runtime/stop_request.hpp"
@@ -181,110 +182,19 @@ int run_under_mpirun(const job::Job& job, const RunOptions& o, RunSummary& summa
   return code;
 }
 
-// The participant Open MPI names in its report of a rank that died ("process
-// rank 2 with PID 4242 on node x exited on signal 9 (Killed)."): the launch
-// line puts participant i at rank i + 1.
-std::string dead_rank_report(const job::Job& job, const fs::path& mpirun_log) {
-  constexpr std::string_view rank_marker = "process rank ";
-  constexpr std::string_view pid_marker = " with PID ";
-  for (const auto& line : tail_lines(mpirun_log, 200)) {
-    const auto at = line.find(rank_marker);
-    if (at == std::string::npos) continue;
-    std::size_t end = 0;
-    int rank = 0;
-    try {
-      rank = std::stoi(line.substr(at + rank_marker.size()), &end);
-    } catch (const std::exception&) {
-      continue;
-    }
-    std::string pid = "?";
-    if (const auto p = line.find(pid_marker); p != std::string::npos)
-      pid = line.substr(p + pid_marker.size(), line.find(' ', p + pid_marker.size()) -
-                                                   (p + pid_marker.size()));
-    std::string what = " died";
-    if (const auto e = line.find("exited"); e != std::string::npos) what = " " + line.substr(e);
-    while (!what.empty() && (what.back() == '.' || what.back() == ' ')) what.pop_back();
-    if (rank == 0) return fmt::format("the coupler (world rank 0, pid {}){}", pid, what);
-    if (rank > 0 && rank <= static_cast<int>(job.participants.size()))
-      return fmt::format("participant '{}' (world rank {}, pid {}){}",
-                         job.participants[static_cast<std::size_t>(rank - 1)].name, rank, pid,
-                         what);
-  }
-  return {};
-}
-
-// Whether the coupler rank has finished its record (the run is over; what is
-// left is the participants' exit).
-bool summary_finished(const fs::path& summary) {
-  std::ifstream in(summary);
-  if (!in) return false;
-  try {
-    return nlohmann::json::parse(in).at("status").at("state") == "finished";
-  } catch (const std::exception&) {
-    return false;  // being replaced at this moment
-  }
-}
-
-// Not under mpirun: start mpirun with the job's MPMD line and supervise it.
-// When a rank dies, mpirun ends the others, the coupler's among them, before
-// it can write its record: this process names the dead participant and
-// finishes the run's summary.json.
-int launch_mpirun(const job::Job& job, const RunOptions& o) {
-  const auto cmd = runtime::mpi_command(job, o.job_file, o.output, o.job_id, o.connect_timeout_s);
-  const fs::path output = fs::absolute(o.output);
-  runtime::Supervisor supervisor;
-  runtime::ChildSpec child;
-  child.name = "mpirun";
-  child.executable = runtime::resolve_executable("mpirun", ".");
-  child.args.assign(cmd.begin() + 1, cmd.end());
-  child.log_file = output / "mpirun.log";
-  std::cerr << "cosim: launching " << runtime::shell_join(cmd) << "\n";
-  supervisor.start(child);
-  const auto finish = [&](ExitCode code, const std::string& message) {
-    std::cerr << "cosim: error: " << message << "\n";
-    std::ofstream(output / "log.txt", std::ios::app) << "[cosim] [error] " << message << "\n";
-    record_failure_in_summary(output / "summary.json", code, message, true);
-    for (const auto& p : job.participants)
-      record_failure_in_summary(output / p.name / "summary.json", ExitCode::participant_failed,
-                               "stopped when the MPI job ended (recorded by cosim)");
-    return to_int(code);
-  };
-  const auto window_timeout = milliseconds(static_cast<long>(job.window_timeout_s * 1000.0));
-  std::optional<std::chrono::steady_clock::time_point> run_over_at;
-  auto last_look = std::chrono::steady_clock::now();
-  for (;;) {
-    if (runtime::stop_requested()) {
-      supervisor.stop_all(stop_grace);
-      return finish(ExitCode::participant_failed,
-                    fmt::format("{}; the MPI job was stopped", runtime::describe_stop()));
-    }
-    const auto now = std::chrono::steady_clock::now();
-    if (!run_over_at && now - last_look > std::chrono::seconds(1)) {
-      last_look = now;
-      if (summary_finished(output / "summary.json")) run_over_at = now;
-    }
-    if (run_over_at && now - *run_over_at > window_timeout + stop_grace) {
-      std::string names;
-      for (const auto& p : job.participants)
-        if (!summary_finished(output / p.name / "summary.json"))
-          names += (names.empty() ? "'" : ", '") + p.name + "'";
-      supervisor.stop_all(stop_grace);
-      return finish(ExitCode::participant_failed,
-                    fmt::format("participant(s) {} did not exit within window_timeout ({} s) "
-                                "after the end of the run; the MPI job was stopped",
-                                names.empty() ? "(unknown)" : names, job.window_timeout_s));
-    }
-    auto exits = supervisor.wait_all(milliseconds(200), &runtime::stop_flag());
-    if (exits.empty()) continue;
-    const auto& e = exits.front();
-    if (e.success()) return 0;
-    const int s = e.exit_status;
-    const ExitCode code = (s == 2 || s == 3 || s == 4) ? static_cast<ExitCode>(s)
-                                                       : ExitCode::participant_failed;
-    const std::string dead = dead_rank_report(job, child.log_file);
-    return finish(code, fmt::format("mpirun {}{}; see {}", e.describe(),
-                                    dead.empty() ? "" : ": " + dead, child.log_file.string()));
-  }
+// The run's record, "running" until it ends.
+RunSummary begin_summary(const job::Job& job, const RunOptions& o) {
+  RunSummary summary(o.output, "cosim run");
+  summary.set_config(fs::absolute(o.job_file), std::stoull(job.config_hash, nullptr, 16));
+  summary.set_section(
+      "job", {{"name", job.name},
+              {"id", o.job_id},
+              {"transport", job.transport == job::TransportKind::mpi ? "mpi" : "zmq"},
+              {"window_s", job.window},
+              {"start_time_s", job.start_time},
+              {"end_time_s", job.end_time}});
+  summary.write();
+  return summary;
 }
 
 }  // namespace
@@ -302,6 +212,9 @@ int run_job(const RunOptions& o) {
       return 0;
     }
     prepare_output_directory(o.output, o.overwrite ? OutputReuse::overwrite : OutputReuse::refuse);
+    // The coupler rank rewrites it once it runs; until then (and if it
+    // never does) the record is this process's.
+    begin_summary(job, opts);
     return launch_mpirun(job, opts);
   }
   if (o.print_mpi_command)
@@ -310,20 +223,12 @@ int run_job(const RunOptions& o) {
                                  o.job_file, job.name, "zmq"));
 
   // Under mpirun the launching cosim has prepared the directory (and writes
-  // mpirun.log into it).
+  // mpirun.log into it); this rank dies with mpirun.
+  if (under_mpirun) ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (!under_mpirun)
     prepare_output_directory(o.output, o.overwrite ? OutputReuse::overwrite : OutputReuse::refuse);
   init_logging(o.output, "cosim", parse_verbosity(o.verbosity));
-  RunSummary summary(o.output, "cosim run");
-  summary.set_config(fs::absolute(o.job_file), std::stoull(job.config_hash, nullptr, 16));
-  summary.set_section(
-      "job", {{"name", job.name},
-              {"id", opts.job_id},
-              {"transport", job.transport == job::TransportKind::mpi ? "mpi" : "zmq"},
-              {"window_s", job.window},
-              {"start_time_s", job.start_time},
-              {"end_time_s", job.end_time}});
-  summary.write();
+  RunSummary summary = begin_summary(job, opts);
   const int code = job.transport == job::TransportKind::mpi
                        ? run_under_mpirun(job, opts, summary)
                        : run_and_finish(summary, [&] { run_with_zmq(job, opts, summary); });

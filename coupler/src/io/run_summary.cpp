@@ -143,7 +143,7 @@ void RunSummary::write() const {
 }
 
 bool record_failure_in_summary(const std::filesystem::path& path, ExitCode code,
-                               const std::string& message, bool overrule_success) {
+                               const std::string& message, Overrule overrule) {
   nlohmann::json j;
   try {
     std::ifstream in(path);
@@ -151,7 +151,9 @@ bool record_failure_in_summary(const std::filesystem::path& path, ExitCode code,
     j = nlohmann::json::parse(in);
     const auto& status = j.at("status");
     const bool running = status.at("state") == "running";
-    if (!running && !(overrule_success && status.at("exit_code") == 0)) return false;
+    const bool succeeded = !running && status.at("exit_code") == 0;
+    if (!running && overrule == Overrule::nothing) return false;
+    if (!running && !succeeded && overrule == Overrule::success) return false;
   } catch (const std::exception&) {
     return false;
   }

@@ -265,6 +265,9 @@ Participant::Participant(std::string name, CouplingEndpoint endpoint)
   if (impl_->endpoint.token.empty() && !impl_->endpoint.is_standalone())
     if (const char* token = std::getenv(token_variable)) impl_->endpoint.token = token;
   ::unsetenv(token_variable);
+  // Whoever started a coupled participant (cosim, or mpirun) going away takes
+  // it along: a coupled participant never outlives its run.
+  if (!impl_->endpoint.is_standalone()) ::prctl(PR_SET_PDEATHSIG, SIGKILL);
 }
 
 Participant::~Participant() {
@@ -332,9 +335,6 @@ void Participant::initialize(double start_time, double end_time) {
     return;
   }
 
-  // Whoever started this participant (cosim, or mpirun's daemon) going away
-  // takes it along: a coupled participant never outlives its run.
-  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   const std::string& uri = s.endpoint.uri;
   if (uri.rfind("mpi://", 0) == 0)
     s.transport = std::make_unique<com::MpiClient>(s.name);

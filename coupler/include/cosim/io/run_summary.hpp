@@ -93,15 +93,20 @@ class RunSummary {
 // other exception; errors are logged. Returns the process exit code.
 int run_and_finish(RunSummary& summary, const std::function<void()>& body);
 
+// Which record of a run another process may overrule.
+enum class Overrule {
+  nothing,   // only a record still "running" (the run could not finish it)
+  success,   // also a success (a coupled run that failed after this part ended)
+  anything,  // also a failure it recorded (it blamed the wrong cause)
+};
+
 // Records in the summary.json at `path` that its run failed, when the run
 // could not say so itself (killed by a signal, ended by an MPI abort): a
-// state still "running" (or, with `overrule_success`, finished with success:
-// a coupled run that failed after its coupler rank had finished) becomes
-// finished with `code` and `message`; the rest is kept. A failure it
-// recorded itself is kept (it knows better). Returns whether it changed the
-// file.
+// state "running", or a finished one that `overrule` allows, becomes
+// finished with `code` and `message`; the rest is kept. Returns whether it
+// changed the file.
 bool record_failure_in_summary(const std::filesystem::path& path, ExitCode code,
-                               const std::string& message, bool overrule_success = false);
+                               const std::string& message, Overrule overrule = Overrule::nothing);
 
 // ISO 8601 UTC with milliseconds, e.g. "2024-05-01T12:34:56.789Z".
 std::string iso8601_utc(std::chrono::system_clock::time_point time);
