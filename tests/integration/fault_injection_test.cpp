@@ -84,6 +84,10 @@ struct ParticipantFault {
   std::string phase;        // startup | window:3 | end
 };
 
+void PrintTo(const ParticipantFault& f, std::ostream* out) {
+  *out << f.transport << " " << f.participant << " " << f.signal << " at " << f.phase;
+}
+
 std::string name_of(const ::testing::TestParamInfo<ParticipantFault>& info) {
   const auto& f = info.param;
   std::string phase = f.phase.substr(0, f.phase.find(':'));
@@ -134,6 +138,10 @@ struct CouplerSignal {
   int signal;
   std::string phase;  // admission | mid_run | after_last_window
 };
+
+void PrintTo(const CouplerSignal& c, std::ostream* out) {
+  *out << c.transport << " signal " << c.signal << " in " << c.phase;
+}
 
 std::string name_of_signal(const ::testing::TestParamInfo<CouplerSignal>& info) {
   const auto& s = info.param;
