@@ -27,7 +27,7 @@ scenarios:
   - name: lake
     backends:
       swe:
-        case: {}/configs/swe/lake_at_rest_1d.yaml
+        case: {0}/configs/swe/lake_at_rest_1d.yaml
         levels:
           - {{label: a, cells: 20, set: {{case: {{mesh.cells: 20, time.end_time: 0.1, output.every: 0.05}}}}}}
           - {{label: b, cells: {1}, set: {{case: {{mesh.cells: {1}, time.end_time: 0.1, output.every: 0.05}}}}}}
