@@ -226,5 +226,24 @@ TEST_P(SolverPromises, OverwriteClearsTheEarlierRunAndTheSummaryStatesTheSize) {
 INSTANTIATE_TEST_SUITE_P(Solvers, SolverPromises, ::testing::Values(mpm, swe, ice, openfoam),
                          test_name);
 
+// Started by `cosim run` (its endpoint options given), a solver writes into
+// the run directory the coupler prepared, where the coupler's console.log
+// already is. (No coupler answers here: the run ends when it gives up
+// connecting, not at the directory.)
+TEST(SolverUnderCosimRun, UsesTheDirectoryTheCouplerPrepared) {
+  const fs::path dir = fresh_directory("solver_promises_under_cosim_run");
+  write_text(dir / "case.yaml", swe.text);
+  earlier_file(dir / "water" / "console.log", "the coupler's console\n");
+  const ProcessResult r =
+      run({binary("swe_fluid").string(), "--config", (dir / "case.yaml").string(), "--output",
+           (dir / "water").string(), "--cosim-endpoint", "ipc://" + (dir / "none.sock").string(),
+           "--cosim-name", "water", "--cosim-connect-timeout", "0.2"},
+          std::chrono::seconds(60));
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, ::testing::Not(HasSubstr("is not empty"))) << r.output;
+  EXPECT_THAT(read_text(dir / "water" / "console.log"), StartsWith("the coupler's console\n"));
+  EXPECT_TRUE(fs::exists(dir / "water" / "summary.json"));
+}
+
 }  // namespace
 }  // namespace cosim::testing
