@@ -1,6 +1,7 @@
 #include "openfoam/case/mesh_cell_count.hpp"
 
 #include <cctype>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -28,7 +29,7 @@ std::optional<double> owner_note_cells(const fs::path& owner) {
   std::size_t end = at + 7;
   while (end < header.size() && std::isdigit(static_cast<unsigned char>(header[end]))) ++end;
   if (end == at + 7) return std::nullopt;
-  return std::stod(header.substr(at + 7, end - at - 7));
+  return std::strtod(header.substr(at + 7, end - at - 7).c_str(), nullptr);
 }
 
 // The dictionary's words and brackets, comments dropped.
@@ -98,7 +99,7 @@ std::optional<double> block_mesh_cells(const fs::path& dict) {
     double block = 1.0;
     for (std::size_t k = counts + 1; k < counts + 4; ++k) {
       if (!whole_number(t[k])) return std::nullopt;
-      block *= std::stod(t[k]);
+      block *= std::strtod(t[k].c_str(), nullptr);  // inf beyond a double, refused by the size
     }
     cells += block;
     ++blocks;
