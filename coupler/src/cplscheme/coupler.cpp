@@ -447,6 +447,55 @@ struct Coupler::Impl {
     return {p.spec, &p.hello, &p.meshes, &p.mesh_version, &p.written};
   }
 
+  // An explicit exchange of porosity and pore pressure is stable only when
+  // the window resolves the pore fluid's undrained wave across an exchange
+  // cell (DESIGN.md §3). Window 0 carries every initial field: the bound is
+  // known before anything is integrated, and a window far above it is
+  // refused then.
+  void check_explicit_stability() {
+    if (!momentum_exchange) return;
+    const job::MomentumExchangeSpec& spec = *job.momentum_exchange;
+    const auto bound =
+        momentum_exchange->explicit_window_bound(side_of(spec.fluid), side_of(spec.solid), operators);
+    if (!bound || !bound->applies()) return;
+    const double ratio = job.window / bound->window;
+    const Vec3 at = peers.at(spec.mesh_owner).meshes.at(spec.mesh).position(bound->cell);
+    summary.set_metric("explicit_window_bound", bound->window, "s");
+    summary.set_section("stability", {{"window_s", job.window},
+                                      {"bound_s", bound->window},
+                                      {"window_over_bound", ratio},
+                                      {"wave_speed_m_per_s", bound->wave_speed},
+                                      {"cell_width_m", bound->cell_width},
+                                      {"porosity", bound->porosity},
+                                      {"cell", bound->cell},
+                                      {"refuse_above", job.stability.refuse_above},
+                                      {"accept_unstable", job.stability.accept_unstable}});
+    if (ratio <= 1.0) {
+      spdlog::info("explicit coupling: the window {} s is {:.2g} of its stability bound {:.3g} s",
+                   job.window, ratio, bound->window);
+      return;
+    }
+    const std::string what = fmt::format(
+        "the window {} s is {:.3g} times the explicit coupling's stability bound {:.3g} s: the pore "
+        "fluid's undrained pressure wave ({:.4g} m/s at porosity {:.3g}) crosses an exchange "
+        "cell of {:.3g} m in that time (at ({:.4g}, {:.4g}, {:.4g}) m of {}.{}), and an explicit "
+        "exchange of porosity and pore pressure over a longer window grows without bound "
+        "(DESIGN.md §3); use a window <= {:.2g} s",
+        job.window, ratio, bound->window, bound->wave_speed, bound->porosity, bound->cell_width,
+        at[0], at[1], at[2], spec.mesh_owner, spec.mesh, bound->window);
+    if (ratio > job.stability.refuse_above && !job.stability.accept_unstable)
+      throw InputError(job.window_where.file.empty()
+                           ? SourceLocation{job.file.string(), job.window_where.line,
+                                            job.window_where.column}
+                           : job.window_where,
+                       "window",
+                       what + fmt::format(" (a window above {} times the bound is refused; "
+                                          "`stability_check: {{accept_unstable: true}}` runs it "
+                                          "anyway)",
+                                          job.stability.refuse_above));
+    spdlog::warn("explicit coupling: {}", what);
+  }
+
   void exchange_momentum(FieldsByPeer& out) {
     if (!momentum_exchange) return;
     auto scope = summary.phases().measure("exchange");
@@ -584,6 +633,7 @@ void Coupler::run() {
     auto last_summary = std::chrono::steady_clock::now();
     for (s.window = 0; s.window <= windows; ++s.window) {
       s.collect_window();
+      if (s.window == 0) s.check_explicit_stability();
       s.map_and_send();
       s.summary.set_windows(static_cast<std::int64_t>(s.window));
       s.summary.set_metric("max_conservative_mapping_error", s.max_conservation_error, "1");

@@ -19,6 +19,26 @@ const FieldSpec* find(const std::vector<FieldSpec>& fields, const std::string& n
   return it == fields.end() ? nullptr : &*it;
 }
 
+// The mesh a phase writes `field` on: the job's, or for a field the job does
+// not list (an optional write), the participant's own declaration.
+const std::string* mesh_of(const PhaseSide& side, const std::string& field) {
+  if (auto it = side.spec->writes.find(field); it != side.spec->writes.end()) return &it->second;
+  if (const FieldSpec* declared = find(side.hello->writes, field)) return &declared->mesh;
+  return nullptr;
+}
+
+// A phase's field mapped consistently onto the exchange mesh.
+std::vector<double> on_exchange_mesh(const PhaseSide& side, const std::string& field,
+                                     int components, const Mesh& exchange_mesh,
+                                     std::size_t exchange_version, OperatorCache& operators) {
+  const std::string& mesh = *mesh_of(side, field);
+  return operators
+      .get(fmt::format("momentum:{}.{}->exchange", side.spec->name, mesh), side.mesh(mesh),
+           side.version(mesh), exchange_mesh, exchange_version, mapping::Constraint::consistent,
+           mapping::Kernel::linear)
+      .apply(side.written->at(field), components);
+}
+
 }  // namespace
 
 MomentumExchangeStep::MomentumExchangeStep(const job::MomentumExchangeSpec& spec,
@@ -84,23 +104,19 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const Ph
         .apply(values, components);
   };
 
-  // A phase's field, mapped consistently onto the exchange mesh.
-  auto on_exchange_mesh = [&](const PhaseSide& side, const char* field, int components) {
-    const std::string& mesh = side.spec->writes.at(field);
-    return map(fmt::format("momentum:{}.{}->exchange", side.spec->name, mesh), side.mesh(mesh),
-               side.version(mesh), exchange_mesh, exchange_version, mapping::Constraint::consistent,
-               side.written->at(field), components);
+  auto mapped = [&](const PhaseSide& side, const char* field, int components) {
+    return on_exchange_mesh(side, field, components, exchange_mesh, exchange_version, operators);
   };
-  const auto phi_s = on_exchange_mesh(solid, f::solid_fraction, 1);
-  const auto u_s = on_exchange_mesh(solid, f::solid_velocity, dim);
-  const auto rho_s = on_exchange_mesh(solid, f::solid_bulk_density, 1);
-  const auto u_f = on_exchange_mesh(fluid, f::fluid_velocity, dim);
-  const auto rho_f = on_exchange_mesh(fluid, f::fluid_bulk_density, 1);
+  const auto phi_s = mapped(solid, f::solid_fraction, 1);
+  const auto u_s = mapped(solid, f::solid_velocity, dim);
+  const auto rho_s = mapped(solid, f::solid_bulk_density, 1);
+  const auto u_f = mapped(fluid, f::fluid_velocity, dim);
+  const auto rho_f = mapped(fluid, f::fluid_bulk_density, 1);
   std::vector<double> grain, permeability;
   if (law_->cell_input() == exchange::CellInput::grain_size)
-    grain = on_exchange_mesh(solid, f::grain_size, 1);
+    grain = mapped(solid, f::grain_size, 1);
   if (law_->cell_input() == exchange::CellInput::permeability)
-    permeability = on_exchange_mesh(solid, f::permeability, 1);
+    permeability = mapped(solid, f::permeability, 1);
 
   std::vector<double> volume(cells);
   for (std::size_t c = 0; c < cells; ++c) volume[c] = exchange_mesh.control_volume(c);
@@ -148,6 +164,27 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const Ph
   for (double j : out.solid) net += j;
   out.momentum_balance_error = scale > 0.0 ? std::abs(net) / scale : 0.0;
   return out;
+}
+
+}  // namespace cosim::cplscheme
+
+namespace cosim::cplscheme {
+
+std::optional<ExplicitStabilityBound> MomentumExchangeStep::explicit_window_bound(
+    const PhaseSide& fluid, const PhaseSide& solid, OperatorCache& operators) const {
+  if (!mesh_of(fluid, f::pore_fluid_bulk_modulus) ||
+      !fluid.written->count(f::pore_fluid_bulk_modulus))
+    return std::nullopt;
+  const PhaseSide& owner = spec_.mesh_owner == spec_.fluid ? fluid : solid;
+  const Mesh& exchange_mesh = owner.mesh(spec_.mesh);
+  const std::size_t version = owner.version(spec_.mesh);
+  auto mapped = [&](const PhaseSide& side, const char* field) {
+    return on_exchange_mesh(side, field, 1, exchange_mesh, version, operators);
+  };
+  return undrained_wave_bound(exchange_mesh, mapped(solid, f::solid_fraction),
+                              mapped(solid, f::solid_bulk_density),
+                              mapped(fluid, f::fluid_bulk_density),
+                              mapped(fluid, f::pore_fluid_bulk_modulus));
 }
 
 }  // namespace cosim::cplscheme

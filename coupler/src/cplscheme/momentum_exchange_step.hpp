@@ -2,12 +2,14 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cosim/com/handshake.hpp"
 #include "cosim/exchange/drag_law.hpp"
 #include "cosim/job/job.hpp"
+#include "explicit_stability.hpp"
 #include "operator_cache.hpp"
 #include "phase_side.hpp"
 
@@ -42,6 +44,13 @@ class MomentumExchangeStep {
   };
   Impulses run(double window, const PhaseSide& fluid, const PhaseSide& solid,
                OperatorCache& operators) const;
+
+  // The explicit coupling's stability bound on the exchange mesh
+  // (explicit_stability.hpp), when the fluid writes its pore fluid's bulk
+  // modulus (a compressible fluid; an incompressible one has no such wave).
+  std::optional<ExplicitStabilityBound> explicit_window_bound(const PhaseSide& fluid,
+                                                              const PhaseSide& solid,
+                                                              OperatorCache& operators) const;
 
   // The largest K the fluid is sent: the impermeable limit of Tran et al.,
   // MPMICE (K = 1e15 for a solid without pores), which keeps every value

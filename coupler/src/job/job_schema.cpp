@@ -68,6 +68,19 @@ Schema zmq_schema() {
   return s;
 }
 
+Schema stability_check_schema() {
+  Schema s = Schema::object(
+      "The explicit coupling's window against its stability bound (DESIGN.md §3): with a "
+      "momentum exchange and a compressible fluid, the coupler computes from window 0 the time "
+      "the pore fluid's undrained pressure wave takes across an exchange cell, warns when the "
+      "window is longer, and refuses the run before its first window when it is much longer.");
+  s.optional("refuse_above", Schema::number().range(1.0, 1e6).default_value("10"),
+             "Refuse a window longer than this many times the bound.")
+      .optional("accept_unstable", Schema::boolean().default_value("false"),
+                "Run anyway, with the warning, however long the window.");
+  return s;
+}
+
 Schema output_schema() {
   Schema s = Schema::object("What the coupler writes besides log.txt and summary.json.");
   s.optional("every", Schema::number().non_negative().unit("s").default_value("0"),
@@ -141,6 +154,8 @@ Schema make_job_schema() {
       .optional("energy_exchange", energy_exchange_schema().default_value("none"),
                 "Implicit heat exchange between a fluid and a solid, solved by the coupler each "
                 "window; both read the heat they receive as 'heat_exchange_energy'.")
+      .optional("stability_check", stability_check_schema(),
+                "The explicit coupling's window against its stability bound.")
       .optional("output", output_schema(), "Coupler output.");
   return s;
 }

@@ -294,6 +294,11 @@ Job load_job(const std::filesystem::path& file) {
   job.start_time = root.get<double>("start_time", 0.0);
   job.end_time = root["end_time"].as<double>();
   job.window = root["window"].as<double>();
+  job.window_where = root["window"].location();
+  if (auto c = root.find("stability_check")) {
+    job.stability.refuse_above = c->get<double>("refuse_above", job.stability.refuse_above);
+    job.stability.accept_unstable = c->get<bool>("accept_unstable", false);
+  }
   if (!(job.end_time > job.start_time))
     root["end_time"].fail(fmt::format("end time {} s is not after the start time {} s",
                                       job.end_time, job.start_time));

@@ -113,6 +113,10 @@ inline constexpr const char* solid_volume_flux = "solid_volume_flux";
 // written by the fluid
 inline constexpr const char* fluid_velocity = "fluid_velocity";          // U_f [m/s]
 inline constexpr const char* fluid_bulk_density = "fluid_bulk_density";  // rho_bar_f [kg/m^3]
+// K_f [Pa]: the bulk modulus of the fluid (mixture) in the pores, an optional
+// write of compressible fluids, from which the coupler bounds the window of
+// an explicit exchange (the undrained wave, DESIGN.md §3)
+inline constexpr const char* pore_fluid_bulk_modulus = "pore_fluid_bulk_modulus";
 // read by both: the momentum each receives over the window [kg m/s]
 // (extensive, window integral, one component per dimension)
 inline constexpr const char* impulse = "momentum_exchange_impulse";
@@ -137,6 +141,15 @@ inline constexpr const char* fluid_heat_capacity =
 inline constexpr const char* heat = "heat_exchange_energy";
 }  // namespace energy_exchange_fields
 
+// How the coupler treats a window longer than the explicit coupling's
+// stability bound (DESIGN.md §3): it warns above the bound, and refuses the
+// run before its first window above `refuse_above` times the bound, unless
+// the job accepts it.
+struct StabilityCheck {
+  double refuse_above = 10.0;
+  bool accept_unstable = false;
+};
+
 struct Job {
   std::filesystem::path file;
   std::string name;
@@ -144,6 +157,8 @@ struct Job {
   double start_time = 0.0;
   double end_time = 0.0;
   double window = 0.0;
+  SourceLocation window_where;  // of the `window` key, for messages about it
+  StabilityCheck stability;
   TransportKind transport = TransportKind::zmq;
   ZmqSpec zmq;
   com::Extrapolation extrapolation = com::Extrapolation::constant;

@@ -63,6 +63,9 @@ void PorousCoupling<Dim>::declare(cosim::Participant& participant, IceSolver<Dim
   cosim::FieldSpec density = field(mx::fluid_bulk_density, 1, "kg/m^3");
   density.lower_bound = 0.0;
   participant.declare_write(density);
+  cosim::FieldSpec modulus = field(mx::pore_fluid_bulk_modulus, 1, "Pa");
+  modulus.lower_bound = 0.0;
+  participant.declare_write(modulus);
   if (description_.heat_exchange) {
     participant.declare_write(field(ex::fluid_temperature, 1, "K"));
     cosim::FieldSpec capacity = field(ex::fluid_heat_capacity, 1, "J/(m^3 K)");
@@ -189,6 +192,22 @@ void PorousCoupling<Dim>::write_fields(cosim::Participant& participant, IceSolve
   participant.write(pore_pressure_force, force_);
   participant.write(mx::fluid_velocity, velocity_);
   participant.write(mx::fluid_bulk_density, density_);
+  // The pores' fluids in series: 1 / K_f = sum_m (phi_m / n) kappa_m, the
+  // coupler's bound on an explicit window (the undrained wave) reads it.
+  modulus_.assign(cells, 0.0);
+  std::vector<double> fluid_fraction(cells, 0.0);
+  for (std::size_t m = 0; m < state.materials.size(); ++m) {
+    const MaterialState<Dim>& material = state.materials[m];
+    const EquationOfState& eos = *solver.materials()[m].eos;
+    for (std::size_t c = 0; c < cells; ++c) {
+      fluid_fraction[c] += material.volume_fraction[c];
+      modulus_[c] += material.volume_fraction[c] *
+                     eos.adiabatic_compressibility(material.density[c], material.temperature[c]);
+    }
+  }
+  for (std::size_t c = 0; c < cells; ++c)
+    modulus_[c] = modulus_[c] > 0.0 ? fluid_fraction[c] / modulus_[c] : 0.0;
+  participant.write(mx::pore_fluid_bulk_modulus, modulus_);
   if (description_.heat_exchange) {
     // The fluids' heat capacity and their capacity-weighted temperature.
     capacity_.assign(cells, 0.0);

@@ -68,7 +68,7 @@ class PorousCoupling {
   std::vector<double> porosity_;
   std::array<std::vector<double>, static_cast<std::size_t>(Dim)> solid_velocity_;
   std::vector<double> drag_, solid_density_;
-  std::vector<double> pressure_, velocity_, density_, force_, capacity_, temperature_;
+  std::vector<double> pressure_, velocity_, density_, force_, capacity_, temperature_, modulus_;
   bool warned_ = false;
 };
 
