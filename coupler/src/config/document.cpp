@@ -4,8 +4,11 @@
 
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <system_error>
+
+#include "expansion_check.hpp"
 
 namespace cosim::config {
 
@@ -62,10 +65,14 @@ void expand_merge_keys(YAML::Node node) {
       sources.push_back(merged);
     }
     node.remove("<<");
+    // yaml-cpp finds a key by comparing it with every key of the mapping:
+    // looking each merged key up would take the product of the two sizes.
+    std::set<std::string> given;
+    for (const auto& entry : node) given.insert(entry.first.Scalar());
     for (const auto& from : sources) {
       if (!from.IsMap()) continue;
       for (const auto& entry : from)
-        if (!node[entry.first.Scalar()]) node[entry.first] = entry.second;
+        if (given.insert(entry.first.Scalar()).second) node.force_insert(entry.first, entry.second);
     }
   }
   for (auto entry : node) expand_merge_keys(entry.second);
@@ -88,6 +95,9 @@ std::string tab_hint(const std::string& text, int error_line) {
 YAML::Node parse(const std::string& text, const SourceFile& source) {
   std::vector<YAML::Node> documents;
   try {
+    // Before any node is built: the walks below, and every program's, would
+    // recurse without end through a cycle and take years over an alias bomb.
+    check_expansion(text, source, {Document::max_expanded_nodes, Document::max_depth});
     documents = YAML::LoadAll(text);
   } catch (const YAML::Exception& error) {
     const SourceLocation where = location_in(source, error.mark);
