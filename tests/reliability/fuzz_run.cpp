@@ -1,10 +1,9 @@
 #include "fuzz_run.hpp"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <signal.h>
 #include <unistd.h>
-
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
@@ -31,8 +30,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr char base64_digits[] =
-    "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+constexpr char base64_digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
 
 // The four base64 digits of the bytes at `i`, `i + 1`, `i + 2` (padded
 // past `size`).
@@ -96,7 +94,7 @@ struct InFlight {
 InFlight in_flight;
 
 void report_input_in_flight(const char* why) {
-  if (in_flight.reported.exchange(true) || in_flight.data == nullptr) return;
+  if (in_flight.data == nullptr || in_flight.reported.exchange(true)) return;
   const auto say = [](const char* text) { (void)!::write(2, text, std::strlen(text)); };
   say("\nfuzz: ");
   say(in_flight.target);
@@ -175,7 +173,8 @@ class CrashReport {
 // longer than the hang limit: an endless loop never returns to be timed.
 class Watchdog {
  public:
-  explicit Watchdog(std::chrono::milliseconds limit) : limit_(limit), thread_([this] { watch(); }) {}
+  explicit Watchdog(std::chrono::milliseconds limit)
+      : limit_(limit), thread_([this] { watch(); }) {}
   ~Watchdog() {
     {
       std::lock_guard lock(mutex_);
@@ -200,8 +199,7 @@ class Watchdog {
     std::unique_lock lock(mutex_);
     while (!wake_.wait_for(lock, std::chrono::milliseconds(100), [this] { return stop_; })) {
       const std::int64_t started = started_ns_.load();
-      if (started != 0 &&
-          now_ns() - started > 30 * std::chrono::nanoseconds(limit_).count()) {
+      if (started != 0 && now_ns() - started > 30 * std::chrono::nanoseconds(limit_).count()) {
         report_input_in_flight("hung (30 times the hang limit)");
         std::abort();
       }
@@ -234,6 +232,7 @@ std::string run_one(const FuzzTarget& target, const std::string& input, Watchdog
     failure = "threw something that is not a std::exception";
   }
   watchdog.finished();
+  in_flight.data = nullptr;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   report.slowest_seconds = std::max(report.slowest_seconds, seconds);

@@ -30,7 +30,7 @@ struct FuzzTarget {
   std::vector<std::string> tokens;  // for the mutator
   // Makes an input from one of the corpus; Mutator::mutate when empty.
   std::function<std::string(const std::string& input, Mutator& mutator)> mutate;
-  std::size_t max_size = 1 << 16;   // bytes of a mutated input
+  std::size_t max_size = 1 << 16;  // bytes of a mutated input
   std::uint64_t default_executions = 1000;
   std::chrono::milliseconds hang_limit{1000};
 };

@@ -34,7 +34,9 @@ std::string framed(const com::Header& header, std::span<const std::byte> payload
   return bytes;
 }
 
-std::string framed(const Message& message) { return framed(message.header, message.payload.bytes()); }
+std::string framed(const Message& message) {
+  return framed(message.header, message.payload.bytes());
+}
 
 // The header and payload of a framed input; the header is decoded (and may
 // be refused).
@@ -83,7 +85,8 @@ void decode(const std::string& input) {
 std::vector<std::string> seeds() {
   std::vector<Message> messages;
   const auto add_mesh = [&](MeshGeometry geometry) {
-    messages.push_back(com::make_mesh_message("job", "soil", 0, 0.0, Mesh{"grid", std::move(geometry)}));
+    messages.push_back(
+        com::make_mesh_message("job", "soil", 0, 0.0, Mesh{"grid", std::move(geometry)}));
   };
   add_mesh(UniformGrid{1, {0, 0, 0}, {0.1, 1, 1}, {10, 1, 1}, GridLocation::cell});
   add_mesh(UniformGrid{2, {-1, 0, 0}, {0.5, 0.25, 1}, {4, 8, 1}, GridLocation::node});
@@ -113,21 +116,26 @@ std::vector<std::string> seeds() {
   velocity.optional = true;
   hello.writes = {velocity};
   hello.reads = {pressure};
-  messages.push_back(com::make_text_message(MessageType::hello, "job", "soil", 0, 0.0, com::to_json(hello)));
+  messages.push_back(
+      com::make_text_message(MessageType::hello, "job", "soil", 0, 0.0, com::to_json(hello)));
 
   com::Welcome welcome;
   welcome.config_hash = "0123456789abcdef";
   welcome.end_time = 1.0;
   welcome.window = 1e-3;
   welcome.sends = {"pore_pressure"};
-  messages.push_back(
-      com::make_text_message(MessageType::welcome, "job", "coupler", 0, 0.0, com::to_json(welcome)));
+  messages.push_back(com::make_text_message(MessageType::welcome, "job", "coupler", 0, 0.0,
+                                            com::to_json(welcome)));
 
   const std::vector<double> values{1.0, -2.5, 0.0, 1e300, 3.0, 4.0};
-  messages.push_back(com::make_field_message("job", "soil", 3, 0.003, "solid_velocity", "grid", values, 2));
-  messages.push_back(com::make_field_message("job", "soil", 3, 0.003, "pore_pressure", "grid", values, 1));
-  messages.push_back(com::make_text_message(MessageType::refuse, "job", "coupler", 0, 0.0, "wrong token"));
-  messages.push_back(com::make_text_message(MessageType::abort, "job", "soil", 7, 0.007, "NaN in cell 3"));
+  messages.push_back(
+      com::make_field_message("job", "soil", 3, 0.003, "solid_velocity", "grid", values, 2));
+  messages.push_back(
+      com::make_field_message("job", "soil", 3, 0.003, "pore_pressure", "grid", values, 1));
+  messages.push_back(
+      com::make_text_message(MessageType::refuse, "job", "coupler", 0, 0.0, "wrong token"));
+  messages.push_back(
+      com::make_text_message(MessageType::abort, "job", "soil", 7, 0.007, "NaN in cell 3"));
   messages.push_back(com::make_text_message(MessageType::window_end, "job", "soil", 7, 0.007, ""));
   messages.push_back(com::make_text_message(MessageType::finish, "job", "coupler", 9, 0.009, ""));
 
@@ -180,8 +188,8 @@ FuzzTarget message_target() {
   target.mutate = mutate_message;
   target.seeds = seeds();
   // JSON's structure, for the hello and welcome payloads.
-  target.tokens = {"{", "}", "[", "]", ",", ":", "\"", "null", "true", "1e400", "-1", "[[[[[[[[",
-                   "{\"a\":", "\\u0000", "\\ud800"};
+  target.tokens = {"{",    "}",     "[",  "]",        ",",       ":",       "\"",     "null",
+                   "true", "1e400", "-1", "[[[[[[[[", "{\"a\":", "\\u0000", "\\ud800"};
   target.max_size = max_input_size;
   target.default_executions = 100000;
   return target;

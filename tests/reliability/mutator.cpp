@@ -41,9 +41,9 @@ constexpr std::array<std::uint64_t, 26> interesting_integers{
 // The same boundaries as a text would write them, and numbers that do not
 // fit a double or an int.
 const std::array<const char*, 16> interesting_numbers{
-    "0",     "-1",          "4294967295", "4294967296",           "18446744073709551615",
-    "1e308", "1e309",       "-1e309",     "18446744073709551616", "9223372036854775808",
-    ".nan",  ".inf",        "-.inf",      "0x7fffffff",           "1099511627776",
+    "0",       "-1",    "4294967295", "4294967296",           "18446744073709551615",
+    "1e308",   "1e309", "-1e309",     "18446744073709551616", "9223372036854775808",
+    ".nan",    ".inf",  "-.inf",      "0x7fffffff",           "1099511627776",
     "2.5e-324"};
 
 }  // namespace
@@ -92,7 +92,8 @@ void Mutator::mutate_once(std::string& data) {
     case 4:  // repeat a piece
       if (!data.empty()) {
         const std::size_t at = position(0);
-        const std::string piece = data.substr(at, 1 + below(std::min<std::size_t>(64, data.size() - at)));
+        const std::string piece =
+            data.substr(at, 1 + below(std::min<std::size_t>(64, data.size() - at)));
         const std::size_t times = 1 + below(8);
         std::string repeated;
         for (std::size_t i = 0; i < times; ++i) repeated += piece;
@@ -103,7 +104,8 @@ void Mutator::mutate_once(std::string& data) {
       const std::string& other = corpus_[below(corpus_.size())];
       if (other.empty()) break;
       const std::size_t from = below(other.size());
-      const std::string piece = other.substr(from, 1 + below(std::min<std::size_t>(256, other.size() - from)));
+      const std::string piece =
+          other.substr(from, 1 + below(std::min<std::size_t>(256, other.size() - from)));
       if (below(2) == 0 || data.empty()) {
         data.insert(position(1), piece);
       } else {
