@@ -197,3 +197,63 @@ TEST(RunContract, AKilledCouplersIpcDirectoryIsCleanedAtTheNextStart) {
 
 }  // namespace
 }  // namespace cosim::testing
+
+namespace cosim::testing {
+namespace {
+
+// A solver running on its own: SIGTERM (as `cosim` stops its participants,
+// or Ctrl-C) ends it between steps, with its summary.json finished saying
+// why, instead of killing it with its record "running".
+struct LongCase {
+  const char* solver;
+  const char* config;
+  const char* end_time_from;
+  const char* end_time_to;
+};
+
+void PrintTo(const LongCase& c, std::ostream* out) { *out << c.solver << " on " << c.config; }
+
+class SolverStops : public ::testing::TestWithParam<LongCase> {};
+
+TEST_P(SolverStops, OnASignalBetweenStepsWithItsRecord) {
+  const LongCase& c = GetParam();
+  const fs::path dir = fresh_directory(std::string("solver_stop_") + c.solver);
+  const fs::path shipped = fs::path(COSIM_SOURCE_DIR) / "configs" / c.config;
+  write_text(dir / "case.yaml",
+             replaced(read_text(shipped), c.end_time_from, c.end_time_to));
+  for (const auto& entry : fs::directory_iterator(shipped.parent_path()))
+    if (entry.path().extension() != ".yaml" && entry.is_regular_file())
+      fs::copy_file(entry.path(), dir / entry.path().filename(),
+                    fs::copy_options::overwrite_existing);
+  const pid_t solver = spawn({binary(c.solver).string(), "--config", (dir / "case.yaml").string(),
+                              "--output", (dir / "run").string()},
+                             dir / "console.log");
+  // Stepping: its summary.json exists and it has written its first output.
+  const auto deadline = Clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(dir / "run" / "summary.json") && Clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  const auto start = Clock::now();
+  ASSERT_EQ(::kill(solver, SIGTERM), 0);
+  const auto r = wait_for(solver, dir / "console.log", std::chrono::seconds(60));
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  std::printf("%s: exit %d %.2f s after SIGTERM\n", c.solver, r.exit_code, seconds);
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_LT(seconds, 10.0);
+  const auto summary = nlohmann::json::parse(read_text(dir / "run" / "summary.json"));
+  EXPECT_EQ(summary["status"]["state"], "finished");
+  EXPECT_THAT(summary["status"]["message"].get<std::string>(), HasSubstr("stopped by signal 15"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Reliability, SolverStops,
+    ::testing::Values(
+        LongCase{"swe_fluid", "swe/stoker_dam_break.yaml", "end_time: 0.1", "end_time: 1.0e4"},
+        LongCase{"mpm_solver", "mpm/elastic_block_drop.yaml", "end_time: 0.5", "end_time: 100.0"},
+        LongCase{"ice_fluid", "ice/martin_moyce.yaml", "end_time: 0.19", "end_time: 1.0e4"}),
+    [](const ::testing::TestParamInfo<LongCase>& param_info) {
+      return std::string(param_info.param.solver);
+    });
+
+}  // namespace
+}  // namespace cosim::testing

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "cosim/error.hpp"
+#include "cosim/runtime/stop_request.hpp"
 
 namespace cosim {
 
@@ -23,6 +24,9 @@ int validate(const SolverProgram& program, const SolverCommandLine& line) {
 }  // namespace
 
 int run_solver_program(const SolverProgram& program, int argc, char** argv) {
+  // SIGTERM, SIGINT and SIGHUP end a run between steps with its record
+  // written (`cosim` stops its participants with SIGTERM).
+  runtime::install_stop_handlers();
   CLI::App app{program.description};
   bool help_config = false;
   bool check_only = false;

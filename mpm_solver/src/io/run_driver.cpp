@@ -16,6 +16,7 @@
 #include "cosim/io/logging.hpp"
 #include "cosim/io/output_schedule.hpp"
 #include "cosim/io/run_summary.hpp"
+#include "cosim/runtime/stop_request.hpp"
 #include "mpm/case/load_case.hpp"
 #include "mpm/io/grid_snapshot_writer.hpp"
 #include "mpm/io/particle_snapshot_writer.hpp"
@@ -156,6 +157,9 @@ class CaseRun {
     auto last_progress = Clock::now();
     std::size_t steps_at_progress = solver_.step_count();
     while (ongoing()) {
+      // A stop asked for by a signal ends the run here, between steps, as an
+      // error does: the summary says why (coupled, the participant checks too).
+      cosim::runtime::throw_if_stop_requested();
       const double t = solver_.time();
       const double stable = solver_.stable_time_step();
       if (!(stable >= min_time_step_))

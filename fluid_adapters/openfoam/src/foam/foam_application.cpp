@@ -10,6 +10,7 @@
 
 #include "cosim/error.hpp"
 #include "cosim/io/tail_lines.hpp"
+#include "cosim/runtime/stop_request.hpp"
 #include "cosim/runtime/supervisor.hpp"
 
 namespace openfoam {
@@ -120,6 +121,11 @@ ApplicationTiming run_application(const Installation& installation, const std::s
     if (!exits.empty()) {
       exit = exits.front();
       break;
+    }
+    if (cosim::runtime::stop_requested()) {
+      supervisor.stop_all(std::chrono::milliseconds(2000));
+      throw cosim::Error(cosim::ExitCode::participant_failed,
+                         fmt::format("{} (while {} ran)", cosim::runtime::describe_stop(), name));
     }
     if (Clock::now() - launched > timeout) {
       supervisor.stop_all(std::chrono::milliseconds(2000));
