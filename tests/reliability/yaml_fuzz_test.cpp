@@ -61,7 +61,7 @@ FuzzTarget yaml_target() {
   target.seeds = seeds();
   target.tokens = yaml_tokens;
   target.max_size = 1 << 16;
-  target.default_executions = 3000;
+  target.default_executions = 2000;
   return target;
 }
 
