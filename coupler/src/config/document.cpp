@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 #include <system_error>
+#include <unordered_map>
 
 #include "expansion_check.hpp"
 
@@ -18,13 +19,34 @@ std::string joined(const std::string& parent, const std::string& key) {
   return parent.empty() ? key : parent + "." + key;
 }
 
+// yaml-cpp gives an alias the very node its anchor names, so a walk over the
+// document meets that node again at each alias; the walks below visit each
+// sequence and mapping once (a million-node expansion took 1-2 s to walk
+// under the sanitizers). yaml-cpp shows a node's identity only through
+// Node::is(), hence the lookup by position in the text first.
+class Visits {
+ public:
+  bool first(const YAML::Node& node) {
+    if (!node.IsSequence() && !node.IsMap()) return true;
+    const auto [begin, end] = seen_.equal_range(node.Mark().pos);
+    for (auto it = begin; it != end; ++it)
+      if (it->second.is(node)) return false;
+    seen_.emplace(node.Mark().pos, node);
+    return true;
+  }
+
+ private:
+  std::unordered_multimap<int, YAML::Node> seen_;
+};
+
 // yaml-cpp keeps the last of two equal keys without a word; a config that
 // says the same thing twice is a mistake the user must see.
 void refuse_duplicate_keys(const YAML::Node& node, const SourceFile& source,
-                           const std::string& key_path) {
+                           const std::string& key_path, Visits& visits) {
+  if (!visits.first(node)) return;
   if (node.IsSequence()) {
     for (std::size_t i = 0; i < node.size(); ++i) {
-      refuse_duplicate_keys(node[i], source, fmt::format("{}[{}]", key_path, i));
+      refuse_duplicate_keys(node[i], source, fmt::format("{}[{}]", key_path, i), visits);
     }
     return;
   }
@@ -43,21 +65,22 @@ void refuse_duplicate_keys(const YAML::Node& node, const SourceFile& source,
                        fmt::format("duplicate key; first given at line {}",
                                    location_in(source, first->second).line));
     }
-    refuse_duplicate_keys(entry.second, source, path);
+    refuse_duplicate_keys(entry.second, source, path, visits);
   }
 }
 
 // YAML's merge key (`<<: *anchor`), which yaml-cpp leaves as a plain key:
 // the anchored mapping's entries (or those of a list of mappings, the first
 // winning) are added where the mapping does not give them itself.
-void expand_merge_keys(YAML::Node node) {
+void expand_merge_keys(YAML::Node node, Visits& visits) {
+  if (!visits.first(node)) return;
   if (node.IsSequence()) {
-    for (auto item : node) expand_merge_keys(item);
+    for (auto item : node) expand_merge_keys(item, visits);
     return;
   }
   if (!node.IsMap()) return;
   if (const YAML::Node merged = node["<<"]) {
-    expand_merge_keys(merged);
+    expand_merge_keys(merged, visits);
     std::vector<YAML::Node> sources;
     if (merged.IsSequence()) {
       for (const auto& item : merged) sources.push_back(item);
@@ -75,7 +98,7 @@ void expand_merge_keys(YAML::Node node) {
         if (given.insert(entry.first.Scalar()).second) node.force_insert(entry.first, entry.second);
     }
   }
-  for (auto entry : node) expand_merge_keys(entry.second);
+  for (auto entry : node) expand_merge_keys(entry.second, visits);
 }
 
 // yaml-cpp reports a tab in the indentation as whatever it could not parse
@@ -110,8 +133,9 @@ YAML::Node parse(const std::string& text, const SourceFile& source) {
     throw InputError(location_in(source, documents[1].Mark()), "",
                      "a second YAML document ('---') follows the first; a cosim file holds one");
   }
-  refuse_duplicate_keys(documents.front(), source, "");
-  expand_merge_keys(documents.front());
+  Visits checked, expanded;
+  refuse_duplicate_keys(documents.front(), source, "", checked);
+  expand_merge_keys(documents.front(), expanded);
   return documents.front();
 }
 
