@@ -64,14 +64,19 @@ double abs_sum(std::span<const double> v) {
 class StrangerLog {
  public:
   void dropped(const std::string& connection, const std::string& what) {
-    ++count_;
-    if (count_ <= 10 || count_ % 1000 == 0)
+    if (worth_a_line(++dropped_))
       spdlog::warn("ignored {} from {}, which is not a participant of this run ({} so far)", what,
-                   connection, count_);
+                   connection, dropped_);
+  }
+  void refused(const std::string& connection, const std::string& reason) {
+    if (worth_a_line(++refused_))
+      spdlog::warn("refused '{}': {} ({} refusals so far)", connection, reason, refused_);
   }
 
  private:
-  std::size_t count_ = 0;
+  static bool worth_a_line(std::size_t n) { return n <= 10 || n % 1000 == 0; }
+  std::size_t dropped_ = 0;
+  std::size_t refused_ = 0;
 };
 
 bool same_secret(const std::string& a, const std::string& b) {
@@ -179,11 +184,13 @@ struct Coupler::Impl {
     }
   }
 
+  // Tells a connection that is not admitted why; one that is gone already
+  // costs nothing (no wait for a participant's death, as send() does).
   void refuse(const std::string& peer, const std::string& reason) {
-    spdlog::warn("refused '{}': {}", peer, reason);
+    strangers.refused(peer, reason);
     try {
-      send(peer, com::make_text_message(MessageType::refuse, options.job_id, com::coupler_peer, 0,
-                                        0.0, reason));
+      transport.send(peer, com::make_text_message(MessageType::refuse, options.job_id,
+                                                  com::coupler_peer, 0, 0.0, reason));
     } catch (const std::exception&) {
     }
   }
