@@ -69,7 +69,10 @@ std::vector<std::string> participant_names(const job::Job& job) {
 // exit by themselves, the rest are stopped; a participant that died without
 // finishing its summary.json (a signal) has it finished by the coupler.
 void end_participants(runtime::Supervisor& supervisor, const fs::path& output) {
-  supervisor.wait_all(abort_grace);
+  const auto deadline = std::chrono::steady_clock::now() + abort_grace;
+  while (supervisor.running() > 0 && !supervisor.all_running_stopped() &&
+         std::chrono::steady_clock::now() < deadline)
+    supervisor.wait_all(milliseconds(50));
   supervisor.stop_all(stop_grace);
   for (const runtime::ChildExit& e : supervisor.exited())
     if (!e.success())

@@ -11,6 +11,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <thread>
 
 #include <fmt/format.h>
@@ -217,6 +218,17 @@ std::string Supervisor::running_names() const {
   std::string names;
   for (const auto& [pid, child] : children_) names += (names.empty() ? "'" : ", '") + child.name + "'";
   return names;
+}
+
+bool Supervisor::all_running_stopped() const {
+  for (const auto& [pid, child] : children_) {
+    std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+    std::string stat;
+    std::getline(in, stat);
+    const auto end = stat.rfind(')');
+    if (end == std::string::npos || end + 2 >= stat.size() || stat[end + 2] != 'T') return false;
+  }
+  return true;
 }
 
 std::optional<pid_t> Supervisor::pid_of(const std::string& name) const {

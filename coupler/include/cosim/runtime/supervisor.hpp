@@ -67,6 +67,9 @@ class Supervisor {
   std::size_t running() const { return children_.size(); }
   // The names of the children still running, quoted: "'left', 'right'".
   std::string running_names() const;
+  // Whether every child still running is stopped (SIGSTOP, a debugger): none
+  // of them can do anything before it is continued.
+  bool all_running_stopped() const;
   // Every child reaped so far, in the order they were reaped.
   const std::vector<ChildExit>& exited() const { return exited_; }
   std::optional<pid_t> pid_of(const std::string& name) const;
