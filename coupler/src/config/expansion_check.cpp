@@ -177,9 +177,6 @@ class ExpansionCheck final : public YAML::EventHandler {
         path += (path.empty() ? "" : ".") + node.key;
       }
     }
-    // A path as deep as the depth limit would fill the message.
-    constexpr std::size_t longest = 100;
-    if (path.size() > longest) path = path.substr(0, 50) + "..." + path.substr(path.size() - 40);
     return path;
   }
 
