@@ -1,6 +1,8 @@
 #include "cosim/com/handshake.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -12,6 +14,21 @@ namespace cosim::com {
 using nlohmann::json;
 
 namespace {
+
+// A JSON number that must be a whole number in [lo, hi]. nlohmann converts
+// a float such as 1e300 to an integer type with undefined behaviour, and
+// wraps a large unsigned one: neither reaches a conversion here.
+long whole_number(const json& j, long lo, long hi, const char* what) {
+  if (j.is_number_unsigned()) {
+    const auto v = j.get<std::uint64_t>();
+    if (v <= static_cast<std::uint64_t>(hi) && static_cast<long>(v) >= lo) return static_cast<long>(v);
+  } else if (j.is_number_integer()) {
+    const auto v = j.get<std::int64_t>();
+    if (v >= lo && v <= hi) return static_cast<long>(v);
+  }
+  throw std::invalid_argument(fmt::format("{} is {}, not a whole number in [{}, {}]", what,
+                                          j.dump().substr(0, 40), lo, hi));
+}
 
 json field_to_json(const FieldSpec& f) {
   json j{{"name", f.name},
@@ -31,7 +48,7 @@ FieldSpec field_from_json(const json& j) {
   FieldSpec f;
   f.name = j.at("name").get<std::string>();
   f.mesh = j.at("mesh").get<std::string>();
-  f.components = j.at("components").get<int>();
+  f.components = static_cast<int>(whole_number(j.at("components"), 1, 9, "components"));
   f.unit = j.at("unit").get<std::string>();
   const auto q = j.at("quantity").get<std::string>();
   if (q != "intensive" && q != "extensive") throw std::invalid_argument("quantity '" + q + "'");
@@ -95,11 +112,11 @@ Hello parse_hello(const std::string& text, const std::string& peer) {
     h.config_hash = j.at("config_hash").get<std::string>();
     h.token = j.value("token", std::string());
     h.program = j.at("program").get<std::string>();
-    h.pid = j.at("pid").get<long>();
+    h.pid = whole_number(j.at("pid"), 0, std::numeric_limits<int>::max(), "pid");
     for (const auto& m : j.at("meshes"))
       h.meshes.push_back({m.at("name").get<std::string>(),
                           mesh_kind_from_string(m.at("kind").get<std::string>()),
-                          m.at("dim").get<int>()});
+                          static_cast<int>(whole_number(m.at("dim"), 1, 3, "dim"))});
     for (const auto& f : j.at("writes")) h.writes.push_back(field_from_json(f));
     for (const auto& f : j.at("reads")) h.reads.push_back(field_from_json(f));
     return h;

@@ -72,15 +72,15 @@ void refuse_duplicate_keys(const YAML::Node& node, const SourceFile& source,
 // YAML's merge key (`<<: *anchor`), which yaml-cpp leaves as a plain key:
 // the anchored mapping's entries (or those of a list of mappings, the first
 // winning) are added where the mapping does not give them itself.
-void expand_merge_keys(YAML::Node node, Visits& visits) {
+void expand_merge_keys(YAML::Node node, const SourceFile& source, Visits& visits) {
   if (!visits.first(node)) return;
   if (node.IsSequence()) {
-    for (auto item : node) expand_merge_keys(item, visits);
+    for (auto item : node) expand_merge_keys(item, source, visits);
     return;
   }
   if (!node.IsMap()) return;
   if (const YAML::Node merged = node["<<"]) {
-    expand_merge_keys(merged, visits);
+    expand_merge_keys(merged, source, visits);
     std::vector<YAML::Node> sources;
     if (merged.IsSequence()) {
       for (const auto& item : merged) sources.push_back(item);
@@ -93,12 +93,15 @@ void expand_merge_keys(YAML::Node node, Visits& visits) {
     std::set<std::string> given;
     for (const auto& entry : node) given.insert(entry.first.Scalar());
     for (const auto& from : sources) {
-      if (!from.IsMap()) continue;
+      if (!from.IsMap())
+        throw InputError(location_in(source, from.Mark()), "<<",
+                         "a merge key takes a mapping or a list of mappings (`<<: *defaults`), "
+                         "not a value; nothing of it would be merged");
       for (const auto& entry : from)
         if (given.insert(entry.first.Scalar()).second) node.force_insert(entry.first, entry.second);
     }
   }
-  for (auto entry : node) expand_merge_keys(entry.second, visits);
+  for (auto entry : node) expand_merge_keys(entry.second, source, visits);
 }
 
 // yaml-cpp reports a tab in the indentation as whatever it could not parse
@@ -135,7 +138,7 @@ YAML::Node parse(const std::string& text, const SourceFile& source) {
   }
   Visits checked, expanded;
   refuse_duplicate_keys(documents.front(), source, "", checked);
-  expand_merge_keys(documents.front(), expanded);
+  expand_merge_keys(documents.front(), source, expanded);
   return documents.front();
 }
 

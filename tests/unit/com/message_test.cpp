@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 #include <cmath>
 #include <limits>
 
@@ -142,6 +144,31 @@ TEST(MeshMessage, RoundTripsEveryMeshKind) {
 TEST(MeshMessage, RejectsGeometryThatIsNotAMesh) {
   Mesh bad{"line", NonUniformLine{{0.0, 0.2, 0.1}}};
   EXPECT_THROW(decode_mesh_message(make_mesh_message("j", "p", 0, 0.0, bad), "p"), ProtocolError);
+}
+
+// Numbers that must be whole (a pid, a dimension, a component count) are
+// refused when they are floats, negative or beyond their range, never
+// converted (1e300 to int is undefined behaviour).
+TEST(Handshake, AHelloWithNumbersOutOfRangeIsMalformed) {
+  const std::string field =
+      R"({"name": "p", "mesh": "m", "components": COMPONENTS, "unit": "Pa", "quantity": )"
+      R"("intensive", "time": "state", "allow_nonfinite": false})";
+  const auto hello = [&](const std::string& pid, const std::string& dim,
+                         const std::string& components) {
+    std::string f = field;
+    f.replace(f.find("COMPONENTS"), 10, components);
+    return R"({"participant": "s", "config_hash": "0", "program": "x", "pid": )" + pid +
+           R"(, "meshes": [{"name": "m", "kind": "uniform_grid", "dim": )" + dim +
+           R"(}], "writes": [)" + f + R"(], "reads": []})";
+  };
+  EXPECT_NO_THROW(parse_hello(hello("12", "2", "1"), "s"));
+  for (const auto& [pid, dim, components] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"1e300", "2", "1"}, {"-5", "2", "1"}, {"18446744073709551615", "2", "1"},
+           {"12", "1e300", "1"}, {"12", "2.5", "1"}, {"12", "4", "1"},
+           {"12", "2", "4294967297"}, {"12", "2", "-1e300"}})
+    EXPECT_THROW(parse_hello(hello(pid, dim, components), "s"), ProtocolError)
+        << pid << " " << dim << " " << components;
 }
 
 TEST(Handshake, HelloAndWelcomeRoundTrip) {

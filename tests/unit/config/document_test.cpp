@@ -1,6 +1,7 @@
 #include "cosim/config/document.hpp"
 
 #include <fmt/format.h>
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -340,6 +341,19 @@ TEST(ConfigDocument, MergeKeysCopyWhatTheMappingLacksFirstSourceWinning) {
   EXPECT_EQ(d["y"].as<int>(), 2) << "b's own key, merged through the chain";
   EXPECT_EQ(d["z"].as<int>(), 4) << "the mapping's own key";
   EXPECT_EQ(document.root()["b"]["x"].as<int>(), 1);
+}
+
+// Merging a value (not a mapping) would silently merge nothing.
+TEST(ConfigDocument, AMergeKeyOfAValueIsRefusedAtIt) {
+  for (const char* merged : {"<<: 1", "<<: [{x: 1}, 2]", "<<: [a, b]"}) {
+    try {
+      Document::load_string(yaml_text({"a: 0", std::string("b: {") + merged + "}"}), "job.yaml");
+      FAIL() << merged << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_THAT(e.what(), ::testing::HasSubstr("job.yaml:2:")) << merged;
+      EXPECT_THAT(e.what(), ::testing::HasSubstr("merge key takes a mapping")) << merged;
+    }
+  }
 }
 
 }  // namespace
