@@ -158,6 +158,14 @@ void validate(const Mesh& mesh) {
             if (!std::isfinite(g.origin[d]))
               reject(mesh, "origin[" + std::to_string(d) + "] is not finite");
           }
+          // size() multiplies the counts: keep the product far from overflow.
+          constexpr std::int64_t max_cells = std::int64_t{1} << 40;
+          std::int64_t cells = 1;
+          for (int d = 0; d < g.dim; ++d) {
+            if (g.cells[d] > max_cells / cells)
+              reject(mesh, "has more than 2^40 cells");
+            cells *= g.cells[d];
+          }
         } else if constexpr (std::is_same_v<G, NonUniformLine>) {
           if (g.edges.size() < 2) reject(mesh, "needs at least two edges");
           for (std::size_t i = 0; i + 1 < g.edges.size(); ++i)

@@ -41,6 +41,10 @@ TEST(MeshValidation, RejectsBadGeometryNamingTheMesh) {
   EXPECT_THROW(validate(grid), InputError);
   Mesh good{"g", UniformGrid{2, {0, 0, 0}, {1.0, 1.0, 1.0}, {2, 2, 1}, GridLocation::cell}};
   EXPECT_NO_THROW(validate(good));
+  // Counts whose product overflows size(): 2^31 cubed wraps an int64.
+  const std::int64_t n = std::int64_t{1} << 31;
+  Mesh huge{"g", UniformGrid{3, {0, 0, 0}, {1.0, 1.0, 1.0}, {n, n, n}, GridLocation::cell}};
+  EXPECT_THROW(validate(huge), InputError);
 }
 
 }  // namespace
