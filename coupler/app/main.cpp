@@ -7,11 +7,12 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
-#include "cosim/bench/analytic_solution.hpp"
-#include "cosim/bench/bench.hpp"
-#include "cosim/bench/suite.hpp"
+#include "bench/analytic_solution.hpp"
+#include "bench/bench.hpp"
+#include "bench/suite.hpp"
 #include "cosim/error.hpp"
-#include "cosim/job/job.hpp"
+#include "cosim/fields.hpp"
+#include "job/job.hpp"
 #include "cosim/runtime/stop_request.hpp"
 #include "run_command.hpp"
 #include "validate_command.hpp"
@@ -60,6 +61,8 @@ int main(int argc, char** argv) {
   validate_cmd->add_option("job", validate_file, "the job's YAML file")->required();
 
   auto* help_config = app.add_subcommand("help-config", "List every key of a job file");
+  auto* help_fields = app.add_subcommand(
+      "help-fields", "List the fields solvers exchange: name, unit, mapping, window, meaning");
 
   cosim::bench::BenchRunOptions bench_options;
   std::string resolution = "coarse";
@@ -100,6 +103,10 @@ int main(int argc, char** argv) {
   try {
     if (*help_config || help_config_flag) {
       std::cout << cosim::job::job_schema().help("Job file (kind: job)");
+      return 0;
+    }
+    if (*help_fields) {
+      std::cout << cosim::fields::help();
       return 0;
     }
     if (*validate_cmd) return cosim::app::validate_job(validate_file);

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cosim/job/job.hpp"
+#include "job/job.hpp"
 #include "run_command.hpp"
 
 // `cosim run` of an MPI job, outside mpirun: starts mpirun with the job's

@@ -14,15 +14,15 @@
 #include <random>
 #include <string_view>
 
-#include "cosim/com/mpi_transport.hpp"
-#include "cosim/com/zmq_transport.hpp"
-#include "cosim/cplscheme/coupler.hpp"
+#include "com/mpi_transport.hpp"
+#include "com/zmq_transport.hpp"
+#include "cplscheme/coupler.hpp"
 #include "cosim/error.hpp"
 #include "cosim/io/files.hpp"
 #include "cosim/io/logging.hpp"
 #include "cosim/io/run_summary.hpp"
-#include "cosim/job/job.hpp"
-#include "cosim/runtime/mpi_launch.hpp"
+#include "job/job.hpp"
+#include "runtime/mpi_launch.hpp"
 #include "cosim/runtime/stop_request.hpp"
 #include "cosim/runtime/supervisor.hpp"
 

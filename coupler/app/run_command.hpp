@@ -22,7 +22,7 @@ struct RunOptions {
   double connect_timeout_s = 120.0;
 };
 
-// Returns the process exit code (DESIGN.md §6).
+// Returns the process exit code (architecture.md §6).
 int run_job(const RunOptions& options);
 
 }  // namespace cosim::app

@@ -7,7 +7,7 @@
 
 #include "cosim/error.hpp"
 #include "cosim/io/tail_lines.hpp"
-#include "cosim/job/job.hpp"
+#include "job/job.hpp"
 #include "cosim/runtime/stop_request.hpp"
 #include "cosim/runtime/supervisor.hpp"
 

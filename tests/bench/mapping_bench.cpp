@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "cosim/mapping/build_operator.hpp"
+#include "mapping/build_operator.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include <memory>
 
-#include "cosim/com/mpi_transport.hpp"
+#include "com/mpi_transport.hpp"
 
 namespace {
 

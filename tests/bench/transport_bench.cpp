@@ -8,11 +8,11 @@
 #include <fstream>
 #include <thread>
 
-#include "cosim/com/zmq_transport.hpp"
-#include "cosim/cplscheme/coupler.hpp"
+#include "com/zmq_transport.hpp"
+#include "cplscheme/coupler.hpp"
 #include "cosim/error.hpp"
 #include "cosim/io/run_summary.hpp"
-#include "cosim/job/job.hpp"
+#include "job/job.hpp"
 #include "cosim/participant.hpp"
 
 namespace {

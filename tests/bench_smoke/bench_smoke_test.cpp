@@ -18,8 +18,8 @@
 #include <string>
 #include <tuple>
 
-#include "cosim/bench/csv_table.hpp"
-#include "cosim/bench/suite.hpp"
+#include "bench/csv_table.hpp"
+#include "bench/suite.hpp"
 #include "cosim/error.hpp"
 #include "openfoam/foam/installation.hpp"
 #include "run_process.hpp"

@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "cosim/bench/run_plan.hpp"
-#include "cosim/bench/runner.hpp"
+#include "bench/run_plan.hpp"
+#include "bench/runner.hpp"
 
 namespace cosim::testing {
 

@@ -16,9 +16,9 @@
 #include <map>
 #include <string>
 
-#include "cosim/bench/run_plan.hpp"
-#include "cosim/bench/suite.hpp"
-#include "cosim/job/job.hpp"
+#include "bench/run_plan.hpp"
+#include "bench/suite.hpp"
+#include "job/job.hpp"
 #include "ice/case/load_case.hpp"
 #include "mpm/case/load_case.hpp"
 #include "openfoam/case/load_case.hpp"

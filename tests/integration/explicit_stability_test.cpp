@@ -1,4 +1,4 @@
-// The explicit coupling's stability bound (DESIGN.md §3) on the soil column
+// The explicit coupling's stability bound (architecture.md §3) on the soil column
 // in ICE water of configs/ice_coupled/job.yaml: 0.125 m cells, water at
 // 2.15 GPa, the undrained wave at about 2 km/s, a bound of about 60 us. The
 // shipped 50 us window runs without a word; a 10 ms window (the pore

@@ -1,7 +1,7 @@
 // The handshake refuses participants started for another job, another job
 // config or another protocol version, with a message saying which.
 
-#include "cosim/com/handshake.hpp"
+#include "com/handshake.hpp"
 
 #include <fmt/format.h>
 #include <gmock/gmock.h>
@@ -10,11 +10,11 @@
 #include <future>
 #include <thread>
 
-#include "cosim/com/zmq_transport.hpp"
-#include "cosim/cplscheme/coupler.hpp"
+#include "com/zmq_transport.hpp"
+#include "cplscheme/coupler.hpp"
 #include "cosim/error.hpp"
 #include "cosim/io/run_summary.hpp"
-#include "cosim/job/job.hpp"
+#include "job/job.hpp"
 #include "cosim/participant.hpp"
 #include "run_process.hpp"
 

@@ -1,5 +1,5 @@
 // The promises of `cosim run` and `cosim validate` on absurd or hostile
-// input (DESIGN.md §6): a located message and exit 2 for bad input, timeouts
+// input (architecture.md §6): a located message and exit 2 for bad input, timeouts
 // passed down and kept to a sane range, runs never mixed in one directory,
 // participant configs checked by `cosim validate`, signals obeyed in every
 // wait, and nothing of a killed coupler left behind.

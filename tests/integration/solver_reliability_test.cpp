@@ -1,4 +1,4 @@
-// Every solver executable keeps the same promises (DESIGN.md §6):
+// Every solver executable keeps the same promises (architecture.md §6):
 //   --validate loads and checks a case (its size against limits.memory_gib
 //   included) without running or touching --output, and prints one line;
 //   bad input, an absurd size among it, exits 2 naming the file, key and line;

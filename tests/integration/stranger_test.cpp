@@ -11,8 +11,8 @@
 #include <thread>
 #include <zmq.hpp>
 
-#include "cosim/com/handshake.hpp"
-#include "cosim/com/zmq_transport.hpp"
+#include "com/handshake.hpp"
+#include "com/zmq_transport.hpp"
 #include "demo_job.hpp"
 #include "run_process.hpp"
 

@@ -10,8 +10,8 @@
 #include <cstring>
 #include <iostream>
 
-#include "cosim/com/handshake.hpp"
-#include "cosim/com/message.hpp"
+#include "com/handshake.hpp"
+#include "com/message.hpp"
 #include "cosim/error.hpp"
 #include "fuzz_run.hpp"
 #include "mutator.hpp"

@@ -10,7 +10,7 @@
 #include <iostream>
 
 #include "cosim/config/document.hpp"
-#include "cosim/job/job.hpp"
+#include "job/job.hpp"
 #include "fuzz_run.hpp"
 
 namespace cosim::testing {

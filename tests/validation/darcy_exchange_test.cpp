@@ -14,7 +14,7 @@
 
 #include <cmath>
 
-#include "cosim/bench/darcy_column.hpp"
+#include "bench/darcy_column.hpp"
 #include "run_process.hpp"
 
 namespace cosim::testing {

@@ -8,7 +8,7 @@
 namespace cosim {
 
 // Base of every error that ends a run: it carries the exit code the process
-// should return (DESIGN.md §6).
+// should return (architecture.md §6).
 class Error : public std::runtime_error {
  public:
   Error(ExitCode code, const std::string& message) : std::runtime_error(message), code_(code) {}

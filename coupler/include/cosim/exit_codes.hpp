@@ -2,7 +2,7 @@
 
 #include <string_view>
 
-// Process exit codes shared by `cosim` and every solver (DESIGN.md §6).
+// Process exit codes shared by `cosim` and every solver (architecture.md §6).
 namespace cosim {
 
 enum class ExitCode : int {

@@ -7,7 +7,7 @@
 #include <variant>
 #include <vector>
 
-// Mesh descriptors a participant declares to the coupler (DESIGN.md §5).
+// Mesh descriptors a participant declares to the coupler (architecture.md §5).
 // Coordinates are SI metres; unused trailing dimensions are ignored.
 namespace cosim {
 

@@ -11,7 +11,7 @@
 
 namespace cosim {
 
-// What every solver executable takes on its command line (DESIGN.md §6):
+// What every solver executable takes on its command line (architecture.md §6):
 //   <program> --config case.yaml --output dir [--overwrite] [--threads N] [--verbosity V]
 //   <program> --validate --config case.yaml
 //   <program> --help-config

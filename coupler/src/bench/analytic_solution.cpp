@@ -1,4 +1,4 @@
-#include "cosim/bench/analytic_solution.hpp"
+#include "bench/analytic_solution.hpp"
 
 #include <fmt/format.h>
 

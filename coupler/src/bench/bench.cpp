@@ -1,4 +1,4 @@
-#include "cosim/bench/bench.hpp"
+#include "bench/bench.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -11,9 +11,9 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
-#include "cosim/bench/quantity.hpp"
-#include "cosim/bench/report.hpp"
-#include "cosim/bench/runner.hpp"
+#include "bench/quantity.hpp"
+#include "bench/report.hpp"
+#include "bench/runner.hpp"
 #include "cosim/io/content_hash.hpp"
 #include "cosim/io/files.hpp"
 #include "cosim/io/logging.hpp"

@@ -2,7 +2,7 @@
 
 #include <atomic>
 
-#include "cosim/bench/run_plan.hpp"
+#include "bench/run_plan.hpp"
 #include "cosim/io/files.hpp"
 
 // `cosim bench <suite.yaml> --output <dir>`: runs a suite's scenarios with

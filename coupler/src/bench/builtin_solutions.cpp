@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cosim/bench/darcy_column.hpp"
-#include "cosim/bench/gas_riemann_problem.hpp"
-#include "cosim/bench/shallow_water_dam_break.hpp"
-#include "cosim/bench/terzaghi_consolidation.hpp"
+#include "bench/darcy_column.hpp"
+#include "bench/gas_riemann_problem.hpp"
+#include "bench/shallow_water_dam_break.hpp"
+#include "bench/terzaghi_consolidation.hpp"
 
 namespace cosim::bench {
 

@@ -3,7 +3,7 @@
 #include <memory>
 #include <vector>
 
-#include "cosim/bench/analytic_solution.hpp"
+#include "bench/analytic_solution.hpp"
 
 namespace cosim::bench {
 

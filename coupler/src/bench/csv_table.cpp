@@ -1,4 +1,4 @@
-#include "cosim/bench/csv_table.hpp"
+#include "bench/csv_table.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "cosim/bench/gas_riemann_problem.hpp"
+#include "bench/gas_riemann_problem.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "cosim/bench/input_file.hpp"
+#include "bench/input_file.hpp"
 
 #include <fmt/format.h>
 

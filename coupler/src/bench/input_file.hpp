@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "cosim/bench/suite.hpp"
+#include "bench/suite.hpp"
 
 namespace cosim::bench {
 

@@ -2,8 +2,8 @@
 
 #include <set>
 
-#include "cosim/bench/analytic_solution.hpp"
-#include "cosim/bench/suite.hpp"
+#include "bench/analytic_solution.hpp"
+#include "bench/suite.hpp"
 #include "cosim/config/document.hpp"
 
 namespace cosim::bench {

@@ -1,4 +1,4 @@
-#include "cosim/bench/metric.hpp"
+#include "bench/metric.hpp"
 
 #include <fmt/format.h>
 
@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "cosim/bench/analytic_solution.hpp"
-#include "cosim/bench/csv_table.hpp"
+#include "bench/analytic_solution.hpp"
+#include "bench/csv_table.hpp"
 #include "cosim/error.hpp"
 
 namespace cosim::bench {

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "cosim/bench/quantity.hpp"
-#include "cosim/bench/suite.hpp"
+#include "bench/quantity.hpp"
+#include "bench/suite.hpp"
 
 namespace cosim::bench {
 

@@ -1,12 +1,16 @@
-#include "cosim/bench/pairing.hpp"
+#include "bench/pairing.hpp"
 
 #include <fmt/format.h>
 
 #include <vector>
 
+#include "cosim/fields.hpp"
+
 namespace cosim::bench {
 
 namespace {
+
+namespace f = fields;
 
 YAML::Node field_map(const std::vector<std::string>& fields, const std::string& mesh) {
   YAML::Node map(YAML::NodeType::Map);
@@ -61,35 +65,38 @@ void porous_pairing(Backend backend, const Scenario& s, PairedJob& out,
                     const std::string& soil_file, const std::string& fluid_file) {
   const Coupling& c = *s.coupling;
   if (!c.drag.IsDefined() || c.drag.IsNull())
-    throw InputError(s.where, "coupling.drag",
-                     fmt::format("scenario '{}': the {} pairing needs a drag law", s.name,
-                                 to_string(backend)));
+    throw InputError(
+        s.where, "coupling.drag",
+        fmt::format("scenario '{}': the {} pairing needs a drag law", s.name, to_string(backend)));
   const bool ice = backend == Backend::ice;
   const int dim = soil_dimension(out.soil);
-  std::vector<std::string> soil_writes{"solid_fraction", "solid_velocity", "solid_bulk_density"};
-  for (const char* per_cell : {"permeability", "grain_size"})
+  std::vector<std::string> soil_writes{f::solid_fraction.name, f::solid_velocity.name,
+                                       f::solid_bulk_density.name};
+  for (const char* per_cell : {f::permeability.name, f::grain_size.name})
     if (c.drag[per_cell] && c.drag[per_cell].IsScalar() && c.drag[per_cell].Scalar() == "field")
       soil_writes.emplace_back(per_cell);
-  std::vector<std::string> soil_reads{"pore_pressure", "momentum_exchange_impulse"};
-  std::vector<std::string> fluid_writes{"pore_pressure", "fluid_velocity", "fluid_bulk_density",
-                                        "momentum_exchange_impulse"};
-  std::vector<std::string> fluid_reads{"solid_fraction", "solid_velocity", "solid_bulk_density",
-                                       "drag_coefficient"};
-  std::vector<Crossing> crossings{{"solid_fraction"}, {"solid_velocity"}, {"solid_bulk_density"}};
+  std::vector<std::string> soil_reads{f::pore_pressure.name, f::momentum_exchange_impulse.name};
+  std::vector<std::string> fluid_writes{f::pore_pressure.name, f::fluid_velocity.name,
+                                        f::fluid_bulk_density.name,
+                                        f::momentum_exchange_impulse.name};
+  std::vector<std::string> fluid_reads{f::solid_fraction.name, f::solid_velocity.name,
+                                       f::solid_bulk_density.name, f::drag_coefficient.name};
+  std::vector<Crossing> crossings{
+      {f::solid_fraction.name}, {f::solid_velocity.name}, {f::solid_bulk_density.name}};
   for (const auto& optional : c.optional_reads) {
-    if (optional == "solid_volume_flux" && !ice) {
+    if (optional == f::solid_volume_flux.name && !ice) {
       soil_writes.push_back(optional);
       fluid_reads.push_back(optional);
       crossings.push_back({optional});
     }
   }
-  crossings.push_back({"pore_pressure", false});
+  crossings.push_back({f::pore_pressure.name, false});
   if (ice) {
     // The pressure's force on the solid in each cell, as the fluid feels the
     // same gradient (Tran et al., MPMICE, eq. 48).
-    soil_reads.emplace_back("pore_pressure_force");
-    fluid_writes.emplace_back("pore_pressure_force");
-    crossings.push_back({"pore_pressure_force", false, "conservative"});
+    soil_reads.emplace_back(f::pore_pressure_force.name);
+    fluid_writes.emplace_back(f::pore_pressure_force.name);
+    crossings.push_back({f::pore_pressure_force.name, false, "conservative"});
   }
 
   const std::string fluid_mesh = ice ? "ice_cells" : "openfoam_cells";
@@ -99,8 +106,8 @@ void porous_pairing(Backend backend, const Scenario& s, PairedJob& out,
   job["participants"][fluid_participant] =
       participant(ice ? "ice_fluid" : "openfoam_adapter", fluid_file, fluid_mesh,
                   cell_cloud ? "cell_cloud" : "uniform_grid", dim, fluid_writes, fluid_reads);
-  job["participants"][soil_participant] = participant(
-      "mpm_solver", soil_file, "mpm_grid", "uniform_grid", dim, soil_writes, soil_reads);
+  job["participants"][soil_participant] = participant("mpm_solver", soil_file, "mpm_grid",
+                                                      "uniform_grid", dim, soil_writes, soil_reads);
   for (const auto& x : crossings) {
     job["exchange"].push_back(flow_map({{"field", x.field},
                                         {"from", x.to_fluid ? soil_participant : fluid_participant},
@@ -130,15 +137,15 @@ void bed_pairing(PairedJob& out, const std::string& soil_file, const std::string
   YAML::Node job = out.job.root();
   job["participants"][soil_participant] =
       participant("mpm_solver", soil_file, "mpm_surface", "uniform_grid", dim - 1,
-                  {"bed_elevation"}, {"bed_traction"});
-  job["participants"][fluid_participant] =
-      participant("swe_fluid", fluid_file, "swe_cells", dim == 2 ? "nonuniform_line" : "uniform_grid",
-                  dim - 1, {"bed_traction"}, {"bed_elevation"});
-  job["exchange"].push_back(flow_map({{"field", "bed_elevation"},
+                  {f::bed_elevation.name}, {f::bed_traction.name});
+  job["participants"][fluid_participant] = participant(
+      "swe_fluid", fluid_file, "swe_cells", dim == 2 ? "nonuniform_line" : "uniform_grid", dim - 1,
+      {f::bed_traction.name}, {f::bed_elevation.name});
+  job["exchange"].push_back(flow_map({{"field", f::bed_elevation.name},
                                       {"from", soil_participant},
                                       {"to", fluid_participant},
                                       {"mapping", "consistent"}}));
-  job["exchange"].push_back(flow_map({{"field", "bed_traction"},
+  job["exchange"].push_back(flow_map({{"field", f::bed_traction.name},
                                       {"from", fluid_participant},
                                       {"to", soil_participant},
                                       {"mapping", "consistent"}}));
@@ -148,11 +155,11 @@ void bed_pairing(PairedJob& out, const std::string& soil_file, const std::string
                      "(coupling: {surface: {cells: [...]}})");
   out.soil.root()["coupling"].remove("exchange_grid");
   YAML::Node surface = out.soil.root()["coupling"]["surface"];
-  surface["writes"] = sequence_of({"bed_elevation"});
-  surface["reads"] = sequence_of({"bed_traction"});
+  surface["writes"] = sequence_of({f::bed_elevation.name});
+  surface["reads"] = sequence_of({f::bed_traction.name});
   YAML::Node fluid = out.fluid.root()["coupling"];
-  fluid["reads"] = sequence_of({"bed_elevation"});
-  fluid["writes"] = sequence_of({"bed_traction"});
+  fluid["reads"] = sequence_of({f::bed_elevation.name});
+  fluid["writes"] = sequence_of({f::bed_traction.name});
 }
 
 }  // namespace

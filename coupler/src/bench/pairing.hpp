@@ -2,13 +2,13 @@
 
 #include <string>
 
-#include "cosim/bench/input_file.hpp"
-#include "cosim/bench/suite.hpp"
+#include "bench/input_file.hpp"
+#include "bench/suite.hpp"
 
 // A pairing: the MPM soil coupled to one fluid backend. It knows which
 // fields cross in each direction, on which meshes, with which mapping, and
 // who solves the drag, so a scenario writes its soil and its coupling once
-// and each backend only its fluid case (DESIGN.md §4):
+// and each backend only its fluid case (architecture.md §4):
 //   ice, openfoam  porous soil in a fluid: the soil sends solid_fraction,
 //                  solid_velocity and solid_bulk_density (and permeability or
 //                  grain_size when the drag law reads them per cell), the

@@ -1,4 +1,4 @@
-#include "cosim/bench/quantity.hpp"
+#include "bench/quantity.hpp"
 
 #include <fmt/format.h>
 
@@ -11,8 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "cosim/bench/csv_table.hpp"
-#include "cosim/bench/pairing.hpp"
+#include "bench/csv_table.hpp"
+#include "bench/pairing.hpp"
 #include "cosim/config/document.hpp"
 #include "cosim/error.hpp"
 #include "cosim/io/snapshot_reader.hpp"

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "cosim/bench/run_layout.hpp"
-#include "cosim/bench/suite.hpp"
+#include "bench/run_layout.hpp"
+#include "bench/suite.hpp"
 
 namespace cosim::bench {
 

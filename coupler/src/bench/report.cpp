@@ -1,4 +1,4 @@
-#include "cosim/bench/report.hpp"
+#include "bench/report.hpp"
 
 #include <fmt/format.h>
 

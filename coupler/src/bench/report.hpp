@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "cosim/bench/metric.hpp"
-#include "cosim/bench/run_plan.hpp"
-#include "cosim/bench/runner.hpp"
+#include "bench/metric.hpp"
+#include "bench/run_plan.hpp"
+#include "bench/runner.hpp"
 
 namespace cosim::bench {
 

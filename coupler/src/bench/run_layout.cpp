@@ -1,8 +1,8 @@
-#include "cosim/bench/run_layout.hpp"
+#include "bench/run_layout.hpp"
 
 #include <fmt/format.h>
 
-#include "cosim/bench/pairing.hpp"
+#include "bench/pairing.hpp"
 #include "cosim/config/document.hpp"
 #include "cosim/error.hpp"
 

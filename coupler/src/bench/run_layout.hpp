@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-#include "cosim/bench/suite.hpp"
+#include "bench/suite.hpp"
 
 namespace cosim::bench {
 

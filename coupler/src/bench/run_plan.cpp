@@ -1,12 +1,12 @@
-#include "cosim/bench/run_plan.hpp"
+#include "bench/run_plan.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
 
-#include "cosim/bench/input_file.hpp"
-#include "cosim/bench/pairing.hpp"
+#include "bench/input_file.hpp"
+#include "bench/pairing.hpp"
 #include "cosim/io/content_hash.hpp"
 #include "cosim/io/files.hpp"
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "cosim/bench/suite.hpp"
+#include "bench/suite.hpp"
 
 namespace cosim::bench {
 

@@ -1,4 +1,4 @@
-#include "cosim/bench/runner.hpp"
+#include "bench/runner.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>

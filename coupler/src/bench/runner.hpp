@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "cosim/bench/run_plan.hpp"
+#include "bench/run_plan.hpp"
 
 namespace cosim::bench {
 

@@ -1,4 +1,4 @@
-#include "cosim/bench/suite.hpp"
+#include "bench/suite.hpp"
 
 namespace cosim::bench {
 

@@ -1,4 +1,4 @@
-#include "cosim/com/allocator_tuning.hpp"
+#include "com/allocator_tuning.hpp"
 
 #include <malloc.h>
 

@@ -1,4 +1,4 @@
-#include "cosim/com/handshake.hpp"
+#include "com/handshake.hpp"
 
 #include <cmath>
 #include <cstdint>

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "cosim/com/message.hpp"
+#include "com/message.hpp"
 #include "cosim/field.hpp"
 #include "cosim/mesh.hpp"
 

@@ -1,4 +1,4 @@
-#include "cosim/com/message.hpp"
+#include "com/message.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "cosim/com/mpi_transport.hpp"
+#include "com/mpi_transport.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "cosim/com/allocator_tuning.hpp"
+#include "com/allocator_tuning.hpp"
 #include "cosim/error.hpp"
 
 #ifdef COSIM_HAVE_MPI

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "cosim/com/transport.hpp"
+#include "com/transport.hpp"
 
 // MPI transport for one MPMD launch:
 //   mpirun -np 1 cosim run job.yaml ... : -np 1 <solver> ... : -np 1 <solver> ...

@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "cosim/com/message.hpp"
+#include "com/message.hpp"
 
 // A transport moves messages between the coupler (the hub) and the
 // participants. Peers are named: the coupler addresses participants by their

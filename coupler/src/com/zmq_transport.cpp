@@ -1,4 +1,4 @@
-#include "cosim/com/zmq_transport.hpp"
+#include "com/zmq_transport.hpp"
 
 #include <sys/stat.h>
 
@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "cosim/com/allocator_tuning.hpp"
+#include "com/allocator_tuning.hpp"
 #include "cosim/error.hpp"
 #include "private_directory.hpp"
 

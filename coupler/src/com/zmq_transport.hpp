@@ -4,7 +4,7 @@
 #include <memory>
 #include <string>
 
-#include "cosim/com/transport.hpp"
+#include "com/transport.hpp"
 
 // ZeroMQ transports: the coupler binds one ROUTER socket, each participant
 // connects a DEALER socket. The ROUTER assigns every connection its routing

@@ -3,8 +3,8 @@
 #include <optional>
 #include <string>
 
-#include "cosim/com/handshake.hpp"
-#include "cosim/job/job.hpp"
+#include "com/handshake.hpp"
+#include "job/job.hpp"
 
 namespace cosim::cplscheme {
 

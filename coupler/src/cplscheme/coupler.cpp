@@ -1,4 +1,4 @@
-#include "cosim/cplscheme/coupler.hpp"
+#include "cplscheme/coupler.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -10,12 +10,13 @@
 #include <thread>
 
 #include "admission.hpp"
-#include "cosim/com/handshake.hpp"
+#include "com/handshake.hpp"
 #include "cosim/error.hpp"
+#include "cosim/fields.hpp"
 #include "cosim/io/snapshot_writer.hpp"
 #include "cosim/io/tail_lines.hpp"
-#include "cosim/mapping/bounded_redistribution.hpp"
-#include "cosim/mapping/build_operator.hpp"
+#include "mapping/bounded_redistribution.hpp"
+#include "mapping/build_operator.hpp"
 #include "energy_exchange_step.hpp"
 #include "momentum_exchange_step.hpp"
 #include "operator_cache.hpp"
@@ -456,7 +457,7 @@ struct Coupler::Impl {
 
   // An explicit exchange of porosity and pore pressure is stable only when
   // the window resolves the pore fluid's undrained wave across an exchange
-  // cell (DESIGN.md §3). Window 0 carries every initial field: the bound is
+  // cell (architecture.md §3). Window 0 carries every initial field: the bound is
   // known before anything is integrated, and a window far above it is
   // refused then.
   void check_explicit_stability() {
@@ -487,7 +488,7 @@ struct Coupler::Impl {
         "fluid's undrained pressure wave ({:.4g} m/s at porosity {:.3g}) crosses an exchange "
         "cell of {:.3g} m in that time (at ({:.4g}, {:.4g}, {:.4g}) m of {}.{}), and an explicit "
         "exchange of porosity and pore pressure over a longer window grows without bound "
-        "(DESIGN.md §3); use a window <= {:.2g} s",
+        "(architecture.md §3); use a window <= {:.2g} s",
         job.window, ratio, bound->window, bound->wave_speed, bound->porosity, bound->cell_width,
         at[0], at[1], at[2], spec.mesh_owner, spec.mesh, bound->window);
     if (ratio > job.stability.refuse_above && !job.stability.accept_unstable)
@@ -513,12 +514,12 @@ struct Coupler::Impl {
     max_momentum_balance_error =
         std::max(max_momentum_balance_error, impulses.momentum_balance_error);
     if (spec.solved_by == job::ExchangeSolver::fluid)
-      out[spec.fluid][job::momentum_exchange_fields::drag_coefficient] =
+      out[spec.fluid][fields::drag_coefficient.name] =
           std::make_shared<const std::vector<double>>(std::move(impulses.drag_coefficient));
     else
-      out[spec.fluid][job::momentum_exchange_fields::impulse] =
+      out[spec.fluid][fields::momentum_exchange_impulse.name] =
           std::make_shared<const std::vector<double>>(std::move(impulses.fluid));
-    out[spec.solid][job::momentum_exchange_fields::impulse] =
+    out[spec.solid][fields::momentum_exchange_impulse.name] =
         std::make_shared<const std::vector<double>>(std::move(impulses.solid));
   }
 
@@ -529,9 +530,9 @@ struct Coupler::Impl {
     const double dt = window == 0 ? 0.0 : job.window;
     auto heat = energy_exchange->run(dt, side_of(spec.fluid), side_of(spec.solid), operators);
     max_energy_balance_error = std::max(max_energy_balance_error, heat.energy_balance_error);
-    out[spec.fluid][job::energy_exchange_fields::heat] =
+    out[spec.fluid][fields::heat_exchange_energy.name] =
         std::make_shared<const std::vector<double>>(std::move(heat.fluid));
-    out[spec.solid][job::energy_exchange_fields::heat] =
+    out[spec.solid][fields::heat_exchange_energy.name] =
         std::make_shared<const std::vector<double>>(std::move(heat.solid));
   }
 

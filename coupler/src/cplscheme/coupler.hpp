@@ -7,14 +7,14 @@
 #include <memory>
 #include <string>
 
-#include "cosim/com/transport.hpp"
+#include "com/transport.hpp"
 #include "cosim/io/run_summary.hpp"
-#include "cosim/job/job.hpp"
+#include "job/job.hpp"
 #include "cosim/runtime/supervisor.hpp"
 
 // The coupler's side of a coupled run: admits the participants (handshake),
 // then, window after window, collects what each wrote, maps every exchange
-// onto the receiving mesh and sends it on (DESIGN.md §3).
+// onto the receiving mesh and sends it on (architecture.md §3).
 namespace cosim::cplscheme {
 
 struct CouplerOptions {

@@ -7,10 +7,11 @@
 
 #include "cosim/error.hpp"
 #include "cosim/exchange/implicit_exchange.hpp"
+#include "cosim/fields.hpp"
 
 namespace cosim::cplscheme {
 
-namespace f = job::energy_exchange_fields;
+namespace f = fields;
 
 EnergyExchangeStep::EnergyExchangeStep(const job::EnergyExchangeSpec& spec,
                                        const std::string& job_file)
@@ -22,26 +23,25 @@ void EnergyExchangeStep::check_declarations(const job::Job&, const com::Hello& f
     throw InputError(SourceLocation{job_file_, spec_.where.line, spec_.where.column},
                      "energy_exchange", what);
   };
-  auto check = [&](const com::Hello& hello, const std::vector<FieldSpec>& fields, const char* name,
-                   Quantity quantity, TimeTreatment time) {
-    auto it = std::find_if(fields.begin(), fields.end(), [&](auto& x) { return x.name == name; });
-    if (it == fields.end())
-      fail(fmt::format("participant '{}' does not declare '{}'", hello.participant, name));
-    if (it->components != 1 || it->quantity != quantity || it->time != time)
+  auto check = [&](const com::Hello& hello, const std::vector<FieldSpec>& declared,
+                   const fields::Field& needed) {
+    auto it = std::find_if(declared.begin(), declared.end(),
+                           [&](auto& x) { return x.name == needed.name; });
+    if (it == declared.end())
+      fail(fmt::format("participant '{}' does not declare '{}'", hello.participant, needed.name));
+    if (it->components != 1 || it->quantity != needed.quantity || it->time != needed.time)
       fail(fmt::format(
           "participant '{}' declares '{}' as {} {} with {} components; the exchange needs {} {} "
           "with 1",
-          hello.participant, name, to_string(it->quantity), to_string(it->time), it->components,
-          to_string(quantity), to_string(time)));
+          hello.participant, needed.name, to_string(it->quantity), to_string(it->time),
+          it->components, to_string(needed.quantity), to_string(needed.time)));
   };
-  const auto intensive = Quantity::intensive;
-  const auto state = TimeTreatment::state;
-  check(solid, solid.writes, f::solid_temperature, intensive, state);
-  check(solid, solid.writes, f::solid_heat_capacity, intensive, state);
-  check(fluid, fluid.writes, f::fluid_temperature, intensive, state);
-  check(fluid, fluid.writes, f::fluid_heat_capacity, intensive, state);
+  check(solid, solid.writes, f::solid_temperature);
+  check(solid, solid.writes, f::solid_heat_capacity);
+  check(fluid, fluid.writes, f::fluid_temperature);
+  check(fluid, fluid.writes, f::fluid_heat_capacity);
   for (const com::Hello* side : {&fluid, &solid})
-    check(*side, side->reads, f::heat, Quantity::extensive, TimeTreatment::integral);
+    check(*side, side->reads, f::heat_exchange_energy);
 }
 
 EnergyExchangeStep::Heat EnergyExchangeStep::run(double window, const PhaseSide& fluid,
@@ -59,10 +59,10 @@ EnergyExchangeStep::Heat EnergyExchangeStep::run(double window, const PhaseSide&
              mapping::Kernel::linear)
         .apply(side.written->at(field), 1);
   };
-  const auto t_f = on_exchange_mesh(fluid, f::fluid_temperature);
-  const auto c_f = on_exchange_mesh(fluid, f::fluid_heat_capacity);
-  const auto t_s = on_exchange_mesh(solid, f::solid_temperature);
-  const auto c_s = on_exchange_mesh(solid, f::solid_heat_capacity);
+  const auto t_f = on_exchange_mesh(fluid, f::fluid_temperature.name);
+  const auto c_f = on_exchange_mesh(fluid, f::fluid_heat_capacity.name);
+  const auto t_s = on_exchange_mesh(solid, f::solid_temperature.name);
+  const auto c_s = on_exchange_mesh(solid, f::solid_heat_capacity.name);
   std::vector<double> q_f(cells), q_s(cells);
   for (std::size_t c = 0; c < cells; ++c) {
     const auto bad = [&](const char* what, double value) {
@@ -83,7 +83,7 @@ EnergyExchangeStep::Heat EnergyExchangeStep::run(double window, const PhaseSide&
     q_s[c] = -q_f[c];
   }
   auto to_side = [&](const PhaseSide& side, const std::vector<double>& heat) {
-    const std::string& mesh = side.spec->reads.at(f::heat);
+    const std::string& mesh = side.spec->reads.at(f::heat_exchange_energy.name);
     return operators
         .get(fmt::format("energy:exchange->{}.{}", side.spec->name, mesh), exchange_mesh,
              exchange_version, side.mesh(mesh), side.version(mesh),

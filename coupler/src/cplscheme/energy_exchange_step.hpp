@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "cosim/com/handshake.hpp"
-#include "cosim/job/job.hpp"
+#include "com/handshake.hpp"
+#include "job/job.hpp"
 #include "operator_cache.hpp"
 #include "phase_side.hpp"
 

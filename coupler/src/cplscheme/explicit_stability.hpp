@@ -9,7 +9,7 @@
 namespace cosim::cplscheme {
 
 // The longest window an explicit (staggered) exchange of porosity and pore
-// pressure survives (DESIGN.md §3): undrained, the pore fluid carries the
+// pressure survives (architecture.md §3): undrained, the pore fluid carries the
 // load, so the mixture's bulk modulus is about K_f / n (the skeleton's
 // stiffness is far smaller) and its inertia that of both phases,
 //   c = sqrt(K_f / (n (rho_bar_f + rho_bar_s))),

@@ -6,11 +6,12 @@
 #include <cmath>
 
 #include "cosim/error.hpp"
-#include "cosim/exchange/two_phase_exchange.hpp"
+#include "cosim/fields.hpp"
+#include "exchange/two_phase_exchange.hpp"
 
 namespace cosim::cplscheme {
 
-namespace f = job::momentum_exchange_fields;
+namespace f = fields;
 
 namespace {
 
@@ -54,37 +55,35 @@ void MomentumExchangeStep::check_declarations(const job::Job& job, const com::He
     throw InputError(SourceLocation{job_file_, spec_.where.line, spec_.where.column},
                      "momentum_exchange", what);
   };
-  auto check = [&](const com::Hello& hello, const std::vector<FieldSpec>& fields, const char* name,
-                   int components, Quantity quantity, TimeTreatment time) {
-    const FieldSpec* field = find(fields, name);
+  auto check = [&](const com::Hello& hello, const std::vector<FieldSpec>& declared,
+                   const fields::Field& needed) {
+    const FieldSpec* field = find(declared, needed.name);
     if (!field)
-      fail(fmt::format("participant '{}' does not declare '{}'", hello.participant, name));
-    if (field->components != components || field->quantity != quantity || field->time != time)
-      fail(
-          fmt::format("participant '{}' declares '{}' as {} {} with {} components; the exchange "
-                      "needs {} {} with {}",
-                      hello.participant, name, to_string(field->quantity), to_string(field->time),
-                      field->components, to_string(quantity), to_string(time), components));
+      fail(fmt::format("participant '{}' does not declare '{}'", hello.participant, needed.name));
+    const int components = needed.components_in(dim);
+    if (field->components != components || field->quantity != needed.quantity ||
+        field->time != needed.time)
+      fail(fmt::format(
+          "participant '{}' declares '{}' as {} {} with {} components; the exchange "
+          "needs {} {} with {}",
+          hello.participant, needed.name, to_string(field->quantity), to_string(field->time),
+          field->components, to_string(needed.quantity), to_string(needed.time), components));
   };
-  const auto intensive = Quantity::intensive;
-  const auto state = TimeTreatment::state;
-  check(solid, solid.writes, f::solid_fraction, 1, intensive, state);
-  check(solid, solid.writes, f::solid_velocity, dim, intensive, state);
-  check(solid, solid.writes, f::solid_bulk_density, 1, intensive, state);
+  check(solid, solid.writes, f::solid_fraction);
+  check(solid, solid.writes, f::solid_velocity);
+  check(solid, solid.writes, f::solid_bulk_density);
   if (law_->cell_input() == exchange::CellInput::grain_size)
-    check(solid, solid.writes, f::grain_size, 1, intensive, state);
+    check(solid, solid.writes, f::grain_size);
   if (law_->cell_input() == exchange::CellInput::permeability)
-    check(solid, solid.writes, f::permeability, 1, intensive, state);
-  check(fluid, fluid.writes, f::fluid_velocity, dim, intensive, state);
-  check(fluid, fluid.writes, f::fluid_bulk_density, 1, intensive, state);
-  const auto extensive = Quantity::extensive;
-  const auto integral = TimeTreatment::integral;
-  check(solid, solid.reads, f::impulse, dim, extensive, integral);
+    check(solid, solid.writes, f::permeability);
+  check(fluid, fluid.writes, f::fluid_velocity);
+  check(fluid, fluid.writes, f::fluid_bulk_density);
+  check(solid, solid.reads, f::momentum_exchange_impulse);
   if (spec_.solved_by == job::ExchangeSolver::coupler) {
-    check(fluid, fluid.reads, f::impulse, dim, extensive, integral);
+    check(fluid, fluid.reads, f::momentum_exchange_impulse);
   } else {
-    check(fluid, fluid.reads, f::drag_coefficient, 1, intensive, state);
-    check(fluid, fluid.writes, f::impulse, dim, extensive, integral);
+    check(fluid, fluid.reads, f::drag_coefficient);
+    check(fluid, fluid.writes, f::momentum_exchange_impulse);
   }
 }
 
@@ -107,16 +106,16 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const Ph
   auto mapped = [&](const PhaseSide& side, const char* field, int components) {
     return on_exchange_mesh(side, field, components, exchange_mesh, exchange_version, operators);
   };
-  const auto phi_s = mapped(solid, f::solid_fraction, 1);
-  const auto u_s = mapped(solid, f::solid_velocity, dim);
-  const auto rho_s = mapped(solid, f::solid_bulk_density, 1);
-  const auto u_f = mapped(fluid, f::fluid_velocity, dim);
-  const auto rho_f = mapped(fluid, f::fluid_bulk_density, 1);
+  const auto phi_s = mapped(solid, f::solid_fraction.name, 1);
+  const auto u_s = mapped(solid, f::solid_velocity.name, dim);
+  const auto rho_s = mapped(solid, f::solid_bulk_density.name, 1);
+  const auto u_f = mapped(fluid, f::fluid_velocity.name, dim);
+  const auto rho_f = mapped(fluid, f::fluid_bulk_density.name, 1);
   std::vector<double> grain, permeability;
   if (law_->cell_input() == exchange::CellInput::grain_size)
-    grain = mapped(solid, f::grain_size, 1);
+    grain = mapped(solid, f::grain_size.name, 1);
   if (law_->cell_input() == exchange::CellInput::permeability)
-    permeability = mapped(solid, f::permeability, 1);
+    permeability = mapped(solid, f::permeability.name, 1);
 
   std::vector<double> volume(cells);
   for (std::size_t c = 0; c < cells; ++c) volume[c] = exchange_mesh.control_volume(c);
@@ -130,7 +129,7 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const Ph
   // solid, the momentum the fluid wrote that it gave it.
   auto impulse_to = [&](const PhaseSide& side, const std::string& from_key, const Mesh& from,
                         std::size_t from_version, const std::vector<double>& impulse) {
-    const std::string& mesh = side.spec->reads.at(f::impulse);
+    const std::string& mesh = side.spec->reads.at(f::momentum_exchange_impulse.name);
     return map(fmt::format("momentum:{}->{}.{}", from_key, side.spec->name, mesh), from,
                from_version, side.mesh(mesh), side.version(mesh), mapping::Constraint::conservative,
                impulse, dim);
@@ -144,12 +143,12 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const Ph
     // The law gives +infinity where no pore is left; the fluid gets a
     // finite impermeable value.
     for (double& k : drag) k = std::min(k, impermeable_drag);
-    const std::string& drag_mesh = fluid.spec->reads.at(f::drag_coefficient);
+    const std::string& drag_mesh = fluid.spec->reads.at(f::drag_coefficient.name);
     out.drag_coefficient = map(fmt::format("momentum:exchange->{}.{}", fluid.spec->name, drag_mesh),
                                exchange_mesh, exchange_version, fluid.mesh(drag_mesh),
                                fluid.version(drag_mesh), mapping::Constraint::consistent, drag, 1);
-    const std::string& from_mesh = fluid.spec->writes.at(f::impulse);
-    given = &fluid.written->at(f::impulse);
+    const std::string& from_mesh = fluid.spec->writes.at(f::momentum_exchange_impulse.name);
+    given = &fluid.written->at(f::momentum_exchange_impulse.name);
     out.solid = impulse_to(solid, fluid.spec->name + "." + from_mesh, fluid.mesh(from_mesh),
                            fluid.version(from_mesh), *given);
   }
@@ -172,8 +171,8 @@ namespace cosim::cplscheme {
 
 std::optional<ExplicitStabilityBound> MomentumExchangeStep::explicit_window_bound(
     const PhaseSide& fluid, const PhaseSide& solid, OperatorCache& operators) const {
-  if (!mesh_of(fluid, f::pore_fluid_bulk_modulus) ||
-      !fluid.written->count(f::pore_fluid_bulk_modulus))
+  if (!mesh_of(fluid, f::pore_fluid_bulk_modulus.name) ||
+      !fluid.written->count(f::pore_fluid_bulk_modulus.name))
     return std::nullopt;
   const PhaseSide& owner = spec_.mesh_owner == spec_.fluid ? fluid : solid;
   const Mesh& exchange_mesh = owner.mesh(spec_.mesh);
@@ -181,10 +180,10 @@ std::optional<ExplicitStabilityBound> MomentumExchangeStep::explicit_window_boun
   auto mapped = [&](const PhaseSide& side, const char* field) {
     return on_exchange_mesh(side, field, 1, exchange_mesh, version, operators);
   };
-  return undrained_wave_bound(exchange_mesh, mapped(solid, f::solid_fraction),
-                              mapped(solid, f::solid_bulk_density),
-                              mapped(fluid, f::fluid_bulk_density),
-                              mapped(fluid, f::pore_fluid_bulk_modulus));
+  return undrained_wave_bound(exchange_mesh, mapped(solid, f::solid_fraction.name),
+                              mapped(solid, f::solid_bulk_density.name),
+                              mapped(fluid, f::fluid_bulk_density.name),
+                              mapped(fluid, f::pore_fluid_bulk_modulus.name));
 }
 
 }  // namespace cosim::cplscheme

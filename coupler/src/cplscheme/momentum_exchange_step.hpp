@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "cosim/com/handshake.hpp"
-#include "cosim/exchange/drag_law.hpp"
-#include "cosim/job/job.hpp"
+#include "com/handshake.hpp"
+#include "exchange/drag_law.hpp"
+#include "job/job.hpp"
 #include "explicit_stability.hpp"
 #include "operator_cache.hpp"
 #include "phase_side.hpp"
@@ -16,7 +16,7 @@
 namespace cosim::cplscheme {
 
 // The coupler's implicit momentum exchange of a fluid and a porous solid
-// (DESIGN.md §4; Tran et al., MPMICE, eq. 131): the phases' fields are
+// (architecture.md §4; Tran et al., MPMICE, eq. 131): the phases' fields are
 // mapped consistently onto the exchange mesh, the 2x2 exchange is solved per
 // cell with beta = window K / rho_bar, and the momentum each phase receives
 // is mapped conservatively back to it. Momentum is conserved to round-off.

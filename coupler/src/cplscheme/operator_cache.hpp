@@ -3,7 +3,7 @@
 #include <map>
 #include <string>
 
-#include "cosim/mapping/build_operator.hpp"
+#include "mapping/build_operator.hpp"
 #include "cosim/mesh.hpp"
 
 namespace cosim::cplscheme {

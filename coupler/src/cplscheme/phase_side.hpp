@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "cosim/com/handshake.hpp"
-#include "cosim/job/job.hpp"
+#include "com/handshake.hpp"
+#include "job/job.hpp"
 #include "cosim/mesh.hpp"
 
 namespace cosim::cplscheme {

@@ -1,4 +1,4 @@
-#include "cosim/exchange/beetstra.hpp"
+#include "exchange/beetstra.hpp"
 
 #include <cmath>
 #include <limits>

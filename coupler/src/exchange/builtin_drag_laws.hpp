@@ -4,8 +4,8 @@
 #include <optional>
 #include <string>
 
-#include "cosim/exchange/drag_law.hpp"
-#include "cosim/exchange/drag_parameters.hpp"
+#include "exchange/drag_law.hpp"
+#include "exchange/drag_parameters.hpp"
 
 // Factories of the built-in drag laws, each defined next to its law.
 namespace cosim::exchange::detail {

@@ -1,4 +1,4 @@
-#include "cosim/exchange/constant_drag.hpp"
+#include "exchange/constant_drag.hpp"
 
 #include "builtin_drag_laws.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cosim/exchange/drag_law.hpp"
+#include "exchange/drag_law.hpp"
 
 namespace cosim::exchange {
 

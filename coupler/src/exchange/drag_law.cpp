@@ -1,4 +1,4 @@
-#include "cosim/exchange/drag_law.hpp"
+#include "exchange/drag_law.hpp"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 
 #include "builtin_drag_laws.hpp"
 #include "cosim/error.hpp"
-#include "cosim/exchange/drag_parameters.hpp"
+#include "exchange/drag_parameters.hpp"
 
 namespace cosim::exchange {
 

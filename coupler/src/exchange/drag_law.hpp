@@ -11,7 +11,7 @@ class Node;
 }
 
 // Drag-coefficient laws for the momentum exchange between a fluid and a
-// porous solid (DESIGN.md §4). A law gives K [kg m^-3 s^-1] such that the drag
+// porous solid (architecture.md §4). A law gives K [kg m^-3 s^-1] such that the drag
 // on the fluid per unit mixture volume is f_d = K (U_s - U_f) (Tran et al.,
 // MPMICE, eq. 24); the solid receives -f_d.
 namespace cosim::exchange {

@@ -1,4 +1,4 @@
-#include "cosim/exchange/drag_parameters.hpp"
+#include "exchange/drag_parameters.hpp"
 
 #include <cmath>
 #include <utility>

@@ -1,4 +1,4 @@
-#include "cosim/exchange/forchheimer.hpp"
+#include "exchange/forchheimer.hpp"
 
 #include <cmath>
 #include <limits>

@@ -2,7 +2,7 @@
 
 #include <optional>
 
-#include "cosim/exchange/drag_law.hpp"
+#include "exchange/drag_law.hpp"
 
 namespace cosim::exchange {
 

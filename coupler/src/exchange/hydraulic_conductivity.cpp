@@ -1,4 +1,4 @@
-#include "cosim/exchange/hydraulic_conductivity.hpp"
+#include "exchange/hydraulic_conductivity.hpp"
 
 namespace cosim::exchange {
 

@@ -1,4 +1,4 @@
-#include "cosim/exchange/kozeny_carman.hpp"
+#include "exchange/kozeny_carman.hpp"
 
 #include <limits>
 

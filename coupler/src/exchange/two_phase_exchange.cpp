@@ -1,4 +1,4 @@
-#include "cosim/exchange/two_phase_exchange.hpp"
+#include "exchange/two_phase_exchange.hpp"
 
 #include <fmt/format.h>
 

@@ -2,10 +2,10 @@
 
 #include <span>
 
-#include "cosim/exchange/drag_law.hpp"
+#include "exchange/drag_law.hpp"
 
 // The coupler's per-window momentum exchange between a fluid and a porous
-// solid on the cells of the exchange mesh (DESIGN.md §4). Arrays run over
+// solid on the cells of the exchange mesh (architecture.md §4). Arrays run over
 // cells; vector quantities are element-major with `dim` components per cell
 // (u[cell * dim + k]).
 namespace cosim::exchange {

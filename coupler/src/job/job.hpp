@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "cosim/com/handshake.hpp"
+#include "com/handshake.hpp"
 #include "cosim/config/schema.hpp"
 #include "cosim/error.hpp"
-#include "cosim/mapping/constraint.hpp"
+#include "mapping/constraint.hpp"
 #include "cosim/mesh.hpp"
 
 // A coupled run as its YAML `kind: job` file describes it, validated in full
@@ -58,7 +58,7 @@ struct ZmqSpec {
 
 // Who solves the implicit momentum exchange of a fluid and a porous solid:
 //   coupler  once per window on the exchange mesh; both phases read the
-//            momentum they receive (DESIGN.md §4);
+//            momentum they receive (architecture.md §4);
 //   fluid    the fluid, inside each of its own steps (Tran et al., MPMICE,
 //            eqs. 48 and 67-68 with the solid as one of the materials): the
 //            coupler evaluates the drag law once per window and sends K as
@@ -70,8 +70,8 @@ struct ZmqSpec {
 enum class ExchangeSolver { coupler, fluid };
 
 // The implicit momentum exchange between a fluid and a porous solid on the
-// cells of one participant's mesh (DESIGN.md §4). The phases' fields have
-// fixed names (see momentum_exchange_fields).
+// cells of one participant's mesh (architecture.md §4). The phases' fields have
+// fixed names (cosim/fields.hpp).
 struct MomentumExchangeSpec {
   std::string fluid;
   std::string solid;
@@ -89,7 +89,7 @@ struct MomentumExchangeSpec {
 // volume the fluid receives
 //   q = (T_s - T_f) / (1 / (dt H) + 1 / C_f + 1 / C_s),  C = rhobar c,
 // and the solid -q, so the phases' temperatures relax implicitly and the
-// energy is conserved to round-off. Field names in energy_exchange_fields.
+// energy is conserved to round-off. Field names in cosim/fields.hpp.
 struct EnergyExchangeSpec {
   std::string fluid;
   std::string solid;
@@ -99,50 +99,8 @@ struct EnergyExchangeSpec {
   SourceLocation where;
 };
 
-namespace momentum_exchange_fields {
-// written by the solid
-inline constexpr const char* solid_fraction = "solid_fraction";          // phi_s [1]
-inline constexpr const char* solid_velocity = "solid_velocity";          // U_s [m/s]
-inline constexpr const char* solid_bulk_density = "solid_bulk_density";  // rho_bar_s [kg/m^3]
-inline constexpr const char* grain_size = "grain_size";      // [m], laws reading it per cell
-inline constexpr const char* permeability = "permeability";  // [m^2], idem
-// sum_i phi_i U_i [m/s], for fluids that take the solids' displaced volume
-// from it (an optional read: where a held body shares a cell with a moving
-// one it differs from phi_s U_s)
-inline constexpr const char* solid_volume_flux = "solid_volume_flux";
-// written by the fluid
-inline constexpr const char* fluid_velocity = "fluid_velocity";          // U_f [m/s]
-inline constexpr const char* fluid_bulk_density = "fluid_bulk_density";  // rho_bar_f [kg/m^3]
-// K_f [Pa]: the bulk modulus of the fluid (mixture) in the pores, an optional
-// write of compressible fluids, from which the coupler bounds the window of
-// an explicit exchange (the undrained wave, DESIGN.md §3)
-inline constexpr const char* pore_fluid_bulk_modulus = "pore_fluid_bulk_modulus";
-// read by both: the momentum each receives over the window [kg m/s]
-// (extensive, window integral, one component per dimension)
-inline constexpr const char* impulse = "momentum_exchange_impulse";
-// read by the fluid when it solves the exchange inside its own steps
-// (`solved_by: fluid`): the law's K per cell [kg m^-3 s^-1]
-inline constexpr const char* drag_coefficient = "drag_coefficient";
-}  // namespace momentum_exchange_fields
-
-// The implicit energy exchange between a fluid and a solid (Tran et al.,
-// MPMICE, eq. 23), solved by the coupler once per window like the momentum
-// exchange.
-namespace energy_exchange_fields {
-// written by the solid and by the fluid
-inline constexpr const char* solid_temperature = "solid_temperature";  // T_s [K]
-inline constexpr const char* solid_heat_capacity =
-    "solid_heat_capacity";                                             // rho_bar_s c_s [J/(m^3 K)]
-inline constexpr const char* fluid_temperature = "fluid_temperature";  // T_f [K]
-inline constexpr const char* fluid_heat_capacity =
-    "fluid_heat_capacity";  // sum rho_bar_f c_v [J/(m^3 K)]
-// read by both: the heat each receives over the window [J] (extensive,
-// window integral, one component)
-inline constexpr const char* heat = "heat_exchange_energy";
-}  // namespace energy_exchange_fields
-
 // How the coupler treats a window longer than the explicit coupling's
-// stability bound (DESIGN.md §3): it warns above the bound, and refuses the
+// stability bound (architecture.md §3): it warns above the bound, and refuses the
 // run before its first window above `refuse_above` times the bound, unless
 // the job accepts it.
 struct StabilityCheck {

@@ -1,4 +1,4 @@
-#include "cosim/job/job.hpp"
+#include "job/job.hpp"
 
 namespace cosim::job {
 
@@ -12,7 +12,7 @@ Schema mesh_schema() {
       "starts.");
   s.required("kind",
              Schema::one_of({"uniform_grid", "nonuniform_line", "point_cloud", "cell_cloud"}),
-             "Mesh kind (DESIGN.md §5).")
+             "Mesh kind (architecture.md §5).")
       .required("dim", Schema::integer().range(1, 3), "Spatial dimension.");
   return s;
 }
@@ -70,7 +70,7 @@ Schema zmq_schema() {
 
 Schema stability_check_schema() {
   Schema s = Schema::object(
-      "The explicit coupling's window against its stability bound (DESIGN.md §3): with a "
+      "The explicit coupling's window against its stability bound (architecture.md §3): with a "
       "momentum exchange and a compressible fluid, the coupler computes from window 0 the time "
       "the pore fluid's undrained pressure wave takes across an exchange cell, warns when the "
       "window is longer, and refuses the run before its first window when it is much longer.");

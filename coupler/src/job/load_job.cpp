@@ -5,11 +5,12 @@
 #include <cmath>
 #include <string_view>
 
-#include "cosim/com/transport.hpp"
+#include "com/transport.hpp"
 #include "cosim/config/document.hpp"
-#include "cosim/exchange/drag_law.hpp"
+#include "exchange/drag_law.hpp"
+#include "cosim/fields.hpp"
 #include "cosim/io/content_hash.hpp"
-#include "cosim/job/job.hpp"
+#include "job/job.hpp"
 
 namespace cosim::job {
 
@@ -126,10 +127,10 @@ void check_exchanges(Job& job, const config::Node& root) {
 void check_reads_provided(const Job& job, const config::Node& root) {
   for (const auto& p : job.participants)
     for (const auto& [field, mesh] : p.reads) {
-      if (job.momentum_exchange && (field == momentum_exchange_fields::impulse ||
-                                    field == momentum_exchange_fields::drag_coefficient))
+      if (job.momentum_exchange && (field == fields::momentum_exchange_impulse.name ||
+                                    field == fields::drag_coefficient.name))
         continue;
-      if (job.energy_exchange && field == energy_exchange_fields::heat) continue;
+      if (job.energy_exchange && field == fields::heat_exchange_energy.name) continue;
       const bool provided = std::any_of(job.exchanges.begin(), job.exchanges.end(), [&](auto& x) {
         return x.to == p.name && x.field == field;
       });
@@ -193,7 +194,7 @@ class PhasePair {
 };
 
 MomentumExchangeSpec read_momentum_exchange(const Job& job, const config::Node& m) {
-  namespace f = momentum_exchange_fields;
+  namespace f = fields;
   const PhasePair pair(job, m, "momentum");
   MomentumExchangeSpec spec;
   spec.where = m.location();
@@ -207,29 +208,29 @@ MomentumExchangeSpec read_momentum_exchange(const Job& job, const config::Node& 
   const auto law = exchange::make_drag_law(spec.drag, spec.drag_key_path, job.file.string());
   const ParticipantSpec& fluid = *pair.fluid;
   const ParticipantSpec& solid = *pair.solid;
-  for (const char* field : {f::solid_fraction, f::solid_velocity, f::solid_bulk_density})
+  for (const char* field : {f::solid_fraction.name, f::solid_velocity.name, f::solid_bulk_density.name})
     pair.require(solid, solid.writes, field, "write");
   if (law->cell_input() == exchange::CellInput::grain_size)
-    pair.require(solid, solid.writes, f::grain_size, "write");
+    pair.require(solid, solid.writes, f::grain_size.name, "write");
   if (law->cell_input() == exchange::CellInput::permeability)
-    pair.require(solid, solid.writes, f::permeability, "write");
-  for (const char* field : {f::fluid_velocity, f::fluid_bulk_density})
+    pair.require(solid, solid.writes, f::permeability.name, "write");
+  for (const char* field : {f::fluid_velocity.name, f::fluid_bulk_density.name})
     pair.require(fluid, fluid.writes, field, "write");
-  pair.require(solid, solid.reads, f::impulse, "read");
+  pair.require(solid, solid.reads, f::momentum_exchange_impulse.name, "read");
   if (spec.solved_by == ExchangeSolver::coupler) {
-    pair.require(fluid, fluid.reads, f::impulse, "read");
-    if (fluid.reads.count(f::drag_coefficient))
+    pair.require(fluid, fluid.reads, f::momentum_exchange_impulse.name, "read");
+    if (fluid.reads.count(f::drag_coefficient.name))
       m.fail(fmt::format("participant '{}' reads '{}', which only `solved_by: fluid` sends",
-                         fluid.name, f::drag_coefficient));
+                         fluid.name, f::drag_coefficient.name));
   } else {
-    pair.require(fluid, fluid.reads, f::drag_coefficient, "read");
-    pair.require(fluid, fluid.writes, f::impulse, "write");
+    pair.require(fluid, fluid.reads, f::drag_coefficient.name, "read");
+    pair.require(fluid, fluid.writes, f::momentum_exchange_impulse.name, "write");
   }
   return spec;
 }
 
 EnergyExchangeSpec read_energy_exchange(const Job& job, const config::Node& m) {
-  namespace f = energy_exchange_fields;
+  namespace f = fields;
   const PhasePair pair(job, m, "energy");
   EnergyExchangeSpec spec;
   spec.where = m.location();
@@ -240,12 +241,12 @@ EnergyExchangeSpec read_energy_exchange(const Job& job, const config::Node& m) {
   spec.coefficient = m["coefficient"].as<double>();
   const ParticipantSpec& fluid = *pair.fluid;
   const ParticipantSpec& solid = *pair.solid;
-  for (const char* field : {f::solid_temperature, f::solid_heat_capacity})
+  for (const char* field : {f::solid_temperature.name, f::solid_heat_capacity.name})
     pair.require(solid, solid.writes, field, "write");
-  for (const char* field : {f::fluid_temperature, f::fluid_heat_capacity})
+  for (const char* field : {f::fluid_temperature.name, f::fluid_heat_capacity.name})
     pair.require(fluid, fluid.writes, field, "write");
-  pair.require(fluid, fluid.reads, f::heat, "read");
-  pair.require(solid, solid.reads, f::heat, "read");
+  pair.require(fluid, fluid.reads, f::heat_exchange_energy.name, "read");
+  pair.require(solid, solid.reads, f::heat_exchange_energy.name, "read");
   return spec;
 }
 

@@ -1,4 +1,4 @@
-#include "cosim/mapping/bounded_redistribution.hpp"
+#include "mapping/bounded_redistribution.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "cosim/mapping/constraint.hpp"
+#include "mapping/constraint.hpp"
 
 namespace cosim::mapping::detail {
 

@@ -1,4 +1,4 @@
-#include "cosim/mapping/build_operator.hpp"
+#include "mapping/build_operator.hpp"
 
 #include <string>
 #include <utility>

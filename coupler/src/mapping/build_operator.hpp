@@ -1,7 +1,7 @@
 #pragma once
 
-#include "cosim/mapping/constraint.hpp"
-#include "cosim/mapping/operator.hpp"
+#include "mapping/constraint.hpp"
+#include "mapping/operator.hpp"
 #include "cosim/mesh.hpp"
 
 namespace cosim::mapping {

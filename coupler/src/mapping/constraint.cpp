@@ -1,4 +1,4 @@
-#include "cosim/mapping/constraint.hpp"
+#include "mapping/constraint.hpp"
 
 #include <string>
 

@@ -6,7 +6,7 @@
 #include "cosim/field.hpp"
 
 // What a mapping operator preserves, and the kernel it uses between clouds
-// and grids (DESIGN.md §5).
+// and grids (architecture.md §5).
 namespace cosim::mapping {
 
 enum class Constraint : std::uint8_t {

@@ -1,4 +1,4 @@
-#include "cosim/mapping/operator.hpp"
+#include "mapping/operator.hpp"
 
 #include <Eigen/Core>
 #include <string>

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "cosim/mapping/constraint.hpp"
+#include "mapping/constraint.hpp"
 
 namespace cosim::mapping {
 

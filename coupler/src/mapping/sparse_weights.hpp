@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "cosim/mapping/operator.hpp"
+#include "mapping/operator.hpp"
 
 // Helpers to build compressed row-major weights directly (no triplets).
 namespace cosim::mapping::detail {

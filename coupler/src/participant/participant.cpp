@@ -12,9 +12,9 @@
 #include <cstdlib>
 #include <limits>
 
-#include "cosim/com/handshake.hpp"
-#include "cosim/com/mpi_transport.hpp"
-#include "cosim/com/zmq_transport.hpp"
+#include "com/handshake.hpp"
+#include "com/mpi_transport.hpp"
+#include "com/zmq_transport.hpp"
 #include "cosim/error.hpp"
 #include "cosim/runtime/stop_request.hpp"
 

@@ -1,4 +1,4 @@
-#include "cosim/runtime/mpi_launch.hpp"
+#include "runtime/mpi_launch.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>

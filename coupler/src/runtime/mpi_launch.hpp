@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "cosim/job/job.hpp"
+#include "job/job.hpp"
 
 namespace cosim::runtime {
 

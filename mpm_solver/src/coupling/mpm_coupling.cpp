@@ -19,19 +19,6 @@ namespace mpm::coupling {
 
 namespace {
 
-cosim::FieldSpec field(const char* name, const char* mesh, int components, const char* unit,
-                       cosim::Quantity quantity = cosim::Quantity::intensive,
-                       cosim::TimeTreatment time = cosim::TimeTreatment::state) {
-  cosim::FieldSpec f;
-  f.name = name;
-  f.mesh = mesh;
-  f.components = components;
-  f.unit = unit;
-  f.quantity = quantity;
-  f.time = time;
-  return f;
-}
-
 template <int Dim>
 std::span<const double> flat(const std::vector<Vec<Dim>>& v) {
   return {v.empty() ? nullptr : v.front().data(), v.size() * static_cast<std::size_t>(Dim)};
@@ -49,16 +36,20 @@ struct MpmCoupling<Dim>::State {
   std::optional<SurfaceGrid<Dim>> surface;
   CouplingDiagnostics<Dim> diagnostics;
 
-  std::vector<double> cell_values;     // scratch for reads
-  std::vector<Vec<Dim>> scratch;       // per particle
-  std::vector<Vec<Dim>> force;         // per particle [N]
-  std::vector<double> particle_heat;   // per particle, this step [J]
+  std::vector<double> cell_values;    // scratch for reads
+  std::vector<Vec<Dim>> scratch;      // per particle
+  std::vector<Vec<Dim>> force;        // per particle [N]
+  std::vector<double> particle_heat;  // per particle, this step [J]
 
   State(Solver<Dim>& s, std::unique_ptr<CouplingChannel> c, CouplingSpec sp)
       : solver(s), channel(std::move(c)), spec(std::move(sp)) {}
 
-  bool exchange_writes(const char* f) const { return spec.exchange_grid && spec.exchange_grid->writes_field(f); }
-  bool exchange_reads(const char* f) const { return spec.exchange_grid && spec.exchange_grid->reads_field(f); }
+  bool exchange_writes(const char* f) const {
+    return spec.exchange_grid && spec.exchange_grid->writes_field(f);
+  }
+  bool exchange_reads(const char* f) const {
+    return spec.exchange_grid && spec.exchange_grid->reads_field(f);
+  }
   bool surface_writes(const char* f) const { return spec.surface && spec.surface->writes_field(f); }
   bool surface_reads(const char* f) const { return spec.surface && spec.surface->reads_field(f); }
 
@@ -129,17 +120,20 @@ void MpmCoupling<Dim>::State::apply(double dt, Particles<Dim>& particles) {
 }
 
 template <int Dim>
-MpmCoupling<Dim>::MpmCoupling(Solver<Dim>& solver, std::unique_ptr<CouplingChannel> channel, CouplingSpec spec)
+MpmCoupling<Dim>::MpmCoupling(Solver<Dim>& solver, std::unique_ptr<CouplingChannel> channel,
+                              CouplingSpec spec)
     : state_(std::make_shared<State>(solver, std::move(channel), std::move(spec))) {
   State& s = *state_;
   s.roles = body_roles(solver.description(), s.spec);
-  if (s.spec.exchange_grid) s.exchange = ExchangeGrid<Dim>::covering(solver.grid(), s.spec.exchange_grid->factor);
+  if (s.spec.exchange_grid)
+    s.exchange = ExchangeGrid<Dim>::covering(solver.grid(), s.spec.exchange_grid->factor);
   if (s.spec.surface) {
     const auto& cells = s.spec.surface->cells;
     if (static_cast<int>(cells.size()) != Dim - 1)
-      throw cosim::InputError(fmt::format("{}: key 'coupling.surface.cells': a {}D case has {} horizontal "
-                                          "direction(s), got {} cell count(s)",
-                                          solver.description().file.string(), Dim, Dim - 1, cells.size()));
+      throw cosim::InputError(
+          fmt::format("{}: key 'coupling.surface.cells': a {}D case has {} horizontal "
+                      "direction(s), got {} cell count(s)",
+                      solver.description().file.string(), Dim, Dim - 1, cells.size()));
     std::array<int, Dim - 1> n{};
     for (std::size_t d = 0; d + 1 < Dim; ++d) n[d] = cells[d];
     s.surface = SurfaceGrid<Dim>::covering(solver.grid(), n);
@@ -169,45 +163,40 @@ template <int Dim>
 void MpmCoupling<Dim>::declare() {
   State& s = *state_;
   namespace n = names;
-  using cosim::Quantity;
-  using cosim::TimeTreatment;
+  namespace f = cosim::fields;
   if (s.exchange) {
     s.channel->declare_mesh({n::exchange_mesh, s.exchange->mesh()});
-    auto write = [&](const char* name, int components, const char* unit, double lo) {
-      if (!s.exchange_writes(name)) return;
-      cosim::FieldSpec f = field(name, n::exchange_mesh, components, unit);
-      f.lower_bound = lo;
-      if (name == std::string(n::solid_fraction)) f.upper_bound = 1.0;
-      s.channel->declare_write(f);
+    auto write = [&](const f::Field& field, double lo) {
+      if (!s.exchange_writes(field.name)) return;
+      cosim::FieldSpec spec = field.on(n::exchange_mesh, Dim);
+      spec.lower_bound = lo;
+      if (&field == &f::solid_fraction) spec.upper_bound = 1.0;
+      s.channel->declare_write(spec);
     };
     const double none = -std::numeric_limits<double>::infinity();
-    write(n::solid_fraction, 1, "1", 0.0);
-    write(n::solid_velocity, Dim, "m/s", none);
-    write(n::solid_bulk_density, 1, "kg/m^3", 0.0);
-    write(n::permeability, 1, "m^2", 0.0);
-    write(n::grain_size, 1, "m", 0.0);
-    write(n::solid_volume_flux, Dim, "m/s", none);
-    write(n::solid_temperature, 1, "K", 0.0);
-    write(n::solid_heat_capacity, 1, "J/(m^3 K)", 0.0);
-    if (s.exchange_reads(n::pore_pressure))
-      s.channel->declare_read(field(n::pore_pressure, n::exchange_mesh, 1, "Pa"),
-                              s.spec.exchange_grid->initial_pore_pressure);
-    if (s.exchange_reads(n::pore_pressure_force))
-      s.channel->declare_read(field(n::pore_pressure_force, n::exchange_mesh, Dim, "N", Quantity::extensive), 0.0);
-    if (s.exchange_reads(n::impulse))
-      s.channel->declare_read(
-          field(n::impulse, n::exchange_mesh, Dim, "kg m/s", Quantity::extensive, TimeTreatment::integral), 0.0);
-    if (s.exchange_reads(n::heat))
-      s.channel->declare_read(
-          field(n::heat, n::exchange_mesh, 1, "J", Quantity::extensive, TimeTreatment::integral),
-          0.0);
+    write(f::solid_fraction, 0.0);
+    write(f::solid_velocity, none);
+    write(f::solid_bulk_density, 0.0);
+    write(f::permeability, 0.0);
+    write(f::grain_size, 0.0);
+    write(f::solid_volume_flux, none);
+    write(f::solid_temperature, 0.0);
+    write(f::solid_heat_capacity, 0.0);
+    auto read = [&](const f::Field& field, double default_value) {
+      if (s.exchange_reads(field.name))
+        s.channel->declare_read(field.on(n::exchange_mesh, Dim), default_value);
+    };
+    read(f::pore_pressure, s.spec.exchange_grid->initial_pore_pressure);
+    read(f::pore_pressure_force, 0.0);
+    read(f::momentum_exchange_impulse, 0.0);
+    read(f::heat_exchange_energy, 0.0);
   }
   if (s.surface) {
     s.channel->declare_mesh({n::surface_mesh, s.surface->mesh()});
     if (s.surface_writes(n::bed_elevation))
-      s.channel->declare_write(field(n::bed_elevation, n::surface_mesh, 1, "m"));
+      s.channel->declare_write(f::bed_elevation.on(n::surface_mesh, Dim));
     if (s.surface_reads(n::bed_traction))
-      s.channel->declare_read(field(n::bed_traction, n::surface_mesh, Dim, "Pa"), 0.0);
+      s.channel->declare_read(f::bed_traction.on(n::surface_mesh, Dim), 0.0);
   }
   write_fields();
 }
@@ -228,28 +217,32 @@ void MpmCoupling<Dim>::write_fields() {
   State& s = *state_;
   namespace n = names;
   const Particles<Dim>& particles = s.solver.particles();
-  const bool porous = s.exchange_writes(n::solid_fraction) ||
-                      s.exchange_writes(n::solid_velocity) ||
-                      s.exchange_writes(n::solid_bulk_density) ||
-                      s.exchange_writes(n::permeability) || s.exchange_writes(n::grain_size) ||
-                      s.exchange_writes(n::solid_volume_flux);
+  const bool porous =
+      s.exchange_writes(n::solid_fraction) || s.exchange_writes(n::solid_velocity) ||
+      s.exchange_writes(n::solid_bulk_density) || s.exchange_writes(n::permeability) ||
+      s.exchange_writes(n::grain_size) || s.exchange_writes(n::solid_volume_flux);
   if (porous) {
     const auto& g = *s.spec.exchange_grid;
-    const auto held = held_particles(particles, s.solver.grid(), s.roles, s.solver.description().boundaries,
-                                     g.hold_at_fixed_faces);
-    const PorousFields f = porous_fields(*s.exchange, particles, s.roles, held, g.held_density_factor);
+    const auto held = held_particles(particles, s.solver.grid(), s.roles,
+                                     s.solver.description().boundaries, g.hold_at_fixed_faces);
+    const PorousFields f =
+        porous_fields(*s.exchange, particles, s.roles, held, g.held_density_factor);
     if (f.capped_cells > 0)
-      spdlog::warn("mpm coupling: solid fraction above 1 capped in {} exchange cell(s) at t = {:.6g} s",
-                   f.capped_cells, s.solver.time());
+      spdlog::warn(
+          "mpm coupling: solid fraction above 1 capped in {} exchange cell(s) at t = {:.6g} s",
+          f.capped_cells, s.solver.time());
     s.diagnostics.capped_solid_fraction_cells += f.capped_cells;
     s.diagnostics.overfilled_cells += f.overfilled_cells;
-    s.diagnostics.held_cells = static_cast<std::size_t>(std::count(f.held.begin(), f.held.end(), 1));
+    s.diagnostics.held_cells =
+        static_cast<std::size_t>(std::count(f.held.begin(), f.held.end(), 1));
     if (s.exchange_writes(n::solid_fraction)) s.channel->write(n::solid_fraction, f.solid_fraction);
     if (s.exchange_writes(n::solid_velocity)) s.channel->write(n::solid_velocity, f.solid_velocity);
-    if (s.exchange_writes(n::solid_bulk_density)) s.channel->write(n::solid_bulk_density, f.solid_bulk_density);
+    if (s.exchange_writes(n::solid_bulk_density))
+      s.channel->write(n::solid_bulk_density, f.solid_bulk_density);
     if (s.exchange_writes(n::permeability)) s.channel->write(n::permeability, f.permeability);
     if (s.exchange_writes(n::grain_size)) s.channel->write(n::grain_size, f.grain_size);
-    if (s.exchange_writes(n::solid_volume_flux)) s.channel->write(n::solid_volume_flux, f.solid_volume_flux);
+    if (s.exchange_writes(n::solid_volume_flux))
+      s.channel->write(n::solid_volume_flux, f.solid_volume_flux);
   }
   if (s.exchange_writes(n::solid_temperature) || s.exchange_writes(n::solid_heat_capacity)) {
     const ThermalFields f = thermal_fields(*s.exchange, particles);
@@ -259,7 +252,8 @@ void MpmCoupling<Dim>::write_fields() {
       s.channel->write(n::solid_heat_capacity, f.solid_heat_capacity);
   }
   if (s.surface && s.surface_writes(n::bed_elevation))
-    s.channel->write(n::bed_elevation, bed_elevation(*s.surface, particles, s.roles, s.spec.surface->strips));
+    s.channel->write(n::bed_elevation,
+                     bed_elevation(*s.surface, particles, s.roles, s.spec.surface->strips));
   ++s.diagnostics.writes;
 }
 
@@ -281,14 +275,18 @@ const CouplingDiagnostics<Dim>& MpmCoupling<Dim>::diagnostics() const {
 }
 
 template <int Dim>
-std::unique_ptr<MpmCoupling<Dim>> attach_coupling(Solver<Dim>& solver, cosim::Participant& participant,
+std::unique_ptr<MpmCoupling<Dim>> attach_coupling(Solver<Dim>& solver,
+                                                  cosim::Participant& participant,
                                                   const CouplingSpec& spec) {
-  return std::make_unique<MpmCoupling<Dim>>(solver, std::make_unique<ParticipantChannel>(participant), spec);
+  return std::make_unique<MpmCoupling<Dim>>(
+      solver, std::make_unique<ParticipantChannel>(participant), spec);
 }
 
 template class MpmCoupling<2>;
 template class MpmCoupling<3>;
-template std::unique_ptr<MpmCoupling<2>> attach_coupling<2>(Solver<2>&, cosim::Participant&, const CouplingSpec&);
-template std::unique_ptr<MpmCoupling<3>> attach_coupling<3>(Solver<3>&, cosim::Participant&, const CouplingSpec&);
+template std::unique_ptr<MpmCoupling<2>> attach_coupling<2>(Solver<2>&, cosim::Participant&,
+                                                            const CouplingSpec&);
+template std::unique_ptr<MpmCoupling<3>> attach_coupling<3>(Solver<3>&, cosim::Participant&,
+                                                            const CouplingSpec&);
 
 }  // namespace mpm::coupling

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "cosim/bench/terzaghi_consolidation.hpp"
+#include "bench/terzaghi_consolidation.hpp"
 
 // The pore-pressure profile of a consolidating column, read from a gauges.csv
 // of pressures along it, against Terzaghi's solution.

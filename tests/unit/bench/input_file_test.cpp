@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "bench_scratch.hpp"
-#include "cosim/bench/input_file.hpp"
+#include "bench/input_file.hpp"
 #include "cosim/error.hpp"
 
 namespace cosim::bench {

@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include "bench_scratch.hpp"
-#include "cosim/bench/analytic_solution.hpp"
-#include "cosim/bench/darcy_column.hpp"
-#include "cosim/bench/metric.hpp"
+#include "bench/analytic_solution.hpp"
+#include "bench/darcy_column.hpp"
+#include "bench/metric.hpp"
 
 namespace cosim::bench {
 namespace {

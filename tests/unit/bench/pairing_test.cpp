@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "bench_scratch.hpp"
-#include "cosim/bench/pairing.hpp"
+#include "bench/pairing.hpp"
 #include "cosim/error.hpp"
 
 namespace cosim::bench {

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "bench_scratch.hpp"
-#include "cosim/bench/quantity.hpp"
+#include "bench/quantity.hpp"
 #include "cosim/io/snapshot_reader.hpp"
 #include "cosim/io/snapshot_writer.hpp"
 

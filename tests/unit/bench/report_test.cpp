@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
 #include "bench_scratch.hpp"
-#include "cosim/bench/csv_table.hpp"
-#include "cosim/bench/report.hpp"
+#include "bench/csv_table.hpp"
+#include "bench/report.hpp"
 
 namespace cosim::bench {
 namespace {

@@ -3,7 +3,7 @@
 #include <fstream>
 
 #include "bench_scratch.hpp"
-#include "cosim/bench/runner.hpp"
+#include "bench/runner.hpp"
 
 namespace cosim::bench {
 namespace {

@@ -3,7 +3,7 @@
 #include <string>
 
 #include "bench_scratch.hpp"
-#include "cosim/bench/suite.hpp"
+#include "bench/suite.hpp"
 #include "cosim/error.hpp"
 
 namespace cosim::bench {

@@ -1,4 +1,4 @@
-#include "cosim/com/message.hpp"
+#include "com/message.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-#include "cosim/com/handshake.hpp"
+#include "com/handshake.hpp"
 #include "cosim/error.hpp"
 
 namespace cosim::com {

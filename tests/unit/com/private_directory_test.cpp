@@ -1,4 +1,4 @@
-#include "private_directory.hpp"
+#include "com/private_directory.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>

@@ -1,4 +1,4 @@
-#include "cosim/com/zmq_transport.hpp"
+#include "com/zmq_transport.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

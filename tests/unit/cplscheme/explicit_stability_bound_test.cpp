@@ -1,4 +1,4 @@
-#include "explicit_stability.hpp"
+#include "cplscheme/explicit_stability.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "cosim/exchange/drag_law.hpp"
+#include "exchange/drag_law.hpp"
 
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
@@ -8,12 +8,12 @@
 #include <string>
 
 #include "cosim/error.hpp"
-#include "cosim/exchange/beetstra.hpp"
-#include "cosim/exchange/constant_drag.hpp"
-#include "cosim/exchange/drag_parameters.hpp"
-#include "cosim/exchange/forchheimer.hpp"
-#include "cosim/exchange/hydraulic_conductivity.hpp"
-#include "cosim/exchange/kozeny_carman.hpp"
+#include "exchange/beetstra.hpp"
+#include "exchange/constant_drag.hpp"
+#include "exchange/drag_parameters.hpp"
+#include "exchange/forchheimer.hpp"
+#include "exchange/hydraulic_conductivity.hpp"
+#include "exchange/kozeny_carman.hpp"
 
 namespace cosim::exchange {
 namespace {

@@ -1,4 +1,4 @@
-#include "cosim/exchange/two_phase_exchange.hpp"
+#include "exchange/two_phase_exchange.hpp"
 
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "cosim/error.hpp"
-#include "cosim/exchange/constant_drag.hpp"
-#include "cosim/exchange/drag_law.hpp"
+#include "exchange/constant_drag.hpp"
+#include "exchange/drag_law.hpp"
 #include "cosim/exchange/implicit_exchange.hpp"
-#include "cosim/exchange/kozeny_carman.hpp"
+#include "exchange/kozeny_carman.hpp"
 
 namespace cosim::exchange {
 namespace {

@@ -1,7 +1,7 @@
 // Job files are checked in full before anything starts: every mistake is an
 // InputError (exit code 2) naming the file, line, column and key path.
 
-#include "cosim/job/job.hpp"
+#include "job/job.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

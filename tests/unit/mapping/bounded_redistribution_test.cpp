@@ -1,4 +1,4 @@
-#include "cosim/mapping/bounded_redistribution.hpp"
+#include "mapping/bounded_redistribution.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <random>
 
 #include "cosim/error.hpp"
-#include "cosim/mapping/build_operator.hpp"
+#include "mapping/build_operator.hpp"
 #include "mapping_test_support.hpp"
 
 namespace cosim::mapping {

@@ -4,7 +4,7 @@
 #include <random>
 
 #include "cosim/error.hpp"
-#include "cosim/mapping/build_operator.hpp"
+#include "mapping/build_operator.hpp"
 #include "mapping_test_support.hpp"
 
 namespace cosim::mapping {

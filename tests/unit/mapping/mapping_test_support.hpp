@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-#include "cosim/mapping/operator.hpp"
+#include "mapping/operator.hpp"
 #include "cosim/mesh.hpp"
 
 // Random geometries and the measures the mapping property tests share.

@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "cosim/error.hpp"
-#include "cosim/mapping/build_operator.hpp"
+#include "mapping/build_operator.hpp"
 #include "mapping_test_support.hpp"
 
 namespace cosim::mapping {

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <random>
 
-#include "cosim/mapping/build_operator.hpp"
+#include "mapping/build_operator.hpp"
 #include "mapping_test_support.hpp"
 
 namespace cosim::mapping {

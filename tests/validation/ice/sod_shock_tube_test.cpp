@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "cosim/bench/gas_riemann_problem.hpp"
+#include "bench/gas_riemann_problem.hpp"
 #include "ice_validation_run.hpp"
 
 namespace ice {

@@ -13,7 +13,7 @@
 #include <cmath>
 #include <string>
 
-#include "cosim/bench/darcy_column.hpp"
+#include "bench/darcy_column.hpp"
 #include "replaced_text.hpp"
 #include "run_process.hpp"
 

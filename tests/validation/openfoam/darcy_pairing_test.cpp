@@ -24,7 +24,7 @@
 #include <iterator>
 #include <string>
 
-#include "cosim/bench/darcy_column.hpp"
+#include "bench/darcy_column.hpp"
 #include "replaced_text.hpp"
 #include "run_process.hpp"
 

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "cosim/bench/shallow_water_dam_break.hpp"
+#include "bench/shallow_water_dam_break.hpp"
 #include "swe/solver_1d.hpp"
 
 // Dam break onto a dry flat frictionless bed (Ritter): h0 = 1 m for x < 4 m,

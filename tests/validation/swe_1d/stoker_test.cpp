@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "cosim/bench/shallow_water_dam_break.hpp"
+#include "bench/shallow_water_dam_break.hpp"
 #include "swe/solver_1d.hpp"
 
 // Stoker's dam break as in Zheng et al., Sec. 4.2: [0, 1] m, h = 1 m for

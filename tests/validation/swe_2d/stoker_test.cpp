@@ -9,7 +9,7 @@
 #include <cmath>
 #include <vector>
 
-#include "cosim/bench/shallow_water_dam_break.hpp"
+#include "bench/shallow_water_dam_break.hpp"
 #include "swe/solver_2d.hpp"
 
 namespace {

@@ -5,7 +5,7 @@
 #include <vector>
 
 // File-system helpers for run directories: output that a crash cannot leave
-// half-written (DESIGN.md §6: bad input must lose nothing already written).
+// half-written (architecture.md §6: bad input must lose nothing already written).
 namespace cosim {
 
 // Creates `directory` and its parents when missing. Throws Error (bad_input:
@@ -21,7 +21,7 @@ enum class OutputReuse {
   prepared,   // started by `cosim run`: the coupler made the directory and writes into it too
 };
 
-// Makes `directory` ready for a run (DESIGN.md §6; two runs never mix in one
+// Makes `directory` ready for a run (architecture.md §6; two runs never mix in one
 // directory). Missing or empty: created. Non-empty: refused with
 // Error(bad_input) naming it and the flags, unless `reuse` says otherwise
 // (resume and prepared keep what is there); --overwrite clears it only when

@@ -14,7 +14,7 @@
 
 namespace cosim {
 
-// The record every run leaves in `<dir>/summary.json` (DESIGN.md §6): what
+// The record every run leaves in `<dir>/summary.json` (architecture.md §6): what
 // ran, on which config, how far it got, where the wall time went, how well
 // the conserved totals held and the run's own metrics. `write()` replaces the
 // file atomically and may be called as often as wanted (e.g. every N

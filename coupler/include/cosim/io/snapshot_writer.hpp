@@ -23,7 +23,7 @@ struct FieldView {
 using SnapshotFields = std::map<std::string, FieldView, std::less<>>;
 
 // Field snapshots of one mesh as HDF5 files with an XDMF 3 index that
-// ParaView opens (DESIGN.md §6).
+// ParaView opens (architecture.md §6).
 //
 // Files, all in `directory`:
 //   <base>.xdmf          temporal collection of every snapshot written so far;

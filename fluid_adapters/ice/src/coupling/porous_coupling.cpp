@@ -6,32 +6,21 @@
 #include <cmath>
 #include <limits>
 
-#include "cosim/job/job.hpp"
+#include "cosim/fields.hpp"
 #include "ice/io/state_output.hpp"
 
 namespace ice {
 
 namespace {
 
-namespace mx = cosim::job::momentum_exchange_fields;
-namespace ex = cosim::job::energy_exchange_fields;
-constexpr const char* pore_pressure = "pore_pressure";
-constexpr const char* pore_pressure_force = "pore_pressure_force";
+namespace f = cosim::fields;
 
-cosim::FieldSpec field(const char* name, int components, const char* unit) {
-  cosim::FieldSpec f;
-  f.name = name;
-  f.mesh = PorousCoupling<1>::mesh_name;
-  f.components = components;
-  f.unit = unit;
-  return f;
-}
-
-cosim::FieldSpec impulse_field(int components) {
-  cosim::FieldSpec impulse = field(mx::impulse, components, "kg m/s");
-  impulse.quantity = cosim::Quantity::extensive;
-  impulse.time = cosim::TimeTreatment::integral;
-  return impulse;
+cosim::FieldSpec field(const f::Field& field, int dimension, double lower_bound = -INFINITY,
+                       double upper_bound = INFINITY) {
+  cosim::FieldSpec spec = field.on(PorousCoupling<1>::mesh_name, dimension);
+  spec.lower_bound = lower_bound;
+  spec.upper_bound = upper_bound;
+  return spec;
 }
 
 }  // namespace
@@ -39,42 +28,24 @@ cosim::FieldSpec impulse_field(int components) {
 template <int Dim>
 void PorousCoupling<Dim>::declare(cosim::Participant& participant, IceSolver<Dim>& solver) {
   participant.declare_mesh(cell_mesh(solver.grid(), mesh_name));
-  cosim::FieldSpec fraction = field(mx::solid_fraction, 1, "1");
-  fraction.lower_bound = 0.0;
-  fraction.upper_bound = 1.0;
-  participant.declare_read(fraction, 0.0);
-  participant.declare_read(field(mx::solid_velocity, Dim, "m/s"), 0.0);
+  participant.declare_read(field(f::solid_fraction, Dim, 0.0, 1.0), 0.0);
+  participant.declare_read(field(f::solid_velocity, Dim), 0.0);
   if (description_.drag_in_solver) {
-    cosim::FieldSpec density = field(mx::solid_bulk_density, 1, "kg/m^3");
-    density.lower_bound = 0.0;
-    participant.declare_read(density, 0.0);
-    cosim::FieldSpec drag = field(mx::drag_coefficient, 1, "kg/(m^3 s)");
-    drag.lower_bound = 0.0;
-    participant.declare_read(drag, 0.0);
-    participant.declare_write(impulse_field(Dim));
+    participant.declare_read(field(f::solid_bulk_density, Dim, 0.0), 0.0);
+    participant.declare_read(field(f::drag_coefficient, Dim, 0.0), 0.0);
+    participant.declare_write(field(f::momentum_exchange_impulse, Dim));
   } else {
-    participant.declare_read(impulse_field(Dim), 0.0);
+    participant.declare_read(field(f::momentum_exchange_impulse, Dim), 0.0);
   }
-  participant.declare_write(field(pore_pressure, 1, "Pa"));
-  cosim::FieldSpec force = field(pore_pressure_force, Dim, "N");
-  force.quantity = cosim::Quantity::extensive;
-  participant.declare_write(force);
-  participant.declare_write(field(mx::fluid_velocity, Dim, "m/s"));
-  cosim::FieldSpec density = field(mx::fluid_bulk_density, 1, "kg/m^3");
-  density.lower_bound = 0.0;
-  participant.declare_write(density);
-  cosim::FieldSpec modulus = field(mx::pore_fluid_bulk_modulus, 1, "Pa");
-  modulus.lower_bound = 0.0;
-  participant.declare_write(modulus);
+  participant.declare_write(field(f::pore_pressure, Dim));
+  participant.declare_write(field(f::pore_pressure_force, Dim));
+  participant.declare_write(field(f::fluid_velocity, Dim));
+  participant.declare_write(field(f::fluid_bulk_density, Dim, 0.0));
+  participant.declare_write(field(f::pore_fluid_bulk_modulus, Dim, 0.0));
   if (description_.heat_exchange) {
-    participant.declare_write(field(ex::fluid_temperature, 1, "K"));
-    cosim::FieldSpec capacity = field(ex::fluid_heat_capacity, 1, "J/(m^3 K)");
-    capacity.lower_bound = 0.0;
-    participant.declare_write(capacity);
-    cosim::FieldSpec heat = field(ex::heat, 1, "J");
-    heat.quantity = cosim::Quantity::extensive;
-    heat.time = cosim::TimeTreatment::integral;
-    participant.declare_read(heat, 0.0);
+    participant.declare_write(field(f::fluid_temperature, Dim));
+    participant.declare_write(field(f::fluid_heat_capacity, Dim, 0.0));
+    participant.declare_read(field(f::heat_exchange_energy, Dim), 0.0);
   }
   write_fields(participant, solver);
 }
@@ -86,10 +57,10 @@ void PorousCoupling<Dim>::read_medium(const cosim::Participant& participant, Ice
   const auto dim = static_cast<std::size_t>(Dim);
   buffer_.resize(cells * dim);
   porosity_.resize(cells);
-  participant.read(mx::solid_fraction, std::span<double>(buffer_.data(), cells));
+  participant.read(f::solid_fraction.name, std::span<double>(buffer_.data(), cells));
   for (std::size_t c = 0; c < cells; ++c)
     porosity_[c] = std::clamp(1.0 - buffer_[c], description_.minimum_porosity, 1.0);
-  participant.read(mx::solid_velocity, buffer_);
+  participant.read(f::solid_velocity.name, buffer_);
   for (std::size_t d = 0; d < dim; ++d) {
     solid_velocity_[d].resize(cells);
     for (std::size_t c = 0; c < cells; ++c) solid_velocity_[d][c] = buffer_[c * dim + d];
@@ -97,8 +68,8 @@ void PorousCoupling<Dim>::read_medium(const cosim::Participant& participant, Ice
   if (description_.drag_in_solver) {
     drag_.resize(cells);
     solid_density_.resize(cells);
-    participant.read(mx::drag_coefficient, drag_);
-    participant.read(mx::solid_bulk_density, solid_density_);
+    participant.read(f::drag_coefficient.name, drag_);
+    participant.read(f::solid_bulk_density.name, solid_density_);
   }
   solver.set_porous_medium(porosity_, solid_velocity_,
                            first_window ? PorosityChange::fill_pores : PorosityChange::compress);
@@ -110,7 +81,7 @@ void PorousCoupling<Dim>::read_medium(const cosim::Participant& participant, Ice
       spdlog::warn(
           "ice coupling: the window {:.3g} s is longer than the {:.3g} s the pore water's pressure "
           "wave takes across an exchange cell holding solid; the explicit exchange of porosity "
-          "and pore pressure may be unstable (DESIGN.md §3): use window <= {:.2g} s",
+          "and pore pressure may be unstable (architecture.md §3): use window <= {:.2g} s",
           participant.window_size(), limit, limit);
     }
   }
@@ -154,19 +125,19 @@ void PorousCoupling<Dim>::exchange_step(cosim::Participant& participant, double 
       static_cast<std::size_t>(solver.grid().cell_count()) * static_cast<std::size_t>(Dim);
   if (description_.heat_exchange) {
     buffer_.resize(static_cast<std::size_t>(solver.grid().cell_count()));
-    participant.read_increment(ex::heat, dt, buffer_);
+    participant.read_increment(f::heat_exchange_energy.name, dt, buffer_);
     solver.add_heat(buffer_);
   }
   buffer_.resize(size);
   if (!description_.drag_in_solver) {
-    participant.read_increment(mx::impulse, dt, buffer_);
+    participant.read_increment(f::momentum_exchange_impulse.name, dt, buffer_);
     solver.add_momentum(buffer_);
     return;
   }
   // The impulse is an integral field: its rate over this step.
   solver.take_solid_impulse(buffer_);
   for (double& j : buffer_) j /= dt;
-  participant.write(mx::impulse, buffer_);
+  participant.write(f::momentum_exchange_impulse.name, buffer_);
 }
 
 template <int Dim>
@@ -186,12 +157,12 @@ void PorousCoupling<Dim>::write_fields(cosim::Participant& participant, IceSolve
   for (std::size_t c = 0; c < cells; ++c) {
     for (std::size_t d = 0; d < dim; ++d) velocity_[c * dim + d] /= density_[c];
   }
-  participant.write(pore_pressure, state.pressure);
+  participant.write(f::pore_pressure.name, state.pressure);
   force_.resize(cells * dim);
   solver.solid_pressure_force(force_);
-  participant.write(pore_pressure_force, force_);
-  participant.write(mx::fluid_velocity, velocity_);
-  participant.write(mx::fluid_bulk_density, density_);
+  participant.write(f::pore_pressure_force.name, force_);
+  participant.write(f::fluid_velocity.name, velocity_);
+  participant.write(f::fluid_bulk_density.name, density_);
   // The pores' fluids in series: 1 / K_f = sum_m (phi_m / n) kappa_m, the
   // coupler's bound on an explicit window (the undrained wave) reads it.
   modulus_.assign(cells, 0.0);
@@ -207,7 +178,7 @@ void PorousCoupling<Dim>::write_fields(cosim::Participant& participant, IceSolve
   }
   for (std::size_t c = 0; c < cells; ++c)
     modulus_[c] = modulus_[c] > 0.0 ? fluid_fraction[c] / modulus_[c] : 0.0;
-  participant.write(mx::pore_fluid_bulk_modulus, modulus_);
+  participant.write(f::pore_fluid_bulk_modulus.name, modulus_);
   if (description_.heat_exchange) {
     // The fluids' heat capacity and their capacity-weighted temperature.
     capacity_.assign(cells, 0.0);
@@ -221,8 +192,8 @@ void PorousCoupling<Dim>::write_fields(cosim::Participant& participant, IceSolve
       }
     }
     for (std::size_t c = 0; c < cells; ++c) temperature_[c] /= capacity_[c];
-    participant.write(ex::fluid_temperature, temperature_);
-    participant.write(ex::fluid_heat_capacity, capacity_);
+    participant.write(f::fluid_temperature.name, temperature_);
+    participant.write(f::fluid_heat_capacity.name, capacity_);
   }
 }
 

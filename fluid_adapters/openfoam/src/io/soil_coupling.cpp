@@ -6,29 +6,23 @@
 #include <utility>
 
 #include "cosim/error.hpp"
-#include "cosim/job/job.hpp"
+#include "cosim/fields.hpp"
 #include "openfoam/cloud/ergun_wen_yu.hpp"
 
 namespace openfoam {
 
 namespace {
 
-namespace mx = cosim::job::momentum_exchange_fields;
-constexpr const char* pore_pressure = "pore_pressure";
-constexpr const char* water_fraction = "water_fraction";
+namespace f = cosim::fields;
 // mpm_solver marks a held (rigid) body's bulk density above this [kg/m^3].
 constexpr double held_solid_bulk_density = 1e20;
 
-cosim::FieldSpec field(const char* name, int components, const char* unit, double lower = -INFINITY,
+cosim::FieldSpec field(const f::Field& field, int dimension, double lower = -INFINITY,
                        double upper = INFINITY) {
-  cosim::FieldSpec f;
-  f.name = name;
-  f.mesh = SoilCoupling::mesh_name;
-  f.components = components;
-  f.unit = unit;
-  f.lower_bound = lower;
-  f.upper_bound = upper;
-  return f;
+  cosim::FieldSpec spec = field.on(SoilCoupling::mesh_name, dimension);
+  spec.lower_bound = lower;
+  spec.upper_bound = upper;
+  return spec;
 }
 
 }  // namespace
@@ -49,21 +43,18 @@ double SoilCoupling::plane_volume(std::size_t c) const {
 
 void SoilCoupling::declare(cosim::Participant& participant) const {
   participant.declare_mesh(mesh_.mesh);
-  participant.declare_read(field(mx::solid_fraction, 1, "1", 0.0, 1.0), 0.0);
-  participant.declare_read(field(mx::solid_velocity, dim_, "m/s"), 0.0);
-  participant.declare_read(field(mx::drag_coefficient, 1, "kg/(m^3 s)", 0.0), 0.0);
-  participant.declare_read(field(mx::solid_bulk_density, 1, "kg/m^3", 0.0), 0.0);
-  cosim::FieldSpec flux = field(mx::solid_volume_flux, dim_, "m/s");
+  participant.declare_read(field(f::solid_fraction, dim_, 0.0, 1.0), 0.0);
+  participant.declare_read(field(f::solid_velocity, dim_), 0.0);
+  participant.declare_read(field(f::drag_coefficient, dim_, 0.0), 0.0);
+  participant.declare_read(field(f::solid_bulk_density, dim_, 0.0), 0.0);
+  cosim::FieldSpec flux = field(f::solid_volume_flux, dim_);
   flux.optional = true;
   participant.declare_read(flux, 0.0);
-  participant.declare_write(field(pore_pressure, 1, "Pa"));
-  participant.declare_write(field(mx::fluid_velocity, dim_, "m/s"));
-  participant.declare_write(field(mx::fluid_bulk_density, 1, "kg/m^3", 0.0));
-  participant.declare_write(field(water_fraction, 1, "1", 0.0, 1.0));
-  cosim::FieldSpec impulse = field(mx::impulse, dim_, "kg m/s");
-  impulse.quantity = cosim::Quantity::extensive;
-  impulse.time = cosim::TimeTreatment::integral;
-  participant.declare_write(impulse);
+  participant.declare_write(field(f::pore_pressure, dim_));
+  participant.declare_write(field(f::fluid_velocity, dim_));
+  participant.declare_write(field(f::fluid_bulk_density, dim_, 0.0));
+  participant.declare_write(field(f::water_fraction, dim_, 0.0, 1.0));
+  participant.declare_write(field(f::momentum_exchange_impulse, dim_));
 }
 
 void SoilCoupling::read_soil(const cosim::Participant& participant) {
@@ -71,15 +62,15 @@ void SoilCoupling::read_soil(const cosim::Participant& participant) {
   solid_fraction_.resize(cells);
   solid_velocity_.resize(cells * static_cast<std::size_t>(dim_));
   drag_.resize(cells);
-  participant.read(mx::solid_fraction, solid_fraction_);
-  participant.read(mx::solid_velocity, solid_velocity_);
-  participant.read(mx::drag_coefficient, drag_);
+  participant.read(f::solid_fraction.name, solid_fraction_);
+  participant.read(f::solid_velocity.name, solid_velocity_);
+  participant.read(f::drag_coefficient.name, drag_);
   solid_density_.resize(cells);
-  participant.read(mx::solid_bulk_density, solid_density_);
+  participant.read(f::solid_bulk_density.name, solid_density_);
   const auto dim = static_cast<std::size_t>(dim_);
   volume_flux_.resize(cells * dim);
-  if (participant.is_sent(mx::solid_volume_flux)) {
-    participant.read(mx::solid_volume_flux, volume_flux_);
+  if (participant.is_sent(f::solid_volume_flux.name)) {
+    participant.read(f::solid_volume_flux.name, volume_flux_);
   } else {
     for (std::size_t c = 0; c < cells; ++c) {
       const double phi_s = 1.0 - pore_fraction(c);
@@ -146,7 +137,8 @@ const SoilParcels& SoilCoupling::parcels(const cosim::Participant& participant,
     // solids' volume flux): the parcels at U_s + F / n keep the drag's U_s - u_f.
     double u[3] = {0.0, 0.0, 0.0};
     for (std::size_t k = 0; k < dim; ++k) {
-      u[k] = solid_velocity_[c * dim + k] + (soil.displaced_water ? volume_flux_[c * dim + k] / n : 0.0);
+      u[k] = solid_velocity_[c * dim + k] +
+             (soil.displaced_water ? volume_flux_[c * dim + k] / n : 0.0);
     }
     const double grain_volume = std::numbers::pi * d * d * d / 6.0;
     // A hair off the cell's centre: a parcel starting exactly there (the apex
@@ -319,11 +311,11 @@ void SoilCoupling::write_fields(cosim::Participant& participant, const FoamField
     density[c] = n * mixture_density(end, c, water_, air_);
     water[c] = std::clamp(n * end.alpha_water[c], 0.0, 1.0);
   }
-  participant.write(pore_pressure, end.p);
-  participant.write(mx::fluid_velocity, end.velocity);
-  participant.write(mx::fluid_bulk_density, density);
-  participant.write(water_fraction, water);
-  participant.write(mx::impulse, impulse_rate);
+  participant.write(f::pore_pressure.name, end.p);
+  participant.write(f::fluid_velocity.name, end.velocity);
+  participant.write(f::fluid_bulk_density.name, density);
+  participant.write(f::water_fraction.name, water);
+  participant.write(f::momentum_exchange_impulse.name, impulse_rate);
 }
 
 }  // namespace openfoam

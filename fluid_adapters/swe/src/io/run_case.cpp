@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "cosim/error.hpp"
+#include "cosim/fields.hpp"
 #include "cosim/io/files.hpp"
 #include "cosim/io/output_schedule.hpp"
 #include "cosim/io/run_summary.hpp"
@@ -26,8 +27,8 @@ namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr const char* cells_mesh = "swe_cells";
-constexpr const char* bed_field = "bed_elevation";
-constexpr const char* traction_field = "bed_traction";
+constexpr const char* bed_field = cosim::fields::bed_elevation.name;
+constexpr const char* traction_field = cosim::fields::bed_traction.name;
 
 struct WaterStats {
   double volume, eta_max, eta_min, speed_max;
@@ -64,8 +65,8 @@ nlohmann::json case_section(const CaseDescription& c, const Solver& solver) {
 
 class CaseRun {
  public:
-  CaseRun(const CaseDescription& description, const RunOptions& options, const cosim::CouplingEndpoint& endpoint,
-          cosim::RunSummary& summary)
+  CaseRun(const CaseDescription& description, const RunOptions& options,
+          const cosim::CouplingEndpoint& endpoint, cosim::RunSummary& summary)
       : c_(description),
         options_(options),
         summary_(summary),
@@ -110,10 +111,13 @@ class CaseRun {
   void declare_coupling() {
     if (!participant_.is_coupled()) return;
     participant_.declare_mesh({cells_mesh, solver_->cells()});
-    if (c_.coupling.reads_bed) participant_.declare_read({bed_field, cells_mesh, 1, "m"}, 0.0);
+    if (c_.coupling.reads_bed)
+      participant_.declare_read(cosim::fields::bed_elevation.on(cells_mesh, 1), 0.0);
     if (c_.coupling.writes_traction) {
       record_initial_surface();
-      participant_.declare_write({traction_field, cells_mesh, solver_->dimension() + 1, "Pa"});
+      // a surface of dimension d - 1 under a problem of dimension d
+      participant_.declare_write(
+          cosim::fields::bed_traction.on(cells_mesh, solver_->dimension() + 1));
       participant_.write(traction_field, bed_traction(*solver_, coupling_));
     }
   }
@@ -142,10 +146,11 @@ class CaseRun {
       snapshot_writer_.emplace(options_.output, "swe", cosim::Mesh{cells_mesh, solver_->cells()});
     if (!c_.gauges.empty()) gauges_.emplace(options_.output / "gauges.csv", c_.gauges, *solver_);
     water_.emplace(options_.output / "water.csv",
-                   std::vector<std::string>{cosim::column_name("time", "s"),
-                                            cosim::column_name("volume", solver_->dimension() == 1 ? "m^2" : "m^3"),
-                                            cosim::column_name("eta_max", "m"), cosim::column_name("eta_min", "m"),
-                                            cosim::column_name("speed_max", "m/s")});
+                   std::vector<std::string>{
+                       cosim::column_name("time", "s"),
+                       cosim::column_name("volume", solver_->dimension() == 1 ? "m^2" : "m^3"),
+                       cosim::column_name("eta_max", "m"), cosim::column_name("eta_min", "m"),
+                       cosim::column_name("speed_max", "m/s")});
   }
 
   void loop() {
@@ -163,13 +168,15 @@ class CaseRun {
       }
       const double stable = solver_->stable_time_step();
       if (!(stable >= c_.min_time_step))
-        throw cosim::NumericalError(fmt::format(
-            "the stable time step {:.4g} s fell below time.min_time_step = {:.4g} s at t = {:.9g} s (step {})",
-            stable, c_.min_time_step, t, steps_));
+        throw cosim::NumericalError(
+            fmt::format("the stable time step {:.4g} s fell below time.min_time_step = {:.4g} s at "
+                        "t = {:.9g} s (step {})",
+                        stable, c_.min_time_step, t, steps_));
       double dt = std::min(stable, participant_.max_time_step());
       if (c_.max_time_step > 0.0) dt = std::min(dt, c_.max_time_step);
-      const double next_output =
-          c_.gauge_every > 0.0 ? std::min(snapshots_.next(), gauge_times_->next()) : snapshots_.next();
+      const double next_output = c_.gauge_every > 0.0
+                                     ? std::min(snapshots_.next(), gauge_times_->next())
+                                     : snapshots_.next();
       if (next_output > t + tolerance_) dt = std::min(dt, next_output - t);
       {
         auto scope = summary_.phases().measure("advance");
@@ -192,8 +199,10 @@ class CaseRun {
       if (Clock::now() - last_progress > std::chrono::seconds(5)) {
         last_progress = Clock::now();
         const WaterStats s = water_stats(*solver_);
-        spdlog::info("t = {:.6g} s / {:.6g} s, step {}, dt = {:.3g} s, eta max {:.6g} m, speed max {:.4g} m/s", now,
-                     end_time_, steps_, dt, s.eta_max, s.speed_max);
+        spdlog::info(
+            "t = {:.6g} s / {:.6g} s, step {}, dt = {:.3g} s, eta max {:.6g} m, speed max {:.4g} "
+            "m/s",
+            now, end_time_, steps_, dt, s.eta_max, s.speed_max);
         summary_.set_steps(static_cast<std::int64_t>(steps_));
         summary_.set_progress(now, end_time_);
         summary_.write();
@@ -207,12 +216,14 @@ class CaseRun {
     for (std::size_t c = 0; c < h.size(); ++c)
       if (!std::isfinite(h[c]) || !std::isfinite(q[c]) || h[c] < 0.0)
         throw cosim::NumericalError(
-            fmt::format("cell {} has depth {} and discharge {} at t = {:.9g} s (step {})", c, h[c], q[c], t, steps_));
+            fmt::format("cell {} has depth {} and discharge {} at t = {:.9g} s (step {})", c, h[c],
+                        q[c], t, steps_));
   }
 
   void write_outputs(double t) {
     const bool every_step = c_.gauge_every <= 0.0;
-    if (gauges_ && (t == 0.0 || every_step || gauge_times_->due(t, tolerance_))) gauges_->record(t, *solver_);
+    if (gauges_ && (t == 0.0 || every_step || gauge_times_->due(t, tolerance_)))
+      gauges_->record(t, *solver_);
     if (t > 0.0) gauge_times_->passed(t, tolerance_);
     if (t == 0.0 || snapshots_.due(t, tolerance_)) {
       auto scope = summary_.phases().measure("output");
@@ -306,8 +317,8 @@ int run_case(const RunOptions& options, const cosim::CouplingEndpoint& endpoint)
     summary.set_config(options.config, description.config_hash);
     const int threads = options.threads >= 0 ? options.threads : description.threads;
     if (threads > 0) omp_set_num_threads(threads);
-    spdlog::info("case '{}': {}D, {} threads, end time {} s", description.name, description.dimension,
-                 omp_get_max_threads(), description.end_time);
+    spdlog::info("case '{}': {}D, {} threads, end time {} s", description.name,
+                 description.dimension, omp_get_max_threads(), description.end_time);
     spdlog::info("size: {} (limits.memory_gib {:g})", description.size.describe(),
                  description.size.memory_limit_gib);
     summary.set_section("size", description.size.to_json());

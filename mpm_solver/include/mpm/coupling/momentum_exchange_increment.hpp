@@ -16,7 +16,7 @@ template <int Dim>
 using ImpulseSplit = ShareTotals<Dim>;
 
 // The momentum the implicit exchange gives the solid in a step (the step's
-// share of the window's impulse, DESIGN.md §4), cell by cell, split over the
+// share of the window's impulse, architecture.md §4), cell by cell, split over the
 // deformable particles by their mass weight in the cell (share_over_particles):
 //   J_p = sum_c J_c m_p w_pc / sum_q m_q w_qc
 // with the conservative weights w_pc of the fields written, so

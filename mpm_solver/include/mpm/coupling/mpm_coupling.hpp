@@ -19,7 +19,7 @@ namespace cosim {
 class Participant;
 }
 
-// The MPM side of the coupling (DESIGN.md §3-4): what the solver writes to
+// The MPM side of the coupling (architecture.md §3-4): what the solver writes to
 // and reads from the coupler, and how what it reads acts on the particles.
 //
 // Call order in the run loop (CouplingObserver runs exactly this inside

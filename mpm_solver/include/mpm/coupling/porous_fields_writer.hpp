@@ -11,7 +11,7 @@
 namespace mpm::coupling {
 
 // The solid phase per exchange cell, as the coupler's implicit momentum
-// exchange reads it (Tran et al., MPMICE, eqs. 7 and 131; DESIGN.md §4).
+// exchange reads it (Tran et al., MPMICE, eqs. 7 and 131; architecture.md §4).
 // With w_pc the conservative weights of ExchangeGrid and V_c the cell volume:
 //   phi_s       = sum_p (1 - n_p) V_p w_pc / V_c      (capped at 1)
 //   rho_bar_s   = sum_p m_p w_pc / V_c                 (m_p is the solid mass)

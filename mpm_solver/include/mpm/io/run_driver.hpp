@@ -20,7 +20,7 @@ struct RunOptions {
 };
 
 // A standalone (or, with an observer, coupled) run of one case, as
-// DESIGN.md §6: prepares <output> (options.reuse: a directory holding an
+// architecture.md §6: prepares <output> (options.reuse: a directory holding an
 // earlier run is refused before anything is written, unless overwritten),
 // sets up <output>/log.txt, loads the case, runs Solver<2|3>
 // to the end time writing particle snapshots (particles.xdmf), grid

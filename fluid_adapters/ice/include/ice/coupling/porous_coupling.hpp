@@ -10,7 +10,7 @@
 
 namespace ice {
 
-// The ICE side of the porous soil <-> fluid pairing (DESIGN.md §4, Tran et
+// The ICE side of the porous soil <-> fluid pairing (architecture.md §4, Tran et
 // al., MPMICE's mixture theory), on the mesh `ice_cells`:
 //   reads   solid_fraction [1] and solid_velocity [m/s] (state, from the
 //           soil): the porosity n = 1 - phi_s the fluids fill (eqs. 42-43)
@@ -60,7 +60,7 @@ class PorousCoupling {
  private:
   // The longest window an explicit exchange of porosity and pore pressure
   // stands: the time the pore water's pressure wave takes across an
-  // exchange cell holding solid (DESIGN.md §3); +infinity without solid.
+  // exchange cell holding solid (architecture.md §3); +infinity without solid.
   double explicit_window_limit(const IceSolver<Dim>& solver) const;
 
   CouplingDescription description_;

@@ -5,7 +5,7 @@
 namespace ice {
 
 // Runs the ice_case of line.config, standalone or as a participant of a
-// coupled job (line.endpoint), and writes into line.output (DESIGN.md §6;
+// coupled job (line.endpoint), and writes into line.output (architecture.md §6;
 // prepared as line.reuse says: a directory holding an earlier run is
 // refused, nothing written, unless overwritten):
 //   summary.json   conserved totals per material (mass, momentum, total

@@ -17,7 +17,7 @@ namespace ice {
 template <int Dim>
 cosim::Mesh cell_mesh(const CellGrid<Dim>& grid, const std::string& name);
 
-// Snapshot fields of an ICE state (DESIGN.md §6), cell-centred:
+// Snapshot fields of an ICE state (architecture.md §6), cell-centred:
 //   pressure [Pa], density (mixture, sum rhobar) [kg/m3], velocity (mixture,
 //   mass-weighted) [m/s], and per material <name>: volume_fraction_<name>,
 //   bulk_density_<name>, density_<name>, velocity_<name>, temperature_<name>.

@@ -14,7 +14,7 @@
 namespace openfoam {
 
 // What the adapter exchanges with the MPM soil through the coupler, on the
-// case's cells (DESIGN.md §4, the job's `momentum_exchange` with
+// case's cells (architecture.md §4, the job's `momentum_exchange` with
 // `solved_by: fluid`):
 //   reads   solid_fraction, solid_velocity, solid_bulk_density, drag_coefficient K
 //           (the job's law);

@@ -17,7 +17,7 @@ struct RunOptions {
 };
 
 // Runs a swe_case, standalone (empty endpoint) or as a participant of a
-// coupled job, and writes into options.output (DESIGN.md §6; a directory
+// coupled job, and writes into options.output (architecture.md §6; a directory
 // holding an earlier run is refused, nothing written, unless options.reuse
 // says otherwise):
 //   summary.json, log.txt
