@@ -444,9 +444,10 @@ struct Coupler::Impl {
     Peer& to = peers.at(x.to);
     const std::string& source_mesh = from.spec->writes.at(x.field);
     const std::string& target_mesh = to.spec->reads.at(x.field);
-    return operators.get(fmt::format("exchange[{}]", index), from.meshes.at(source_mesh),
-                         from.mesh_version[source_mesh], to.meshes.at(target_mesh),
-                         to.mesh_version[target_mesh], x.mapping.constraint, x.mapping.kernel);
+    const OperatorKey key{
+        {x.from, source_mesh}, {x.to, target_mesh}, x.mapping.constraint, x.mapping.kernel};
+    return operators.get(key, from.meshes.at(source_mesh), from.mesh_version[source_mesh],
+                         to.meshes.at(target_mesh), to.mesh_version[target_mesh]);
   }
 
   PhaseSide side_of(const std::string& name) {
