@@ -445,9 +445,10 @@ struct Coupler::Impl {
     Peer& to = peers.at(x.to);
     const std::string& source_mesh = from.spec->writes.at(x.field);
     const std::string& target_mesh = to.spec->reads.at(x.field);
-    return operators.get(fmt::format("exchange[{}]", index), from.meshes.at(source_mesh),
-                         from.mesh_version[source_mesh], to.meshes.at(target_mesh),
-                         to.mesh_version[target_mesh], x.mapping.constraint, x.mapping.kernel);
+    const OperatorKey key{
+        {x.from, source_mesh}, {x.to, target_mesh}, x.mapping.constraint, x.mapping.kernel};
+    return operators.get(key, from.meshes.at(source_mesh), from.mesh_version[source_mesh],
+                         to.meshes.at(target_mesh), to.mesh_version[target_mesh]);
   }
 
   PhaseSide side_of(const std::string& name) {
@@ -536,38 +537,58 @@ struct Coupler::Impl {
         std::make_shared<const std::vector<double>>(std::move(heat.solid));
   }
 
+  // The coupler's part of a window, in order: the fields the participants
+  // wrote mapped to their readers, the exchange steps, then everything sent,
+  // recorded, and the next window begun.
   void map_and_send() {
     const double t = window_time(window);
-    FieldsByPeer received;
-    {
-      auto scope = summary.phases().measure("mapping");
-      for (std::size_t i = 0; i < job.exchanges.size(); ++i) {
-        const job::ExchangeSpec& x = job.exchanges[i];
-        const Peer& to = peers.at(x.to);
-        const FieldSpec& spec = declared(to.hello.reads, x.field);
-        const std::vector<double>& source = peers.at(x.from).written.at(x.field);
-        const mapping::Operator& op = operator_for(i);
-        std::vector<double> target = op.apply(source, spec.components);
-        const Mesh& target_mesh = to.meshes.at(spec.mesh);
-        if (x.mapping.bounds) {
-          std::vector<double> fraction(target.size());
-          for (std::size_t e = 0; e < target.size(); ++e)
-            fraction[e] = target[e] / target_mesh.control_volume(e / spec.components);
-          mapping::redistribute_to_bounds(target_mesh, fraction, x.mapping.bounds->first,
-                                          x.mapping.bounds->second);
-          for (std::size_t e = 0; e < target.size(); ++e)
-            target[e] = fraction[e] * target_mesh.control_volume(e / spec.components);
-        }
-        if (x.mapping.constraint == mapping::Constraint::conservative) {
-          const double scale = std::max(abs_sum(source), 1e-300);
-          max_conservation_error =
-              std::max(max_conservation_error, std::abs(sum(target) - sum(source)) / scale);
-        }
-        received[x.to][x.field] = std::make_shared<const std::vector<double>>(std::move(target));
-      }
-    }
+    FieldsByPeer received = map_exchanged_fields();
     exchange_momentum(received);
     exchange_energy(received);
+    send_fields(t, received);
+    write_snapshots(t, received);
+    begin_next_window(t);
+  }
+
+  FieldsByPeer map_exchanged_fields() {
+    auto scope = summary.phases().measure("mapping");
+    FieldsByPeer received;
+    for (std::size_t i = 0; i < job.exchanges.size(); ++i) {
+      const job::ExchangeSpec& x = job.exchanges[i];
+      const Peer& to = peers.at(x.to);
+      const FieldSpec& spec = declared(to.hello.reads, x.field);
+      const std::vector<double>& source = peers.at(x.from).written.at(x.field);
+      std::vector<double> target = operator_for(i).apply(source, spec.components);
+      if (x.mapping.bounds) keep_within_bounds(x, to.meshes.at(spec.mesh), spec.components, target);
+      if (x.mapping.constraint == mapping::Constraint::conservative)
+        measure_conservation(source, target);
+      received[x.to][x.field] = std::make_shared<const std::vector<double>>(std::move(target));
+    }
+    return received;
+  }
+
+  // A bounded field's values per control volume held within the exchange's
+  // bounds, the excess moved to neighbours (bounded_redistribution.hpp).
+  static void keep_within_bounds(const job::ExchangeSpec& x, const Mesh& target_mesh,
+                                 int components, std::vector<double>& target) {
+    const auto per_element = static_cast<std::size_t>(components);
+    std::vector<double> fraction(target.size());
+    for (std::size_t e = 0; e < target.size(); ++e)
+      fraction[e] = target[e] / target_mesh.control_volume(e / per_element);
+    mapping::redistribute_to_bounds(target_mesh, fraction, x.mapping.bounds->first,
+                                    x.mapping.bounds->second);
+    for (std::size_t e = 0; e < target.size(); ++e)
+      target[e] = fraction[e] * target_mesh.control_volume(e / per_element);
+  }
+
+  // |sum target - sum source| / sum |source| of a conservative mapping.
+  void measure_conservation(std::span<const double> source, std::span<const double> target) {
+    const double scale = std::max(abs_sum(source), 1e-300);
+    max_conservation_error =
+        std::max(max_conservation_error, std::abs(sum(target) - sum(source)) / scale);
+  }
+
+  void send_fields(double t, const FieldsByPeer& received) {
     for (const auto& [peer_name, fields] : received) {
       const Peer& to = peers.at(peer_name);
       for (const auto& [field, values] : fields) {
@@ -577,7 +598,10 @@ struct Coupler::Impl {
                                      values, static_cast<std::uint32_t>(spec.components)));
       }
     }
-    write_snapshots(t, received);
+  }
+
+  // window_begin of the next window, or finish after the last.
+  void begin_next_window(double t) {
     const bool last = window >= job.windows();
     for (const auto& [name, peer] : peers) {
       com::Message m = message(last ? MessageType::finish : MessageType::window_begin, t);

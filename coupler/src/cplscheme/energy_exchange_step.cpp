@@ -50,13 +50,16 @@ EnergyExchangeStep::Heat EnergyExchangeStep::run(double window, const PhaseSide&
   const PhaseSide& owner = spec_.mesh_owner == spec_.fluid ? fluid : solid;
   const Mesh& exchange_mesh = owner.mesh(spec_.mesh);
   const std::size_t exchange_version = owner.version(spec_.mesh);
+  const MeshName exchange_name{spec_.mesh_owner, spec_.mesh};
   const std::size_t cells = exchange_mesh.size();
   auto on_exchange_mesh = [&](const PhaseSide& side, const char* field) {
     const std::string& mesh = side.spec->writes.at(field);
+    const OperatorKey key{{side.spec->name, mesh},
+                          exchange_name,
+                          mapping::Constraint::consistent,
+                          mapping::Kernel::linear};
     return operators
-        .get(fmt::format("energy:{}.{}->exchange", side.spec->name, mesh), side.mesh(mesh),
-             side.version(mesh), exchange_mesh, exchange_version, mapping::Constraint::consistent,
-             mapping::Kernel::linear)
+        .get(key, side.mesh(mesh), side.version(mesh), exchange_mesh, exchange_version)
         .apply(side.written->at(field), 1);
   };
   const auto t_f = on_exchange_mesh(fluid, f::fluid_temperature.name);
@@ -84,10 +87,11 @@ EnergyExchangeStep::Heat EnergyExchangeStep::run(double window, const PhaseSide&
   }
   auto to_side = [&](const PhaseSide& side, const std::vector<double>& heat) {
     const std::string& mesh = side.spec->reads.at(f::heat_exchange_energy.name);
-    return operators
-        .get(fmt::format("energy:exchange->{}.{}", side.spec->name, mesh), exchange_mesh,
-             exchange_version, side.mesh(mesh), side.version(mesh),
-             mapping::Constraint::conservative, mapping::Kernel::linear)
+    const OperatorKey key{exchange_name,
+                          {side.spec->name, mesh},
+                          mapping::Constraint::conservative,
+                          mapping::Kernel::linear};
+    return operators.get(key, exchange_mesh, exchange_version, side.mesh(mesh), side.version(mesh))
         .apply(heat, 1);
   };
   Heat out;

@@ -28,15 +28,30 @@ const std::string* mesh_of(const PhaseSide& side, const std::string& field) {
   return nullptr;
 }
 
+// The exchange mesh of a window: its owner's mesh and version.
+struct ExchangeMesh {
+  MeshName name;
+  const Mesh& mesh;
+  std::size_t version = 0;
+};
+
+ExchangeMesh exchange_mesh_of(const job::MomentumExchangeSpec& spec, const PhaseSide& fluid,
+                              const PhaseSide& solid) {
+  const PhaseSide& owner = spec.mesh_owner == spec.fluid ? fluid : solid;
+  return {{spec.mesh_owner, spec.mesh}, owner.mesh(spec.mesh), owner.version(spec.mesh)};
+}
+
 // A phase's field mapped consistently onto the exchange mesh.
 std::vector<double> on_exchange_mesh(const PhaseSide& side, const std::string& field,
-                                     int components, const Mesh& exchange_mesh,
-                                     std::size_t exchange_version, OperatorCache& operators) {
+                                     int components, const ExchangeMesh& exchange_cells,
+                                     OperatorCache& operators) {
   const std::string& mesh = *mesh_of(side, field);
-  return operators
-      .get(fmt::format("momentum:{}.{}->exchange", side.spec->name, mesh), side.mesh(mesh),
-           side.version(mesh), exchange_mesh, exchange_version, mapping::Constraint::consistent,
-           mapping::Kernel::linear)
+  const OperatorKey key{{side.spec->name, mesh},
+                        exchange_cells.name,
+                        mapping::Constraint::consistent,
+                        mapping::Kernel::linear};
+  return operators.get(key, side.mesh(mesh), side.version(mesh), exchange_cells.mesh,
+                       exchange_cells.version)
       .apply(side.written->at(field), components);
 }
 
@@ -90,21 +105,21 @@ void MomentumExchangeStep::check_declarations(const job::Job& job, const com::He
 MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const PhaseSide& fluid,
                                                          const PhaseSide& solid,
                                                          OperatorCache& operators) const {
-  const PhaseSide& owner = spec_.mesh_owner == spec_.fluid ? fluid : solid;
-  const Mesh& exchange_mesh = owner.mesh(spec_.mesh);
-  const std::size_t exchange_version = owner.version(spec_.mesh);
+  const ExchangeMesh exchange_cells = exchange_mesh_of(spec_, fluid, solid);
+  const Mesh& exchange_mesh = exchange_cells.mesh;
+  const std::size_t exchange_version = exchange_cells.version;
   const int dim = exchange_mesh.dimension();
   const std::size_t cells = exchange_mesh.size();
-  auto map = [&](const std::string& key, const Mesh& from, std::size_t from_version, const Mesh& to,
-                 std::size_t to_version, mapping::Constraint constraint,
-                 const std::vector<double>& values, int components) {
-    return operators
-        .get(key, from, from_version, to, to_version, constraint, mapping::Kernel::linear)
-        .apply(values, components);
+  auto map = [&](const MeshName& from_name, const Mesh& from, std::size_t from_version,
+                 const MeshName& to_name, const Mesh& to, std::size_t to_version,
+                 mapping::Constraint constraint, const std::vector<double>& values,
+                 int components) {
+    const OperatorKey key{from_name, to_name, constraint, mapping::Kernel::linear};
+    return operators.get(key, from, from_version, to, to_version).apply(values, components);
   };
 
   auto mapped = [&](const PhaseSide& side, const char* field, int components) {
-    return on_exchange_mesh(side, field, components, exchange_mesh, exchange_version, operators);
+    return on_exchange_mesh(side, field, components, exchange_cells, operators);
   };
   const auto phi_s = mapped(solid, f::solid_fraction.name, 1);
   const auto u_s = mapped(solid, f::solid_velocity.name, dim);
@@ -127,29 +142,29 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const Ph
   // What each phase receives, mapped to it: the momentum (conservatively),
   // or with solved_by fluid K for the fluid (consistently) and, for the
   // solid, the momentum the fluid wrote that it gave it.
-  auto impulse_to = [&](const PhaseSide& side, const std::string& from_key, const Mesh& from,
+  auto impulse_to = [&](const PhaseSide& side, const MeshName& from_name, const Mesh& from,
                         std::size_t from_version, const std::vector<double>& impulse) {
     const std::string& mesh = side.spec->reads.at(f::momentum_exchange_impulse.name);
-    return map(fmt::format("momentum:{}->{}.{}", from_key, side.spec->name, mesh), from,
-               from_version, side.mesh(mesh), side.version(mesh), mapping::Constraint::conservative,
-               impulse, dim);
+    return map(from_name, from, from_version, {side.spec->name, mesh}, side.mesh(mesh),
+               side.version(mesh), mapping::Constraint::conservative, impulse, dim);
   };
   Impulses out;
   const std::vector<double>* given = &j_f;
   if (spec_.solved_by == job::ExchangeSolver::coupler) {
-    out.fluid = impulse_to(fluid, "exchange", exchange_mesh, exchange_version, j_f);
-    out.solid = impulse_to(solid, "exchange", exchange_mesh, exchange_version, j_s);
+    out.fluid = impulse_to(fluid, exchange_cells.name, exchange_mesh, exchange_version, j_f);
+    out.solid = impulse_to(solid, exchange_cells.name, exchange_mesh, exchange_version, j_s);
   } else {
     // The law gives +infinity where no pore is left; the fluid gets a
     // finite impermeable value.
     for (double& k : drag) k = std::min(k, impermeable_drag);
     const std::string& drag_mesh = fluid.spec->reads.at(f::drag_coefficient.name);
-    out.drag_coefficient = map(fmt::format("momentum:exchange->{}.{}", fluid.spec->name, drag_mesh),
-                               exchange_mesh, exchange_version, fluid.mesh(drag_mesh),
-                               fluid.version(drag_mesh), mapping::Constraint::consistent, drag, 1);
+    out.drag_coefficient =
+        map(exchange_cells.name, exchange_mesh, exchange_version, {fluid.spec->name, drag_mesh},
+            fluid.mesh(drag_mesh), fluid.version(drag_mesh), mapping::Constraint::consistent, drag,
+            1);
     const std::string& from_mesh = fluid.spec->writes.at(f::momentum_exchange_impulse.name);
     given = &fluid.written->at(f::momentum_exchange_impulse.name);
-    out.solid = impulse_to(solid, fluid.spec->name + "." + from_mesh, fluid.mesh(from_mesh),
+    out.solid = impulse_to(solid, {fluid.spec->name, from_mesh}, fluid.mesh(from_mesh),
                            fluid.version(from_mesh), *given);
   }
   // The balance: coupler mode, what the two receive adds up to zero; fluid
@@ -174,13 +189,11 @@ std::optional<ExplicitStabilityBound> MomentumExchangeStep::explicit_window_boun
   if (!mesh_of(fluid, f::pore_fluid_bulk_modulus.name) ||
       !fluid.written->count(f::pore_fluid_bulk_modulus.name))
     return std::nullopt;
-  const PhaseSide& owner = spec_.mesh_owner == spec_.fluid ? fluid : solid;
-  const Mesh& exchange_mesh = owner.mesh(spec_.mesh);
-  const std::size_t version = owner.version(spec_.mesh);
+  const ExchangeMesh exchange_cells = exchange_mesh_of(spec_, fluid, solid);
   auto mapped = [&](const PhaseSide& side, const char* field) {
-    return on_exchange_mesh(side, field, 1, exchange_mesh, version, operators);
+    return on_exchange_mesh(side, field, 1, exchange_cells, operators);
   };
-  return undrained_wave_bound(exchange_mesh, mapped(solid, f::solid_fraction.name),
+  return undrained_wave_bound(exchange_cells.mesh, mapped(solid, f::solid_fraction.name),
                               mapped(solid, f::solid_bulk_density.name),
                               mapped(fluid, f::fluid_bulk_density.name),
                               mapped(fluid, f::pore_fluid_bulk_modulus.name));

@@ -67,6 +67,8 @@ struct Solver<Dim>::Impl {
   void step(double dt);
   void bin_particles();
   void apply_surface_loads(double dt);
+  void apply_coupling_forces(double dt);
+  void add_external_work(double dt);
   void set_rigid_velocities(double dt);
   template <class Kernel>
   void interpolate_particles_to_grid(double dt);
@@ -243,6 +245,8 @@ void Solver<Dim>::Impl::step(double dt) {
     using Kernel = decltype(kernel);
     bin_particles();
     apply_surface_loads(dt);
+    apply_coupling_forces(dt);
+    add_external_work(dt);
     set_rigid_velocities(dt);
     interpolate_particles_to_grid<Kernel>(dt);
     if (heat) {
@@ -279,7 +283,7 @@ void Solver<Dim>::Impl::bin_particles() {
 }
 
 template <int Dim>
-void Solver<Dim>::Impl::apply_surface_loads(double dt) {
+void Solver<Dim>::Impl::apply_surface_loads(double /*dt*/) {
   std::fill(particles.external_force.begin(), particles.external_force.end(), Vec<Dim>::Zero());
   for (const LoadSpec& load : description.loads) {
     const double ramp = load.ramp_factor(time);
@@ -295,7 +299,19 @@ void Solver<Dim>::Impl::apply_surface_loads(double dt) {
       particles.external_force[p] += ramp * force;
     }
   }
+}
+
+// Where the coupling acts: the fluid's forces on the points, the pore
+// pressure's -phi_s grad p (Tran et al., MPMICE, eq. 7) and the exchanged
+// drag impulse over dt, added to the surface loads by the force sources.
+template <int Dim>
+void Solver<Dim>::Impl::apply_coupling_forces(double dt) {
   for (auto& source : force_sources) source(time, dt, particles);
+}
+
+// The work of the surface loads and the coupling forces over the step.
+template <int Dim>
+void Solver<Dim>::Impl::add_external_work(double dt) {
   if (description.loads.empty() && force_sources.empty()) return;  // no external force, no work
   double work = 0.0;
   for (std::size_t p = 0; p < particles.size(); ++p)

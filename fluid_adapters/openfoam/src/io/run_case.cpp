@@ -7,7 +7,6 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
@@ -35,9 +34,12 @@
 #include "openfoam/io/case_mesh.hpp"
 #include "openfoam/io/cell_neighbours.hpp"
 #include "openfoam/io/foam_fields.hpp"
+#include "openfoam/io/gauge_recorder.hpp"
 #include "openfoam/io/restart_inertia.hpp"
 #include "openfoam/io/soil_coupling.hpp"
+#include "openfoam/io/soil_exchange_record.hpp"
 #include "openfoam/io/window_step_means.hpp"
+#include "openfoam/io/window_timing.hpp"
 #include "openfoam/porosity/porosity_zones.hpp"
 
 namespace openfoam {
@@ -50,14 +52,6 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
-
-// The cost of one window [s].
-struct WindowTiming {
-  double end_time = 0.0;
-  double write = 0.0;  // the adapter's files before the start
-  ApplicationTiming solver;
-  double read = 0.0;  // the fields read back
-};
 
 class CaseRun {
  public:
@@ -126,7 +120,8 @@ class CaseRun {
     spdlog::info(
         "completed: t = {:.6g} s in {} windows, {} OpenFOAM steps; the cloud's momentum on the "
         "water against the drag law's: largest mismatch {:.3g}",
-        participant.time(), windows_.size(), steps_, worst_mismatch_);
+        participant.time(), windows_.size(), steps_,
+        soil_record_ ? soil_record_->worst_mismatch() : 0.0);
   }
 
  private:
@@ -178,7 +173,8 @@ class CaseRun {
       run_tool("decomposePar", {"-force"});
     }
     layout_.emplace(case_dir_, c_.processes, mesh_.volumes.size());
-    set_up_gauges();
+    if (!c_.gauges.empty() || !c_.wave_gauges.empty())
+      gauges_.emplace(c_, mesh_, options_.output / "gauges.csv");
     snapshot_writer_.emplace(options_.output, "openfoam", mesh_.mesh);
     summary_.set_section("case", {{"name", c_.name},
                                   {"solver", c_.solver},
@@ -205,58 +201,76 @@ class CaseRun {
   }
 
   void exchange_windows(cosim::Participant& participant, SoilCoupling& coupling) {
+    FoamFields fields = start_coupling(participant, coupling);
+    while (participant.is_coupling_ongoing()) exchange_window(participant, coupling, fields);
+  }
+
+  // Window 0: the declarations, the water's initial fields to the soil, the
+  // pores the soil leaves the water (MPPICInterFoam sees them from its first
+  // start on) and the initial outputs.
+  FoamFields start_coupling(cosim::Participant& participant, SoilCoupling& coupling) {
     coupled_ = true;
-    const bool zones = c_.soil.model == SoilModel::porosity_zones;
     coupling.declare(participant);
     FoamFields fields = read_fields("0");
     coupling.write(participant, fields, c_.time_step, 0);
     participant.initialize(0.0, c_.end_time);
-    const double window = participant.window_size();
-    if (!is_whole_number_of_steps(window, c_.time_step)) {
-      throw cosim::InputError(
-          cosim::SourceLocation{c_.file.string(), 0, 0}, "time_step",
-          fmt::format("the job's window {} s is not a whole number of OpenFOAM time steps of {} s",
-                      window, c_.time_step));
-    }
-    // The pores the soil leaves the water at the start (MPPICInterFoam sees
-    // them from its first start on).
-    if (!zones) {
+    check_window(participant.window_size());
+    if (c_.soil.model != SoilModel::porosity_zones) {
       fields.alphac = coupling.fluid_fraction(participant);
       write_start_fluid_fraction(fields.alphac);
     }
     record_water(fields, true);
     write_outputs(0.0, fields);
     summary_.write();
-    exchange_csv_.emplace(
-        options_.output / "soil_exchange.csv",
-        std::vector<std::string>{"time_s", "parcels", "cloud_on_fluid_kg_m/s",
-                                 "law_on_fluid_kg_m/s", "to_soil_kg_m/s", "mismatch_1",
-                                 "drag_limited_cells"});
-    while (participant.is_coupling_ongoing()) {
-      const double start = participant.time();
-      const double end = start + participant.max_time_step();
-      if (zones) {
-        write_porosity_zones(coupling.darcy_coefficients(participant));
-      } else {
-        auto scope = summary_.phases().measure("adapter_write");
-        const SoilParcels& parcels = coupling.parcels(participant, fields);
-        layout_->write_cloud(layout_->latest()->name, parcels, c_.soil.parcel_density);
-        parcels_ = parcels.size();
-      }
-      fields = run_window(start, end);
-      SoilCoupling::MomentumCheck check;
-      {
-        auto scope = summary_.phases().measure("coupling");
-        check = coupling.write(participant, fields, end - start, steps_in(end - start));
-        participant.advance(end - start);
-      }
-      worst_mismatch_ = std::max(worst_mismatch_, check.mismatch);
-      warn_of_limited_drag(check, end - start, end);
-      exchange_csv_->append({end, static_cast<double>(parcels_), check.cloud_on_fluid,
-                             check.law_on_fluid, check.to_soil, check.mismatch,
-                             static_cast<double>(check.limited_cells)});
-      finish_window(end, fields, !participant.is_coupling_ongoing());
+    soil_record_.emplace(options_.output / "soil_exchange.csv");
+    return fields;
+  }
+
+  void check_window(double window) const {
+    if (is_whole_number_of_steps(window, c_.time_step)) return;
+    throw cosim::InputError(
+        cosim::SourceLocation{c_.file.string(), 0, 0}, "time_step",
+        fmt::format("the job's window {} s is not a whole number of OpenFOAM time steps of {} s",
+                    window, c_.time_step));
+  }
+
+  // One coupling window, in order: the soil into OpenFOAM's start, OpenFOAM
+  // over the window, the water's fields to the soil, then the window's
+  // record and outputs.
+  void exchange_window(cosim::Participant& participant, SoilCoupling& coupling,
+                       FoamFields& fields) {
+    const double start = participant.time();
+    const double end = start + participant.max_time_step();
+    write_soil(participant, coupling, fields);
+    fields = run_window(start, end);
+    const auto check = send_water(participant, coupling, fields, end - start);
+    soil_record_->record(check, end - start, end, parcels_);
+    finish_window(end, fields, !participant.is_coupling_ongoing());
+  }
+
+  // The soil as MPPICInterFoam's parcels in the start directory, or as the
+  // fallback's porosity zones.
+  void write_soil(cosim::Participant& participant, SoilCoupling& coupling,
+                  const FoamFields& fields) {
+    if (c_.soil.model == SoilModel::porosity_zones) {
+      write_porosity_zones(coupling.darcy_coefficients(participant));
+      return;
     }
+    auto scope = summary_.phases().measure("adapter_write");
+    const SoilParcels& parcels = coupling.parcels(participant, fields);
+    layout_->write_cloud(layout_->latest()->name, parcels, c_.soil.parcel_density);
+    parcels_ = parcels.size();
+  }
+
+  // The water's fields at the window's end (its step means, window_step_means.hpp)
+  // to the soil, and the participant's time to the window's end.
+  SoilCoupling::MomentumCheck send_water(cosim::Participant& participant, SoilCoupling& coupling,
+                                         FoamFields& fields, double window) {
+    auto scope = summary_.phases().measure("coupling");
+    const SoilCoupling::MomentumCheck check =
+        coupling.write(participant, fields, window, steps_in(window));
+    participant.advance(window);
+    return check;
   }
 
   // The fallback's zones for the window: the cells' d into the start
@@ -281,107 +295,23 @@ class CaseRun {
 
   long steps_in(double interval) const { return std::lround(interval / c_.time_step); }
 
-  // The explicit exchange gives the soil at most what brings it to the
-  // water's velocity in a window: where the window outlasts the soil's
-  // relaxation time the drag is cut, and the user is told once, and again
-  // whenever more cells are cut than ever before.
-  void warn_of_limited_drag(const SoilCoupling::MomentumCheck& check, double window, double t) {
-    most_limited_cells_ = std::max(most_limited_cells_, check.limited_cells);
-    shortest_relaxation_ = std::min(shortest_relaxation_, check.shortest_relaxation);
-    if (check.limited_cells <= warned_limited_cells_) return;
-    warned_limited_cells_ = check.limited_cells;
-    spdlog::warn(
-        "t = {:.6g} s: the window {:g} s outlasts the soil's drag relaxation time (down to {:.3g} "
-        "s) in {} cell(s): their drag is limited to what brings the soil to the water's velocity "
-        "(beta T = 1); a window of {:.2g} s or less resolves it",
-        t, window, check.shortest_relaxation, check.limited_cells, check.shortest_relaxation);
-  }
-
   void finish_window(double t, const FoamFields& fields, bool last) {
     write_outputs(t, fields, last);
     if (last) record_water(fields, false);
     summary_.set_windows(static_cast<std::int64_t>(windows_.size()));
     summary_.set_steps(steps_);
-    summary_.set_section("openfoam_windows", windows_json());
-    if (exchange_csv_) {
-      summary_.set_metric("cloud_momentum_mismatch_max", worst_mismatch_, "1");
-      summary_.set_metric("drag_limited_cells_max", static_cast<double>(most_limited_cells_), "1");
-      if (most_limited_cells_ > 0)
-        summary_.set_metric("drag_relaxation_time_min", shortest_relaxation_, "s");
-    }
+    summary_.set_section("openfoam_windows", windows_json(windows_, steps_in(c_.window)));
+    if (soil_record_) soil_record_->set_metrics(summary_);
     summary_.write();
   }
 
   void write_outputs(double t, const FoamFields& fields, bool last = false) {
-    if (gauges_) record_gauges(t, fields);
+    if (gauges_) gauges_->record(t, fields);
     if (t == 0.0 || snapshots_.due(t, tolerance_) || last) {
       auto scope = summary_.phases().measure("output");
       write_snapshot(t, fields);
       if (t > 0.0) snapshots_.passed(t, tolerance_);
     }
-  }
-
-  // The nearest cell centre of each gauge (gauges.csv, every window).
-  void set_up_gauges() {
-    if (c_.gauges.empty() && c_.wave_gauges.empty()) return;
-    std::vector<std::string> columns{"time_s"};
-    const int dim = mesh_.mesh.dimension();
-    for (const Gauge& g : c_.gauges) {
-      std::size_t best = 0;
-      double best_distance = std::numeric_limits<double>::infinity();
-      for (std::size_t c = 0; c < mesh_.volumes.size(); ++c) {
-        double d2 = 0.0;
-        for (std::size_t k = 0; k < static_cast<std::size_t>(dim); ++k) {
-          const double dx = mesh_.centres[3 * c + k] - g.point[k];
-          d2 += dx * dx;
-        }
-        if (d2 < best_distance) {
-          best_distance = d2;
-          best = c;
-        }
-      }
-      gauge_cells_.push_back(best);
-      columns.push_back(cosim::column_name(g.name + "_p", "Pa"));
-      columns.push_back(cosim::column_name(g.name + "_p_rgh", "Pa"));
-      for (int k = 0; k < dim; ++k)
-        columns.push_back(cosim::column_name(g.name + "_u" + "xyz"[k], "m/s"));
-      columns.push_back(cosim::column_name(g.name + "_water_fraction", "1"));
-    }
-    for (const WaveGauge& g : c_.wave_gauges) {
-      // The cells of the grid's column at (x, z), bottom to top (x fastest).
-      const GeneratedCase& box = *c_.generate;
-      const Vector3 h = box.spacing();
-      const auto index = [](double x, double origin, double dx, int n) {
-        return std::clamp(static_cast<int>(std::floor((x - origin) / dx)), 0, n - 1);
-      };
-      const int i = index(g.x, box.origin[0], h[0], box.cells[0]);
-      const int k = box.dimension == 3 ? index(g.z, box.origin[2], h[2], box.cells[2]) : 0;
-      std::vector<std::size_t> cells;
-      for (int j = 0; j < box.cells[1]; ++j)
-        cells.push_back(static_cast<std::size_t>(i + box.cells[0] * (j + box.cells[1] * k)));
-      wave_columns_.push_back(std::move(cells));
-      columns.push_back(cosim::column_name(g.name + "_surface_elevation", "m"));
-    }
-    gauges_.emplace(options_.output / "gauges.csv", std::move(columns));
-  }
-
-  void record_gauges(double t, const FoamFields& f) {
-    const auto dim = static_cast<std::size_t>(mesh_.mesh.dimension());
-    std::vector<double> row{t};
-    for (std::size_t c : gauge_cells_) {
-      row.push_back(f.p[c]);
-      row.push_back(f.p_rgh[c]);
-      for (std::size_t k = 0; k < dim; ++k) row.push_back(f.velocity[c * dim + k]);
-      row.push_back((f.alphac.empty() ? 1.0 : f.alphac[c]) * f.alpha_water[c]);
-    }
-    for (const auto& column : wave_columns_) {
-      // Water and the pores' water alike: a saturated soil's cells count whole.
-      double height = c_.generate->origin[1];
-      const double dy = c_.generate->spacing()[1];
-      for (std::size_t c : column) height += f.alpha_water[c] * dy;
-      row.push_back(height);
-    }
-    gauges_->append(row);
   }
 
   // The controlDict of a start from `start` to `end`: every field written at
@@ -412,39 +342,46 @@ class CaseRun {
                                 fluid_fraction);
   }
 
-  // MPPICInterFoam's next start given the inertia of the step it would have
-  // taken next in one continuous run (restart_inertia.hpp): alphac rho_(n-1)
-  // / rho_n into the end directory `end`, `before` the time one step earlier.
-  void restore_restart_inertia(const std::string& end, const std::string& before,
-                               const std::vector<double>& fluid_fraction) {
-    const std::vector<double> lagged =
-        restart_fluid_fraction(fluid_fraction, density_at(before), density_at(end));
-    layout_->write_scalar_field(end, "alphac", "[0 0 0 0 0 0 0]", lagged);
-  }
-
-  // The solver's mixture density at time `name`: its rho file, or, at the
-  // start (not written yet), alpha rho_w + (1 - alpha) rho_a as it forms it.
-  std::vector<double> density_at(const std::string& name) const {
-    if (layout_->has(name, "rho")) return layout_->read_scalar(name, "rho");
-    std::vector<double> rho = layout_->read_scalar(name, "alpha.water");
-    for (double& a : rho) a = a * properties_.water.density + (1.0 - a) * properties_.air.density;
-    return rho;
-  }
-
-  // One start of the solver from its latest time directory (`start`) to `end`.
+  // One start of the solver from its latest time directory (`start`) to
+  // `end`, in order: its controls, the solver, the fields it wrote at the end
+  // (with MPPICInterFoam, coupled, the means of the window's steps; the next
+  // start's inertia), then the time directories no longer needed and the
+  // window's costs.
   FoamFields run_window(double start, double end) {
     const std::string start_name = layout_->latest()->name;
+    const long steps = steps_in(end - start);
     WindowTiming timing;
     timing.end_time = end;
     Clock::time_point phase = Clock::now();
     write_controls(start, end);
     timing.write = seconds_since(phase);
-    timing.solver = run_application(
-        installation_, c_.solver, {}, case_dir_, log_dir_ / (c_.solver + ".log"), c_.processes,
-        std::chrono::seconds(static_cast<long>(std::ceil(c_.window_timeout))));
+    timing.solver = run_solver();
     phase = Clock::now();
-    // The directory the solver wrote at the window's end, found by its time
-    // (OpenFOAM lengthens a name that two times would share).
+    const TimeDirectory written = end_directory(end);
+    FoamFields fields = read_fields(written.name);
+    if (c_.has_cloud()) {
+      if (coupled_ && steps > 1) take_window_step_means(start, steps, fields);
+      carry_restart_inertia(start, start_name, end, steps, written.name, fields.alphac);
+    }
+    timing.read = seconds_since(phase);
+    if (!c_.keep_time_directories) {
+      const std::array<std::string, 2> keep{"0", written.name};
+      layout_->remove_times_except(keep);
+    }
+    steps_ += steps;
+    record_costs(timing);
+    return fields;
+  }
+
+  ApplicationTiming run_solver() {
+    return run_application(installation_, c_.solver, {}, case_dir_, log_dir_ / (c_.solver + ".log"),
+                           c_.processes,
+                           std::chrono::seconds(static_cast<long>(std::ceil(c_.window_timeout))));
+  }
+
+  // The directory the solver wrote at the window's end, found by its time
+  // (OpenFOAM lengthens a name that two times would share).
+  TimeDirectory end_directory(double end) const {
     const auto latest = layout_->latest();
     if (!latest || std::abs(latest->time - end) > tolerance_) {
       throw cosim::Error(
@@ -454,37 +391,40 @@ class CaseRun {
                       c_.solver, end, time_name(end, time_precision), case_dir_.string(),
                       latest ? latest->name : "none"));
     }
-    FoamFields fields = read_fields(latest->name);
-    if (c_.has_cloud()) {
-      const long steps = steps_in(end - start);
-      if (coupled_ && steps > 1) {
-        const std::vector<std::string> step_times = window_step_times(start, steps);
-        average_over_window_steps(*layout_, step_times, fields, mesh_.mesh.dimension());
-        for (std::size_t k = 0; k + 1 < step_times.size(); ++k) layout_->remove_time(step_times[k]);
-      }
-      const auto before = steps == 1 ? std::optional<TimeDirectory>(TimeDirectory{start, start_name})
-                                     : layout_->at(end - c_.time_step, tolerance_);
-      if (!before) {
-        throw cosim::Error(cosim::ExitCode::participant_failed,
-                           fmt::format("OpenFOAM's {} did not write its density at t = {} s, one "
-                                       "step before the window's end (case kept in {})",
-                                       c_.solver, end - c_.time_step, case_dir_.string()));
-      }
-      restore_restart_inertia(latest->name, before->name, fields.alphac);
-      if (steps > 1) layout_->remove_time(before->name);
+    return *latest;
+  }
+
+  // What the soil receives: the means of the window's steps
+  // (window_step_means.hpp), whose directories then go.
+  void take_window_step_means(double start, long steps, FoamFields& fields) {
+    const std::vector<std::string> step_times = window_step_times(start, steps);
+    average_over_window_steps(*layout_, step_times, fields, mesh_.mesh.dimension());
+    for (std::size_t k = 0; k + 1 < step_times.size(); ++k) layout_->remove_time(step_times[k]);
+  }
+
+  // The inertia of MPPICInterFoam's next start (restart_inertia.hpp) from the
+  // densities at the window's end `end_name` and one step before it.
+  void carry_restart_inertia(double start, const std::string& start_name, double end, long steps,
+                             const std::string& end_name,
+                             const std::vector<double>& fluid_fraction) {
+    const auto before = steps == 1 ? std::optional<TimeDirectory>(TimeDirectory{start, start_name})
+                                   : layout_->at(end - c_.time_step, tolerance_);
+    if (!before) {
+      throw cosim::Error(cosim::ExitCode::participant_failed,
+                         fmt::format("OpenFOAM's {} did not write its density at t = {} s, one "
+                                     "step before the window's end (case kept in {})",
+                                     c_.solver, end - c_.time_step, case_dir_.string()));
     }
-    timing.read = seconds_since(phase);
-    if (!c_.keep_time_directories) {
-      const std::array<std::string, 2> keep{"0", latest->name};
-      layout_->remove_times_except(keep);
-    }
-    steps_ += steps_in(end - start);
+    write_restart_inertia(*layout_, properties_, end_name, before->name, fluid_fraction);
+    if (steps > 1) layout_->remove_time(before->name);
+  }
+
+  void record_costs(const WindowTiming& timing) {
     summary_.phases().add("adapter_write", timing.write);
     summary_.phases().add("openfoam_startup", timing.solver.startup);
     summary_.phases().add("openfoam_stepping", timing.solver.stepping);
     summary_.phases().add("field_read", timing.read);
     windows_.push_back(timing);
-    return fields;
   }
 
   // The time directories of a window's steps before its end (the last of
@@ -539,23 +479,6 @@ class CaseRun {
     set("mass_water", volume * properties_.water.density, plane ? "kg/m" : "kg");
   }
 
-  nlohmann::json windows_json() const {
-    nlohmann::json w = {{"end_time_s", nlohmann::json::array()},
-                        {"adapter_write_s", nlohmann::json::array()},
-                        {"solver_startup_s", nlohmann::json::array()},
-                        {"solver_stepping_s", nlohmann::json::array()},
-                        {"field_read_s", nlohmann::json::array()}};
-    for (const WindowTiming& t : windows_) {
-      w["end_time_s"].push_back(t.end_time);
-      w["adapter_write_s"].push_back(t.write);
-      w["solver_startup_s"].push_back(t.solver.startup);
-      w["solver_stepping_s"].push_back(t.solver.stepping);
-      w["field_read_s"].push_back(t.read);
-    }
-    w["steps_per_window"] = steps_in(c_.window);
-    return w;
-  }
-
   const CaseDescription& c_;
   const cosim::SolverCommandLine& options_;
   cosim::RunSummary& summary_;
@@ -573,15 +496,9 @@ class CaseRun {
   // Exchanging with a soil: the pressure and drag sent are the window's means
   // (window_step_means.hpp).
   bool coupled_ = false;
-  std::vector<std::size_t> gauge_cells_;
-  std::vector<std::vector<std::size_t>> wave_columns_;
-  std::optional<cosim::TimeSeriesWriter> gauges_;
-  std::optional<cosim::TimeSeriesWriter> exchange_csv_;
-  std::size_t parcels_ = 0;
-  double worst_mismatch_ = 0.0;
-  std::size_t most_limited_cells_ = 0;
-  std::size_t warned_limited_cells_ = 0;
-  double shortest_relaxation_ = INFINITY;
+  std::optional<GaugeRecorder> gauges_;
+  std::optional<SoilExchangeRecord> soil_record_;  // coupled
+  std::size_t parcels_ = 0;                        // or the porosity zones' cells
 };
 
 // --overwrite clears the output directory: it must not hold the user's own

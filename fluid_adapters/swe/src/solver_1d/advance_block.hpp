@@ -57,7 +57,9 @@ __attribute__((flatten)) void advance_block(const StageContext& c, std::size_t f
     eta[j] = h[j] + bed[j];
   }
 
-  // MUSCL on the non-uniform spacing: h, eta and u per cell.
+  // MUSCL (van Leer, J. Comput. Phys. 32, 1979) on the non-uniform spacing:
+  // limited slopes of h, eta and u per cell; the face beds follow from eta
+  // and h, so a flat surface stays flat.
 #pragma omp simd
   for (std::size_t j = 1; j < m - 1; ++j) {
     const double il = inv_distance[j - 1], ir = inv_distance[j], hw = half_width[j];
@@ -73,8 +75,8 @@ __attribute__((flatten)) void advance_block(const StageContext& c, std::size_t f
     bed_source[j] = cell_bed_source(h_minus[j], bed_minus[j], h_plus[j], bed_plus[j], g);
   }
 
-  // Faces j | j+1: the hydrostatic reconstruction measures both depths from
-  // the higher face bed; the pressure it removes comes back as each side's
+  // Faces j | j+1: the hydrostatic reconstruction (Audusse et al., SIAM J.
+  // Sci. Comput. 25, 2004) measures both depths from the higher face bed; the pressure it removes comes back as each side's
   // correction. With the in-cell bed_source this is our form of the
   // well-balanced source split of Zheng et al., eqs. 33-34: a lake at rest,
   // dry emerged cells included, stays at rest and depths stay >= 0. (Two
@@ -121,7 +123,8 @@ __attribute__((flatten)) void advance_block(const StageContext& c, std::size_t f
   if (first == 0 && c.imposed.left) mass[1] = c.imposed.left_value;
   if (last == c.cells->count && c.imposed.right) mass[m - 3] = c.imposed.right_value;
 
-  // Zheng et al., eq. 28, combined into the SSP-RK2 stage.
+  // Zheng et al., eq. 28, combined into the SSP-RK2 stage
+  //   U_out = wb U_base + (1 - wb) (U + dt L(U))   (Gottlieb & Shu, 1998).
   const double wb = c.base_weight, wi = 1.0 - c.base_weight, dt = c.dt;
   const double* h_base = c.a.h_base + first;  // may alias h_out
   const double* q_base = c.a.q_base + first;

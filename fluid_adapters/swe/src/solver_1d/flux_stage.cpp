@@ -31,7 +31,8 @@ void advance_step(const LineCells& cells, const Physics& physics, const Scheme& 
   const std::size_t n = cells.count;
   const auto threads = static_cast<std::size_t>(omp_get_max_threads());
   if (scratch.size() < threads) scratch.resize(threads);
-  // Stage 1: (h, q) -> stage; stage 2: stage -> (h, q) with base (h, q).
+  // SSP-RK2 (Gottlieb & Shu, 1998). Stage 1: (h, q) -> stage; stage 2:
+  // stage -> (h, q) with base (h, q).
   const StageContext first_stage{
       &cells, {a.h, a.q, a.bed, a.h, a.q, a.h_stage, a.q_stage}, imposed, physics.gravity, physics.dry_depth, 0.0,
       dt};

@@ -49,7 +49,9 @@ struct StepArrays {
   double* q_stage;
 };
 
-// One SSP-RK2 (Heun) step of the interior cells (Zheng et al., eq. 28):
+// One SSP-RK2 (Heun) step of the interior cells, Zheng et al.'s eq. 28 as
+// the stages of the optimal second-order TVD Runge-Kutta scheme (Gottlieb &
+// Shu, Math. Comp. 67, 1998):
 //   U1 = U + dt L(U),  U <- U/2 + (U1 + dt L(U1))/2,
 // two stages as above, the ghosts of U1 filled from the boundaries between
 // them (the ghosts of U are left for the caller). Each thread walks its

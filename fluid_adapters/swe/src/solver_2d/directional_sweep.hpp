@@ -20,9 +20,10 @@
 // so a state symmetric under x <-> y is advanced symmetrically.
 namespace swe::solver_2d {
 
-// MUSCL reconstructions of a run of cells along one direction (SoA, so the
-// loops vectorise): the states at each cell's lower and upper faces in the
-// face frame, and the bed there (eta_face - h_face).
+// MUSCL reconstructions (van Leer, J. Comput. Phys. 32, 1979) of a run of
+// cells along one direction (SoA, so the loops vectorise): the states at each
+// cell's lower and upper faces in the face frame, and the bed there
+// (eta_face - h_face).
 struct ReconstructedCells {
   std::vector<double> h_lower, h_upper, bed_lower, bed_upper;
   std::vector<double> un_lower, un_upper, ut_lower, ut_upper;

@@ -20,7 +20,10 @@ void StageWorkspace::resize(std::ptrdiff_t nx) {
 
 namespace {
 
-// Rows first_row .. end_row - 1. The y faces of the rows are computed once
+// Rows first_row .. end_row - 1: per face the MUSCL reconstruction (van
+// Leer, J. Comput. Phys. 32, 1979), the hydrostatic reconstruction (Audusse
+// et al., SIAM J. Sci. Comput. 25, 2004) and the Riemann solver, then the
+// row's update (see runge_kutta_stage). The y faces of the rows are computed once
 // each (the lowest one per block of rows twice), row by row, so the working
 // set stays a few rows.
 template <FluxKind flux, LimiterKind limiter, bool with_friction>

@@ -21,7 +21,7 @@ struct StageWorkspace {
   void resize(std::ptrdiff_t nx);
 };
 
-// One explicit stage of SSP-RK2 (Heun):
+// One explicit stage of SSP-RK2 (Heun; Gottlieb & Shu, Math. Comp. 67, 1998):
 //   out = base_weight * base + (1 - base_weight) * (in - dt (R_x(in) + R_y(in)))
 // (stage 1: base_weight 0; stage 2: base = U^n, base_weight 1/2; `out` may be
 // `base`). Then round-off negative depths become 0, dry cells lose their

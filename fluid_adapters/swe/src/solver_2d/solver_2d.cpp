@@ -232,7 +232,7 @@ double Solver2d::stable_time_step() const {
 void Solver2d::step(double dt) {
   Impl& m = *impl_;
   require(dt >= 0.0 && std::isfinite(dt), "time step must be finite and non-negative, got " + number(dt));
-  // Stage 1: U1 = U^n - dt R(U^n).
+  // SSP-RK2 (Gottlieb & Shu, Math. Comp. 67, 1998). Stage 1: U1 = U^n - dt R(U^n).
   solver_2d::runge_kutta_stage(m.stage_arguments(dt, 0.0, false), m.state, m.state, m.stage, m.workspaces);
   m.fill_ghosts(m.stage);
   // Stage 2: U^(n+1) = (U^n + U1 - dt R(U1)) / 2, then Manning friction.

@@ -172,7 +172,8 @@ class IceSolver {
   const FaceField<Dim>& face_pressure() const { return face_pressure_; }
 
  private:
-  // The steps of advance(), in order.
+  // The steps of advance(), in order; the exchange steps are defined in
+  // src/exchange/.
   void compute_face_velocities(double dt);  // eqs. 44-45
   void porous_face_velocity(std::size_t material, int direction, int face, int lower, int upper,
                             double dt);

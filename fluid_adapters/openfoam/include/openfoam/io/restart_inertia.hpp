@@ -1,7 +1,11 @@
 #pragma once
 
 #include <span>
+#include <string>
 #include <vector>
+
+#include "openfoam/case/case_properties.hpp"
+#include "openfoam/io/case_layout.hpp"
 
 namespace openfoam {
 
@@ -23,5 +27,13 @@ namespace openfoam {
 std::vector<double> restart_fluid_fraction(std::span<const double> fluid_fraction,
                                            std::span<const double> density_before,
                                            std::span<const double> density_end);
+
+// MPPICInterFoam's next start given the inertia of the step it would have
+// taken next in one continuous run: restart_fluid_fraction into the alphac
+// file of the end directory `end` from the densities there and at `before`,
+// the time one step earlier.
+void write_restart_inertia(const CaseLayout& layout, const CaseProperties& properties,
+                           const std::string& end, const std::string& before,
+                           std::span<const double> fluid_fraction);
 
 }  // namespace openfoam

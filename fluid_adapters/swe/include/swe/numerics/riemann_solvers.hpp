@@ -55,7 +55,8 @@ inline FaceFlux hll_between(const FaceState& l, const FaceState& r, double g, do
 
 }  // namespace detail
 
-// HLL (Harten, Lax & van Leer) with Einfeldt's speeds; positivity-preserving.
+// HLL (Harten, Lax & van Leer, SIAM Rev. 25, 1983) with Einfeldt's speeds
+// (SIAM J. Numer. Anal. 25, 1988); positivity-preserving.
 // The tangential momentum is upwinded with the mass flux.
 inline FaceFlux hll_flux(const FaceState& l, const FaceState& r, double g) {
   if (l.h <= 0.0 && r.h <= 0.0) return {};
@@ -84,10 +85,11 @@ inline FaceFlux hllc_flux(const FaceState& l, const FaceState& r, double g) {
   return f;
 }
 
-// Roe's flux (Zheng et al., eqs. 30-32) with Roe-averaged velocity
+// Roe's flux (Roe, J. Comput. Phys. 43, 1981; Zheng et al., eqs. 30-32) with
+// Roe-averaged velocity
 //   u^ = (sqrt(h_l) u_l + sqrt(h_r) u_r) / (sqrt(h_l) + sqrt(h_r)),  h^ = (h_l + h_r) / 2
 // (the denominator printed in eq. 31 is a typo for this one), and the
-// Harten-Hyman entropy fix in transonic rarefactions. At a face with a dry
+// Harten-Hyman entropy fix (J. Comput. Phys. 50, 1983) in transonic rarefactions. At a face with a dry
 // side it returns the HLL flux: Roe's linearisation is not
 // positivity-preserving there.
 inline FaceFlux roe_flux(const FaceState& l, const FaceState& r, double g) {

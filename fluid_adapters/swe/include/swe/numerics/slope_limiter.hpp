@@ -9,7 +9,8 @@ namespace swe {
 
 // Limited slope of a MUSCL reconstruction from the one-sided differences
 // `a` (cell minus left neighbour) and `b` (right neighbour minus cell), both
-// per unit length. Zero at extrema; TVD limiters of Sweby's region. On
+// per unit length. Zero at extrema; TVD limiters of Sweby's region (Sweby,
+// SIAM J. Numer. Anal. 21, 1984). On
 // uniform cells, cell value +- slope dx/2 stays between the neighbours' values.
 //
 // The limiter fixed at compile time, without branches: both sides of each
