@@ -324,7 +324,7 @@ class CaseRun {
   // The nearest cell centre of each gauge (gauges.csv, every window).
   void set_up_gauges() {
     if (c_.gauges.empty() && c_.wave_gauges.empty()) return;
-    std::vector<std::string> columns{"time_s"};
+    std::vector<std::string> columns{cosim::column_name("time", "s")};
     const int dim = mesh_.mesh.dimension();
     for (const Gauge& g : c_.gauges) {
       std::size_t best = 0;
@@ -341,11 +341,11 @@ class CaseRun {
         }
       }
       gauge_cells_.push_back(best);
-      columns.push_back(cosim::column_name(g.name + "_p", "Pa"));
-      columns.push_back(cosim::column_name(g.name + "_p_rgh", "Pa"));
+      columns.push_back(cosim::column_name("p_" + g.name, "Pa"));
+      columns.push_back(cosim::column_name("p_rgh_" + g.name, "Pa"));
       for (int k = 0; k < dim; ++k)
-        columns.push_back(cosim::column_name(g.name + "_u" + "xyz"[k], "m/s"));
-      columns.push_back(cosim::column_name(g.name + "_water_fraction", "1"));
+        columns.push_back(cosim::column_name(std::string("u") + "xyz"[k] + "_" + g.name, "m/s"));
+      columns.push_back(cosim::column_name("water_fraction_" + g.name, "1"));
     }
     for (const WaveGauge& g : c_.wave_gauges) {
       // The cells of the grid's column at (x, z), bottom to top (x fastest).
@@ -360,7 +360,7 @@ class CaseRun {
       for (int j = 0; j < box.cells[1]; ++j)
         cells.push_back(static_cast<std::size_t>(i + box.cells[0] * (j + box.cells[1] * k)));
       wave_columns_.push_back(std::move(cells));
-      columns.push_back(cosim::column_name(g.name + "_surface_elevation", "m"));
+      columns.push_back(cosim::column_name("eta_" + g.name, "m"));
     }
     gauges_.emplace(options_.output / "gauges.csv", std::move(columns));
   }
