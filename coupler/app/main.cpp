@@ -91,7 +91,8 @@ int main(int argc, char** argv) {
                       "clear the report directory of an earlier call and start afresh")
       ->excludes("--resume");
   bench_cmd->add_flag("--help-config", bench_help_config,
-                      "list every key of a suite file and the analytic solutions, and exit");
+                      "list every key of a suite file, the analytic solutions and every key of "
+                      "a backend descriptor, and exit");
 
   try {
     app.parse(argc, argv);
@@ -115,7 +116,10 @@ int main(int argc, char** argv) {
       if (bench_help_config) {
         std::cout << cosim::bench::suite_schema().help("Bench suite file (kind: bench_suite)")
                   << "\n"
-                  << cosim::bench::analytic_solutions_help();
+                  << cosim::bench::analytic_solutions_help() << "\n"
+                  << cosim::bench::backend_descriptor_schema().help(
+                         "Backend descriptor (kind: bench_backend; "
+                         "share/cosim/backends/<name>.yaml)");
         return 0;
       }
       if (bench_options.bench.suite_file.empty() || bench_options.bench.output.empty())

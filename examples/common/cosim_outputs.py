@@ -51,12 +51,16 @@ def ice_grid(directory):
 
 
 def wave_gauges(path):
-    """(t, names, surface elevations [time x gauge]) of the wave gauges in a gauges.csv."""
+    """(t, names, surface elevations [time x gauge]) of the wave gauges in a gauges.csv.
+
+    Every backend names a gauge's columns `<quantity>_<gauge> [unit]`; the free
+    surface is `eta_<gauge> [m]`.
+    """
     with open(path) as f:
         rows = list(csv.reader(f))
     header, values = rows[0], np.array([[float(v) for v in r] for r in rows[1:]])
-    names = [h.split("_surface_elevation")[0] for h in header[1:] if "_surface_elevation" in h]
-    columns = [i for i, h in enumerate(header) if "_surface_elevation" in h]
+    columns = [i for i, h in enumerate(header) if h.startswith("eta_")]
+    names = [header[i][len("eta_"):].split(" [")[0] for i in columns]
     return values[:, 0], names, values[:, columns]
 
 

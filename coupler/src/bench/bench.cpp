@@ -64,13 +64,13 @@ RunResult evaluate_run(const PlannedRun& run, const RunRecord& record) {
   for (const auto& m : run.scenario->metrics) {
     if (!record.completed()) {
       result.metrics.push_back(
-          unavailable(m, run.backend->backend, fmt::format("the run {}", record.state)));
+          unavailable(m, run.backend_name(), fmt::format("the run {}", record.state)));
       continue;
     }
     try {
-      result.metrics.push_back(evaluate(m, run.backend->backend, measure(m.quantity, layout)));
+      result.metrics.push_back(evaluate(m, run.backend_name(), measure(m.quantity, layout)));
     } catch (const std::exception& e) {
-      result.metrics.push_back(unavailable(m, run.backend->backend, e.what()));
+      result.metrics.push_back(unavailable(m, run.backend_name(), e.what()));
     }
     const MetricResult& x = result.metrics.back();
     spdlog::info("{} {}: {} {}{}{}", run.id(), m.name, x.value ? fmt::format("{:.6g}", *x.value) : "-",

@@ -8,24 +8,13 @@
 
 namespace cosim::bench {
 
-std::string to_string(Backend backend) {
-  switch (backend) {
-    case Backend::ice: return "ice";
-    case Backend::openfoam: return "openfoam";
-    case Backend::swe: return "swe";
-    case Backend::mpm: return "mpm";
-    case Backend::coupler: return "coupler";
-  }
-  return "?";
-}
-
 std::string to_string(Resolution resolution) {
   return resolution == Resolution::coarse ? "coarse" : "full";
 }
 
-std::optional<double> MetricSpec::tolerance_for(Backend backend) const {
+std::optional<double> MetricSpec::tolerance_for(const std::string& backend) const {
   if (tolerance) return tolerance;
-  const auto it = backend_tolerances.find(to_string(backend));
+  const auto it = backend_tolerances.find(backend);
   return it != backend_tolerances.end() ? std::optional<double>(it->second) : std::nullopt;
 }
 
@@ -40,11 +29,11 @@ namespace {
 
 const std::set<std::string> roles{"soil", "fluid", "case", "job"};
 
-Backend backend_from(const std::string& name, const config::Node& where) {
-  for (auto b : {Backend::ice, Backend::openfoam, Backend::swe, Backend::mpm, Backend::coupler})
-    if (name == to_string(b)) return b;
-  where.fail_at_key(
-      fmt::format("unknown backend '{}' (ice, openfoam, swe, mpm or coupler)", name));
+const BackendDescriptor& backend_from(const std::string& name, const config::Node& where,
+                                      const BackendCatalog& backends) {
+  if (const auto* b = backends.find(name)) return *b;
+  where.fail_at_key(fmt::format("unknown backend '{}' (registered in {}: {})", name,
+                                backends.directory().string(), backends.names_text()));
 }
 
 std::vector<Override> read_overrides(const config::Node& parent,
@@ -85,9 +74,10 @@ std::set<std::string> roles_of(InputForm form) {
   return {};
 }
 
-BackendRuns read_backend(const std::string& name, const config::Node& node, bool coupled) {
+BackendRuns read_backend(const std::string& name, const config::Node& node, bool coupled,
+                         const BackendCatalog& backends) {
   BackendRuns b;
-  b.backend = backend_from(name, node);
+  b.backend = &backend_from(name, node, backends);
   b.where = node.key_location();
   int forms = 0;
   for (const auto& [key, form] :
@@ -103,13 +93,15 @@ BackendRuns read_backend(const std::string& name, const config::Node& node, bool
   if (b.form == InputForm::coupled_fluid && !coupled)
     node["fluid"].fail("a fluid case is coupled to the scenario's soil: give `soil` and "
                        "`coupling` in the scenario, or run the case standalone with `case`");
-  if (b.form == InputForm::coupled_fluid &&
-      !(b.backend == Backend::ice || b.backend == Backend::openfoam || b.backend == Backend::swe))
-    node["fluid"].fail(fmt::format("backend '{}' is not a fluid; the pairings are ice, openfoam "
-                                   "and swe",
-                                   name));
-  if (b.form == InputForm::standalone_case && b.backend == Backend::coupler)
-    node["case"].fail("the coupler has no standalone case: give a `job`");
+  if (b.form == InputForm::coupled_fluid && !b.backend->is_fluid()) {
+    std::vector<std::string> fluids;
+    for (const auto& other : backends.names())
+      if (backends.find(other)->is_fluid()) fluids.push_back(other);
+    node["fluid"].fail(fmt::format("backend '{}' is not a fluid; the pairings are {}", name,
+                                   fmt::join(fluids, ", ")));
+  }
+  if (b.form == InputForm::standalone_case && !b.backend->has_standalone_case())
+    node["case"].fail(fmt::format("the {} has no standalone case: give a `job`", name));
   b.overrides = read_override_set(node, roles_of(b.form));
   const char* form_key = b.form == InputForm::standalone_case ? "case"
                          : b.form == InputForm::coupled_fluid ? "fluid"
@@ -224,7 +216,7 @@ ErrorSpec read_error(const config::Node& node) {
   return e;
 }
 
-MetricSpec read_metric(const config::Node& node) {
+MetricSpec read_metric(const config::Node& node, const BackendCatalog& backends) {
   MetricSpec m;
   m.name = node["name"].as<std::string>();
   m.key_path = node.key_path();
@@ -238,7 +230,7 @@ MetricSpec read_metric(const config::Node& node) {
     if (m.reference.kind == "none") t->fail_at_key("a tolerance needs a reference");
     if (t->is_map()) {
       for (const auto& [backend, value] : t->entries()) {
-        backend_from(backend, value);
+        backend_from(backend, value, backends);
         m.backend_tolerances[backend] = value.as<double>();
       }
     } else {
@@ -251,7 +243,7 @@ MetricSpec read_metric(const config::Node& node) {
   return m;
 }
 
-Scenario read_scenario(const config::Node& node) {
+Scenario read_scenario(const config::Node& node, const BackendCatalog& backends) {
   Scenario s;
   s.name = node["name"].as<std::string>();
   s.where = node.location();
@@ -265,6 +257,11 @@ Scenario read_scenario(const config::Node& node) {
   if (has_soil) {
     Coupling c;
     c.soil = node["soil"].as_path();
+    c.soil_backend = backends.soil();
+    if (c.soil_backend == nullptr)
+      node["soil"].fail(fmt::format("no registered backend takes the soil's side of a pairing "
+                                    "(registered in {}: {})",
+                                    backends.directory().string(), backends.names_text()));
     const auto coupling = node["coupling"];
     c.end_time = coupling["end_time"].as<double>();
     c.window = coupling["window"].as<double>();
@@ -282,11 +279,11 @@ Scenario read_scenario(const config::Node& node) {
           throw InputError(o.where, node.key_path() + ".set",
                            "soil overrides need a coupled scenario (`soil`)");
   for (const auto& [name, b] : node["backends"].entries())
-    s.backends.push_back(read_backend(name, b, has_soil));
+    s.backends.push_back(read_backend(name, b, has_soil, backends));
   std::set<std::string> names;
   if (auto metrics = node.find("metrics")) {
     for (const auto& m : metrics->items()) {
-      s.metrics.push_back(read_metric(m));
+      s.metrics.push_back(read_metric(m, backends));
       if (!names.insert(s.metrics.back().name).second)
         m["name"].fail(fmt::format("a second metric named '{}'", s.metrics.back().name));
     }
@@ -296,7 +293,7 @@ Scenario read_scenario(const config::Node& node) {
 
 }  // namespace
 
-Suite load_suite(const std::filesystem::path& file) {
+Suite load_suite(const std::filesystem::path& file, const BackendCatalog& backends) {
   const auto doc = config::Document::load_file(file);
   const config::Node root = doc.root();
   suite_schema().validate(root);
@@ -308,7 +305,7 @@ Suite load_suite(const std::filesystem::path& file) {
   suite.about = root.get("about", "");
   std::set<std::string> names;
   for (const auto& s : root["scenarios"].items()) {
-    suite.scenarios.push_back(read_scenario(s));
+    suite.scenarios.push_back(read_scenario(s, backends));
     if (!names.insert(suite.scenarios.back().name).second)
       s["name"].fail(fmt::format("a second scenario named '{}'", suite.scenarios.back().name));
   }

@@ -199,7 +199,8 @@ double summarize(const std::string& how, const std::vector<double>& y) {
 
 }  // namespace
 
-MetricResult unavailable(const MetricSpec& metric, Backend backend, const std::string& why) {
+MetricResult unavailable(const MetricSpec& metric, const std::string& backend,
+                         const std::string& why) {
   MetricResult r;
   r.tolerance = metric.tolerance_for(backend);
   r.verdict = Verdict::unavailable;
@@ -207,7 +208,8 @@ MetricResult unavailable(const MetricSpec& metric, Backend backend, const std::s
   return r;
 }
 
-MetricResult evaluate(const MetricSpec& spec, Backend backend, const Measurement& measured) {
+MetricResult evaluate(const MetricSpec& spec, const std::string& backend,
+                      const Measurement& measured) {
   MetricResult out;
   out.measured = measured;
   out.tolerance = spec.tolerance_for(backend);

@@ -34,10 +34,12 @@ struct MetricResult {
 // Compares a measurement with the metric's reference. Reference files are
 // read here; their problems (a missing column, no matching row) make the
 // result unavailable with a note rather than stopping the suite.
-MetricResult evaluate(const MetricSpec& metric, Backend backend, const Measurement& measured);
+MetricResult evaluate(const MetricSpec& metric, const std::string& backend,
+                      const Measurement& measured);
 
 // A result for a run that failed or could not be measured.
-MetricResult unavailable(const MetricSpec& metric, Backend backend, const std::string& why);
+MetricResult unavailable(const MetricSpec& metric, const std::string& backend,
+                         const std::string& why);
 
 // The curve y(x) interpolated linearly at `at`, held constant beyond its ends.
 double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at);

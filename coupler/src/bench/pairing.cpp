@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "cosim/fields.hpp"
@@ -31,152 +33,165 @@ YAML::Node flow_map(std::initializer_list<std::pair<const char*, std::string>> e
   return map;
 }
 
-YAML::Node participant(const std::string& executable, const std::string& config,
-                       const std::string& mesh, const std::string& mesh_kind, int dim,
-                       const std::vector<std::string>& writes,
-                       const std::vector<std::string>& reads) {
-  YAML::Node p;
-  p["executable"] = executable;
-  p["config"] = config;
-  YAML::Node m;
-  m["kind"] = mesh_kind;
-  m["dim"] = dim;
-  m.SetStyle(YAML::EmitterStyle::Flow);
-  p["meshes"][mesh] = m;
-  p["writes"] = field_map(writes, mesh);
-  p["reads"] = field_map(reads, mesh);
-  p["writes"].SetStyle(YAML::EmitterStyle::Flow);
-  p["reads"].SetStyle(YAML::EmitterStyle::Flow);
-  return p;
-}
-
-struct Crossing {
-  std::string field;
-  bool to_fluid = true;
-  std::string mapping = "consistent";
-};
-
 int soil_dimension(const InputFile& soil) {
   const std::string d = scalar_at(soil.root(), "dimension", "2");
   return d == "3" ? 3 : (d == "1" ? 1 : 2);
 }
 
-void porous_pairing(Backend backend, const Scenario& s, PairedJob& out,
-                    const std::string& soil_file, const std::string& fluid_file) {
-  const Coupling& c = *s.coupling;
-  if (!c.drag.IsDefined() || c.drag.IsNull())
-    throw InputError(
-        s.where, "coupling.drag",
-        fmt::format("scenario '{}': the {} pairing needs a drag law", s.name, to_string(backend)));
-  const bool ice = backend == Backend::ice;
-  const int dim = soil_dimension(out.soil);
-  std::vector<std::string> soil_writes{f::solid_fraction.name, f::solid_velocity.name,
-                                       f::solid_bulk_density.name};
-  for (const char* per_cell : {f::permeability.name, f::grain_size.name})
-    if (c.drag[per_cell] && c.drag[per_cell].IsScalar() && c.drag[per_cell].Scalar() == "field")
-      soil_writes.emplace_back(per_cell);
-  std::vector<std::string> soil_reads{f::pore_pressure.name, f::momentum_exchange_impulse.name};
-  std::vector<std::string> fluid_writes{f::pore_pressure.name, f::fluid_velocity.name,
-                                        f::fluid_bulk_density.name,
-                                        f::momentum_exchange_impulse.name};
-  std::vector<std::string> fluid_reads{f::solid_fraction.name, f::solid_velocity.name,
-                                       f::solid_bulk_density.name, f::drag_coefficient.name};
-  std::vector<Crossing> crossings{
-      {f::solid_fraction.name}, {f::solid_velocity.name}, {f::solid_bulk_density.name}};
-  for (const auto& optional : c.optional_reads) {
-    if (optional == f::solid_volume_flux.name && !ice) {
-      soil_writes.push_back(optional);
-      fluid_reads.push_back(optional);
-      crossings.push_back({optional});
-    }
-  }
-  crossings.push_back({f::pore_pressure.name, false});
-  if (ice) {
-    // The pressure's force on the solid in each cell, as the fluid feels the
-    // same gradient (Tran et al., MPMICE, eq. 48).
-    soil_reads.emplace_back(f::pore_pressure_force.name);
-    fluid_writes.emplace_back(f::pore_pressure_force.name);
-    crossings.push_back({f::pore_pressure_force.name, false, "conservative"});
-  }
-
-  const std::string fluid_mesh = ice ? "ice_cells" : "openfoam_cells";
-  // A user's own OpenFOAM case is a cloud of cells, a generated one a grid.
-  const bool cell_cloud = !ice && out.fluid.root()["directory"].IsDefined();
-  YAML::Node job = out.job.root();
-  job["participants"][fluid_participant] =
-      participant(ice ? "ice_fluid" : "openfoam_adapter", fluid_file, fluid_mesh,
-                  cell_cloud ? "cell_cloud" : "uniform_grid", dim, fluid_writes, fluid_reads);
-  job["participants"][soil_participant] = participant("mpm_solver", soil_file, "mpm_grid",
-                                                      "uniform_grid", dim, soil_writes, soil_reads);
-  for (const auto& x : crossings) {
-    job["exchange"].push_back(flow_map({{"field", x.field},
-                                        {"from", x.to_fluid ? soil_participant : fluid_participant},
-                                        {"to", x.to_fluid ? fluid_participant : soil_participant},
-                                        {"mapping", x.mapping}}));
-  }
-  YAML::Node exchange;
-  exchange["fluid"] = fluid_participant;
-  exchange["solid"] = soil_participant;
-  exchange["mesh"] = std::string(fluid_participant) + "." + fluid_mesh;
-  exchange["drag"] = YAML::Clone(c.drag);
-  exchange["drag"].SetStyle(YAML::EmitterStyle::Flow);
-  exchange["solved_by"] = "fluid";
-  job["momentum_exchange"] = exchange;
-
-  // A soil shared by several pairings may carry the blocks of each; this
-  // pairing keeps its own.
-  out.soil.root()["coupling"].remove("surface");
-  YAML::Node grid = out.soil.root()["coupling"]["exchange_grid"];
-  grid["writes"] = sequence_of(soil_writes);
-  grid["reads"] = sequence_of(soil_reads);
-  if (ice) out.fluid.root()["coupling"]["drag"] = "ice";
+bool contains(const std::vector<std::string>& list, const std::string& item) {
+  return std::find(list.begin(), list.end(), item) != list.end();
 }
 
-void bed_pairing(PairedJob& out, const std::string& soil_file, const std::string& fluid_file) {
-  const int dim = soil_dimension(out.soil);
-  YAML::Node job = out.job.root();
-  job["participants"][soil_participant] =
-      participant("mpm_solver", soil_file, "mpm_surface", "uniform_grid", dim - 1,
-                  {f::bed_elevation.name}, {f::bed_traction.name});
-  job["participants"][fluid_participant] = participant(
-      "swe_fluid", fluid_file, "swe_cells", dim == 2 ? "nonuniform_line" : "uniform_grid", dim - 1,
-      {f::bed_traction.name}, {f::bed_elevation.name});
-  job["exchange"].push_back(flow_map({{"field", f::bed_elevation.name},
-                                      {"from", soil_participant},
-                                      {"to", fluid_participant},
-                                      {"mapping", "consistent"}}));
-  job["exchange"].push_back(flow_map({{"field", f::bed_traction.name},
-                                      {"from", fluid_participant},
-                                      {"to", soil_participant},
-                                      {"mapping", "consistent"}}));
-  if (!out.soil.root()["coupling"]["surface"]["cells"])
-    throw InputError(SourceLocation{out.soil.source().string(), 0, 0}, "coupling.surface.cells",
-                     "the shallow-water pairing needs the soil's surface grid "
-                     "(coupling: {surface: {cells: [...]}})");
-  out.soil.root()["coupling"].remove("exchange_grid");
-  YAML::Node surface = out.soil.root()["coupling"]["surface"];
-  surface["writes"] = sequence_of({f::bed_elevation.name});
-  surface["reads"] = sequence_of({f::bed_traction.name});
-  YAML::Node fluid = out.fluid.root()["coupling"];
-  fluid["reads"] = sequence_of({f::bed_elevation.name});
-  fluid["writes"] = sequence_of({f::bed_traction.name});
+// A mesh of the pairing as its participant declares it for this soil and case.
+YAML::Node mesh_node(const PairingMesh& mesh, int soil_dim, const InputFile& own_case) {
+  std::string kind = mesh.kind;
+  for (const auto& rule : mesh.kind_when) {
+    const bool dimension_matches = !rule.soil_dimension || *rule.soil_dimension == soil_dim;
+    const bool key_matches = rule.case_has.empty() || own_case.root()[rule.case_has].IsDefined();
+    if (dimension_matches && key_matches) {
+      kind = rule.kind;
+      break;
+    }
+  }
+  YAML::Node m;
+  m["kind"] = kind;
+  m["dim"] = mesh.dimension == MeshDimension::same_as_soil ? soil_dim : soil_dim - 1;
+  m.SetStyle(YAML::EmitterStyle::Flow);
+  return m;
+}
+
+YAML::Node participant(const std::string& executable, const std::string& config,
+                       const PairingMesh& mesh, YAML::Node mesh_declaration,
+                       const std::vector<std::string>& writes,
+                       const std::vector<std::string>& reads) {
+  YAML::Node p;
+  p["executable"] = executable;
+  p["config"] = config;
+  p["meshes"][mesh.name] = mesh_declaration;
+  p["writes"] = field_map(writes, mesh.name);
+  p["reads"] = field_map(reads, mesh.name);
+  p["writes"].SetStyle(YAML::EmitterStyle::Flow);
+  p["reads"].SetStyle(YAML::EmitterStyle::Flow);
+  return p;
+}
+
+bool has_key_path(const YAML::Node& node, const std::string& key_path) {
+  const auto dot = key_path.find('.');
+  const std::string part = key_path.substr(0, dot);
+  if (!node.IsMap() || !node[part]) return false;
+  return dot == std::string::npos || has_key_path(node[part], key_path.substr(dot + 1));
+}
+
+void remove_key_path(YAML::Node node, const std::string& key_path) {
+  if (!node.IsMap()) return;
+  const auto dot = key_path.find('.');
+  if (dot == std::string::npos) {
+    node.remove(key_path);
+    return;
+  }
+  const std::string part = key_path.substr(0, dot);
+  if (!std::as_const(node)[part]) return;
+  remove_key_path(node[part], key_path.substr(dot + 1));
+}
+
+void set_in(InputFile& file, const std::string& role, const std::string& key_path,
+            const YAML::Node& value, const BackendDescriptor& from) {
+  file.apply(Override{role, key_path, value, SourceLocation{from.file.string(), 0, 0}});
 }
 
 }  // namespace
 
-PairedJob make_paired_job(Backend backend, const Scenario& scenario, InputFile soil,
-                          InputFile fluid, const std::string& job_name,
+PairedJob make_paired_job(const BackendDescriptor& fluid_backend, const Scenario& scenario,
+                          InputFile soil, InputFile fluid, const std::string& job_name,
                           const std::string& soil_file, const std::string& fluid_file) {
-  YAML::Node job;
-  job["kind"] = "job";
-  job["name"] = job_name;
-  job["end_time"] = scenario.coupling->end_time;
-  job["window"] = scenario.coupling->window;
-  PairedJob out{InputFile::from_node(job, "job"), std::move(soil), std::move(fluid)};
-  if (backend == Backend::swe)
-    bed_pairing(out, soil_file, fluid_file);
-  else
-    porous_pairing(backend, scenario, out, soil_file, fluid_file);
+  const Coupling& c = *scenario.coupling;
+  const FluidPairing& pairing = *fluid_backend.fluid_pairing;
+  const BackendDescriptor& soil_backend = *c.soil_backend;
+  const SoilPairing& soil_side = soil_backend.soil_pairings.at(pairing.kind);
+
+  YAML::Node root;
+  root["kind"] = "job";
+  root["name"] = job_name;
+  root["end_time"] = c.end_time;
+  root["window"] = c.window;
+  PairedJob out{InputFile::from_node(root, "job"), std::move(soil), std::move(fluid)};
+
+  const bool momentum_exchange = pairing.momentum_exchange_solved_by.has_value();
+  if (momentum_exchange && (!c.drag.IsDefined() || c.drag.IsNull()))
+    throw InputError(scenario.where, "coupling.drag",
+                     fmt::format("scenario '{}': the {} pairing needs a drag law", scenario.name,
+                                 fluid_backend.name));
+  if (!soil_side.case_requires.empty() && !has_key_path(out.soil.root(), soil_side.case_requires))
+    throw InputError(SourceLocation{out.soil.source().string(), 0, 0}, soil_side.case_requires,
+                     fmt::format("the {} pairing with {} needs it: {}", pairing.kind,
+                                 fluid_backend.name, soil_side.case_requires_why));
+
+  std::vector<std::string> soil_writes = soil_side.writes;
+  std::vector<std::string> soil_reads = soil_side.reads;
+  std::vector<std::string> fluid_writes = pairing.writes;
+  std::vector<std::string> fluid_reads = pairing.reads;
+  std::vector<Crossing> crossings_to_fluid = pairing.from_soil;
+  // The drag law may read the soil's permeability or grain size per cell.
+  if (momentum_exchange)
+    for (const char* per_cell : {f::permeability.name, f::grain_size.name})
+      if (c.drag[per_cell] && c.drag[per_cell].IsScalar() && c.drag[per_cell].Scalar() == "field")
+        soil_writes.emplace_back(per_cell);
+  for (const auto& optional : c.optional_reads) {
+    if (!contains(pairing.optional_reads, optional)) continue;
+    soil_writes.push_back(optional);
+    fluid_reads.push_back(optional);
+    crossings_to_fluid.push_back({optional});
+  }
+  for (const auto& x : pairing.to_soil)
+    if (!contains(soil_reads, x.field)) soil_reads.push_back(x.field);
+
+  const int dim = soil_dimension(out.soil);
+  YAML::Node job = out.job.root();
+  // The job's order is its start order (and MPI ranks): with a momentum
+  // exchange the fluid, whose mesh hosts it, comes first, else the soil.
+  const auto add_fluid = [&] {
+    job["participants"][fluid_participant] =
+        participant(fluid_backend.executable, fluid_file, pairing.mesh,
+                    mesh_node(pairing.mesh, dim, out.fluid), fluid_writes, fluid_reads);
+  };
+  const auto add_soil = [&] {
+    job["participants"][soil_participant] =
+        participant(soil_backend.executable, soil_file, soil_side.mesh,
+                    mesh_node(soil_side.mesh, dim, out.soil), soil_writes, soil_reads);
+  };
+  if (momentum_exchange) {
+    add_fluid();
+    add_soil();
+  } else {
+    add_soil();
+    add_fluid();
+  }
+  const auto cross = [&](const Crossing& x, const char* from, const char* to) {
+    job["exchange"].push_back(
+        flow_map({{"field", x.field}, {"from", from}, {"to", to}, {"mapping", x.mapping}}));
+  };
+  for (const auto& x : crossings_to_fluid) cross(x, soil_participant, fluid_participant);
+  for (const auto& x : pairing.to_soil) cross(x, fluid_participant, soil_participant);
+  if (momentum_exchange) {
+    YAML::Node exchange;
+    exchange["fluid"] = fluid_participant;
+    exchange["solid"] = soil_participant;
+    exchange["mesh"] = std::string(fluid_participant) + "." + pairing.mesh.name;
+    exchange["drag"] = YAML::Clone(c.drag);
+    exchange["drag"].SetStyle(YAML::EmitterStyle::Flow);
+    exchange["solved_by"] = *pairing.momentum_exchange_solved_by;
+    job["momentum_exchange"] = exchange;
+  }
+
+  // A soil shared by several pairings may carry the blocks of each; this
+  // pairing keeps its own.
+  for (const auto& other : soil_side.case_removes) remove_key_path(out.soil.root(), other);
+  set_in(out.soil, "soil", soil_side.case_block + ".writes", sequence_of(soil_writes),
+         soil_backend);
+  set_in(out.soil, "soil", soil_side.case_block + ".reads", sequence_of(soil_reads), soil_backend);
+  for (const auto& [key, value] : pairing.case_settings)
+    set_in(out.fluid, "fluid", key, value, fluid_backend);
+
   out.job.root()["output"]["every"] = 0;
   return out;
 }

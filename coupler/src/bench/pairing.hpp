@@ -5,18 +5,13 @@
 #include "bench/input_file.hpp"
 #include "bench/suite.hpp"
 
-// A pairing: the MPM soil coupled to one fluid backend. It knows which
-// fields cross in each direction, on which meshes, with which mapping, and
-// who solves the drag, so a scenario writes its soil and its coupling once
-// and each backend only its fluid case (architecture.md §4):
-//   ice, openfoam  porous soil in a fluid: the soil sends solid_fraction,
-//                  solid_velocity and solid_bulk_density (and permeability or
-//                  grain_size when the drag law reads them per cell), the
-//                  fluid solves the drag in its own steps (`solved_by:
-//                  fluid`) and returns pore_pressure and the impulse the
-//                  soil receives (ice: also pore_pressure_force);
-//   swe            a seabed under shallow water: bed_elevation up,
-//                  bed_traction down (Zheng et al., Algorithm 1).
+// A pairing: the MPM soil coupled to one fluid backend. Which fields cross in
+// each direction, on which meshes, with which mapping, who solves the drag and
+// which keys each case gets are data of the two backends' descriptors (the
+// fluid's `fluid_pairing`, the soil's `soil_pairings` of the same kind,
+// backend_descriptor.hpp); this builds the job from them, so a scenario writes
+// its soil and its coupling once and each backend only its fluid case
+// (architecture.md §4).
 namespace cosim::bench {
 
 // The participants' names in a paired job (and their output directories).
@@ -33,8 +28,8 @@ struct PairedJob {
 // as `soil_file` and `fluid_file`. Throws InputError (located at the
 // scenario) when the pairing cannot be built, e.g. a porous pairing without
 // a drag law.
-PairedJob make_paired_job(Backend backend, const Scenario& scenario, InputFile soil,
-                          InputFile fluid, const std::string& job_name,
+PairedJob make_paired_job(const BackendDescriptor& fluid_backend, const Scenario& scenario,
+                          InputFile soil, InputFile fluid, const std::string& job_name,
                           const std::string& soil_file, const std::string& fluid_file);
 
 }  // namespace cosim::bench

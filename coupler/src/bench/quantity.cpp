@@ -34,10 +34,11 @@ double number_or(const YAML::Node& params, const char* key, double fallback) {
 // A number that may differ per backend (e.g. the pressure datum:
 // absolute in ICE, gauge in OpenFOAM): `offset: 101325` or
 // `offset: {ice: 101325, openfoam: 0}`.
-double per_backend(const YAML::Node& params, const char* key, Backend backend, double fallback) {
+double per_backend(const YAML::Node& params, const char* key, const std::string& backend,
+                   double fallback) {
   const YAML::Node v = params[key];
   if (!v) return fallback;
-  if (v.IsMap()) return v[to_string(backend)] ? v[to_string(backend)].as<double>() : fallback;
+  if (v.IsMap()) return v[backend] ? v[backend].as<double>() : fallback;
   return v.as<double>();
 }
 
@@ -48,7 +49,7 @@ std::string text_or(const YAML::Node& params, const char* key, const std::string
 // A time series reduced as `at` says: end, max, min, series, or the row
 // nearest a time.
 Measurement reduce(const std::vector<double>& t, std::vector<double> v, const YAML::Node& params,
-                   Backend backend, const std::string& what) {
+                   const std::string& backend, const std::string& what) {
   if (t.empty()) missing(what + ": no rows");
   const double offset = per_backend(params, "offset", backend, 0.0);
   const double divide_by = number_or(params, "divide_by", 1.0);
@@ -100,11 +101,11 @@ std::size_t snapshot_at(const SnapshotReader& snapshots, const YAML::Node& p) {
 }
 
 Measurement gauge(const YAML::Node& p, const RunLayout& run) {
-  const fs::path file = run.fluid(text_or(p, "participant", "")) / gauge_file(run.backend);
+  const fs::path file = run.fluid(text_or(p, "participant", "")) / run.backend->gauge_file_name();
   const auto table = CsvTable::read(file);
   const std::string column =
-      gauge_column(run.backend, p["name"].as<std::string>(), p["variable"].as<std::string>());
-  return reduce(table.column(table.header().front()), table.column(column), p, run.backend,
+      run.backend->gauge_column(p["name"].as<std::string>(), p["variable"].as<std::string>());
+  return reduce(table.column(table.header().front()), table.column(column), p, run.backend->name,
                 file.string() + " " + column);
 }
 
@@ -112,7 +113,7 @@ Measurement time_series(const YAML::Node& p, const RunLayout& run) {
   const fs::path file = run.output / p["file"].as<std::string>();
   const auto table = CsvTable::read(file);
   const std::string column = p["column"].as<std::string>();
-  return reduce(table.column(table.header().front()), table.column(column), p, run.backend,
+  return reduce(table.column(table.header().front()), table.column(column), p, run.backend->name,
                 file.string() + " " + column);
 }
 
@@ -149,11 +150,11 @@ double water_column_height(const SnapshotReader::Grid& g, const SnapshotReader::
 // (-8 f_w + 9 f_1 - f_2) / (3 h), signed along the axis.
 Measurement wall_gradient(const YAML::Node& p, const RunLayout& run) {
   const SnapshotReader snapshots(run.fluid(text_or(p, "participant", "")),
-                                 snapshot_base(run.backend));
+                                 run.backend->snapshot_base());
   if (!snapshots.grid()) missing("wall_gradient needs a fluid on a uniform grid");
   const auto& g = *snapshots.grid();
   const std::size_t s = snapshot_at(snapshots, p);
-  const StoredField stored = stored_field(run.backend, p["field"].as<std::string>());
+  const StoredField stored = run.backend->stored_field(p["field"].as<std::string>());
   const auto f = snapshots.field(s, stored.dataset);
   const std::string wall = p["wall"].as<std::string>();
   const std::size_t axis = wall[0] == 'x' ? 0 : 1;
@@ -178,21 +179,23 @@ Measurement wall_gradient(const YAML::Node& p, const RunLayout& run) {
 
 Measurement profile(const YAML::Node& p, const RunLayout& run) {
   const SnapshotReader snapshots(run.fluid(text_or(p, "participant", "")),
-                                 snapshot_base(run.backend));
+                                 run.backend->snapshot_base());
   const std::size_t s = snapshot_at(snapshots, p);
   const std::string name = p["field"].as<std::string>();
   const bool surface_of_cells = name == "free_surface" && snapshots.grid().has_value();
-  const StoredField stored = stored_field(run.backend, surface_of_cells ? "water_fraction" : name);
+  const StoredField stored = run.backend->stored_field(surface_of_cells ? "water_fraction" : name);
   const auto field = snapshots.field(s, stored.dataset);
   std::optional<SnapshotReader::Field> air;
-  if (surface_of_cells && snapshots.has_field(s, "volume_fraction_air"))
-    air = snapshots.field(s, "volume_fraction_air");
+  if (surface_of_cells && run.backend->fields.count("air_fraction")) {
+    const std::string air_dataset = run.backend->stored_field("air_fraction").dataset;
+    if (snapshots.has_field(s, air_dataset)) air = snapshots.field(s, air_dataset);
+  }
   const auto from = point_of(p["from"]);
   const auto to = point_of(p["to"]);
   const int points = p["points"] ? p["points"].as<int>() : 50;
   const std::string axis = text_or(p, "axis", "x");
   const std::size_t a = axis == "x" ? 0 : (axis == "y" ? 1 : 2);
-  const double offset = per_backend(p, "offset", run.backend, 0.0);
+  const double offset = per_backend(p, "offset", run.backend->name, 0.0);
   const double divide_by = number_or(p, "divide_by", 1.0);
   Measurement m;
   m.time = snapshots.times()[s];
@@ -215,12 +218,15 @@ Measurement profile(const YAML::Node& p, const RunLayout& run) {
 // holding more water than the threshold, in every snapshot.
 Measurement water_front(const YAML::Node& p, const RunLayout& run) {
   const SnapshotReader snapshots(run.fluid(text_or(p, "participant", "")),
-                                 snapshot_base(run.backend));
+                                 run.backend->snapshot_base());
   const double threshold = number_or(p, "threshold", 0.5);
   const double length_scale = number_or(p, "length_scale", 1.0);
   const double time_scale = number_or(p, "time_scale", 1.0);
-  const std::string field = run.backend == Backend::swe ? "depth" : "water_fraction";
-  const StoredField stored = stored_field(run.backend, field);
+  if (run.backend->front_field.empty())
+    missing(fmt::format("the {} backend has no field a water front is measured on (front_field "
+                        "in {})",
+                        run.backend->name, run.backend->file.string()));
+  const StoredField stored = run.backend->stored_field(run.backend->front_field);
   Measurement m;
   m.abscissa = time_scale == 1.0 ? "t [s]" : fmt::format("t x {:.5g} [1]", time_scale);
   if (p["start"]) {
@@ -316,7 +322,8 @@ double measure_points(const std::string& measure, const Points& now, const Point
 
 Measurement soil(const YAML::Node& p, const RunLayout& run) {
   const std::string participant = text_or(p, "participant", soil_participant);
-  const fs::path dir = run.backend == Backend::mpm ? run.output : run.participant(participant);
+  // A run of the soil's own solver holds its particles at the top.
+  const fs::path dir = run.backend->is_soil() ? run.output : run.participant(participant);
   const SnapshotReader snapshots(dir, "particles");
   const auto moving = moving_bodies(run.soil_case(participant));
   const std::string what = p["measure"].as<std::string>();

@@ -33,17 +33,6 @@ std::string directory_name(const std::string& label) {
 
 namespace {
 
-std::string solver_of(Backend b) {
-  switch (b) {
-    case Backend::ice: return "ice_fluid";
-    case Backend::openfoam: return "openfoam_adapter";
-    case Backend::swe: return "swe_fluid";
-    case Backend::mpm: return "mpm_solver";
-    case Backend::coupler: return "cosim";
-  }
-  return {};
-}
-
 // The simulated end time of a case or job, as its file gives it.
 double end_time_of(const InputFile& f) {
   for (const char* key : {"end_time", "time.end_time"}) {
@@ -94,7 +83,7 @@ void prepare(PlannedRun& run, Resolution resolution) {
       c.write(input / "case.yaml");
       key.add("case", c);
       run.end_time = end_time_of(c);
-      run.executable = solver_of(b.backend);
+      run.executable = b.backend->executable;
       run.args = {"--config", (input / "case.yaml").string(), "--output", out.string()};
       break;
     }
@@ -115,8 +104,8 @@ void prepare(PlannedRun& run, Resolution resolution) {
       const fs::path soil_file = input / "soil.yaml";
       const fs::path fluid_file = input / "fluid.yaml";
       PairedJob paired =
-          make_paired_job(b.backend, s, std::move(soil), std::move(fluid),
-                          directory_name(s.name + "_" + to_string(b.backend)), soil_file.string(),
+          make_paired_job(*b.backend, s, std::move(soil), std::move(fluid),
+                          directory_name(s.name + "_" + b.backend->name), soil_file.string(),
                           fluid_file.string());
       paired.job.apply_all(overrides, "job");
       paired.soil.write(soil_file);
@@ -162,7 +151,7 @@ std::vector<PlannedRun> plan_runs(const Suite& suite, const BenchOptions& option
         run.scenario = &s;
         run.backend = &b;
         run.level = level;
-        std::string dir = to_string(b.backend);
+        std::string dir = b.backend->name;
         if (level != nullptr) dir += "--" + directory_name(level->label);
         run.directory = base / dir;
         prepare(run, options.resolution);

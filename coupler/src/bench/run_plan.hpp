@@ -34,7 +34,7 @@ struct PlannedRun {
   std::filesystem::path output() const { return directory / "out"; }
   // scenario/backend or scenario/backend@level, for messages.
   std::string id() const;
-  std::string backend_name() const { return to_string(backend->backend); }
+  std::string backend_name() const { return backend->backend->name; }
   std::string level_label() const;
 };
 

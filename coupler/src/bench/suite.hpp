@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/backend_catalog.hpp"
 #include "cosim/config/schema.hpp"
 #include "cosim/error.hpp"
 
@@ -16,11 +17,9 @@
 // reference it is measured against and the metrics that measure it. A
 // coupled scenario writes its soil and its coupling once; each backend adds
 // only its own fluid case (the job joining the two is built from the
-// backend's pairing, pairing.hpp).
+// backend's pairing, pairing.hpp). Backends are those registered
+// (backend_catalog.hpp), known by their descriptors.
 namespace cosim::bench {
-
-enum class Backend { ice, openfoam, swe, mpm, coupler };
-std::string to_string(Backend backend);
 
 enum class Resolution { coarse, full };
 std::string to_string(Resolution resolution);
@@ -57,7 +56,7 @@ struct Level {
 enum class InputForm { standalone_case, coupled_fluid, ready_job };
 
 struct BackendRuns {
-  Backend backend = Backend::ice;
+  const BackendDescriptor* backend = nullptr;
   InputForm form = InputForm::standalone_case;
   std::filesystem::path file;
   std::map<Resolution, std::filesystem::path> file_at;  // another file at one resolution
@@ -68,7 +67,8 @@ struct BackendRuns {
 
 // The coupling settings a coupled scenario writes once for all its pairings.
 struct Coupling {
-  std::filesystem::path soil;  // the MPM case
+  std::filesystem::path soil;                 // the MPM case
+  const BackendDescriptor* soil_backend = nullptr;  // its solver
   double end_time = 0.0;
   double window = 0.0;
   YAML::Node drag;                          // the job's momentum_exchange.drag
@@ -120,7 +120,7 @@ struct MetricSpec {
   std::string key_path;
   SourceLocation where;
 
-  std::optional<double> tolerance_for(Backend backend) const;
+  std::optional<double> tolerance_for(const std::string& backend) const;
 };
 
 struct Scenario {
@@ -145,8 +145,10 @@ struct Suite {
 
 // Reads and validates a suite file in full before anything runs: unknown
 // keys, missing files, backends a scenario's form cannot use, metrics
-// without a quantity. Errors are InputErrors at `file:line:col: key`.
-Suite load_suite(const std::filesystem::path& file);
+// without a quantity. Errors are InputErrors at `file:line:col: key`. The
+// backends a suite names are looked up in `backends`.
+Suite load_suite(const std::filesystem::path& file,
+                 const BackendCatalog& backends = registered_backends());
 
 const config::Schema& suite_schema();
 

@@ -2,8 +2,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 
+#include "bench/backend_catalog.hpp"
 #include "scratch_directory.hpp"
 
 namespace cosim::bench::testing {
@@ -18,5 +20,12 @@ class Scratch : public cosim::testing::ScratchDirectory {
     return file;
   }
 };
+
+// A registered backend's descriptor (build/share/cosim/backends/<name>.yaml).
+inline const BackendDescriptor& backend(const std::string& name) {
+  const BackendDescriptor* b = registered_backends().find(name);
+  if (b == nullptr) throw std::runtime_error("no registered backend '" + name + "'");
+  return *b;
+}
 
 }  // namespace cosim::bench::testing

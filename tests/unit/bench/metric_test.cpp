@@ -39,22 +39,22 @@ Measurement curve(std::vector<double> x, std::vector<double> y, std::string absc
 TEST(Metric, ANumberAgainstAValueIsJudgedByItsTolerance) {
   MetricSpec m = metric("{value: 2.0}");
   m.tolerance = 0.1;
-  MetricResult r = evaluate(m, Backend::ice, number(2.1));
+  MetricResult r = evaluate(m, "ice", number(2.1));
   EXPECT_NEAR(*r.error, 0.05, 1e-15);
   EXPECT_EQ(r.verdict, Verdict::pass);
-  r = evaluate(m, Backend::ice, number(2.5));
+  r = evaluate(m, "ice", number(2.5));
   EXPECT_EQ(r.verdict, Verdict::fail);
   m.error.norm = "absolute";
-  EXPECT_NEAR(*evaluate(m, Backend::ice, number(2.5)).error, 0.5, 1e-15);
+  EXPECT_NEAR(*evaluate(m, "ice", number(2.5)).error, 0.5, 1e-15);
   m.tolerance.reset();
-  EXPECT_EQ(evaluate(m, Backend::ice, number(2.5)).verdict, Verdict::measured);
+  EXPECT_EQ(evaluate(m, "ice", number(2.5)).verdict, Verdict::measured);
 }
 
 TEST(Metric, AToleranceMayBeGivenPerBackend) {
   MetricSpec m = metric("{value: 1.0}");
   m.backend_tolerances["ice"] = 0.01;
-  EXPECT_EQ(evaluate(m, Backend::ice, number(1.5)).verdict, Verdict::fail);
-  EXPECT_EQ(evaluate(m, Backend::openfoam, number(1.5)).verdict, Verdict::measured);
+  EXPECT_EQ(evaluate(m, "ice", number(1.5)).verdict, Verdict::fail);
+  EXPECT_EQ(evaluate(m, "openfoam", number(1.5)).verdict, Verdict::measured);
 }
 
 TEST(Metric, AnAnalyticNumberIsTheSolutionsValue) {
@@ -62,7 +62,7 @@ TEST(Metric, AnAnalyticNumberIsTheSolutionsValue) {
       "{analytic: darcy_pore_velocity, parameters: {solid_fraction: 0.6, pressure_drop: 50662.5, "
       "grain_size: 1.0e-3, length: 1.0}}");
   const double exact = DarcyColumn{1e-3, 1e-3, 1.0}.pore_velocity(0.6, 50662.5);
-  const MetricResult r = evaluate(m, Backend::ice, number(exact * 1.01));
+  const MetricResult r = evaluate(m, "ice", number(exact * 1.01));
   EXPECT_NEAR(*r.reference, exact, 1e-15 * exact);
   EXPECT_NEAR(*r.error, 0.01, 1e-12);
 }
@@ -74,19 +74,19 @@ TEST(Metric, ACurveAgainstAnAnalyticCurveAtItsSnapshotsTime) {
   MetricSpec m = m0;
   m.error.scale = 9810.0;
   Measurement c = curve({0.0, 0.5, 1.0}, {9810.0, 4905.0 + 98.1, 0.0}, "y [m]");
-  const MetricResult r = evaluate(m, Backend::ice, c);
+  const MetricResult r = evaluate(m, "ice", c);
   EXPECT_NEAR(*r.error, 0.01, 1e-12);
   EXPECT_FALSE(r.value.has_value());  // a curve against a reference is summed up by its error
   ASSERT_EQ(r.reference_x.size(), 3u);
   EXPECT_DOUBLE_EQ(r.reference_y[0], 9810.0);
   m.error.norm = "mean_abs";
-  EXPECT_NEAR(*evaluate(m, Backend::ice, c).error, 98.1 / 3 / 9810.0, 1e-12);
+  EXPECT_NEAR(*evaluate(m, "ice", c).error, 98.1 / 3 / 9810.0, 1e-12);
   m.error.norm = "relative_l1";
   m.error.scale = 1.0;
-  EXPECT_NEAR(*evaluate(m, Backend::ice, c).error, 98.1 / (9810.0 + 4905.0), 1e-12);
+  EXPECT_NEAR(*evaluate(m, "ice", c).error, 98.1 / (9810.0 + 4905.0), 1e-12);
   m.error.norm = "max_abs";
   m.error.window = std::make_pair(0.6, 1.0);
-  EXPECT_NEAR(*evaluate(m, Backend::ice, c).error, 0.0, 1e-15);  // only y = 1 in the window
+  EXPECT_NEAR(*evaluate(m, "ice", c).error, 0.0, 1e-15);  // only y = 1 in the window
 }
 
 TEST(Metric, ACurveAgainstAFileSelectsRowsByText) {
@@ -96,7 +96,7 @@ TEST(Metric, ACurveAgainstAFileSelectsRowsByText) {
                         "max_relative");
   m.reference.csv = file;
   // The simulated front runs 10 % ahead at T = 1 and on time at T = 2.
-  const MetricResult r = evaluate(m, Backend::ice, curve({0.0, 1.0, 2.0}, {1.0, 2.2, 3.0}));
+  const MetricResult r = evaluate(m, "ice", curve({0.0, 1.0, 2.0}, {1.0, 2.2, 3.0}));
   EXPECT_NEAR(*r.error, 0.1, 1e-12);
   EXPECT_EQ(r.reference_x, (std::vector<double>{1.0, 2.0}));
 }
@@ -108,20 +108,20 @@ TEST(Metric, TheSpeedAndTheFittedOffsetOfASeries) {
   m.reference.csv = file;
   // The same front 0.2 ahead in time, at the same speed.
   const Measurement ahead = curve({0.0, 1.0, 2.0, 3.0, 4.0}, {0.2, 1.2, 2.2, 3.2, 4.2});
-  EXPECT_NEAR(*evaluate(m, Backend::ice, ahead).error, 0.0, 1e-12);
+  EXPECT_NEAR(*evaluate(m, "ice", ahead).error, 0.0, 1e-12);
   m.error.norm = "max_relative_offset_fitted";
   m.error.offsets = {0.0, 0.4};
-  const MetricResult r = evaluate(m, Backend::ice, ahead);
+  const MetricResult r = evaluate(m, "ice", ahead);
   EXPECT_NEAR(*r.error, 0.0, 1e-9);
   EXPECT_NE(r.note.find("offset 0.2"), std::string::npos) << r.note;
   m.error.norm = "max_relative";
-  EXPECT_NEAR(*evaluate(m, Backend::ice, ahead).error, 0.2, 1e-12);
+  EXPECT_NEAR(*evaluate(m, "ice", ahead).error, 0.2, 1e-12);
 }
 
 TEST(Metric, AMissingReferenceMakesTheResultUnavailableNotFatal) {
   MetricSpec m = metric("{csv: /nowhere/ref.csv, column: v}");
   m.reference.csv = "/nowhere/ref.csv";
-  const MetricResult r = evaluate(m, Backend::ice, number(1.0));
+  const MetricResult r = evaluate(m, "ice", number(1.0));
   EXPECT_EQ(r.verdict, Verdict::unavailable);
   EXPECT_NE(r.note.find("/nowhere/ref.csv"), std::string::npos);
 }

@@ -9,6 +9,7 @@
 namespace cosim::bench {
 namespace {
 
+using testing::backend;
 using testing::Scratch;
 
 std::vector<std::string> exchanged(const YAML::Node& job) {
@@ -27,6 +28,7 @@ Scenario porous_scenario(const std::string& drag) {
   s.coupling = Coupling{};
   s.coupling->end_time = 1.0;
   s.coupling->window = 1e-3;
+  s.coupling->soil_backend = registered_backends().soil();
   if (!drag.empty()) s.coupling->drag = YAML::Load(drag);
   s.coupling->optional_reads = {"solid_volume_flux"};
   return s;
@@ -38,7 +40,7 @@ const char* const soil_text =
 TEST(Pairing, IceSendsThePressureForceAndSolvesTheDrag) {
   Scratch dir;
   const Scenario s = porous_scenario("{law: kozeny_carman, permeability: field, fluid_viscosity: 1e-3}");
-  const PairedJob p = make_paired_job(Backend::ice, s, InputFile::read(dir.write("soil.yaml", soil_text)),
+  const PairedJob p = make_paired_job(backend("ice"), s, InputFile::read(dir.write("soil.yaml", soil_text)),
                                       InputFile::read(dir.write("water.yaml", "kind: ice_case\n")),
                                       "column_ice", "/in/soil.yaml", "/in/water.yaml");
   const YAML::Node job = p.job.root();
@@ -62,7 +64,7 @@ TEST(Pairing, OpenFoamReadsTheOptionalVolumeFluxAndNoPressureForce) {
   Scratch dir;
   const Scenario s = porous_scenario("{law: kozeny_carman, grain_size: 1e-3, fluid_viscosity: 1e-3}");
   const PairedJob p = make_paired_job(
-      Backend::openfoam, s, InputFile::read(dir.write("soil.yaml", soil_text)),
+      backend("openfoam"), s, InputFile::read(dir.write("soil.yaml", soil_text)),
       InputFile::read(dir.write("water.yaml", "kind: openfoam_case\ndirectory: .\n")), "c", "s", "w");
   const YAML::Node job = p.job.root();
   EXPECT_EQ(job["participants"]["water"]["executable"].as<std::string>(), "openfoam_adapter");
@@ -76,7 +78,7 @@ TEST(Pairing, OpenFoamReadsTheOptionalVolumeFluxAndNoPressureForce) {
 TEST(Pairing, ShallowWaterExchangesTheBedAndItsTraction) {
   Scratch dir;
   Scenario s = porous_scenario("");
-  const PairedJob p = make_paired_job(Backend::swe, s, InputFile::read(dir.write("soil.yaml", soil_text)),
+  const PairedJob p = make_paired_job(backend("swe"), s, InputFile::read(dir.write("soil.yaml", soil_text)),
                                       InputFile::read(dir.write("water.yaml", "kind: swe_case\n")),
                                       "c", "s", "w");
   const YAML::Node job = p.job.root();
@@ -91,12 +93,12 @@ TEST(Pairing, ShallowWaterExchangesTheBedAndItsTraction) {
 
 TEST(Pairing, RefusesAPorousPairingWithoutADragLaw) {
   Scratch dir;
-  EXPECT_THROW(make_paired_job(Backend::ice, porous_scenario(""),
+  EXPECT_THROW(make_paired_job(backend("ice"), porous_scenario(""),
                                InputFile::read(dir.write("soil.yaml", soil_text)),
                                InputFile::read(dir.write("water.yaml", "kind: ice_case\n")), "c",
                                "s", "w"),
                InputError);
-  EXPECT_THROW(make_paired_job(Backend::swe, porous_scenario(""),
+  EXPECT_THROW(make_paired_job(backend("swe"), porous_scenario(""),
                                InputFile::read(dir.write("bare.yaml", "kind: mpm_case\n")),
                                InputFile::read(dir.write("water.yaml", "kind: swe_case\n")), "c",
                                "s", "w"),

@@ -11,6 +11,7 @@ namespace cosim::bench {
 namespace {
 
 using testing::Scratch;
+using testing::backend;
 
 QuantitySpec quantity(const std::string& kind, const std::string& yaml) {
   return {kind, YAML::Load(yaml), "metrics[0].quantity", {}};
@@ -50,7 +51,7 @@ TEST(SnapshotReader, ReadsTimesFieldsAndTheGrid) {
 TEST(Quantity, AProfileSamplesTheSnapshotNearestItsTime) {
   Scratch dir;
   write_vof_snapshots(dir.path() / "out");
-  const RunLayout run{Backend::openfoam, false, dir.path() / "input", dir.path() / "out"};
+  const RunLayout run{&backend("openfoam"), false, dir.path() / "input", dir.path() / "out"};
   const Measurement m = measure(
       quantity("profile", "{field: pressure, from: [0.25, 0.25], to: [1.75, 0.25], points: 4, "
                           "time: 0.98, offset: {openfoam: 10, ice: 0}}"),
@@ -69,7 +70,7 @@ TEST(Quantity, AProfileSamplesTheSnapshotNearestItsTime) {
 TEST(Quantity, TheWaterFrontAlongTheFloorInEverySnapshot) {
   Scratch dir;
   write_vof_snapshots(dir.path() / "out");
-  const RunLayout run{Backend::openfoam, false, dir.path() / "input", dir.path() / "out"};
+  const RunLayout run{&backend("openfoam"), false, dir.path() / "input", dir.path() / "out"};
   const Measurement m =
       measure(quantity("water_front", "{length_scale: 2.0, time_scale: 10, start: [-1, 0]}"), run);
   EXPECT_EQ(m.x, (std::vector<double>{-1.0, 0.0, 10.0}));
@@ -80,7 +81,7 @@ TEST(Quantity, AGaugeColumnInTheBackendsNamingReducedAsAsked) {
   Scratch dir;
   dir.write("out/water/gauges.csv",
             "time [s],p_probe [Pa],ux_probe [m/s]\n0,5,0\n0.5,7,1\n1.0,6,2\n");
-  const RunLayout ice{Backend::ice, true, dir.path() / "input", dir.path() / "out"};
+  const RunLayout ice{&backend("ice"), true, dir.path() / "input", dir.path() / "out"};
   EXPECT_DOUBLE_EQ(*measure(quantity("gauge", "{name: probe, variable: pressure}"), ice).value, 6);
   EXPECT_DOUBLE_EQ(*measure(quantity("gauge", "{name: probe, variable: pressure, at: max}"), ice).value, 7);
   EXPECT_DOUBLE_EQ(
@@ -100,7 +101,7 @@ TEST(Quantity, AGaugeColumnInTheBackendsNamingReducedAsAsked) {
 TEST(Quantity, ANumberOfASummary) {
   Scratch dir;
   dir.write("out/summary.json", R"({"metrics": {"max_conservative_mapping_error": {"value": 3e-16}}})");
-  const RunLayout run{Backend::coupler, true, dir.path() / "input", dir.path() / "out"};
+  const RunLayout run{&backend("coupler"), true, dir.path() / "input", dir.path() / "out"};
   EXPECT_DOUBLE_EQ(
       *measure(quantity("summary", "{value: /metrics/max_conservative_mapping_error/value}"), run).value,
       3e-16);

@@ -8,6 +8,7 @@ namespace cosim::bench {
 namespace {
 
 using testing::Scratch;
+using testing::backend;
 
 struct TwoBackends {
   Suite suite;
@@ -25,8 +26,8 @@ struct TwoBackends {
     m.reference.kind = "value";
     s.metrics.push_back(m);
     BackendRuns ice, foam;
-    ice.backend = Backend::ice;
-    foam.backend = Backend::openfoam;
+    ice.backend = &backend("ice");
+    foam.backend = &backend("openfoam");
     s.backends = {ice, foam};
     suite.name = "small";
     suite.title = "Small";

@@ -9,6 +9,7 @@ namespace cosim::bench {
 namespace {
 
 using testing::Scratch;
+using testing::backend;
 
 // A run of a shell command; the suite objects it points to outlive it.
 struct ShellRun {
@@ -17,7 +18,7 @@ struct ShellRun {
   PlannedRun run;
   ShellRun(const std::filesystem::path& dir, const std::string& name, const std::string& command) {
     scenario.name = name;
-    backend.backend = Backend::coupler;
+    backend.backend = &testing::backend("coupler");
     run.scenario = &scenario;
     run.backend = &backend;
     run.directory = dir / name;

@@ -60,7 +60,7 @@ TEST(IceOutput, GaugesRecordTheCellHoldingThePoint) {
   std::ifstream in(file);
   std::string header;
   std::getline(in, header);
-  EXPECT_EQ(header, "time [s],p_g [Pa],ux_g [m/s],uy_g [m/s],phi_a_g [1],phi_b_g [1]");
+  EXPECT_EQ(header, "time [s],p_g [Pa],ux_g [m/s],uy_g [m/s],a_fraction_g [1],b_fraction_g [1]");
   std::string row;
   std::getline(in, row);
   EXPECT_NE(row.find(",2.5,0,0.25,0.75"), std::string::npos) << row;

@@ -22,7 +22,7 @@ std::vector<std::string> gauge_columns(const std::vector<GaugePoint>& gauges,
       columns.push_back(cosim::column_name(fmt::format("u{}_{}", axis_name[d], g.name), "m/s"));
     }
     for (const FluidMaterial& m : solver.materials()) {
-      columns.push_back(cosim::column_name(fmt::format("phi_{}_{}", m.name, g.name), "1"));
+      columns.push_back(cosim::column_name(fmt::format("{}_fraction_{}", m.name, g.name), "1"));
     }
   }
   return columns;

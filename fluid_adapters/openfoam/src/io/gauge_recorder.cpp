@@ -42,16 +42,16 @@ std::vector<std::size_t> column_cells(const GeneratedCase& box, const WaveGauge&
 }
 
 std::vector<std::string> columns(const CaseDescription& c, int dim) {
-  std::vector<std::string> names{"time_s"};
+  std::vector<std::string> names{cosim::column_name("time", "s")};
   for (const Gauge& g : c.gauges) {
-    names.push_back(cosim::column_name(g.name + "_p", "Pa"));
-    names.push_back(cosim::column_name(g.name + "_p_rgh", "Pa"));
+    names.push_back(cosim::column_name("p_" + g.name, "Pa"));
+    names.push_back(cosim::column_name("p_rgh_" + g.name, "Pa"));
     for (int k = 0; k < dim; ++k)
-      names.push_back(cosim::column_name(g.name + "_u" + "xyz"[k], "m/s"));
-    names.push_back(cosim::column_name(g.name + "_water_fraction", "1"));
+      names.push_back(cosim::column_name(std::string("u") + "xyz"[k] + "_" + g.name, "m/s"));
+    names.push_back(cosim::column_name("water_fraction_" + g.name, "1"));
   }
   for (const WaveGauge& g : c.wave_gauges)
-    names.push_back(cosim::column_name(g.name + "_surface_elevation", "m"));
+    names.push_back(cosim::column_name("eta_" + g.name, "m"));
   return names;
 }
 

@@ -38,9 +38,11 @@ struct GaugePoint {
   std::array<double, 3> point{};
 };
 
-// gauges.csv: time, then per gauge the pressure, the mixture velocity
+// gauges.csv: `time [s]`, then per gauge the pressure, the mixture velocity
 // components and each material's volume fraction in the cell holding the
-// point. Throws cosim::InputError for a point outside the grid.
+// point, as `<quantity>_<gauge> [unit]` (p, ux, uy, uz, <material>_fraction),
+// the columns every backend writes. Throws cosim::InputError for a point
+// outside the grid.
 template <int Dim>
 class GaugeRecorder {
  public:
