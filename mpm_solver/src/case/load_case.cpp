@@ -92,18 +92,18 @@ class CaseReader {
     dim_ = root_["dimension"].as<int>();
     c_.dimension = dim_;
     read_grid(root_["grid"]);
-    c_.shape = read_choice(root_, "shape",
+    c_.shape = read_choice<ShapeKind>(root_, "shape",
                            {{"linear", ShapeKind::linear},
                             {"gimp", ShapeKind::gimp},
                             {"quadratic_bspline", ShapeKind::quadratic_bspline}});
-    c_.scheme = read_choice(root_, "scheme",
+    c_.scheme = read_choice<UpdateScheme>(root_, "scheme",
                             {{"usl", UpdateScheme::usl}, {"musl", UpdateScheme::musl}});
     c_.flip_fraction = root_.get<double>("flip_fraction");
-    c_.locking = read_choice(root_, "locking",
+    c_.locking = read_choice<LockingMitigation>(root_, "locking",
                              {{"none", LockingMitigation::none},
                               {"bbar", LockingMitigation::bbar},
                               {"fbar", LockingMitigation::fbar}});
-    c_.gimp_domain = read_choice(root_, "gimp_domain",
+    c_.gimp_domain = read_choice<GimpDomain>(root_, "gimp_domain",
                                  {{"initial", GimpDomain::initial}, {"deformed", GimpDomain::deformed}});
     read_time(root_["time"]);
     if (auto g = root_.find("gravity")) c_.gravity = read_vector(*g, dim_);
@@ -217,7 +217,7 @@ class CaseReader {
 
     const Node ppc_node = node["particles_per_cell"];
     const std::array<int, 3> ppc = read_counts(ppc_node, dim_, "particles_per_cell");
-    const auto seeding = read_choice(node, "seeding",
+    const auto seeding = read_choice<case_loading::Seeding>(node, "seeding",
                                      {{"regular", case_loading::Seeding::regular},
                                       {"r2", case_loading::Seeding::r2}});
     const Node geometry = node["geometry"];
@@ -257,7 +257,7 @@ class CaseReader {
 
   RigidMotion read_rigid(const Node& rigid) {
     RigidMotion motion;
-    motion.kind = read_choice(rigid, "motion",
+    motion.kind = read_choice<RigidMotion::Kind>(rigid, "motion",
                               {{"fixed", RigidMotion::Kind::fixed},
                                {"prescribed", RigidMotion::Kind::prescribed},
                                {"free", RigidMotion::Kind::free}});
@@ -281,7 +281,7 @@ class CaseReader {
           fmt::format("porosity {} exceeds max_porosity {}", p.porosity, p.max_porosity));
     if (auto permeability = porous.find("permeability")) {
       p.permeability_model =
-          read_choice(*permeability, "model",
+          read_choice<PermeabilityModel>(*permeability, "model",
                       {{"kozeny_carman_pan", PermeabilityModel::kozeny_carman_pan},
                        {"kozeny_carman_tran", PermeabilityModel::kozeny_carman_tran},
                        {"constant", PermeabilityModel::constant}});
