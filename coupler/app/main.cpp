@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*help_config || help_config_flag) {
-      std::cout << cosim::job::job_schema().help("Job file (kind: job)");
+      std::cout << cosim::job::job_help();
       return 0;
     }
     if (*help_fields) {

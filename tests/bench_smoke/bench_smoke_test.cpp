@@ -18,7 +18,7 @@
 #include <string>
 #include <tuple>
 
-#include "bench/csv_table.hpp"
+#include "cosim/io/csv_table.hpp"
 #include "bench/suite.hpp"
 #include "cosim/error.hpp"
 #include "openfoam/foam/installation.hpp"
@@ -67,7 +67,7 @@ TEST(BenchSmoke, TheSuitesReportHasEveryRowWithinTolerance) {
                               std::chrono::seconds(7200));
   ASSERT_EQ(r.exit_code, 0) << r.output;
 
-  const auto table = bench::CsvTable::read(out / "results.csv");
+  const auto table = CsvTable::read(out / "results.csv");
   const auto column = [&](std::size_t row, const char* name) {
     return table.text(row, table.index(name));
   };

@@ -7,8 +7,8 @@
 #include <limits>
 
 #include "bench/analytic_solution.hpp"
-#include "bench/csv_table.hpp"
 #include "cosim/error.hpp"
+#include "cosim/io/csv_table.hpp"
 
 namespace cosim::bench {
 

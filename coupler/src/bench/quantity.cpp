@@ -11,10 +11,10 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "bench/csv_table.hpp"
 #include "bench/pairing.hpp"
 #include "cosim/config/document.hpp"
 #include "cosim/error.hpp"
+#include "cosim/io/csv_table.hpp"
 #include "cosim/io/snapshot_reader.hpp"
 
 namespace cosim::bench {

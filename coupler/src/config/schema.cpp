@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <stdexcept>
 
 #include "config/schema_spec.hpp"
 #include "cosim/config/closest_key.hpp"
+#include "cosim/config/document.hpp"
 #include "cosim/config/kind.hpp"
 
 namespace cosim::config {
@@ -245,8 +247,15 @@ Schema& Schema::length(std::size_t min_length, std::size_t max_length) {
   return *this;
 }
 
-Schema& Schema::default_value(std::string shown) {
-  edit().default_shown = std::move(shown);
+Schema& Schema::default_value(std::string yaml) {
+  edit().default_shown = std::move(yaml);
+  edit().default_is_value = true;
+  return *this;
+}
+
+Schema& Schema::default_note(std::string text) {
+  edit().default_shown = std::move(text);
+  edit().default_is_value = false;
   return *this;
 }
 
@@ -315,5 +324,119 @@ void Schema::validate(const Node& node) const {
       return;
   }
 }
+
+void Schema::add_defaults(const Node& node) const {
+  const Spec& spec = *spec_;
+  switch (spec.type) {
+    case Type::object:
+      if (!node.is_map()) return;
+      for (const Spec::Key& key : spec.keys) {
+        if (auto present = node.find(key.name)) {
+          key.value->add_defaults(*present);
+          continue;
+        }
+        const Spec& value = key.value->spec();
+        if (key.required || !value.default_is_value) continue;
+        YAML::Node document = node.yaml();  // shares the document's tree
+        document[key.name] = YAML::Load(value.default_shown);
+        key.value->add_defaults(node[key.name]);
+      }
+      return;
+    case Type::sequence:
+      if (node.is_sequence())
+        for (const Node& item : node.items()) spec.element->add_defaults(item);
+      return;
+    case Type::map_of:
+      if (node.is_map())
+        for (const auto& entry : node.entries()) spec.element->add_defaults(entry.second);
+      return;
+    case Type::any_of:
+      for (const Schema& alternative : spec.alternatives) {
+        if (!fits_shape(alternative.spec(), node)) continue;
+        try {
+          alternative.validate(node);
+        } catch (const InputError&) {
+          continue;
+        }
+        alternative.add_defaults(node);
+        return;
+      }
+      return;
+    default:
+      return;
+  }
+}
+
+namespace {
+
+const Schema* structured(const Schema& schema) {
+  const Schema::Spec& spec = schema.spec();
+  if (spec.type != Type::any_of) return &schema;
+  for (const Schema& alternative : spec.alternatives) {
+    if (alternative.spec().type != Type::one_of) return &alternative;
+  }
+  return &schema;
+}
+
+}  // namespace
+
+std::string Schema::default_of(const std::string& key_path) const {
+  const Schema* at = this;
+  std::size_t start = 0;
+  while (start <= key_path.size()) {
+    const std::size_t dot = key_path.find('.', start);
+    const std::string part =
+        key_path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    const Spec& spec = structured(*at)->spec();
+    const Schema* next = nullptr;
+    if ((part == "<name>" && spec.type == Type::map_of) ||
+        (part == "[]" && spec.type == Type::sequence)) {
+      next = spec.element.get();
+    } else if (const Spec::Key* key = spec.find_key(part)) {
+      next = key->value.get();
+    }
+    if (next == nullptr) throw std::out_of_range("no key '" + key_path + "' in the schema");
+    at = next;
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  return at->spec().default_is_value ? at->spec().default_shown : std::string();
+}
+
+namespace {
+
+void check_defaults_of(const Schema& schema, const std::string& path) {
+  const Schema::Spec& spec = schema.spec();
+  if (spec.default_is_value) {
+    const std::string name = "default of " + (path.empty() ? std::string("the file") : path);
+    try {
+      schema.validate(Document::load_string(spec.default_shown + "\n", name).root());
+    } catch (const std::exception& error) {
+      throw std::logic_error(fmt::format("{} '{}' is refused by its own schema: {}", name,
+                                         spec.default_shown, error.what()));
+    }
+  }
+  auto child = [&path](const std::string& part) { return path.empty() ? part : path + "." + part; };
+  switch (spec.type) {
+    case Type::object:
+      for (const auto& key : spec.keys) check_defaults_of(*key.value, child(key.name));
+      return;
+    case Type::sequence:
+      check_defaults_of(*spec.element, path + "[]");
+      return;
+    case Type::map_of:
+      check_defaults_of(*spec.element, child("<name>"));
+      return;
+    case Type::any_of:
+      for (const Schema& alternative : spec.alternatives) check_defaults_of(alternative, path);
+      return;
+    default:
+      return;
+  }
+}
+
+}  // namespace
+
+void Schema::check_defaults() const { check_defaults_of(*this, ""); }
 
 }  // namespace cosim::config

@@ -56,6 +56,7 @@ struct Schema::Spec {
   std::size_t max_length = std::numeric_limits<std::size_t>::max();
 
   std::string default_shown;
+  bool default_is_value = false;  // default_value (filled in), not default_note
   std::string unit;
 
   const Key* find_key(const std::string& name) const {

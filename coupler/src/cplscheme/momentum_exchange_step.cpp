@@ -7,6 +7,7 @@
 
 #include "cosim/error.hpp"
 #include "cosim/fields.hpp"
+#include "exchange/drag_law_registry.hpp"
 #include "exchange/two_phase_exchange.hpp"
 
 namespace cosim::cplscheme {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "builtin_drag_laws.hpp"
+#include "exchange/drag_law_keys.hpp"
 
 namespace cosim::exchange {
 
@@ -40,21 +40,25 @@ double Beetstra::coefficient(const DragInput& input) const {
   if (phi_s <= 0) return 0.0;
   if (n <= 0) return std::numeric_limits<double>::infinity();
   const double mu = fluid_viscosity_;
-  const double d =
-      grain_size_ ? *grain_size_ : detail::checked_cell_value(input.grain_size, "grain size");
+  const double d = grain_size_ ? *grain_size_
+                               : drag_law_keys::checked_cell_value(input.grain_size, "grain size");
   const double reynolds = n * input.fluid_density * d * input.relative_speed / mu;  // eq. 26
   return 18.0 * phi_s * n * mu / (d * d) * beetstra_f(phi_s, reynolds);             // eq. 25
 }
 
-namespace detail {
-
-std::unique_ptr<DragLaw> make_beetstra(DragParameters& parameters) {
-  const double mu = parameters.positive("fluid_viscosity");
-  std::optional<double> grain_size;
-  if (!parameters.is_per_cell("grain_size")) grain_size = parameters.positive("grain_size");
-  return std::make_unique<Beetstra>(mu, grain_size);
+config::Schema Beetstra::schema() {
+  config::Schema schema = drag_law_keys::base_schema(
+      law,
+      "Beetstra drag, fitted to flow through sphere packings, 0.1 < phi_s < 0.6 and Re < 1000 "
+      "(Tran et al., MPMICE, eqs. 25-28).");
+  drag_law_keys::add_fluid_viscosity(schema);
+  drag_law_keys::add_grain_size(schema);
+  return schema;
 }
 
-}  // namespace detail
+std::unique_ptr<DragLaw> Beetstra::make(const config::Node& node) {
+  return std::make_unique<Beetstra>(node["fluid_viscosity"].as<double>(),
+                                    drag_law_keys::value_or_per_cell(node["grain_size"]));
+}
 
 }  // namespace cosim::exchange

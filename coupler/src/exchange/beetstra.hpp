@@ -1,7 +1,11 @@
 #pragma once
 
+#include <memory>
 #include <optional>
+#include <string_view>
 
+#include "cosim/config/node.hpp"
+#include "cosim/config/schema.hpp"
 #include "exchange/drag_law.hpp"
 
 namespace cosim::exchange {
@@ -18,9 +22,13 @@ double beetstra_f(double solid_fraction, double reynolds);
 // YAML: {law: beetstra, fluid_viscosity: <Pa s>, grain_size: <m> | field}.
 class Beetstra final : public DragLaw {
  public:
+  static constexpr std::string_view law = "beetstra";
+  static config::Schema schema();
+  static std::unique_ptr<DragLaw> make(const config::Node& node);
+
   Beetstra(double fluid_viscosity, std::optional<double> grain_size);
 
-  std::string_view name() const override { return "beetstra"; }
+  std::string_view name() const override { return law; }
   double coefficient(const DragInput& input) const override;
   CellInput cell_input() const override;
 

@@ -1,5 +1,10 @@
 #pragma once
 
+#include <memory>
+#include <string_view>
+
+#include "cosim/config/node.hpp"
+#include "cosim/config/schema.hpp"
 #include "exchange/drag_law.hpp"
 
 namespace cosim::exchange {
@@ -9,9 +14,13 @@ namespace cosim::exchange {
 // YAML: {law: constant, coefficient: <kg m^-3 s^-1>}.
 class ConstantDrag final : public DragLaw {
  public:
+  static constexpr std::string_view law = "constant";
+  static config::Schema schema();
+  static std::unique_ptr<DragLaw> make(const config::Node& node);
+
   explicit ConstantDrag(double coefficient) : coefficient_(coefficient) {}
 
-  std::string_view name() const override { return "constant"; }
+  std::string_view name() const override { return law; }
   double coefficient(const DragInput&) const override { return coefficient_; }
 
  private:

@@ -3,9 +3,11 @@
 #include <cmath>
 #include <limits>
 
-#include "builtin_drag_laws.hpp"
+#include "exchange/drag_law_keys.hpp"
 
 namespace cosim::exchange {
+
+using drag_law_keys::checked_cell_value;
 
 double kozeny_carman_permeability(double d50, double porosity) {
   const double phi_s = 1.0 - porosity;
@@ -26,10 +28,9 @@ double Forchheimer::coefficient(const DragInput& input) const {
   if (n <= 0) return std::numeric_limits<double>::infinity();
   double k = 0;
   if (basis_ == Basis::permeability) {
-    k = value_ ? *value_ : detail::checked_cell_value(input.permeability, "permeability");
+    k = value_ ? *value_ : checked_cell_value(input.permeability, "permeability");
   } else {
-    const double d50 =
-        value_ ? *value_ : detail::checked_cell_value(input.grain_size, "grain size");
+    const double d50 = value_ ? *value_ : checked_cell_value(input.grain_size, "grain size");
     k = kozeny_carman_permeability(d50, n);
   }
   if (std::isinf(k)) return 0.0;
@@ -38,16 +39,21 @@ double Forchheimer::coefficient(const DragInput& input) const {
          1.75 * input.fluid_density * std::sqrt(n) * input.relative_speed / std::sqrt(150.0 * k);
 }
 
-namespace detail {
-
-std::unique_ptr<DragLaw> make_forchheimer(DragParameters& parameters) {
-  const double mu = parameters.positive("fluid_viscosity");
-  const BedLengthScale scale = read_bed_length_scale(parameters);
-  return std::make_unique<Forchheimer>(
-      mu, scale.from_grain_size ? Forchheimer::Basis::grain_size : Forchheimer::Basis::permeability,
-      scale.value);
+config::Schema Forchheimer::schema() {
+  config::Schema schema = drag_law_keys::base_schema(
+      law,
+      "Forchheimer drag, nonlinear in the relative speed (Pan et al. 2021, eq. 3), the "
+      "permeability given or from the grain size D50 (eq. 4).");
+  drag_law_keys::add_fluid_viscosity(schema);
+  drag_law_keys::add_bed_length_scale(schema);
+  return schema;
 }
 
-}  // namespace detail
+std::unique_ptr<DragLaw> Forchheimer::make(const config::Node& node) {
+  const drag_law_keys::BedLengthScale scale = drag_law_keys::read_bed_length_scale(node);
+  return std::make_unique<Forchheimer>(
+      node["fluid_viscosity"].as<double>(),
+      scale.from_grain_size ? Basis::grain_size : Basis::permeability, scale.value);
+}
 
 }  // namespace cosim::exchange

@@ -1,7 +1,11 @@
 #pragma once
 
+#include <memory>
 #include <optional>
+#include <string_view>
 
+#include "cosim/config/node.hpp"
+#include "cosim/config/schema.hpp"
 #include "exchange/drag_law.hpp"
 
 namespace cosim::exchange {
@@ -17,11 +21,15 @@ double kozeny_carman_permeability(double d50, double porosity);
 // either length may be `field`.
 class Forchheimer final : public DragLaw {
  public:
+  static constexpr std::string_view law = "forchheimer";
+  static config::Schema schema();
+  static std::unique_ptr<DragLaw> make(const config::Node& node);
+
   enum class Basis { grain_size, permeability };
 
   Forchheimer(double fluid_viscosity, Basis basis, std::optional<double> value);
 
-  std::string_view name() const override { return "forchheimer"; }
+  std::string_view name() const override { return law; }
   double coefficient(const DragInput& input) const override;
   CellInput cell_input() const override;
 

@@ -1,7 +1,11 @@
 #pragma once
 
+#include <memory>
 #include <optional>
+#include <string_view>
 
+#include "cosim/config/node.hpp"
+#include "cosim/config/schema.hpp"
 #include "exchange/drag_law.hpp"
 
 namespace cosim::exchange {
@@ -13,12 +17,16 @@ namespace cosim::exchange {
 // where either length may be the word `field` to read it per cell.
 class KozenyCarman final : public DragLaw {
  public:
+  static constexpr std::string_view law = "kozeny_carman";
+  static config::Schema schema();
+  static std::unique_ptr<DragLaw> make(const config::Node& node);
+
   enum class Basis { grain_size, permeability };
 
   // `value` is D_p [m] or kappa [m^2]; nullopt reads it per cell.
   KozenyCarman(double fluid_viscosity, Basis basis, std::optional<double> value);
 
-  std::string_view name() const override { return "kozeny_carman"; }
+  std::string_view name() const override { return law; }
   double coefficient(const DragInput& input) const override;
   CellInput cell_input() const override;
 

@@ -50,9 +50,11 @@ struct ExchangeSpec {
 
 enum class TransportKind { zmq, mpi };
 
+// The settings of a job as load_job reads them; the defaults of optional
+// keys are the job schema's (job_schema.cpp), never repeated here.
 struct ZmqSpec {
-  std::string scheme = "ipc";  // ipc | tcp
-  std::string host = "127.0.0.1";
+  std::string scheme;  // ipc | tcp
+  std::string host;
   bool allow_non_loopback = false;
 };
 
@@ -104,7 +106,7 @@ struct EnergyExchangeSpec {
 // run before its first window above `refuse_above` times the bound, unless
 // the job accepts it.
 struct StabilityCheck {
-  double refuse_above = 10.0;
+  double refuse_above = 0.0;
   bool accept_unstable = false;
 };
 
@@ -120,7 +122,7 @@ struct Job {
   TransportKind transport = TransportKind::zmq;
   ZmqSpec zmq;
   com::Extrapolation extrapolation = com::Extrapolation::constant;
-  double window_timeout_s = 600.0;
+  double window_timeout_s = 0.0;
   double output_every = 0.0;                  // 0: no snapshots of the exchanged fields
   std::vector<ParticipantSpec> participants;  // in file order
   std::vector<ExchangeSpec> exchanges;
@@ -131,8 +133,10 @@ struct Job {
   std::size_t windows() const;  // number of coupling windows
 };
 
-// The schema of `kind: job` files; also produces `cosim run --help-config`.
+// The schema of `kind: job` files.
 const config::Schema& job_schema();
+// `cosim help-config`: the job's keys, then each drag law's.
+std::string job_help();
 
 // Loads, validates (schema, then cross-references: unknown participants,
 // fields read that nobody writes, mismatched mesh dimensions, ...) and

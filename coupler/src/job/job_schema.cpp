@@ -1,3 +1,4 @@
+#include "exchange/drag_law_registry.hpp"
 #include "job/job.hpp"
 
 namespace cosim::job {
@@ -97,7 +98,8 @@ Schema momentum_exchange_schema() {
       .required("mesh", Schema::string().non_empty(),
                 "Exchange mesh, as <participant>.<mesh> (usually the fluid's grid).")
       .required("drag", Schema::any(),
-                "Drag law: {law: kozeny_carman | forchheimer | beetstra | constant, ...}.")
+                "Drag law: a mapping with `law: <name>` and that law's keys, each law listed "
+                "below as `momentum_exchange.drag with law: <name>`.")
       .optional("solved_by", Schema::one_of({"coupler", "fluid"}).default_value("coupler"),
                 "coupler: the exchange is solved once per window and both phases read "
                 "momentum_exchange_impulse; fluid: the fluid solves it in each of its steps "
@@ -135,7 +137,7 @@ Schema make_job_schema() {
                 "Coupling window; participants sub-cycle their own steps inside it.")
       .optional("transport", Schema::one_of({"zmq", "mpi"}).default_value("zmq"),
                 "How fields travel between processes.")
-      .optional("zmq", zmq_schema(), "ZeroMQ options.")
+      .optional("zmq", zmq_schema().default_value("{}"), "ZeroMQ options.")
       .optional("extrapolation", Schema::one_of({"constant", "linear"}).default_value("constant"),
                 "How a participant sees its partner's fields inside a window.")
       .optional("window_timeout",
@@ -154,9 +156,9 @@ Schema make_job_schema() {
       .optional("energy_exchange", energy_exchange_schema().default_value("none"),
                 "Implicit heat exchange between a fluid and a solid, solved by the coupler each "
                 "window; both read the heat they receive as 'heat_exchange_energy'.")
-      .optional("stability_check", stability_check_schema(),
+      .optional("stability_check", stability_check_schema().default_value("{}"),
                 "The explicit coupling's window against its stability bound.")
-      .optional("output", output_schema(), "Coupler output.");
+      .optional("output", output_schema().default_value("{}"), "Coupler output.");
   return s;
 }
 
@@ -165,6 +167,11 @@ Schema make_job_schema() {
 const config::Schema& job_schema() {
   static const Schema schema = make_job_schema();
   return schema;
+}
+
+std::string job_help() {
+  return job_schema().help("Job file (kind: job)") + "\n" +
+         exchange::DragLawRegistry::instance().help();
 }
 
 }  // namespace cosim::job

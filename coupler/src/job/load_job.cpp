@@ -7,9 +7,9 @@
 
 #include "com/transport.hpp"
 #include "cosim/config/document.hpp"
-#include "exchange/drag_law.hpp"
 #include "cosim/fields.hpp"
 #include "cosim/io/content_hash.hpp"
+#include "exchange/drag_law_registry.hpp"
 #include "job/job.hpp"
 
 namespace cosim::job {
@@ -33,9 +33,7 @@ MeshKind mesh_kind_from(const config::Node& node) {
 std::map<std::string, std::string> field_map(const config::Node& p, const char* key,
                                              const std::map<std::string, MeshSpec>& meshes) {
   std::map<std::string, std::string> out;
-  auto node = p.find(key);
-  if (!node) return out;
-  for (const auto& [field, mesh] : node->entries()) {
+  for (const auto& [field, mesh] : p[key].entries()) {
     const auto mesh_name = mesh.as<std::string>();
     if (!meshes.count(mesh_name))
       mesh.fail(fmt::format("mesh '{}' is not among this participant's meshes", mesh_name));
@@ -50,10 +48,9 @@ ParticipantSpec read_participant(const std::string& name, const config::Node& p)
   spec.where = p.key_location();
   spec.executable = p["executable"].as<std::string>();
   if (auto c = p.find("config")) spec.config = c->as_path();
-  if (auto a = p.find("args")) spec.args = a->as<std::vector<std::string>>();
-  if (auto meshes = p.find("meshes"))
-    for (const auto& [mesh_name, m] : meshes->entries())
-      spec.meshes[mesh_name] = {mesh_kind_from(m["kind"]), m["dim"].as<int>(), m.key_location()};
+  spec.args = p.get<std::vector<std::string>>("args");
+  for (const auto& [mesh_name, m] : p["meshes"].entries())
+    spec.meshes[mesh_name] = {mesh_kind_from(m["kind"]), m["dim"].as<int>(), m.key_location()};
   spec.writes = field_map(p, "writes", spec.meshes);
   spec.reads = field_map(p, "reads", spec.meshes);
   for (const auto& [field, mesh] : spec.reads)
@@ -70,7 +67,7 @@ MappingSpec read_mapping(const config::Node& m) {
     return spec;
   }
   spec.constraint = mapping::constraint_from_string(m["constraint"].as<std::string>());
-  if (auto k = m.find("kernel")) spec.kernel = mapping::kernel_from_string(k->as<std::string>());
+  spec.kernel = mapping::kernel_from_string(m.get<std::string>("kernel"));
   if (auto b = m.find("bounds")) {
     const auto v = b->as<std::vector<double>>();
     if (!(v[0] < v[1])) b->fail("bounds must be [lo, hi] with lo < hi");
@@ -83,10 +80,8 @@ MappingSpec read_mapping(const config::Node& m) {
 
 // Cross-references the schema cannot see.
 void check_exchanges(Job& job, const config::Node& root) {
-  auto list = root.find("exchange");
-  if (!list) return;
   std::map<std::pair<std::string, std::string>, std::string> seen;  // (to, field) -> key path
-  const auto items = list->items();
+  const auto items = root["exchange"].items();
   for (std::size_t i = 0; i < items.size(); ++i) {
     const config::Node& e = items[i];
     ExchangeSpec x;
@@ -203,9 +198,9 @@ MomentumExchangeSpec read_momentum_exchange(const Job& job, const config::Node& 
   spec.mesh_owner = pair.mesh_owner;
   spec.mesh = pair.mesh;
   spec.drag = m["drag"].yaml();
-  if (auto by = m.find("solved_by"); by && by->as<std::string>() == "fluid")
-    spec.solved_by = ExchangeSolver::fluid;
-  const auto law = exchange::make_drag_law(spec.drag, spec.drag_key_path, job.file.string());
+  spec.solved_by =
+      m.get<std::string>("solved_by") == "fluid" ? ExchangeSolver::fluid : ExchangeSolver::coupler;
+  const auto law = exchange::make_drag_law(m["drag"]);
   const ParticipantSpec& fluid = *pair.fluid;
   const ParticipantSpec& solid = *pair.solid;
   for (const char* field : {f::solid_fraction.name, f::solid_velocity.name, f::solid_bulk_density.name})
@@ -287,19 +282,19 @@ Job load_job(const std::filesystem::path& file) {
   const config::Document doc = config::Document::load_file(file);
   const config::Node root = doc.root();
   job_schema().validate(root);
+  job_schema().add_defaults(root);
 
   Job job;
   job.file = file;
   job.name = root["name"].as<std::string>();
   check_name(root["name"], job.name, 100, "._-", "the job's name");
-  job.start_time = root.get<double>("start_time", 0.0);
+  job.start_time = root.get<double>("start_time");
   job.end_time = root["end_time"].as<double>();
   job.window = root["window"].as<double>();
   job.window_where = root["window"].location();
-  if (auto c = root.find("stability_check")) {
-    job.stability.refuse_above = c->get<double>("refuse_above", job.stability.refuse_above);
-    job.stability.accept_unstable = c->get<bool>("accept_unstable", false);
-  }
+  const config::Node stability = root["stability_check"];
+  job.stability.refuse_above = stability.get<double>("refuse_above");
+  job.stability.accept_unstable = stability.get<bool>("accept_unstable");
   if (!(job.end_time > job.start_time))
     root["end_time"].fail(fmt::format("end time {} s is not after the start time {} s",
                                       job.end_time, job.start_time));
@@ -309,22 +304,20 @@ Job load_job(const std::filesystem::path& file) {
   if ((job.end_time - job.start_time) / job.window > 1e9)
     root["window"].fail("more than 1e9 coupling windows");
   job.transport =
-      root.get<std::string>("transport", "zmq") == "mpi" ? TransportKind::mpi : TransportKind::zmq;
-  if (auto z = root.find("zmq")) {
-    job.zmq.scheme = z->get<std::string>("scheme", "ipc");
-    job.zmq.host = z->get<std::string>("host", "127.0.0.1");
-    job.zmq.allow_non_loopback = z->get<bool>("allow_non_loopback", false);
-  }
-  job.extrapolation = root.get<std::string>("extrapolation", "constant") == "linear"
+      root.get<std::string>("transport") == "mpi" ? TransportKind::mpi : TransportKind::zmq;
+  const config::Node zmq = root["zmq"];
+  job.zmq.scheme = zmq.get<std::string>("scheme");
+  job.zmq.host = zmq.get<std::string>("host");
+  job.zmq.allow_non_loopback = zmq.get<bool>("allow_non_loopback");
+  job.extrapolation = root.get<std::string>("extrapolation") == "linear"
                           ? com::Extrapolation::linear
                           : com::Extrapolation::constant;
-  job.window_timeout_s = root.get<double>("window_timeout", 600.0);
-  if (auto o = root.find("output")) {
-    job.output_every = o->get<double>("every", 0.0);
-    if (job.output_every > 0.0 && (job.end_time - job.start_time) / job.output_every > 1e6)
-      (*o)["every"].fail(fmt::format("{} s gives more than a million snapshots over the run",
+  job.window_timeout_s = root.get<double>("window_timeout");
+  const config::Node output = root["output"];
+  job.output_every = output.get<double>("every");
+  if (job.output_every > 0.0 && (job.end_time - job.start_time) / job.output_every > 1e6)
+    output["every"].fail(fmt::format("{} s gives more than a million snapshots over the run",
                                      job.output_every));
-  }
 
   for (const auto& [name, p] : root["participants"].entries()) {
     if (name == com::coupler_peer) p.fail_at_key("'coupler' is reserved for the coupler itself");

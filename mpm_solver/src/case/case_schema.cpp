@@ -34,7 +34,7 @@ Schema time_schema() {
                 "alpha of the critical time step alpha h / (c + |v|) (Zheng et al., eq. 23).")
       .optional("min_time_step", Schema::number().positive().unit("s").default_value("1e-12"),
                 "A stable time step below this ends the run as a numerical failure (exit 4).")
-      .optional("max_time_step", Schema::number().positive().unit("s").default_value("none"),
+      .optional("max_time_step", Schema::number().positive().unit("s").default_note("none"),
                 "Upper bound of the time step.");
   return time;
 }
@@ -96,11 +96,11 @@ Schema geostatic_schema() {
   Schema geostatic = Schema::object(
       "Initial effective stress sigma'_v = -gamma' (surface - z), sigma'_h = K0 sigma'_v.");
   geostatic
-      .optional("k0", Schema::number().non_negative().default_value("1 - sin(phi), or nu/(1 - nu)"),
+      .optional("k0", Schema::number().non_negative().default_note("1 - sin(phi), or nu/(1 - nu)"),
                 "Lateral earth pressure coefficient.")
-      .optional("unit_weight", Schema::number().positive().unit("N/m^3").default_value("rho |g|"),
+      .optional("unit_weight", Schema::number().positive().unit("N/m^3").default_note("rho |g|"),
                 "Effective unit weight gamma'.")
-      .optional("surface", Schema::number().unit("m").default_value("top of the body"),
+      .optional("surface", Schema::number().unit("m").default_note("top of the body"),
                 "Elevation of the free surface.");
   return geostatic;
 }
@@ -122,7 +122,7 @@ Schema body_schema() {
           "direction; with r2 seeding the product is the number per cell volume.")
       .optional("seeding", Schema::one_of({"regular", "r2"}).default_value("regular"),
                 "regular: cell-aligned lattice; r2: R2 quasi-random sequence.")
-      .optional("initial_velocity", coordinates().unit("m/s").default_value("0"),
+      .optional("initial_velocity", coordinates().unit("m/s").default_note("0"),
                 "Velocity at t = 0.")
       .optional("porous", porous_schema(),
                 "Porous medium (coupled with a fluid); a rigid body's pores keep their porosity.")
@@ -156,7 +156,7 @@ Schema face_schema() {
   Schema frictional = Schema::object("Coulomb friction on the face.");
   frictional.required("frictional", Schema::number().non_negative(), "Coefficient mu.");
   return Schema::any_of({Schema::one_of({"free", "fixed", "slip"}), frictional})
-      .default_value("free");
+      .default_note("free");
 }
 
 Schema boundaries_schema() {
@@ -178,10 +178,10 @@ Schema thermal_schema() {
       "Heat conduction in the thermal bodies (Tran et al., MPMICE, eqs. 55-56, 92): one "
       "temperature field on the grid shared by every thermal body; the explicit step is also "
       "limited to safety_factor h^2 / (2 dim max k_eff / (rho c)).");
-  thermal.optional("enabled", Schema::boolean().default_value("true when a body is thermal"),
+  thermal.optional("enabled", Schema::boolean().default_note("true when a body is thermal"),
                    "false: temperatures stay at their initial values.");
   for (const auto& [name, doc] : grid_faces)
-    thermal.optional(name, Schema(face).default_value("{type: insulated}"), doc);
+    thermal.optional(name, Schema(face).default_note("{type: insulated}"), doc);
   return thermal;
 }
 
@@ -232,7 +232,7 @@ Schema output_schema() {
 
 Schema mpm_case_schema() {
   Schema s = Schema::file("mpm_case", "A standalone case of the MPM solver.");
-  s.optional("name", Schema::string().non_empty().default_value("file name"), "Case name.")
+  s.optional("name", Schema::string().non_empty().default_note("file name"), "Case name.")
       .required("dimension", Schema::integer().range(2, 3), "2 (plane strain) or 3.")
       .required("grid", grid_schema(), "Background grid.")
       .optional("shape",
@@ -248,7 +248,7 @@ Schema mpm_case_schema() {
                 "GIMP particle domain: the initial size (uGIMP), or stretched every step with the "
                 "deformation gradient, l_i = l_0,i |F_ii| (cpGIMP). Read by the gimp shape only.")
       .required("time", time_schema(), "Time stepping.")
-      .optional("gravity", coordinates().unit("m/s^2").default_value("0"),
+      .optional("gravity", coordinates().unit("m/s^2").default_note("0"),
                 "Gravity vector, one value per dimension.")
       .optional("gravity_ramp_time", Schema::number().non_negative().unit("s").default_value("0"),
                 "Gravity grows linearly from zero over this time.")
@@ -258,13 +258,13 @@ Schema mpm_case_schema() {
                 "Named materials, each a mapping with a `type` (models listed below); a case of "
                 "rigid bodies only needs none.")
       .required("bodies", Schema::sequence(body_schema()).length(1, unlimited), "The bodies.")
-      .optional("contact", contact_schema(), "Contact between bodies.")
+      .optional("contact", contact_schema().default_value("{}"), "Contact between bodies.")
       .optional("boundaries", boundaries_schema(), "Grid faces.")
       .optional("thermal", thermal_schema(),
                 "Heat conduction and the faces' temperature conditions.")
       .optional("loads", Schema::sequence(load_schema()), "Surface loads.")
       .optional("probes", Schema::sequence(probe_schema()), "Particles recorded to probes.csv.")
-      .optional("output", output_schema(), "Output.")
+      .optional("output", output_schema().default_value("{}"), "Output.")
       .optional("coupling", coupling::coupling_schema(),
                 "What the solver exchanges when `cosim run` starts it (ignored standalone).")
       .optional("threads", Schema::integer().non_negative().default_value("0"),

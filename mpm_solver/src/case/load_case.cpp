@@ -61,14 +61,13 @@ std::array<int, 3> read_counts(const Node& node, int dimension, const char* what
 }
 
 template <class Enum>
-Enum read_choice(const Node& root, std::string_view key, Enum fallback,
+Enum read_choice(const Node& root, std::string_view key,
                  std::initializer_list<std::pair<const char*, Enum>> choices) {
-  const auto node = root.find(key);
-  if (!node) return fallback;
-  const auto text = node->as<std::string>();
+  const Node node = root[key];
+  const auto text = node.as<std::string>();
   for (const auto& [name, value] : choices)
     if (text == name) return value;
-  node->fail(fmt::format("unknown value '{}'", text));  // the schema refuses it first
+  node.fail(fmt::format("unknown value '{}'", text));  // the schema refuses it first
 }
 
 int index_of(const std::vector<std::string>& names, const Node& node, const char* what) {
@@ -88,49 +87,48 @@ class CaseReader {
 
   CaseDescription read() {
     mpm_case_schema().validate(root_);
+    mpm_case_schema().add_defaults(root_);
     c_.name = root_.get<std::string>("name", c_.file.stem().string());
     dim_ = root_["dimension"].as<int>();
     c_.dimension = dim_;
     read_grid(root_["grid"]);
-    c_.shape = read_choice(root_, "shape", ShapeKind::gimp,
+    c_.shape = read_choice<ShapeKind>(root_, "shape",
                            {{"linear", ShapeKind::linear},
                             {"gimp", ShapeKind::gimp},
                             {"quadratic_bspline", ShapeKind::quadratic_bspline}});
-    c_.scheme = read_choice(root_, "scheme", UpdateScheme::musl,
+    c_.scheme = read_choice<UpdateScheme>(root_, "scheme",
                             {{"usl", UpdateScheme::usl}, {"musl", UpdateScheme::musl}});
-    c_.flip_fraction = root_.get<double>("flip_fraction", 0.99);
-    c_.locking = read_choice(root_, "locking", LockingMitigation::none,
+    c_.flip_fraction = root_.get<double>("flip_fraction");
+    c_.locking = read_choice<LockingMitigation>(root_, "locking",
                              {{"none", LockingMitigation::none},
                               {"bbar", LockingMitigation::bbar},
                               {"fbar", LockingMitigation::fbar}});
-    c_.gimp_domain = read_choice(root_, "gimp_domain", GimpDomain::initial,
+    c_.gimp_domain = read_choice<GimpDomain>(root_, "gimp_domain",
                                  {{"initial", GimpDomain::initial}, {"deformed", GimpDomain::deformed}});
     read_time(root_["time"]);
     if (auto g = root_.find("gravity")) c_.gravity = read_vector(*g, dim_);
-    c_.gravity_ramp_time = root_.get<double>("gravity_ramp_time", 0.0);
-    c_.damping = root_.get<double>("damping", 0.0);
+    c_.gravity_ramp_time = root_.get<double>("gravity_ramp_time");
+    c_.damping = root_.get<double>("damping");
     if (auto materials = root_.find("materials")) read_materials(*materials);
     // The grid alone, then every body before it is seeded, must fit the limits.
     demand_ = {dim_, c_.grid, c_.shape, case_loading::velocity_fields(root_)};
     (void)checked_size(0.0);
     const Node bodies = root_["bodies"];
     for (const Node& body : bodies.items()) read_body(body);
-    if (auto contact = root_.find("contact")) read_contact(*contact);
+    read_contact(root_["contact"]);
     if (auto boundaries = root_.find("boundaries")) read_boundaries(*boundaries);
     read_thermal(root_.find("thermal"));
     if (auto loads = root_.find("loads"))
       for (const Node& load : loads->items()) read_load(load);
     if (auto probes = root_.find("probes"))
       for (const Node& probe : probes->items()) read_probe(probe);
-    if (auto output = root_.find("output")) {
-      c_.output.every = output->get<double>("every", 0.0);
-      c_.output.grid = output->get<bool>("grid", false);
-      c_.output.probe_every = output->get<double>("probe_every", 0.0);
-      for (const char* key : {"every", "probe_every"})
-        if (auto interval = output->find(key))
-          cosim::check_output_interval(*interval, c_.time.end_time);
-    }
-    c_.threads = root_.get<int>("threads", 0);
+    const Node output = root_["output"];
+    c_.output.every = output.get<double>("every");
+    c_.output.grid = output.get<bool>("grid");
+    c_.output.probe_every = output.get<double>("probe_every");
+    for (const char* key : {"every", "probe_every"})
+      cosim::check_output_interval(output[key], c_.time.end_time);
+    c_.threads = root_.get<int>("threads");
     c_.size = checked_size(static_cast<double>(particle_count_));
     return std::move(c_);
   }
@@ -164,8 +162,8 @@ class CaseReader {
 
   void read_time(const Node& time) {
     c_.time.end_time = time["end_time"].as<double>();
-    c_.time.safety_factor = time.get<double>("safety_factor", 0.5);
-    c_.time.min_time_step = time.get<double>("min_time_step", 1e-12);
+    c_.time.safety_factor = time.get<double>("safety_factor");
+    c_.time.min_time_step = time.get<double>("min_time_step");
     c_.time.max_time_step =
         time.get<double>("max_time_step", std::numeric_limits<double>::infinity());
     if (c_.time.min_time_step > c_.time.max_time_step)
@@ -217,10 +215,9 @@ class CaseReader {
         geostatic->fail_at_key("a rigid body has no geostatic stress");
     }
 
-    std::array<int, 3> ppc{2, 2, 2};
-    const auto ppc_node = node.find("particles_per_cell");
-    if (ppc_node) ppc = read_counts(*ppc_node, dim_, "particles_per_cell");
-    const auto seeding = read_choice(node, "seeding", case_loading::Seeding::regular,
+    const Node ppc_node = node["particles_per_cell"];
+    const std::array<int, 3> ppc = read_counts(ppc_node, dim_, "particles_per_cell");
+    const auto seeding = read_choice<case_loading::Seeding>(node, "seeding",
                                      {{"regular", case_loading::Seeding::regular},
                                       {"r2", case_loading::Seeding::r2}});
     const Node geometry = node["geometry"];
@@ -229,7 +226,7 @@ class CaseReader {
     auto seeded =
         case_loading::seed_body(geometry, dim_, c_.grid, ppc, seeding, [&](double estimate) {
           (void)checked_size(static_cast<double>(particle_count_) + estimate);
-          if (ppc_node) check_seeding_counts(*ppc_node, ppc);
+          check_seeding_counts(ppc_node, ppc);
         });
     if (seeded.positions.empty())
       geometry.fail(fmt::format(
@@ -243,7 +240,7 @@ class CaseReader {
     body.half_lengths = std::move(seeded.half_lengths);
 
     if (auto v = node.find("initial_velocity")) body.initial_velocity = read_vector(*v, dim_);
-    body.initial_temperature = node.get<double>("temperature", body.initial_temperature);
+    body.initial_temperature = node.get<double>("temperature");
     if (auto porous = node.find("porous")) body.porous = read_porous(*porous);
     if (auto geostatic = node.find("geostatic")) {
       GeostaticStress g;
@@ -260,7 +257,7 @@ class CaseReader {
 
   RigidMotion read_rigid(const Node& rigid) {
     RigidMotion motion;
-    motion.kind = read_choice(rigid, "motion", RigidMotion::Kind::fixed,
+    motion.kind = read_choice<RigidMotion::Kind>(rigid, "motion",
                               {{"fixed", RigidMotion::Kind::fixed},
                                {"prescribed", RigidMotion::Kind::prescribed},
                                {"free", RigidMotion::Kind::free}});
@@ -278,13 +275,13 @@ class CaseReader {
     PorousSpec p;
     p.porosity = porous["porosity"].as<double>();
     p.grain_size = porous.get<double>("grain_size", 0.0);
-    p.max_porosity = porous.get<double>("max_porosity", p.max_porosity);
+    p.max_porosity = porous.get<double>("max_porosity");
     if (p.porosity > p.max_porosity)
       porous["porosity"].fail(
           fmt::format("porosity {} exceeds max_porosity {}", p.porosity, p.max_porosity));
     if (auto permeability = porous.find("permeability")) {
       p.permeability_model =
-          read_choice(*permeability, "model", PermeabilityModel::kozeny_carman_pan,
+          read_choice<PermeabilityModel>(*permeability, "model",
                       {{"kozeny_carman_pan", PermeabilityModel::kozeny_carman_pan},
                        {"kozeny_carman_tran", PermeabilityModel::kozeny_carman_tran},
                        {"constant", PermeabilityModel::constant}});
@@ -302,8 +299,8 @@ class CaseReader {
   }
 
   void read_contact(const Node& contact) {
-    c_.contact.enabled = contact.get<bool>("enabled", false);
-    c_.contact.friction = contact.get<double>("friction", 0.0);
+    c_.contact.enabled = contact.get<bool>("enabled");
+    c_.contact.friction = contact.get<double>("friction");
     if (auto pairs = contact.find("pairs")) {
       for (const Node& pair : pairs->items()) {
         const auto bodies = pair["bodies"].items();
@@ -391,7 +388,7 @@ class CaseReader {
     if (load.particles.empty())
       region.fail(fmt::format("load '{}' selects no particle of body '{}'", load.name,
                               spec.name));
-    load.face = face_index(node.get("face", "y_max"));
+    load.face = face_index(node.get<std::string>("face"));
     if (dim_ == 2 && load.face >= 4) node["face"].fail("a 2D case has no z faces");
     const auto traction = node.find("traction");
     const auto pressure = node.find("pressure");
@@ -399,8 +396,8 @@ class CaseReader {
       node.fail(fmt::format("load '{}' needs exactly one of `traction` and `pressure`", load.name));
     if (traction) load.traction = read_vector(*traction, dim_);
     if (pressure) load.pressure = pressure->as<double>();
-    load.ramp_time = node.get<double>("ramp_time", 0.0);
-    if (node.get("ramp_shape", "linear") == "cycloidal") load.ramp_shape = LoadSpec::RampShape::cycloidal;
+    load.ramp_time = node.get<double>("ramp_time");
+    if (node.get<std::string>("ramp_shape") == "cycloidal") load.ramp_shape = LoadSpec::RampShape::cycloidal;
     c_.loads.push_back(std::move(load));
   }
 

@@ -31,7 +31,7 @@ Schema exchange_grid_schema() {
                 field_list({names::solid_fraction, names::solid_velocity, names::solid_bulk_density,
                             names::permeability, names::grain_size, names::solid_volume_flux,
                             names::solid_temperature, names::solid_heat_capacity})
-                    .default_value("[solid_fraction, solid_velocity, solid_bulk_density, "
+                    .default_note("[solid_fraction, solid_velocity, solid_bulk_density, "
                                    "permeability, grain_size], and solid_temperature, "
                                    "solid_heat_capacity when the case conducts heat"),
                 "Fields written per cell at every window end; the thermal ones need heat "
@@ -40,7 +40,7 @@ Schema exchange_grid_schema() {
       .optional("reads",
                 field_list({names::pore_pressure, names::pore_pressure_force, names::impulse,
                             names::heat})
-                    .default_value("[pore_pressure, momentum_exchange_impulse], and "
+                    .default_note("[pore_pressure, momentum_exchange_impulse], and "
                                    "heat_exchange_energy when the case conducts heat"),
                 "Fields read; the job must send each of them (a thermal soil coupled without an "
                 "energy exchange lists its reads). With pore_pressure_force the solid takes the "
@@ -110,7 +110,9 @@ Schema coupling_schema() {
 }
 
 CouplingSpec read_coupling(const Node& node, int dimension, bool heat_conduction) {
-  coupling_schema().validate(node);
+  const Schema schema = coupling_schema();
+  schema.validate(node);
+  schema.add_defaults(node);
   CouplingSpec spec;
   if (auto g = node.find("exchange_grid")) {
     if (!heat_conduction) {
@@ -126,13 +128,13 @@ CouplingSpec read_coupling(const Node& node, int dimension, bool heat_conduction
       reads.push_back(names::heat);
     }
     ExchangeGridSpec e;
-    e.factor = g->get<int>("factor", 1);
+    e.factor = g->get<int>("factor");
     e.writes = strings_or(*g, "writes", writes);
     e.reads = strings_or(*g, "reads", reads);
-    e.held_density_factor = g->get<double>("held_density_factor", 1e30);
-    e.hold_at_fixed_faces = g->get<bool>("hold_at_fixed_faces", true);
-    e.held_bodies = strings_or(*g, "held_bodies", {});
-    e.initial_pore_pressure = g->get<double>("initial_pore_pressure", 0.0);
+    e.held_density_factor = g->get<double>("held_density_factor");
+    e.hold_at_fixed_faces = g->get<bool>("hold_at_fixed_faces");
+    e.held_bodies = g->get<std::vector<std::string>>("held_bodies");
+    e.initial_pore_pressure = g->get<double>("initial_pore_pressure");
     spec.exchange_grid = std::move(e);
   }
   if (auto n = node.find("surface")) {
@@ -144,10 +146,10 @@ CouplingSpec read_coupling(const Node& node, int dimension, bool heat_conduction
     if (dimension >= 2 && static_cast<int>(s.cells.size()) != dimension - 1)
       cells.fail(fmt::format("a {}D case has {} horizontal direction(s), got {} cell count(s)",
                              dimension, dimension - 1, s.cells.size()));
-    s.writes = strings_or(*n, "writes", {names::bed_elevation});
-    s.reads = strings_or(*n, "reads", {names::bed_traction});
-    s.bed_bodies = strings_or(*n, "bed_bodies", {});
-    s.strips = n->get<int>("strips", 4);
+    s.writes = n->get<std::vector<std::string>>("writes");
+    s.reads = n->get<std::vector<std::string>>("reads");
+    s.bed_bodies = n->get<std::vector<std::string>>("bed_bodies");
+    s.strips = n->get<int>("strips");
     spec.surface = std::move(s);
   }
   return spec;

@@ -22,7 +22,7 @@ Schema& FrictionSoftening::add_keys(Schema& schema) {
   return schema
       .required("friction_angle", Schema::number().range(0.0, 90.0).unit("deg"),
                 "Peak friction angle phi_p, < 90.")
-      .optional("residual_friction_angle", Schema::number().range(0.0, 90.0).unit("deg").default_value("friction_angle"),
+      .optional("residual_friction_angle", Schema::number().range(0.0, 90.0).unit("deg").default_note("friction_angle"),
                 "Residual friction angle phi_r <= phi_p; the mobilised angle softens as "
                 "phi_r + (phi_p - phi_r) exp(-softening_rate eps_p) with eps_p the accumulated equivalent "
                 "plastic shear strain (Tran et al., MPMICE, Figure 20). Below friction_angle it needs softening_rate > 0.")

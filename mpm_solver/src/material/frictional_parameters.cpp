@@ -14,7 +14,7 @@ Schema& FrictionalParameters::add_keys(Schema& schema) {
   FrictionSoftening::add_keys(schema);
   schema
       .optional("cohesion", Schema::number().non_negative().unit("Pa").default_value("0"), "Cohesion c0.")
-      .optional("tensile_strength", Schema::number().non_negative().unit("Pa").default_value("none"),
+      .optional("tensile_strength", Schema::number().non_negative().unit("Pa").default_note("none"),
                 "Tension cut-off sigma_t (effective stress, tension positive): on the major principal stress for "
                 "mohr_coulomb, on the mean stress for drucker_prager. It only acts below the apex of the shear "
                 "surface, which bounds tension anyway, and degrades with the cohesion. Absent: no cut-off beyond "

@@ -37,7 +37,7 @@ Schema& add_thermal_keys(Schema& schema, const std::string& whose) {
                     "Specific heat c (of the grains for a porous body). A body with a specific "
                     "heat is thermal: its temperature conducts and exchanges heat.")
       .optional("thermal_conductivity",
-                Schema::number().non_negative().unit("W/(m K)").default_value("0"),
+                Schema::number().non_negative().unit("W/(m K)").default_note("0"),
                 whose +
                     "Thermal conductivity k (of the grains: a porous skeleton conducts with "
                     "(1 - n) k); needs specific_heat.");

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "bench_scratch.hpp"
-#include "bench/csv_table.hpp"
+#include "cosim/io/csv_table.hpp"
 #include "bench/report.hpp"
 
 namespace cosim::bench {

@@ -1,5 +1,3 @@
-#include "exchange/drag_law.hpp"
-
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
@@ -10,7 +8,7 @@
 #include "cosim/error.hpp"
 #include "exchange/beetstra.hpp"
 #include "exchange/constant_drag.hpp"
-#include "exchange/drag_parameters.hpp"
+#include "exchange/drag_law_registry.hpp"
 #include "exchange/forchheimer.hpp"
 #include "exchange/hydraulic_conductivity.hpp"
 #include "exchange/kozeny_carman.hpp"
@@ -146,15 +144,18 @@ TEST(ConstantDrag, ReturnsTheConfiguredCoefficient) {
 }
 
 TEST(DragLawFactory, ListsTheBuiltInLaws) {
-  const auto names = drag_law_names();
+  const auto names = DragLawRegistry::instance().types();
   for (const char* name : {"beetstra", "constant", "forchheimer", "kozeny_carman"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
   }
 }
 
 TEST(DragLawFactory, AcceptsARegisteredLaw) {
-  register_drag_law("scaled_test_law", [](DragParameters& parameters) -> std::unique_ptr<DragLaw> {
-    return std::make_unique<ConstantDrag>(2.0 * parameters.positive("half"));
+  config::Schema schema = config::Schema::object();
+  schema.required("law", config::Schema::one_of({"scaled_test_law"}), "")
+      .required("half", config::Schema::number().positive(), "");
+  DragLawRegistry::instance().add("scaled_test_law", schema, [](const config::Node& node) {
+    return std::make_unique<ConstantDrag>(2.0 * node["half"].as<double>());
   });
   EXPECT_EQ(law_from("{law: scaled_test_law, half: 3.0}")->coefficient(cell(0.5)), 6.0);
 }
@@ -186,7 +187,7 @@ TEST(DragLawFactory, BadParametersThrowInputErrorNamingTheKey) {
   expect_input_error("{law: kozeny_carman, grain_size: -1.0e-3, fluid_viscosity: 1.0e-3}",
                      "grain_size", "> 0");
   expect_input_error("{law: kozeny_carman, grain_size: fine, fluid_viscosity: 1.0e-3}",
-                     "grain_size", "expected a number");
+                     "grain_size", "expected number > 0 [m], or one of 'field'");
   expect_input_error("{law: kozeny_carman, fluid_viscosity: 1.0e-3}", "grain_size", "exactly one");
   expect_input_error(
       "{law: forchheimer, grain_size: 1.0e-3, permeability: 1.0e-9, fluid_viscosity: 1.0e-3}",

@@ -11,7 +11,8 @@
 
 #include "cosim/error.hpp"
 #include "exchange/constant_drag.hpp"
-#include "exchange/drag_law.hpp"
+#include "exchange/drag_law_registry.hpp"
+#include "exchange/drag_law_registry.hpp"
 #include "cosim/exchange/implicit_exchange.hpp"
 #include "exchange/kozeny_carman.hpp"
 

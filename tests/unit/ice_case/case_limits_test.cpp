@@ -9,6 +9,7 @@
 
 #include "cosim/error.hpp"
 #include "ice/case/load_case.hpp"
+#include "input_error_message.hpp"
 #include "replaced_text.hpp"
 
 namespace ice {
@@ -39,12 +40,7 @@ output:
 )";
 
 std::string error_of(const std::string& text) {
-  try {
-    load_case_text(text, "case.yaml");
-  } catch (const cosim::InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return cosim::testing::input_error_message([&] { load_case_text(text, "case.yaml"); });
 }
 
 TEST(IceCaseLimits, StatesItsCellsAndMemory) {

@@ -7,6 +7,7 @@
 #include "cosim/error.hpp"
 #include "ice/case/case_schema.hpp"
 #include "ice/case/make_solver.hpp"
+#include "input_error_message.hpp"
 #include "replaced_text.hpp"
 
 using cosim::testing::replaced;
@@ -48,12 +49,7 @@ coupling: {drag: ice, minimum_porosity: 0.1, heat_exchange: true}
 )";
 
 std::string error_of(const std::string& text) {
-  try {
-    load_case_text(text, "case.yaml");
-  } catch (const cosim::InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return cosim::testing::input_error_message([&] { load_case_text(text, "case.yaml"); });
 }
 
 TEST(IceCase, ReadsEveryKeyAndTheDefaults) {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cosim/error.hpp"
+#include "input_error_message.hpp"
 #include "mpm/case/load_case.hpp"
 #include "replaced_text.hpp"
 
@@ -57,12 +58,7 @@ bodies:
 )";
 
 std::string error_of(const std::string& text) {
-  try {
-    load_case_text(text, "case.yaml");
-  } catch (const cosim::InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return cosim::testing::input_error_message([&] { load_case_text(text, "case.yaml"); });
 }
 
 TEST(MpmCaseLimits, StatesTheParticlesSeededAndTheGrid) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "cosim/error.hpp"
+#include "input_error_message.hpp"
 #include "openfoam/case/load_case.hpp"
 #include "openfoam/case/mesh_cell_count.hpp"
 #include "replaced_text.hpp"
@@ -38,12 +39,7 @@ output: {every: 0.05}
 )";
 
 std::string error_of(const std::string& text) {
-  try {
-    load_case_text(text, "case.yaml");
-  } catch (const cosim::InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return cosim::testing::input_error_message([&] { load_case_text(text, "case.yaml"); });
 }
 
 void write(const fs::path& file, const std::string& text) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cosim/error.hpp"
+#include "input_error_message.hpp"
 #include "replaced_text.hpp"
 
 using cosim::testing::replaced;
@@ -31,12 +32,7 @@ output: {every: 0.05}
 )";
 
 std::string error_of(const std::string& text) {
-  try {
-    load_case_text(text, "case.yaml");
-  } catch (const cosim::InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return cosim::testing::input_error_message([&] { load_case_text(text, "case.yaml"); });
 }
 
 TEST(OpenFoamCase, ReadsEveryKeyAndTheDefaults) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cosim/error.hpp"
+#include "input_error_message.hpp"
 #include "replaced_text.hpp"
 #include "swe/case/load_case.hpp"
 
@@ -45,12 +46,7 @@ time: {end_time: 1.0}
 )";
 
 std::string error_of(const std::string& text) {
-  try {
-    swe::load_case_text(text, "case.yaml");
-  } catch (const cosim::InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return cosim::testing::input_error_message([&] { swe::load_case_text(text, "case.yaml"); });
 }
 
 TEST(SweCaseLimits, StatesItsCellsAndMemory) {

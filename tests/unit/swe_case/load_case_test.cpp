@@ -3,6 +3,7 @@
 #include <string>
 
 #include "cosim/error.hpp"
+#include "input_error_message.hpp"
 #include "replaced_text.hpp"
 #include "swe/case/load_case.hpp"
 
@@ -32,12 +33,7 @@ output:
 
 // The message of the InputError that loading `text` throws.
 std::string error_of(const std::string& text) {
-  try {
-    swe::load_case_text(text, "case.yaml");
-  } catch (const cosim::InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return cosim::testing::input_error_message([&] { swe::load_case_text(text, "case.yaml"); });
 }
 
 TEST(SweCase, BuildsNonUniformSegmentsThatFitTheirStretchesExactly) {

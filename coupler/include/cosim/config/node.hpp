@@ -56,6 +56,13 @@ class Node {
     static_assert(sizeof(T) == 0, "Node::as<T>: T is not one of the supported types");
   }
 
+  // `as<T>()` of the key, which must be present: a required key, or an
+  // optional one the schema's add_defaults has filled in.
+  template <class T>
+  T get(std::string_view key) const {
+    return (*this)[key].template as<T>();
+  }
+
   // `as<T>()` of the key when present, `fallback` when absent.
   template <class T>
   T get(std::string_view key, T fallback) const {

@@ -54,14 +54,37 @@ class Schema {
   Schema& must_exist();
   Schema& length(std::size_t min_length, std::size_t max_length);
 
-  // Documentation only: what the reader uses when the key is absent, and
-  // the SI unit of a number.
-  Schema& default_value(std::string shown);
+  // The value of an optional key when it is absent, written as YAML
+  // ("0.99", "zmq", "[]", "{}"): the one place a default is stated.
+  // add_defaults puts it into the document, so that readers take every
+  // optional key with a default as present (`node.get<double>("key")`) and
+  // never state the default again. A mapping's default "{}" fills its keys'
+  // defaults in turn.
+  Schema& default_value(std::string yaml);
+  // Documentation only, for a default the reader derives from other values
+  // ("rho |g|", "the file name"): listed, never filled in.
+  Schema& default_note(std::string text);
+  // The SI unit of a number (documentation).
   Schema& unit(std::string si_unit);
 
   // Throws the first error found, as an InputError located at the offending
   // node (or, for a missing key, at the mapping that lacks it).
   void validate(const Node& node) const;
+
+  // After validate: adds to the document `node` belongs to every absent
+  // optional key that has a default_value, recursively. Added values have no
+  // position in the file (an error at one names the key at line 0).
+  void add_defaults(const Node& node) const;
+
+  // The default_value of the key at `key_path` ("zmq.scheme"; through
+  // mappings, maps of names as "<name>", lists as "[]", and the mapping
+  // alternative of an any_of), empty when it has none. Throws
+  // std::out_of_range when the schema has no such key.
+  std::string default_of(const std::string& key_path) const;
+
+  // Throws std::logic_error naming the key when a default_value is not a
+  // value its own schema accepts (a test's check of every schema).
+  void check_defaults() const;
 
   // One entry per key path: type and constraints, unit, required or default,
   // and the doc, e.g. `participants.<name>.config  path, must exist; required`.

@@ -6,12 +6,7 @@
 namespace ice {
 
 EosRegistry& EosRegistry::instance() {
-  static EosRegistry registry = [] {
-    EosRegistry r;
-    register_builtin_equations_of_state(r);
-    return r;
-  }();
-  return registry;
+  return cosim::config::builtin_table(&register_builtin_equations_of_state);
 }
 
 void register_builtin_equations_of_state(EosRegistry& registry) {

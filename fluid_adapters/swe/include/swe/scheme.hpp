@@ -1,6 +1,9 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
 
 namespace swe {
 
@@ -20,7 +23,13 @@ struct Scheme {
   double courant = 0.5;
 };
 
+// The names a case file gives them: to_string of every kind, in the order
+// of the enumeration, and back (std::invalid_argument for another name).
 const char* to_string(FluxKind kind);
 const char* to_string(LimiterKind kind);
+std::vector<std::string> flux_names();
+std::vector<std::string> limiter_names();
+FluxKind flux_from_string(std::string_view name);
+LimiterKind limiter_from_string(std::string_view name);
 
 }  // namespace swe

@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "cosim/io/run_size.hpp"
+#include "swe/scheme.hpp"
 
 namespace swe {
 
@@ -123,10 +124,9 @@ Schema swe_case_schema() {
       .optional("dry_depth", Schema::number().positive().unit("m").default_value("1e-6"),
                 "Depth below which a cell is dry (no velocity, no momentum).");
   Schema scheme = Schema::object("Numerical scheme.");
-  scheme.optional("flux", Schema::one_of({"roe", "hll", "hllc"}).default_value("hllc"),
+  scheme.optional("flux", Schema::one_of(flux_names()).default_value("hllc"),
                   "Face flux: roe (Zheng et al., eqs. 30-32), hll or hllc.")
-      .optional("limiter", Schema::one_of({"none", "minmod", "van_leer", "monotonized_central"})
-                               .default_value("van_leer"),
+      .optional("limiter", Schema::one_of(limiter_names()).default_value("van_leer"),
                 "MUSCL slope limiter; none gives first order.")
       .optional("courant", Schema::number().range(1e-3, 1.0).default_value("0.5"),
                 "Courant number C_r (Zheng et al., eq. 37); <= 0.5 keeps depths non-negative.");

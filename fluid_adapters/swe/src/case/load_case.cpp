@@ -14,6 +14,7 @@
 #include "cosim/io/output_schedule.hpp"
 #include "swe/case/case_schema.hpp"
 #include "swe/case/case_size.hpp"
+#include "swe/scheme.hpp"
 
 namespace swe {
 
@@ -137,13 +138,8 @@ class CaseReader {
 
   void read_scheme(CaseDescription& c) {
     if (auto s = root_.find("scheme")) {
-      const std::string flux = s->get("flux", "hllc");
-      c.scheme.flux = flux == "roe" ? FluxKind::roe : flux == "hll" ? FluxKind::hll : FluxKind::hllc;
-      const std::string limiter = s->get("limiter", "van_leer");
-      c.scheme.limiter = limiter == "none"       ? LimiterKind::none
-                         : limiter == "minmod"   ? LimiterKind::minmod
-                         : limiter == "van_leer" ? LimiterKind::van_leer
-                                                 : LimiterKind::monotonized_central;
+      c.scheme.flux = flux_from_string(s->get("flux", to_string(c.scheme.flux)));
+      c.scheme.limiter = limiter_from_string(s->get("limiter", to_string(c.scheme.limiter)));
       c.scheme.courant = s->get<double>("courant", c.scheme.courant);
     }
   }

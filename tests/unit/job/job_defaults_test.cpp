@@ -1,0 +1,68 @@
+// The job schema is the one place a default is stated: every default is a
+// value its own key accepts, and a job that leaves a key out reads it.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "cosim/config/schema.hpp"
+#include "exchange/drag_law_registry.hpp"
+#include "job/job.hpp"
+
+namespace cosim::job {
+namespace {
+
+namespace fs = std::filesystem;
+
+template <class T>
+T schema_default(const std::string& key_path) {
+  const std::string text = job_schema().default_of(key_path);
+  EXPECT_FALSE(text.empty()) << key_path << " has no default";
+  return YAML::Load(text).as<T>();
+}
+
+TEST(JobSchemaDefaults, EveryDefaultIsAcceptedByItsKey) {
+  EXPECT_NO_THROW(job_schema().check_defaults());
+  const auto& drag_laws = exchange::DragLawRegistry::instance();
+  for (const std::string& law : drag_laws.types()) {
+    EXPECT_NO_THROW(drag_laws.schema(law).check_defaults()) << law;
+  }
+}
+
+TEST(JobSchemaDefaults, AJobWithoutTheOptionalKeysReadsTheSchemaDefaults) {
+  const fs::path file =
+      fs::temp_directory_path() / ("cosim_job_defaults_" + std::to_string(::getpid()) + ".yaml");
+  std::ofstream(file) << "kind: job\nname: bare\nend_time: 1.0\nwindow: 0.1\n"
+                         "participants:\n  soil: {executable: mpm_solver}\n";
+  const Job job = load_job(file);
+  fs::remove(file);
+
+  EXPECT_EQ(job.start_time, schema_default<double>("start_time"));
+  EXPECT_EQ(job.transport == TransportKind::mpi ? "mpi" : "zmq",
+            schema_default<std::string>("transport"));
+  EXPECT_EQ(job.zmq.scheme, schema_default<std::string>("zmq.scheme"));
+  EXPECT_EQ(job.zmq.host, schema_default<std::string>("zmq.host"));
+  EXPECT_EQ(job.zmq.allow_non_loopback, schema_default<bool>("zmq.allow_non_loopback"));
+  EXPECT_EQ(job.extrapolation == com::Extrapolation::linear ? "linear" : "constant",
+            schema_default<std::string>("extrapolation"));
+  EXPECT_EQ(job.window_timeout_s, schema_default<double>("window_timeout"));
+  EXPECT_EQ(job.stability.refuse_above, schema_default<double>("stability_check.refuse_above"));
+  EXPECT_EQ(job.stability.accept_unstable, schema_default<bool>("stability_check.accept_unstable"));
+  EXPECT_EQ(job.output_every, schema_default<double>("output.every"));
+  EXPECT_EQ(job.exchanges.size(), schema_default<std::vector<std::string>>("exchange").size());
+  EXPECT_EQ(schema_default<std::string>("momentum_exchange"), "none");
+  EXPECT_FALSE(job.momentum_exchange.has_value());
+  const ParticipantSpec& soil = job.participants.at(0);
+  EXPECT_EQ(soil.args, schema_default<std::vector<std::string>>("participants.<name>.args"));
+  EXPECT_TRUE(soil.meshes.empty());
+  EXPECT_EQ(job_schema().default_of("participants.<name>.meshes"), "{}");
+  EXPECT_EQ(job_schema().default_of("momentum_exchange.solved_by"), "coupler");
+  EXPECT_EQ(job_schema().default_of("exchange.[].mapping.kernel"), "linear");
+}
+
+}  // namespace
+}  // namespace cosim::job
