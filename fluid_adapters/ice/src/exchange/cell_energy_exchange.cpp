@@ -6,14 +6,6 @@
 
 namespace ice {
 
-namespace {
-
-std::size_t at(int i) {
-  return static_cast<std::size_t>(i);
-}
-
-}  // namespace
-
 // Tran et al., MPMICE, eqs. 69-70: implicit heat exchange of the Lagrangian
 // temperatures, with H_ij phi_i phi_j.
 template <int Dim>

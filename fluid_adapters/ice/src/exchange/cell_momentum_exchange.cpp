@@ -6,14 +6,6 @@
 
 namespace ice {
 
-namespace {
-
-std::size_t at(int i) {
-  return static_cast<std::size_t>(i);
-}
-
-}  // namespace
-
 // Tran et al., MPMICE, eqs. 67-68: implicit momentum exchange of the
 // Lagrangian cell velocities, with K_ij phi_i phi_j (eqs. 69-70 do the same
 // for the temperatures, exchange_cell_energy). With the drag solved here

@@ -10,10 +10,6 @@ namespace ice {
 
 namespace {
 
-std::size_t at(int i) {
-  return static_cast<std::size_t>(i);
-}
-
 // Eq. 131's closed form for two fluids on the interior faces
 // first <= f < end of a row (upper cell f - upper_offset, lower one stride
 // below), see exchange_two_fluid_faces. A function of its own, with

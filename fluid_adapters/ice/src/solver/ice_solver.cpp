@@ -17,10 +17,6 @@ namespace ice {
 
 namespace {
 
-std::size_t at(int i) {
-  return static_cast<std::size_t>(i);
-}
-
 template <int Dim>
 typename PressureSolver<Dim>::Boundaries pressure_boundaries(
     const typename IceSolver<Dim>::Sides& sides) {

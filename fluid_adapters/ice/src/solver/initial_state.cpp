@@ -11,10 +11,6 @@ namespace ice {
 
 namespace {
 
-std::size_t at(int i) {
-  return static_cast<std::size_t>(i);
-}
-
 void check_fraction(double minimum_volume_fraction, std::size_t materials) {
   if (!(minimum_volume_fraction >= 0.0) ||
       !(minimum_volume_fraction * static_cast<double>(materials) < 1.0)) {
