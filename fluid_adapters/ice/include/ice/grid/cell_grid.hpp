@@ -7,7 +7,9 @@
 namespace ice {
 
 // A grid index (int, as the grid counts cells) as an array index.
-inline std::size_t at(int i) { return static_cast<std::size_t>(i); }
+inline std::size_t at(int i) {
+  return static_cast<std::size_t>(i);
+}
 
 // The uniform Cartesian grid of the ICE solver: cells of one size, fields
 // stored at cell centres (one value per cell) and face-normal values on the
