@@ -6,7 +6,6 @@
 #include <cmath>
 #include <random>
 
-#include "../mpm_solver/case_builder.hpp"
 #include "cosim/config/document.hpp"
 #include "mock_channel.hpp"
 #include "mpm/coupling/coupling_spec.hpp"
@@ -14,6 +13,7 @@
 #include "mpm/coupling/heat_exchange_increment.hpp"
 #include "mpm/coupling/mpm_coupling.hpp"
 #include "mpm/coupling/thermal_fields_writer.hpp"
+#include "mpm_case_builder.hpp"
 #include "particle_fixtures.hpp"
 
 namespace mpm::coupling {

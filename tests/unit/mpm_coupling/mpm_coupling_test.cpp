@@ -4,11 +4,11 @@
 
 #include <cmath>
 
-#include "../mpm_solver/case_builder.hpp"
 #include "mock_channel.hpp"
 #include "mpm/coupling/coupling_observer.hpp"
 #include "mpm/coupling/field_names.hpp"
 #include "mpm/coupling/mpm_coupling.hpp"
+#include "mpm_case_builder.hpp"
 
 namespace mpm::coupling {
 namespace {

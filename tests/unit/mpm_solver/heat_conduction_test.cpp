@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "case_builder.hpp"
 #include "mpm/solver/solver.hpp"
+#include "mpm_case_builder.hpp"
 
 namespace mpm {
 namespace {

@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "case_builder.hpp"
 #include "cosim/error.hpp"
 #include "mpm/solver/solver.hpp"
+#include "mpm_case_builder.hpp"
 
 namespace mpm {
 namespace {
