@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "run_process.hpp"
+#include "text_files.hpp"
 
 namespace {
 

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "run_process.hpp"
+#include "text_files.hpp"
 
 namespace fs = std::filesystem;
 namespace ct = cosim::testing;

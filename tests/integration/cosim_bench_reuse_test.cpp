@@ -11,6 +11,7 @@
 
 #include "replaced_text.hpp"
 #include "run_process.hpp"
+#include "text_files.hpp"
 
 namespace cosim::testing {
 namespace {

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "run_process.hpp"
+#include "text_files.hpp"
 
 namespace cosim::testing {
 namespace {

@@ -17,6 +17,7 @@
 #include "job/job.hpp"
 #include "cosim/participant.hpp"
 #include "run_process.hpp"
+#include "text_files.hpp"
 
 namespace cosim {
 namespace {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "run_process.hpp"
+#include "text_files.hpp"
 
 namespace cosim::testing {
 namespace {

@@ -19,6 +19,7 @@
 #include "openfoam/foam/time_directories.hpp"
 #include "openfoam/io/case_layout.hpp"
 #include "run_process.hpp"
+#include "text_files.hpp"
 
 namespace {
 

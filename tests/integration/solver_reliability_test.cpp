@@ -15,6 +15,7 @@
 
 #include "replaced_text.hpp"
 #include "run_process.hpp"
+#include "text_files.hpp"
 
 #ifdef COSIM_TEST_OPENFOAM
 #include "cosim/error.hpp"

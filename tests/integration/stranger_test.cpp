@@ -15,6 +15,7 @@
 #include "com/zmq_transport.hpp"
 #include "demo_job.hpp"
 #include "run_process.hpp"
+#include "text_files.hpp"
 
 namespace cosim::testing {
 namespace {

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "text_files.hpp"
+
 namespace cosim::testing {
 
 namespace fs = std::filesystem;

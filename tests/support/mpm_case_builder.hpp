@@ -7,7 +7,7 @@
 #include "mpm/case/case_description.hpp"
 #include "mpm/material/material_registry.hpp"
 
-// Small cases built in code for the solver's unit tests.
+// Small cases of the MPM solver built in code, for its unit tests.
 namespace mpm::testing {
 
 inline std::shared_ptr<const Material> material_from_yaml(const std::string& yaml) {

@@ -6,9 +6,10 @@
 #include <unistd.h>
 
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <thread>
+
+#include "text_files.hpp"
 
 namespace cosim::testing {
 
@@ -87,32 +88,6 @@ pid_t wait_for_pid_file(const std::filesystem::path& file, std::chrono::seconds 
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   throw std::runtime_error("no pid file " + file.string());
-}
-
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write_text(const std::filesystem::path& file, const std::string& text) {
-  std::ofstream(file) << text;
-}
-
-std::vector<std::vector<double>> read_csv(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::string line;
-  std::getline(in, line);  // header
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    std::stringstream s(line);
-    std::string cell;
-    while (std::getline(s, cell, ',')) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  return rows;
 }
 
 }  // namespace cosim::testing

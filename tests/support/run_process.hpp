@@ -31,10 +31,4 @@ bool process_exists(pid_t pid);
 // Reads an integer pid from a file, waiting up to `timeout` for it to appear.
 pid_t wait_for_pid_file(const std::filesystem::path& file, std::chrono::seconds timeout);
 
-std::string read_text(const std::filesystem::path& file);
-void write_text(const std::filesystem::path& file, const std::string& text);
-
-// Rows of a CSV file after its header row (all values numeric).
-std::vector<std::vector<double>> read_csv(const std::filesystem::path& file);
-
 }  // namespace cosim::testing

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "hdf5_reader.hpp"
-#include "scratch_directory.hpp"
+#include "text_files.hpp"
 #include "xml_reader.hpp"
 
 // Checks an XDMF index the way a reader would: well-formed XML, a temporal

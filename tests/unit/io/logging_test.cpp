@@ -6,6 +6,7 @@
 #include "cosim/error.hpp"
 #include "cosim/io/tail_lines.hpp"
 #include "scratch_directory.hpp"
+#include "text_files.hpp"
 
 namespace cosim {
 namespace {

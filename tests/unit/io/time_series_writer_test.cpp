@@ -14,6 +14,7 @@
 
 #include "cosim/error.hpp"
 #include "scratch_directory.hpp"
+#include "text_files.hpp"
 
 namespace cosim {
 namespace {

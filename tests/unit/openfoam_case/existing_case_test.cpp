@@ -8,6 +8,7 @@
 #include "cosim/error.hpp"
 #include "openfoam/case/generated_case.hpp"
 #include "scratch_directory.hpp"
+#include "text_files.hpp"
 
 namespace openfoam {
 namespace {

@@ -7,6 +7,7 @@
 #include "openfoam/case/load_case.hpp"
 #include "openfoam/foam/control_dict.hpp"
 #include "scratch_directory.hpp"
+#include "text_files.hpp"
 
 namespace openfoam {
 namespace {

@@ -8,6 +8,7 @@
 #include "cosim/io/files.hpp"
 #include "openfoam/foam/field_file.hpp"
 #include "scratch_directory.hpp"
+#include "text_files.hpp"
 
 namespace openfoam {
 namespace {

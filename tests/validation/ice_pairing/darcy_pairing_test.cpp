@@ -16,6 +16,7 @@
 #include "bench/darcy_column.hpp"
 #include "replaced_text.hpp"
 #include "run_process.hpp"
+#include "text_files.hpp"
 
 namespace cosim::testing {
 namespace {

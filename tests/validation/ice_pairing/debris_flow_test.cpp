@@ -27,6 +27,7 @@
 
 #include "run_process.hpp"
 #include "scenario_snapshots.hpp"
+#include "text_files.hpp"
 
 namespace cosim::testing {
 namespace {

@@ -28,6 +28,7 @@
 
 #include "run_process.hpp"
 #include "terzaghi/terzaghi_gauges.hpp"
+#include "text_files.hpp"
 
 namespace cosim::testing {
 namespace {

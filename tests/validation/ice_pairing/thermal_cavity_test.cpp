@@ -19,6 +19,7 @@
 
 #include "hdf5_reader.hpp"
 #include "run_process.hpp"
+#include "text_files.hpp"
 
 namespace cosim::testing {
 namespace {

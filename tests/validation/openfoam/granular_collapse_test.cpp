@@ -26,6 +26,7 @@
 #include "hdf5_reader.hpp"
 #include "bench_smoke_run.hpp"
 #include "run_process.hpp"
+#include "text_files.hpp"
 
 namespace cosim::testing {
 namespace {

@@ -21,6 +21,7 @@
 #include "hdf5_reader.hpp"
 #include "martin_moyce/surge_front.hpp"
 #include "run_process.hpp"
+#include "text_files.hpp"
 
 namespace {
 

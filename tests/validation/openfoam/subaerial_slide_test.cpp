@@ -23,6 +23,7 @@
 
 #include "bench_smoke_run.hpp"
 #include "run_process.hpp"
+#include "text_files.hpp"
 
 namespace cosim::testing {
 namespace {

@@ -27,6 +27,7 @@
 #include "replaced_text.hpp"
 #include "run_process.hpp"
 #include "terzaghi/terzaghi_gauges.hpp"
+#include "text_files.hpp"
 
 namespace cosim::testing {
 namespace {

@@ -23,6 +23,7 @@
 
 #include "replaced_text.hpp"
 #include "run_process.hpp"
+#include "text_files.hpp"
 
 namespace fs = std::filesystem;
 namespace ct = cosim::testing;
