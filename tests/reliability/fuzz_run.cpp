@@ -24,6 +24,7 @@
 
 #include "cosim/error.hpp"
 #include "mutator.hpp"
+#include "text_files.hpp"
 
 namespace cosim::testing {
 
@@ -279,13 +280,6 @@ std::string FuzzReport::summary(const std::string& target) const {
       hangs, slowest_seconds);
 }
 
-std::string read_file(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 std::vector<fs::path> files_under(const fs::path& directory, const std::string& extension) {
   std::vector<fs::path> files;
   if (!fs::is_directory(directory)) return files;
@@ -303,7 +297,7 @@ std::vector<std::string> regression_inputs(const std::string& target) {
   std::vector<std::string> inputs;
   for (const fs::path& file :
        files_under(fs::path(COSIM_SOURCE_DIR) / "tests" / "data" / "fuzz" / target, ""))
-    inputs.push_back(read_file(file));
+    inputs.push_back(read_text(file));
   return inputs;
 }
 

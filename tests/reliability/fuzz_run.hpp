@@ -53,8 +53,6 @@ FuzzReport fuzz(const FuzzTarget& target);
 // The kept regression inputs of `target`: tests/data/fuzz/<target>/*.
 std::vector<std::string> regression_inputs(const std::string& target);
 
-std::string read_file(const std::filesystem::path& file);
-
 // Every regular file under `directory` whose name ends in `extension`.
 std::vector<std::filesystem::path> files_under(const std::filesystem::path& directory,
                                                const std::string& extension);

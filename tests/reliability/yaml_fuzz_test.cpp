@@ -12,6 +12,7 @@
 #include "cosim/config/document.hpp"
 #include "job/job.hpp"
 #include "fuzz_run.hpp"
+#include "text_files.hpp"
 
 namespace cosim::testing {
 namespace {
@@ -29,7 +30,7 @@ std::vector<std::string> seeds() {
   std::vector<std::string> texts;
   for (const char* folder : {"configs", "tests/data/yaml"})
     for (const fs::path& file : files_under(fs::path(COSIM_SOURCE_DIR) / folder, ".yaml"))
-      texts.push_back(read_file(file));
+      texts.push_back(read_text(file));
   return texts;
 }
 

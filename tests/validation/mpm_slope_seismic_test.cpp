@@ -26,11 +26,13 @@
 #include <vector>
 
 #include "mpm/io/run_driver.hpp"
+#include "text_files.hpp"
 
 namespace mpm {
 namespace {
 
 namespace fs = std::filesystem;
+using cosim::testing::read_text;
 
 const fs::path case_dir = COSIM_SOURCE_DIR "/configs/mpm/validation";
 
@@ -42,13 +44,6 @@ constexpr double resolution = 0.4;
 
 constexpr double toe_threshold = 0.005;    // [m], 1 % of the slope height
 constexpr double crest_threshold = 0.001;  // [m]
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // The case file with its cells scaled by `scale`, written to `dir` (the
 // velocity history then named by its absolute path).

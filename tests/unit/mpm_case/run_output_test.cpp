@@ -8,18 +8,19 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "cosim/error.hpp"
 #include "mpm/case/load_case.hpp"
 #include "mpm/io/particle_snapshot_writer.hpp"
 #include "mpm/io/probe_recorder.hpp"
 #include "mpm/io/run_driver.hpp"
+#include "text_files.hpp"
 
 namespace mpm {
 namespace {
 
 namespace fs = std::filesystem;
+using cosim::testing::read_text;
 using ::testing::HasSubstr;
 
 const char* const falling_block = R"(kind: mpm_case
@@ -44,13 +45,6 @@ fs::path scratch(const std::string& name) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
-}
-
-std::string read(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 TEST(MpmLogarithmicStrain, IsTheLogOfTheStretchAndIgnoresRotation) {
@@ -80,7 +74,7 @@ TEST(MpmParticleSnapshots, WriteDisplacementFromTheStartAndEveryField) {
   writer.write(solver);
   EXPECT_EQ(writer.snapshots_written(), 2u);
   EXPECT_TRUE(fs::exists(dir / "particles_000001.h5"));
-  const std::string xdmf = read(writer.index_path());
+  const std::string xdmf = read_text(writer.index_path());
   for (const char* field : {"velocity", "displacement", "stress", "effective_stress", "strain",
                             "plastic_strain", "porosity", "pore_pressure", "damage", "body", "mass",
                             "volume"})
@@ -155,7 +149,7 @@ TEST(MpmRunDriver, ObserverDrivesTheLoopAndBoundsTheStep) {
   EXPECT_GE(calls.after_step, 5);
   EXPECT_LE(calls.largest_dt, 1e-3 + 1e-15);
   EXPECT_NEAR(calls.time, 0.005, 1e-12);  // the observer's end, not the case's 0.02 s
-  const auto summary = nlohmann::json::parse(read(dir / "out" / "summary.json"));
+  const auto summary = nlohmann::json::parse(read_text(dir / "out" / "summary.json"));
   EXPECT_EQ(summary["status"]["exit_code"], 0);
   EXPECT_EQ(summary["coupling"]["windows"], 7);
   EXPECT_EQ(summary["steps"], calls.after_step);
@@ -179,7 +173,7 @@ TEST(MpmRunDriver, ObserverIsAbortedOnFailure) {
   EXPECT_EQ(run_case(options, observers), 4);
   EXPECT_EQ(calls.abort, 1);
   EXPECT_EQ(calls.finalize, 0);
-  const auto summary = nlohmann::json::parse(read(dir / "out" / "summary.json"));
+  const auto summary = nlohmann::json::parse(read_text(dir / "out" / "summary.json"));
   EXPECT_EQ(summary["status"]["exit_code"], 4);
   EXPECT_EQ(summary["status"]["message"], "observer failed");
 }

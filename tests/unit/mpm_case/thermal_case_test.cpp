@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 
 #include "cosim/error.hpp"
@@ -14,11 +13,13 @@
 #include "mpm/case/load_case.hpp"
 #include "mpm/io/run_driver.hpp"
 #include "replaced_text.hpp"
+#include "text_files.hpp"
 
 namespace mpm {
 namespace {
 
 namespace fs = std::filesystem;
+using cosim::testing::read_text;
 using cosim::testing::replaced;
 using ::testing::HasSubstr;
 
@@ -157,13 +158,6 @@ TEST(MpmThermalCase, HelpListsTheThermalKeys) {
     EXPECT_THAT(help, HasSubstr(key)) << key;
 }
 
-std::string read(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 TEST(MpmThermalCase, ARunWritesTemperaturesAndTheThermalBalance) {
   const fs::path dir = fs::temp_directory_path() / "mpm_thermal_case_test_run";
   fs::remove_all(dir);
@@ -173,10 +167,10 @@ TEST(MpmThermalCase, ARunWritesTemperaturesAndTheThermalBalance) {
   options.config = dir / "case.yaml";
   options.output = dir / "out";
   ASSERT_EQ(run_case(options), 0);
-  EXPECT_THAT(read(dir / "out" / "particles.xdmf"), HasSubstr("Name=\"temperature\""));
-  const std::string probes = read(dir / "out" / "probes.csv");
+  EXPECT_THAT(read_text(dir / "out" / "particles.xdmf"), HasSubstr("Name=\"temperature\""));
+  const std::string probes = read_text(dir / "out" / "probes.csv");
   EXPECT_THAT(probes, HasSubstr("mid_temperature [K]"));
-  const auto summary = nlohmann::json::parse(read(dir / "out" / "summary.json"));
+  const auto summary = nlohmann::json::parse(read_text(dir / "out" / "summary.json"));
   const auto& conserved = summary["conserved"];
   std::printf("    summary.json conserved: %s\n", conserved.dump().c_str());
   const double start = conserved["thermal_energy_balance"]["start"];

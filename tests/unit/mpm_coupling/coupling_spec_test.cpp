@@ -1,14 +1,12 @@
 // The `coupling:` block of an mpm_case file.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "cosim/config/document.hpp"
 #include "cosim/error.hpp"
 #include "mpm/coupling/coupling_spec.hpp"
 #include "mpm/case/load_case.hpp"
 #include "mpm/coupling/field_names.hpp"
+#include "text_files.hpp"
 
 namespace mpm::coupling {
 namespace {
@@ -80,10 +78,7 @@ TEST(MpmCouplingSpec, TheShippedCoupledCaseIsValid) {
   const CouplingSpec s = read_coupling(doc.root()["coupling"], 2);
   ASSERT_TRUE(s.exchange_grid);
   EXPECT_TRUE(s.exchange_grid->reads_field(names::pore_pressure));
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string without = text.str();
+  std::string without = cosim::testing::read_text(file);
   without = without.substr(0, without.find("coupling:"));
   const CaseDescription c = load_case_text(without, file);
   EXPECT_EQ(c.bodies.size(), 1u);
