@@ -111,12 +111,6 @@ output: {every: 0.002}
 
 std::string test_name(const ::testing::TestParamInfo<Solver>& info) { return info.param.program; }
 
-// A file of an earlier run, its directories made.
-void earlier_file(const fs::path& file, const std::string& text) {
-  fs::create_directories(file.parent_path());
-  write_text(file, text);
-}
-
 class SolverPromises : public ::testing::TestWithParam<Solver> {
  protected:
   void SetUp() override {
@@ -184,7 +178,7 @@ TEST_P(SolverPromises, AnAbsurdOutputIntervalExitsTwoAtItsKey) {
 // snapshots of a longer run stayed).
 TEST_P(SolverPromises, ANonEmptyOutputIsRefusedBeforeAnythingIsWritten) {
   const fs::path out = dir_ / "out";
-  earlier_file(out / "summary.json", "{\"program\": \"an earlier run\"}");
+  write_text(out / "summary.json", "{\"program\": \"an earlier run\"}");
   const ProcessResult r = solver({"--output", out.string()}, GetParam().text);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_THAT(r.output, HasSubstr("is not empty"));
@@ -207,9 +201,9 @@ TEST_P(SolverPromises, OverwriteClearsTheEarlierRunAndTheSummaryStatesTheSize) {
   }
 #endif
   const fs::path out = dir_ / "out";
-  earlier_file(out / "summary.json", "{}");
-  earlier_file(out / "snapshot_000099.h5", "stale");
-  earlier_file(out / "case" / "processor0" / "9" / "U", "stale");  // an OpenFOAM case copy
+  write_text(out / "summary.json", "{}");
+  write_text(out / "snapshot_000099.h5", "stale");
+  write_text(out / "case" / "processor0" / "9" / "U", "stale");  // an OpenFOAM case copy
   const ProcessResult r = solver({"--output", out.string(), "--overwrite"}, s.text);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_FALSE(fs::exists(out / "snapshot_000099.h5"));
@@ -238,7 +232,7 @@ INSTANTIATE_TEST_SUITE_P(Solvers, SolverPromises, ::testing::Values(mpm, swe, ic
 TEST(SolverUnderCosimRun, UsesTheDirectoryTheCouplerPrepared) {
   const fs::path dir = fresh_directory("solver_promises_under_cosim_run");
   write_text(dir / "case.yaml", swe.text);
-  earlier_file(dir / "water" / "console.log", "the coupler's console\n");
+  write_text(dir / "water" / "console.log", "the coupler's console\n");
   const ProcessResult r =
       run({binary("swe_fluid").string(), "--config", (dir / "case.yaml").string(), "--output",
            (dir / "water").string(), "--cosim-endpoint", "ipc://" + (dir / "none.sock").string(),

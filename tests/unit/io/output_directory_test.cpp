@@ -5,11 +5,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <fstream>
-
 #include "cosim/error.hpp"
 #include "cosim/io/files.hpp"
 #include "scratch_directory.hpp"
+#include "text_files.hpp"
 
 namespace cosim {
 namespace {
@@ -17,17 +16,13 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using testing::ScratchDirectory;
-
-void write(const fs::path& path, const std::string& text) {
-  fs::create_directories(path.parent_path());
-  std::ofstream(path) << text;
-}
+using testing::write_text;
 
 // An earlier run: its summary, a snapshot and a nested case directory.
 void earlier_run(const fs::path& dir) {
-  write(dir / "summary.json", "{}");
-  write(dir / "snapshot_000007.h5", "old");
-  write(dir / "case" / "processor0" / "0.5" / "U", "old");
+  write_text(dir / "summary.json", "{}");
+  write_text(dir / "snapshot_000007.h5", "old");
+  write_text(dir / "case" / "processor0" / "0.5" / "U", "old");
 }
 
 TEST(OutputDirectory, MissingOrEmptyIsMadeReady) {
@@ -35,7 +30,7 @@ TEST(OutputDirectory, MissingOrEmptyIsMadeReady) {
   prepare_output_directory(scratch / "a" / "b", OutputReuse::refuse);
   EXPECT_TRUE(fs::is_directory(scratch / "a" / "b"));
   prepare_output_directory(scratch / "a" / "b", OutputReuse::refuse);  // empty
-  write(scratch / "file", "x");
+  write_text(scratch / "file", "x");
   EXPECT_THROW(prepare_output_directory(scratch / "file", OutputReuse::overwrite), Error);
 }
 
@@ -72,7 +67,7 @@ TEST(OutputDirectory, OverwriteClearsAnEarlierRunWhole) {
 
 TEST(OutputDirectory, OverwriteLeavesADirectoryThatIsNoRunsAlone) {
   ScratchDirectory scratch;
-  write(scratch / "home" / "thesis.tex", "mine");
+  write_text(scratch / "home" / "thesis.tex", "mine");
   EXPECT_THROW(prepare_output_directory(scratch / "home", OutputReuse::overwrite), Error);
   EXPECT_TRUE(fs::exists(scratch / "home" / "thesis.tex"));
 }
@@ -81,7 +76,7 @@ TEST(OutputDirectory, ResumeAndPreparedKeepWhatIsThere) {
   ScratchDirectory scratch;
   const fs::path dir = scratch / "run";
   earlier_run(dir);
-  write(dir / "console.log", "the coupler's");
+  write_text(dir / "console.log", "the coupler's");
   prepare_output_directory(dir, OutputReuse::resume);
   prepare_output_directory(dir, OutputReuse::prepared);
   EXPECT_TRUE(fs::exists(dir / "snapshot_000007.h5"));
@@ -90,7 +85,7 @@ TEST(OutputDirectory, ResumeAndPreparedKeepWhatIsThere) {
 
 TEST(OutputDirectory, InsideTellsWhatAnOverwriteWouldDelete) {
   ScratchDirectory scratch;
-  write(scratch / "out" / "case.yaml", "kind: x");
+  write_text(scratch / "out" / "case.yaml", "kind: x");
   EXPECT_TRUE(is_inside(scratch / "out" / "case.yaml", scratch / "out"));
   EXPECT_TRUE(is_inside(scratch / "out" / ".." / "out" / "x", scratch / "out"));
   EXPECT_TRUE(is_inside(scratch / "out", scratch / "out"));

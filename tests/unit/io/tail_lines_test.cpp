@@ -5,29 +5,27 @@
 #include <fstream>
 
 #include "scratch_directory.hpp"
+#include "text_files.hpp"
 
 namespace cosim {
 namespace {
 
 using testing::ScratchDirectory;
+using testing::write_text;
 using Lines = std::vector<std::string>;
-
-void write(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
 
 TEST(TailLines, SmallFiles) {
   ScratchDirectory dir;
   const auto path = dir / "log.txt";
-  write(path, "one\ntwo\nthree\n");
+  write_text(path, "one\ntwo\nthree\n");
   EXPECT_EQ(tail_lines(path, 2), (Lines{"two", "three"}));
   EXPECT_EQ(tail_lines(path, 10), (Lines{"one", "two", "three"}));
   EXPECT_EQ(tail_lines(path, 0), Lines{});
-  write(path, "one\r\ntwo\r\nno newline at end");
+  write_text(path, "one\r\ntwo\r\nno newline at end");
   EXPECT_EQ(tail_lines(path, 2), (Lines{"two", "no newline at end"}));
-  write(path, "a\n\nb\n\n");
+  write_text(path, "a\n\nb\n\n");
   EXPECT_EQ(tail_lines(path, 3), (Lines{"", "b", ""}));
-  write(path, "");
+  write_text(path, "");
   EXPECT_EQ(tail_lines(path, 3), Lines{});
   EXPECT_EQ(tail_lines(dir / "missing.txt", 3), Lines{});
 }
@@ -47,7 +45,7 @@ TEST(TailLines, LargeFileReadsAcrossBlocks) {
   ASSERT_EQ(many.size(), 3000u);
   EXPECT_EQ(many.front(), "[info] step 197000 of a long run");
   const std::string long_line(100000, 'x');
-  write(path, "first\n" + long_line + "\nlast\n");
+  write_text(path, "first\n" + long_line + "\nlast\n");
   EXPECT_EQ(tail_lines(path, 2), (Lines{long_line, "last"}));
   EXPECT_EQ(tail_lines(path, 3).front(), "first");
 }

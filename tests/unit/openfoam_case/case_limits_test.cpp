@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "cosim/error.hpp"
@@ -16,12 +15,14 @@
 #include "openfoam/case/mesh_cell_count.hpp"
 #include "replaced_text.hpp"
 #include "scratch_directory.hpp"
+#include "text_files.hpp"
 
 namespace openfoam {
 namespace {
 
 namespace fs = std::filesystem;
 using cosim::testing::replaced;
+using cosim::testing::write_text;
 using ::testing::HasSubstr;
 
 const std::string tank = R"(kind: openfoam_case
@@ -40,11 +41,6 @@ output: {every: 0.05}
 
 std::string error_of(const std::string& text) {
   return cosim::testing::input_error_message([&] { load_case_text(text, "case.yaml"); });
-}
-
-void write(const fs::path& file, const std::string& text) {
-  fs::create_directories(file.parent_path());
-  std::ofstream(file) << text;
 }
 
 TEST(OpenFoamCaseLimits, AGeneratedCaseStatesItsCellsAndMemory) {
@@ -72,7 +68,7 @@ TEST(OpenFoamCaseLimits, TooManyCellsAreRefusedWithTheEstimate) {
 TEST(OpenFoamCaseLimits, AUsersCaseIsCountedFromItsMeshOrItsBlocks) {
   cosim::testing::ScratchDirectory scratch;
   // blockMeshDict: two blocks, one with a zone name, comments dropped.
-  write(scratch / "blocks" / "system" / "blockMeshDict", R"(FoamFile { version 2.0; }
+  write_text(scratch / "blocks" / "system" / "blockMeshDict", R"(FoamFile { version 2.0; }
 // blocks ( hex (0 1 2 3 4 5 6 7) (1000 1 1) )
 blocks
 (
@@ -83,12 +79,12 @@ blocks
 )");
   EXPECT_EQ(mesh_cell_count(scratch / "blocks"), 400.0);
   // A mesh made already: its owner file's header.
-  write(scratch / "mesh" / "constant" / "polyMesh" / "owner",
+  write_text(scratch / "mesh" / "constant" / "polyMesh" / "owner",
         "FoamFile\n{\n    note        \"nPoints:1234  nCells:5678  nFaces:999  "
         "nInternalFaces:99\";\n}\n");
   EXPECT_EQ(mesh_cell_count(scratch / "mesh"), 5678.0);
   // Macros in the counts: unknown, not guessed.
-  write(scratch / "macros" / "system" / "blockMeshDict",
+  write_text(scratch / "macros" / "system" / "blockMeshDict",
         "n 10;\nblocks ( hex (0 1 2 3 4 5 6 7) ($n 1 1) simpleGrading (1 1 1) );\n");
   EXPECT_EQ(mesh_cell_count(scratch / "macros"), std::nullopt);
   EXPECT_EQ(mesh_cell_count(scratch / "nothing"), std::nullopt);

@@ -2,11 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <string>
 
 #include "cosim/error.hpp"
 #include "openfoam/case/generated_case.hpp"
+#include "replaced_text.hpp"
 #include "scratch_directory.hpp"
 #include "text_files.hpp"
 
@@ -36,11 +36,7 @@ std::string error_of(const fs::path& dir) {
 }
 
 void replace_in(const fs::path& file, const std::string& from, const std::string& to) {
-  std::string text = cosim::testing::read_text(file);
-  const auto at = text.find(from);
-  ASSERT_NE(at, std::string::npos) << from;
-  text.replace(at, from.size(), to);
-  std::ofstream(file) << text;
+  cosim::testing::write_text(file, cosim::testing::replaced(cosim::testing::read_text(file), from, to));
 }
 
 TEST(OpenFoamExistingCase, ACompleteCasePasses) {
