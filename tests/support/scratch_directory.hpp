@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <string>
 
+#include "text_files.hpp"
+
 namespace cosim::testing {
 
 // A fresh directory per test, named after it, removed at the end.
@@ -28,6 +30,13 @@ class ScratchDirectory {
 
   const std::filesystem::path& path() const { return path_; }
   std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+  // Writes `text` to `name` in it, the file's directories made; returns its path.
+  std::filesystem::path write(const std::filesystem::path& name, const std::string& text) const {
+    const std::filesystem::path file = path_ / name;
+    write_text(file, text);
+    return file;
+  }
 
  private:
   std::filesystem::path path_;

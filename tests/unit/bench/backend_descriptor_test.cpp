@@ -6,13 +6,13 @@
 
 #include "bench/backend_catalog.hpp"
 #include "bench/suite.hpp"
-#include "bench_scratch.hpp"
 #include "cosim/error.hpp"
+#include "scratch_directory.hpp"
 
 namespace cosim::bench {
 namespace {
 
-using testing::Scratch;
+using cosim::testing::ScratchDirectory;
 
 // A fluid backend described in full; the cases below each spoil one line.
 const char* const toy_descriptor = R"(kind: bench_backend
@@ -41,7 +41,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 }
 
 TEST(BackendDescriptor, ReadsAFluidBackend) {
-  Scratch dir;
+  ScratchDirectory dir;
   const BackendDescriptor d = load_backend_descriptor(dir.write("toy.yaml", toy_descriptor));
   EXPECT_EQ(d.name, "toy");
   EXPECT_EQ(d.executable, "toy_fluid");
@@ -69,7 +69,7 @@ struct BadDescriptor {
 class BackendDescriptorRefuses : public ::testing::TestWithParam<BadDescriptor> {};
 
 TEST_P(BackendDescriptorRefuses, AtTheKeyAndLine) {
-  Scratch dir;
+  ScratchDirectory dir;
   const auto file = dir.write("toy.yaml", replaced(toy_descriptor, GetParam().from, GetParam().to));
   try {
     load_backend_descriptor(file);
@@ -128,7 +128,7 @@ TEST(BackendCatalog, HoldsEveryRegisteredBackendAndNothingElse) {
 // catalog of its own is accepted there, and one it lacks is refused with the
 // registered names.
 TEST(BackendCatalog, ASuitesBackendsComeFromTheRegisteredDescriptors) {
-  Scratch dir;
+  ScratchDirectory dir;
   dir.write("backends/toy.yaml", toy_descriptor);
   std::filesystem::copy_file(registered_backends().directory() / "mpm.yaml",
                              dir.path() / "backends" / "mpm.yaml");
@@ -159,7 +159,7 @@ scenarios:
 }
 
 TEST(BackendCatalog, RefusesADescriptorRegisteredUnderAnotherName) {
-  Scratch dir;
+  ScratchDirectory dir;
   dir.write("backends/toy2.yaml", toy_descriptor);
   try {
     BackendCatalog::load(dir.path() / "backends");
@@ -170,7 +170,7 @@ TEST(BackendCatalog, RefusesADescriptorRegisteredUnderAnotherName) {
 }
 
 TEST(BackendCatalog, RefusesAFluidWhosePairingNoSoilTakes) {
-  Scratch dir;
+  ScratchDirectory dir;
   dir.write("backends/toy.yaml", toy_descriptor);
   EXPECT_THROW(BackendCatalog::load(dir.path() / "backends"), InputError);
 }

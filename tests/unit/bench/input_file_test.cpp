@@ -1,20 +1,20 @@
 #include <gtest/gtest.h>
 
-#include "bench_scratch.hpp"
 #include "bench/input_file.hpp"
 #include "cosim/error.hpp"
+#include "scratch_directory.hpp"
 
 namespace cosim::bench {
 namespace {
 
-using testing::Scratch;
+using cosim::testing::ScratchDirectory;
 
 Override set(const std::string& key_path, const std::string& yaml) {
   return {"case", key_path, YAML::Load(yaml), {"suite.yaml", 7, 3}};
 }
 
 TEST(InputFile, OverridesNestedKeysListItemsAndNewKeys) {
-  Scratch dir;
+  ScratchDirectory dir;
   InputFile f = InputFile::read(dir.write(
       "case.yaml", "kind: mpm_case\ngrid: {cells: [10, 5]}\nbodies:\n  - {name: a, porous: {porosity: 0.4}}\n"));
   f.apply(set("grid.cells", "[20, 10]"));
@@ -28,7 +28,7 @@ TEST(InputFile, OverridesNestedKeysListItemsAndNewKeys) {
 }
 
 TEST(InputFile, RefusesAnIndexBeyondAListAtTheOverridesLocation) {
-  Scratch dir;
+  ScratchDirectory dir;
   InputFile f = InputFile::read(dir.write("case.yaml", "bodies:\n  - {name: a}\n"));
   try {
     f.apply(set("bodies.2.name", "b"));
@@ -42,7 +42,7 @@ TEST(InputFile, RefusesAnIndexBeyondAListAtTheOverridesLocation) {
 }
 
 TEST(InputFile, MakesRelativePathsAbsoluteAndRemembersTheFilesTheyName) {
-  Scratch dir;
+  ScratchDirectory dir;
   dir.write("data/history.csv", "time [s],vx [m/s]\n0,0\n");
   InputFile f = InputFile::read(dir.write(
       "case.yaml", "name: data\nrigid: {velocity_history: data/history.csv}\nother: not_a_file\n"));
@@ -55,7 +55,7 @@ TEST(InputFile, MakesRelativePathsAbsoluteAndRemembersTheFilesTheyName) {
 }
 
 TEST(InputFile, WritesWhatItHolds) {
-  Scratch dir;
+  ScratchDirectory dir;
   InputFile f = InputFile::read(dir.write("case.yaml", "kind: swe_case\nmesh: {cells: 10}\n"));
   f.apply(set("mesh.cells", "40"));
   f.write(dir.path() / "copy.yaml");

@@ -2,15 +2,15 @@
 
 #include <cmath>
 
-#include "bench_scratch.hpp"
 #include "bench/analytic_solution.hpp"
 #include "bench/darcy_column.hpp"
 #include "bench/metric.hpp"
+#include "scratch_directory.hpp"
 
 namespace cosim::bench {
 namespace {
 
-using testing::Scratch;
+using cosim::testing::ScratchDirectory;
 
 MetricSpec metric(const std::string& reference_yaml, const std::string& norm = "relative") {
   MetricSpec m;
@@ -90,7 +90,7 @@ TEST(Metric, ACurveAgainstAnAnalyticCurveAtItsSnapshotsTime) {
 }
 
 TEST(Metric, ACurveAgainstAFileSelectsRowsByText) {
-  Scratch dir;
+  ScratchDirectory dir;
   const auto file = dir.write("front.csv", "# comment\nkind,T,Z\nfront,1,2\nfront,2,3\nheight,1,9\n");
   MetricSpec m = metric("{csv: " + file.string() + ", x: T, y: Z, where: {kind: front}}",
                         "max_relative");
@@ -102,7 +102,7 @@ TEST(Metric, ACurveAgainstAFileSelectsRowsByText) {
 }
 
 TEST(Metric, TheSpeedAndTheFittedOffsetOfASeries) {
-  Scratch dir;
+  ScratchDirectory dir;
   const auto file = dir.write("front.csv", "T,Z\n1,1\n2,2\n3,3\n");
   MetricSpec m = metric("{csv: " + file.string() + ", x: T, y: Z}", "speed");
   m.reference.csv = file;

@@ -2,15 +2,16 @@
 
 #include <algorithm>
 
-#include "bench_scratch.hpp"
 #include "bench/pairing.hpp"
 #include "cosim/error.hpp"
+#include "registered_backend.hpp"
+#include "scratch_directory.hpp"
 
 namespace cosim::bench {
 namespace {
 
 using testing::backend;
-using testing::Scratch;
+using cosim::testing::ScratchDirectory;
 
 std::vector<std::string> exchanged(const YAML::Node& job) {
   std::vector<std::string> fields;
@@ -38,7 +39,7 @@ const char* const soil_text =
     "kind: mpm_case\ndimension: 2\ncoupling:\n  exchange_grid: {factor: 2}\n  surface: {cells: [10]}\n";
 
 TEST(Pairing, IceSendsThePressureForceAndSolvesTheDrag) {
-  Scratch dir;
+  ScratchDirectory dir;
   const Scenario s = porous_scenario("{law: kozeny_carman, permeability: field, fluid_viscosity: 1e-3}");
   const PairedJob p = make_paired_job(backend("ice"), s, InputFile::read(dir.write("soil.yaml", soil_text)),
                                       InputFile::read(dir.write("water.yaml", "kind: ice_case\n")),
@@ -61,7 +62,7 @@ TEST(Pairing, IceSendsThePressureForceAndSolvesTheDrag) {
 }
 
 TEST(Pairing, OpenFoamReadsTheOptionalVolumeFluxAndNoPressureForce) {
-  Scratch dir;
+  ScratchDirectory dir;
   const Scenario s = porous_scenario("{law: kozeny_carman, grain_size: 1e-3, fluid_viscosity: 1e-3}");
   const PairedJob p = make_paired_job(
       backend("openfoam"), s, InputFile::read(dir.write("soil.yaml", soil_text)),
@@ -76,7 +77,7 @@ TEST(Pairing, OpenFoamReadsTheOptionalVolumeFluxAndNoPressureForce) {
 }
 
 TEST(Pairing, ShallowWaterExchangesTheBedAndItsTraction) {
-  Scratch dir;
+  ScratchDirectory dir;
   Scenario s = porous_scenario("");
   const PairedJob p = make_paired_job(backend("swe"), s, InputFile::read(dir.write("soil.yaml", soil_text)),
                                       InputFile::read(dir.write("water.yaml", "kind: swe_case\n")),
@@ -92,7 +93,7 @@ TEST(Pairing, ShallowWaterExchangesTheBedAndItsTraction) {
 }
 
 TEST(Pairing, RefusesAPorousPairingWithoutADragLaw) {
-  Scratch dir;
+  ScratchDirectory dir;
   EXPECT_THROW(make_paired_job(backend("ice"), porous_scenario(""),
                                InputFile::read(dir.write("soil.yaml", soil_text)),
                                InputFile::read(dir.write("water.yaml", "kind: ice_case\n")), "c",

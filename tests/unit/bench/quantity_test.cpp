@@ -2,15 +2,16 @@
 
 #include <cmath>
 
-#include "bench_scratch.hpp"
 #include "bench/quantity.hpp"
 #include "cosim/io/snapshot_reader.hpp"
 #include "cosim/io/snapshot_writer.hpp"
+#include "registered_backend.hpp"
+#include "scratch_directory.hpp"
 
 namespace cosim::bench {
 namespace {
 
-using testing::Scratch;
+using cosim::testing::ScratchDirectory;
 using testing::backend;
 
 QuantitySpec quantity(const std::string& kind, const std::string& yaml) {
@@ -33,7 +34,7 @@ void write_vof_snapshots(const std::filesystem::path& dir) {
 }
 
 TEST(SnapshotReader, ReadsTimesFieldsAndTheGrid) {
-  Scratch dir;
+  ScratchDirectory dir;
   write_vof_snapshots(dir.path());
   const SnapshotReader r(dir.path(), "openfoam");
   EXPECT_EQ(r.times(), (std::vector<double>{0.0, 1.0}));
@@ -49,7 +50,7 @@ TEST(SnapshotReader, ReadsTimesFieldsAndTheGrid) {
 }
 
 TEST(Quantity, AProfileSamplesTheSnapshotNearestItsTime) {
-  Scratch dir;
+  ScratchDirectory dir;
   write_vof_snapshots(dir.path() / "out");
   const RunLayout run{&backend("openfoam"), false, dir.path() / "input", dir.path() / "out"};
   const Measurement m = measure(
@@ -68,7 +69,7 @@ TEST(Quantity, AProfileSamplesTheSnapshotNearestItsTime) {
 }
 
 TEST(Quantity, TheWaterFrontAlongTheFloorInEverySnapshot) {
-  Scratch dir;
+  ScratchDirectory dir;
   write_vof_snapshots(dir.path() / "out");
   const RunLayout run{&backend("openfoam"), false, dir.path() / "input", dir.path() / "out"};
   const Measurement m =
@@ -78,7 +79,7 @@ TEST(Quantity, TheWaterFrontAlongTheFloorInEverySnapshot) {
 }
 
 TEST(Quantity, AGaugeColumnInTheBackendsNamingReducedAsAsked) {
-  Scratch dir;
+  ScratchDirectory dir;
   dir.write("out/water/gauges.csv",
             "time [s],p_probe [Pa],ux_probe [m/s]\n0,5,0\n0.5,7,1\n1.0,6,2\n");
   const RunLayout ice{&backend("ice"), true, dir.path() / "input", dir.path() / "out"};
@@ -99,7 +100,7 @@ TEST(Quantity, AGaugeColumnInTheBackendsNamingReducedAsAsked) {
 }
 
 TEST(Quantity, ANumberOfASummary) {
-  Scratch dir;
+  ScratchDirectory dir;
   dir.write("out/summary.json", R"({"metrics": {"max_conservative_mapping_error": {"value": 3e-16}}})");
   const RunLayout run{&backend("coupler"), true, dir.path() / "input", dir.path() / "out"};
   EXPECT_DOUBLE_EQ(

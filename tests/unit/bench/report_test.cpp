@@ -1,13 +1,16 @@
 #include <gtest/gtest.h>
 
-#include "bench_scratch.hpp"
-#include "cosim/io/csv_table.hpp"
+#include <fstream>
+
 #include "bench/report.hpp"
+#include "cosim/io/csv_table.hpp"
+#include "registered_backend.hpp"
+#include "scratch_directory.hpp"
 
 namespace cosim::bench {
 namespace {
 
-using testing::Scratch;
+using cosim::testing::ScratchDirectory;
 using testing::backend;
 
 struct TwoBackends {
@@ -60,7 +63,7 @@ struct TwoBackends {
 };
 
 TEST(Report, OneCsvRowPerRunAndMetric) {
-  Scratch dir;
+  ScratchDirectory dir;
   TwoBackends b;
   write_results_csv(dir.path() / "results.csv", b.results);
   const CsvTable t = CsvTable::read(dir.path() / "results.csv");
@@ -81,7 +84,7 @@ TEST(Report, SaysWhichPairingWasClosestAndWhichCheapest) {
 }
 
 TEST(Report, TheMarkdownTableKeepsItsColumns) {
-  Scratch dir;
+  ScratchDirectory dir;
   TwoBackends b;
   write_report(dir.path() / "report.md", b.suite, b.results, {"test machine", "now", Resolution::coarse, false, "none"});
   std::ifstream in(dir.path() / "report.md");

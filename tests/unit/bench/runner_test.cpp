@@ -2,13 +2,14 @@
 
 #include <fstream>
 
-#include "bench_scratch.hpp"
 #include "bench/runner.hpp"
+#include "registered_backend.hpp"
+#include "scratch_directory.hpp"
 
 namespace cosim::bench {
 namespace {
 
-using testing::Scratch;
+using cosim::testing::ScratchDirectory;
 using testing::backend;
 
 // A run of a shell command; the suite objects it points to outlive it.
@@ -30,7 +31,7 @@ struct ShellRun {
 };
 
 TEST(Runner, RunsRecordsAndResumesWithoutRepeatingFinishedRuns) {
-  Scratch dir;
+  ScratchDirectory dir;
   const auto counter = dir.path() / "count";
   ShellRun ok(dir.path(), "ok", "echo x >> " + counter.string());
   ShellRun bad(dir.path(), "bad", "echo 'FATAL: no mesh' >&2; exit 3");
@@ -60,7 +61,7 @@ TEST(Runner, RunsRecordsAndResumesWithoutRepeatingFinishedRuns) {
 }
 
 TEST(Runner, AnInterruptStopsTheRunsAndRecordsThem) {
-  Scratch dir;
+  ScratchDirectory dir;
   ShellRun slow(dir.path(), "slow", "sleep 30");
   ShellRun next(dir.path(), "next", "true");
   std::atomic<bool> interrupted{false};
@@ -77,7 +78,7 @@ TEST(Runner, AnInterruptStopsTheRunsAndRecordsThem) {
 }
 
 TEST(Runner, AProgramThatCannotBeFoundIsAFailedRun) {
-  Scratch dir;
+  ScratchDirectory dir;
   ShellRun missing(dir.path(), "missing", "");
   missing.run.executable = "no_such_solver_anywhere";
   const auto records = run_all({missing.run}, {1, false, nullptr});

@@ -2,17 +2,17 @@
 
 #include <string>
 
-#include "bench_scratch.hpp"
 #include "bench/suite.hpp"
 #include "cosim/error.hpp"
+#include "scratch_directory.hpp"
 
 namespace cosim::bench {
 namespace {
 
-using testing::Scratch;
+using cosim::testing::ScratchDirectory;
 
 // The files a small coupled suite refers to.
-void write_inputs(const Scratch& dir) {
+void write_inputs(const ScratchDirectory& dir) {
   dir.write("soil.yaml", "kind: mpm_case\nname: soil\ndimension: 2\n");
   dir.write("ice.yaml", "kind: ice_case\nname: water\n");
   dir.write("foam.yaml", "kind: openfoam_case\nname: water\n");
@@ -45,7 +45,7 @@ scenarios:
 )";
 
 TEST(Suite, ReadsScenariosBackendsOverridesAndMetrics) {
-  Scratch dir;
+  ScratchDirectory dir;
   write_inputs(dir);
   const Suite suite = load_suite(dir.write("suite.yaml", coupled_suite));
   ASSERT_EQ(suite.scenarios.size(), 1u);
@@ -80,7 +80,7 @@ struct BadSuite {
 class SuiteRefuses : public ::testing::TestWithParam<BadSuite> {};
 
 TEST_P(SuiteRefuses, WithTheFileLineAndKey) {
-  Scratch dir;
+  ScratchDirectory dir;
   write_inputs(dir);
   std::string text = coupled_suite;
   const auto at = text.find(GetParam().from);
@@ -130,7 +130,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "a second metric named 'speed'"}));
 
 TEST(Suite, MergeKeysShareAMetricsDefinition) {
-  Scratch dir;
+  ScratchDirectory dir;
   write_inputs(dir);
   const auto file = dir.write("suite.yaml", R"(kind: bench_suite
 name: merged

@@ -5,10 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "input_error.hpp"
+#include "scratch_directory.hpp"
 
 namespace cosim::config {
 namespace {
@@ -21,22 +21,14 @@ namespace fs = std::filesystem;
 
 class ConfigDocumentFile : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("cosim_config_test_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "jobs");
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  void SetUp() override { fs::create_directories(dir_ / "jobs"); }
 
   fs::path write(const fs::path& relative, const std::string& text) const {
-    const fs::path file = dir_ / relative;
-    std::ofstream(file) << text;
-    return file;
+    return scratch_.write(relative, text);
   }
 
-  fs::path dir_;
+  cosim::testing::ScratchDirectory scratch_;
+  fs::path dir_ = scratch_.path();
 };
 
 TEST_F(ConfigDocumentFile, LoadsAFileAndKeepsItsPathAndText) {

@@ -8,6 +8,7 @@
 #include "cosim/config/document.hpp"
 #include "example_job_schema.hpp"
 #include "input_error.hpp"
+#include "scratch_directory.hpp"
 
 namespace cosim::config {
 namespace {
@@ -204,9 +205,9 @@ TEST(ConfigSchema, WrongKindIsRefusedFirst) {
 
 TEST(ConfigSchema, MustExistPathIsCheckedRelativeToTheFile) {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "cosim_config_schema_must_exist";
-  fs::create_directories(dir / "mpm");
-  std::ofstream(dir / "mpm" / "clay.yaml") << "kind: mpm_case\n";
+  const cosim::testing::ScratchDirectory scratch;
+  const fs::path& dir = scratch.path();
+  scratch.write("mpm/clay.yaml", "kind: mpm_case\n");
   Schema schema = Schema::object();
   schema.required("config", Schema::path().must_exist(), "Solver case.");
   EXPECT_NO_THROW(

@@ -9,6 +9,7 @@
 
 #include "cosim/error.hpp"
 #include "ice/eos/ideal_gas.hpp"
+#include "scratch_directory.hpp"
 
 namespace ice {
 namespace {
@@ -41,17 +42,17 @@ TEST(IceOutput, SnapshotHoldsMixtureAndPerMaterialFields) {
   ASSERT_EQ(velocity.components, 2);
   EXPECT_DOUBLE_EQ(velocity.values[0], (0.3 * 1.0 + 0.9 * 3.0) / 1.2);
   EXPECT_DOUBLE_EQ(fields.at("density").values[3], 1.2);
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "ice_io_test_snapshot";
-  std::filesystem::remove_all(dir);
+  const cosim::testing::ScratchDirectory scratch;
+  const std::filesystem::path dir = scratch / "snapshot";
   cosim::SnapshotWriter writer(dir, "ice", cell_mesh(solver.grid(), "ice_cells"));
   writer.write(0.0, fields);
   EXPECT_TRUE(std::filesystem::exists(dir / "ice.xdmf"));
-  std::filesystem::remove_all(dir);
 }
 
 TEST(IceOutput, GaugesRecordTheCellHoldingThePoint) {
   const IceSolver<2> solver = two_gas_box();
-  const std::filesystem::path file = std::filesystem::temp_directory_path() / "ice_io_gauges.csv";
+  const cosim::testing::ScratchDirectory scratch;
+  const std::filesystem::path file = scratch / "gauges.csv";
   {
     GaugeRecorder<2> gauges(file, {{"g", {1.9, 0.4, 0.0}}}, solver);
     gauges.record(0.0, solver);

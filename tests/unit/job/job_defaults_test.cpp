@@ -2,16 +2,15 @@
 // value its own key accepts, and a job that leaves a key out reads it.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "cosim/config/schema.hpp"
 #include "exchange/drag_law_registry.hpp"
 #include "job/job.hpp"
+#include "scratch_directory.hpp"
 
 namespace cosim::job {
 namespace {
@@ -34,12 +33,10 @@ TEST(JobSchemaDefaults, EveryDefaultIsAcceptedByItsKey) {
 }
 
 TEST(JobSchemaDefaults, AJobWithoutTheOptionalKeysReadsTheSchemaDefaults) {
-  const fs::path file =
-      fs::temp_directory_path() / ("cosim_job_defaults_" + std::to_string(::getpid()) + ".yaml");
-  std::ofstream(file) << "kind: job\nname: bare\nend_time: 1.0\nwindow: 0.1\n"
-                         "participants:\n  soil: {executable: mpm_solver}\n";
-  const Job job = load_job(file);
-  fs::remove(file);
+  const cosim::testing::ScratchDirectory dir;
+  const Job job = load_job(dir.write("job.yaml",
+                                     "kind: job\nname: bare\nend_time: 1.0\nwindow: 0.1\n"
+                                     "participants:\n  soil: {executable: mpm_solver}\n"));
 
   EXPECT_EQ(job.start_time, schema_default<double>("start_time"));
   EXPECT_EQ(job.transport == TransportKind::mpi ? "mpi" : "zmq",

@@ -5,11 +5,9 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
-
-#include <fstream>
 
 #include "cosim/error.hpp"
+#include "scratch_directory.hpp"
 
 namespace cosim::job {
 namespace {
@@ -39,14 +37,7 @@ exchange:
 
 class JobFile : public ::testing::Test {
  protected:
-  fs::path write(const std::string& text) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("cosim_job_test_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    const fs::path file = dir / "job.yaml";
-    std::ofstream(file) << text;
-    return file;
-  }
+  fs::path write(const std::string& text) const { return scratch_.write("job.yaml", text); }
   // Replaces the first occurrence of `from` in the valid job by `to`.
   std::string variant(const std::string& from, const std::string& to) {
     std::string s = valid_job;
@@ -64,6 +55,8 @@ class JobFile : public ::testing::Test {
     ADD_FAILURE() << "accepted:\n" << text;
     return {};
   }
+
+  cosim::testing::ScratchDirectory scratch_;
 };
 
 TEST_F(JobFile, ValidJobLoads) {

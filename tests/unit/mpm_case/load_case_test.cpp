@@ -11,6 +11,7 @@
 #include "cosim/error.hpp"
 #include "mpm/case/case_schema.hpp"
 #include "replaced_text.hpp"
+#include "scratch_directory.hpp"
 
 namespace mpm {
 
@@ -51,14 +52,6 @@ probes:
   - {name: centre, body: block, position: [0.5, 0.6]}
 output: {every: 0.01, probe_every: 0.001}
 )";
-
-// Directory of this test's files, fresh per test.
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mpm_case_test_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 // The valid case with the load region starting at height y.
 std::string with_load_from(double y) {
@@ -246,7 +239,8 @@ TEST(MpmCaseLoad, GridNeedsUpperOrSpacing) {
 }
 
 TEST(MpmCaseLoad, PrescribedRigidMotionReadsItsHistoryRelativeToTheCase) {
-  const fs::path dir = scratch("history");
+  const cosim::testing::ScratchDirectory scratch;
+  const fs::path& dir = scratch.path();
   std::ofstream(dir / "shake.csv") << "time [s],vx [m/s],vy [m/s]\n0,0,0\n0.1,0.2,0\n0.2,-0.2,0\n";
   const std::string text = replaced(valid_case, "rigid: {motion: fixed}",
                                     "rigid: {motion: prescribed, velocity_history: shake.csv}");
@@ -258,7 +252,8 @@ TEST(MpmCaseLoad, PrescribedRigidMotionReadsItsHistoryRelativeToTheCase) {
 }
 
 TEST(MpmCaseLoad, BadVelocityHistoryLineIsLocatedInTheCsv) {
-  const fs::path dir = scratch("bad_history");
+  const cosim::testing::ScratchDirectory scratch;
+  const fs::path& dir = scratch.path();
   std::ofstream(dir / "shake.csv") << "time [s],vx [m/s],vy [m/s]\n0,0,0\n0.1,abc,0\n";
   const std::string text = replaced(valid_case, "rigid: {motion: fixed}",
                                     "rigid: {motion: prescribed, velocity_history: shake.csv}");
@@ -268,7 +263,8 @@ TEST(MpmCaseLoad, BadVelocityHistoryLineIsLocatedInTheCsv) {
 }
 
 TEST(MpmCaseLoad, VelocityHistoryHeaderAndOrderAreChecked) {
-  const fs::path dir = scratch("history_header");
+  const cosim::testing::ScratchDirectory scratch;
+  const fs::path& dir = scratch.path();
   const std::string text = replaced(valid_case, "rigid: {motion: fixed}",
                                     "rigid: {motion: prescribed, velocity_history: shake.csv}");
   std::ofstream(dir / "shake.csv") << "t,vx,vy\n0,0,0\n";
@@ -342,7 +338,8 @@ TEST(MpmCaseLoad, DegeneratePolygonIsLocatedAtItsKey) {
 }
 
 TEST(MpmCaseLoad, ReadsParticlesFromAPointsFile) {
-  const fs::path dir = scratch("points");
+  const cosim::testing::ScratchDirectory scratch;
+  const fs::path& dir = scratch.path();
   std::ofstream(dir / "block.csv") << "x,y,volume\n0.5,0.5,0.01\n0.5,0.6,0.01\n";
   const auto c = load_case_text(replaced(with_load_from(0.55), "{box: {min: [0.4, 0.5], max: [0.6, 0.7]}}",
                                          "{points: block.csv}"),

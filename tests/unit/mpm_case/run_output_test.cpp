@@ -14,6 +14,7 @@
 #include "mpm/io/particle_snapshot_writer.hpp"
 #include "mpm/io/probe_recorder.hpp"
 #include "mpm/io/run_driver.hpp"
+#include "scratch_directory.hpp"
 #include "text_files.hpp"
 
 namespace mpm {
@@ -40,13 +41,6 @@ output: {every: 0.01}
 threads: 1
 )";
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mpm_run_output_test_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 TEST(MpmLogarithmicStrain, IsTheLogOfTheStretchAndIgnoresRotation) {
   Tensor F = Tensor::Identity();
   F(0, 0) = 2.0;
@@ -66,7 +60,8 @@ TEST(MpmLogarithmicStrain, IsTheLogOfTheStretchAndIgnoresRotation) {
 }
 
 TEST(MpmParticleSnapshots, WriteDisplacementFromTheStartAndEveryField) {
-  const fs::path dir = scratch("snapshots");
+  const cosim::testing::ScratchDirectory scratch;
+  const fs::path& dir = scratch.path();
   Solver<2> solver(load_case_text(falling_block, dir / "case.yaml"));
   ParticleSnapshotWriter<2> writer(dir, solver);
   writer.write(solver);
@@ -132,7 +127,8 @@ class RecordingObserver final : public StepObserver<2> {
 };
 
 TEST(MpmRunDriver, ObserverDrivesTheLoopAndBoundsTheStep) {
-  const fs::path dir = scratch("observer");
+  const cosim::testing::ScratchDirectory scratch;
+  const fs::path& dir = scratch.path();
   std::ofstream(dir / "case.yaml") << falling_block;
   Calls calls;
   StepObservers observers;
@@ -158,7 +154,8 @@ TEST(MpmRunDriver, ObserverDrivesTheLoopAndBoundsTheStep) {
 }
 
 TEST(MpmRunDriver, ObserverIsAbortedOnFailure) {
-  const fs::path dir = scratch("observer_abort");
+  const cosim::testing::ScratchDirectory scratch;
+  const fs::path& dir = scratch.path();
   std::ofstream(dir / "case.yaml") << falling_block;
   Calls calls;
   StepObservers observers;
@@ -179,7 +176,8 @@ TEST(MpmRunDriver, ObserverIsAbortedOnFailure) {
 }
 
 TEST(MpmRunDriver, StandaloneRunHitsOutputTimesAndEndTime) {
-  const fs::path dir = scratch("standalone");
+  const cosim::testing::ScratchDirectory scratch;
+  const fs::path& dir = scratch.path();
   std::ofstream(dir / "case.yaml") << falling_block;
   RunOptions options;
   options.config = dir / "case.yaml";

@@ -13,6 +13,7 @@
 #include "mpm/case/load_case.hpp"
 #include "mpm/io/run_driver.hpp"
 #include "replaced_text.hpp"
+#include "scratch_directory.hpp"
 #include "text_files.hpp"
 
 namespace mpm {
@@ -159,9 +160,8 @@ TEST(MpmThermalCase, HelpListsTheThermalKeys) {
 }
 
 TEST(MpmThermalCase, ARunWritesTemperaturesAndTheThermalBalance) {
-  const fs::path dir = fs::temp_directory_path() / "mpm_thermal_case_test_run";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const cosim::testing::ScratchDirectory scratch;
+  const fs::path& dir = scratch.path();
   std::ofstream(dir / "case.yaml") << thermal_case;
   RunOptions options;
   options.config = dir / "case.yaml";

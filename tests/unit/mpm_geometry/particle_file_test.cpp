@@ -3,29 +3,19 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "cosim/error.hpp"
 #include "mpm/geometry/particle_file.hpp"
+#include "scratch_directory.hpp"
 
 namespace mpm {
 namespace {
 
 class ParticleFileTest : public ::testing::Test {
  protected:
-  std::string write(const std::string& name, const std::string& text) {
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("mpm_particle_file_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                      "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir);
-    dirs_.push_back(dir);
-    const auto path = (dir / name).string();
-    std::ofstream(path) << text;
-    return path;
-  }
-  void TearDown() override {
-    for (const auto& d : dirs_) std::filesystem::remove_all(d);
+  std::string write(const std::string& name, const std::string& text) const {
+    return scratch_.write(name, text).string();
   }
 
   // The message of the InputError thrown by reading `text` as a Dim-D file.
@@ -43,7 +33,7 @@ class ParticleFileTest : public ::testing::Test {
   }
 
  private:
-  std::vector<std::filesystem::path> dirs_;
+  cosim::testing::ScratchDirectory scratch_;
 };
 
 TEST_F(ParticleFileTest, Reads2DWithExtraColumnsCommentsAndBlanks) {

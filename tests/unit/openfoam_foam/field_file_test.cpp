@@ -1,8 +1,6 @@
 #include "openfoam/foam/field_file.hpp"
 
-#include <fmt/format.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <bit>
 #include <chrono>
@@ -10,19 +8,20 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "cosim/error.hpp"
 #include "openfoam/foam/foam_file_header.hpp"
+#include "scratch_directory.hpp"
+#include "text_files.hpp"
 
 namespace openfoam {
 namespace {
 
 namespace fs = std::filesystem;
+using cosim::testing::read_text;
 
 // The layout OpenFOAM v1912 writes (banner comment, header, blank lines, the
 // list size on its own line); the banner here is our own text.
@@ -73,29 +72,12 @@ constexpr const char* walls_zero_gradient = "    walls\n    {\n        type zero
 
 class OpenFoamFieldFile : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           fmt::format("openfoam_foam_test_{}_{}", ::getpid(),
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path file = dir_ / name;
-    std::ofstream(file, std::ios::binary) << text;
-    return file;
+    return scratch_.write(name, text);
   }
 
-  static std::string text_of(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
-  fs::path dir_;
+  cosim::testing::ScratchDirectory scratch_;
+  fs::path dir_ = scratch_.path();
 };
 
 // The message of the cosim::Error that `read` throws, its exit code checked.
@@ -309,7 +291,7 @@ TEST_F(OpenFoamFieldFile, VolFieldFileHasHeaderDimensionsAndBoundaryVerbatim) {
                    .dimensions = "[0 1 -1 0 0 0 0]",
                    .values = values,
                    .boundary_field = "    walls\n    {\n        type noSlip;\n    }"});
-  EXPECT_EQ(text_of(file),
+  EXPECT_EQ(read_text(file),
             foam_file_header({.class_name = "volVectorField", .location = "0.05", .object = "U"}) +
                 "dimensions      [0 1 -1 0 0 0 0];\n\n"
                 "internalField   nonuniform List<vector>\n1\n(\n(1.5 0 -2)\n)\n;\n\n"
@@ -384,16 +366,16 @@ TEST_F(OpenFoamFieldFile, ListsRoundTripToTheBit) {
   const fs::path scalars = dir_ / "nParticle";
   write_field_list(scalars, "0.05/lagrangian/kinematicCloud", FieldType::scalar, values);
   EXPECT_EQ(bits_of(read_field_list(scalars, FieldType::scalar, 6)), bits_of(values));
-  EXPECT_NE(text_of(scalars).find("class       scalarField;"), std::string::npos);
+  EXPECT_NE(read_text(scalars).find("class       scalarField;"), std::string::npos);
   const fs::path vectors = dir_ / "U";
   write_field_list(vectors, "0.05/lagrangian/kinematicCloud", FieldType::vector, values);
   EXPECT_EQ(bits_of(read_field_list(vectors, FieldType::vector, 2)), bits_of(values));
-  EXPECT_NE(text_of(vectors).find("class       vectorField;"), std::string::npos);
+  EXPECT_NE(read_text(vectors).find("class       vectorField;"), std::string::npos);
   const std::vector<std::int64_t> labels{0, -1, 2147483647, 5};
   const fs::path label_file = dir_ / "origId";
   write_label_list(label_file, "0.05/lagrangian/kinematicCloud", labels);
   EXPECT_EQ(read_label_list(label_file, 4), labels);
-  EXPECT_NE(text_of(label_file).find("class       labelField;"), std::string::npos);
+  EXPECT_NE(read_text(label_file).find("class       labelField;"), std::string::npos);
 }
 
 TEST_F(OpenFoamFieldFile, PositionsHoldCoordinatesAndTheCellOfEachParcel) {
@@ -402,7 +384,7 @@ TEST_F(OpenFoamFieldFile, PositionsHoldCoordinatesAndTheCellOfEachParcel) {
   const fs::path file = dir_ / "positions";
   write_parcel_positions(file, "0.05/lagrangian/kinematicCloud", "basicKinematicMPPICParcel", xyz,
                          cells);
-  EXPECT_EQ(text_of(file),
+  EXPECT_EQ(read_text(file),
             foam_file_header({.class_name = "Cloud<basicKinematicMPPICParcel>",
                               .location = "0.05/lagrangian/kinematicCloud",
                               .object = "positions"}) +

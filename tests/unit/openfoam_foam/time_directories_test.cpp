@@ -1,8 +1,6 @@
 #include "openfoam/foam/time_directories.hpp"
 
-#include <fmt/format.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -10,6 +8,7 @@
 #include <vector>
 
 #include "cosim/error.hpp"
+#include "scratch_directory.hpp"
 
 namespace openfoam {
 namespace {
@@ -50,15 +49,6 @@ TEST(OpenFoamTimeName, MatchesPrintfGeneralFormat) {
 
 class OpenFoamTimeDirectories : public ::testing::Test {
  protected:
-  void SetUp() override {
-    case_ = fs::temp_directory_path() /
-            fmt::format("openfoam_time_test_{}_{}", ::getpid(),
-                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(case_);
-    fs::create_directories(case_);
-  }
-  void TearDown() override { fs::remove_all(case_); }
-
   void make_directories(const std::vector<std::string>& names) const {
     for (const std::string& name : names) fs::create_directories(case_ / name);
   }
@@ -70,7 +60,8 @@ class OpenFoamTimeDirectories : public ::testing::Test {
     return names;
   }
 
-  fs::path case_;
+  cosim::testing::ScratchDirectory scratch_;
+  fs::path case_ = scratch_.path();
 };
 
 TEST_F(OpenFoamTimeDirectories, ListsNumericDirectoriesSortedByTime) {
