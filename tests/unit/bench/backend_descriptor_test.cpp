@@ -7,11 +7,13 @@
 #include "bench/backend_catalog.hpp"
 #include "bench/suite.hpp"
 #include "cosim/error.hpp"
+#include "replaced_text.hpp"
 #include "scratch_directory.hpp"
 
 namespace cosim::bench {
 namespace {
 
+using cosim::testing::replaced;
 using cosim::testing::ScratchDirectory;
 
 // A fluid backend described in full; the cases below each spoil one line.
@@ -33,12 +35,6 @@ fluid_pairing:
   to_soil: [{field: pore_pressure}]
   momentum_exchange: fluid
 )";
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  if (at == std::string::npos) throw std::logic_error("no '" + from + "' in the descriptor");
-  return text.replace(at, from.size(), to);
-}
 
 TEST(BackendDescriptor, ReadsAFluidBackend) {
   ScratchDirectory dir;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "cosim/error.hpp"
+#include "replaced_text.hpp"
 #include "scratch_directory.hpp"
 
 namespace cosim::job {
@@ -40,10 +41,7 @@ class JobFile : public ::testing::Test {
   fs::path write(const std::string& text) const { return scratch_.write("job.yaml", text); }
   // Replaces the first occurrence of `from` in the valid job by `to`.
   std::string variant(const std::string& from, const std::string& to) {
-    std::string s = valid_job;
-    const auto at = s.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    return s.replace(at, from.size(), to);
+    return cosim::testing::replaced(valid_job, from, to);
   }
   std::string error_of(const std::string& text) {
     try {
