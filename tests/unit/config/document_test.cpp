@@ -9,12 +9,13 @@
 
 #include "input_error.hpp"
 #include "scratch_directory.hpp"
+#include "yaml_text.hpp"
 
 namespace cosim::config {
 namespace {
 
 using testing::column_of;
-using testing::input_error_from;
+using cosim::testing::input_error_from;
 using testing::yaml_text;
 
 namespace fs = std::filesystem;

@@ -8,7 +8,7 @@
 namespace cosim::config {
 namespace {
 
-using testing::input_error_from;
+using cosim::testing::input_error_from;
 
 Node root_of(const std::string& text) {
   return Document::load_string(text, "case.yaml").root();

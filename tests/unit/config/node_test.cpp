@@ -4,12 +4,13 @@
 
 #include "cosim/config/document.hpp"
 #include "input_error.hpp"
+#include "yaml_text.hpp"
 
 namespace cosim::config {
 namespace {
 
 using testing::column_of;
-using testing::input_error_from;
+using cosim::testing::input_error_from;
 using testing::yaml_text;
 
 const std::vector<std::string> job_lines{

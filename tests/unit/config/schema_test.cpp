@@ -9,13 +9,14 @@
 #include "example_job_schema.hpp"
 #include "input_error.hpp"
 #include "scratch_directory.hpp"
+#include "yaml_text.hpp"
 
 namespace cosim::config {
 namespace {
 
 using testing::column_of;
 using testing::example_job_schema;
-using testing::input_error_from;
+using cosim::testing::input_error_from;
 using testing::valid_job_lines;
 using testing::yaml_text;
 

@@ -12,7 +12,7 @@
 namespace cosim::config {
 namespace {
 
-using testing::input_error_from;
+using cosim::testing::input_error_from;
 
 struct Shape {
   virtual ~Shape() = default;

@@ -9,7 +9,7 @@
 
 #include "cosim/error.hpp"
 #include "ice/case/load_case.hpp"
-#include "input_error_message.hpp"
+#include "input_error.hpp"
 #include "replaced_text.hpp"
 
 namespace ice {

@@ -7,7 +7,7 @@
 #include "cosim/error.hpp"
 #include "ice/case/case_schema.hpp"
 #include "ice/case/make_solver.hpp"
-#include "input_error_message.hpp"
+#include "input_error.hpp"
 #include "replaced_text.hpp"
 
 using cosim::testing::replaced;

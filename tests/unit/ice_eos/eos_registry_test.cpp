@@ -10,6 +10,7 @@
 #include "ice/eos/eos_registry.hpp"
 #include "ice/eos/ideal_gas.hpp"
 #include "ice/eos/linear_water.hpp"
+#include "input_error.hpp"
 
 namespace ice::testing {
 namespace {
@@ -21,14 +22,8 @@ std::unique_ptr<EquationOfState> eos_from_yaml(const std::string& yaml) {
 
 // The InputError that building `yaml` throws, printed as a user reads it.
 cosim::InputError eos_error(const std::string& yaml) {
-  try {
-    eos_from_yaml(yaml);
-  } catch (const cosim::InputError& error) {
-    std::cout << "    InputError: " << error.what() << '\n';
-    return error;
-  }
-  ADD_FAILURE() << "expected an InputError for:\n" << yaml;
-  return cosim::InputError("nothing was thrown");
+  SCOPED_TRACE(yaml);
+  return cosim::testing::input_error_from([&] { eos_from_yaml(yaml); });
 }
 
 bool mentions(const cosim::InputError& error, const std::string& text) {

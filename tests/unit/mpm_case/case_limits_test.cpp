@@ -9,7 +9,7 @@
 #include <string>
 
 #include "cosim/error.hpp"
-#include "input_error_message.hpp"
+#include "input_error.hpp"
 #include "mpm/case/load_case.hpp"
 #include "replaced_text.hpp"
 

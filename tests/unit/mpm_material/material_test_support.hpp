@@ -3,13 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-#include <iostream>
 #include <memory>
 #include <random>
 #include <string>
 
 #include "cosim/config/document.hpp"
 #include "cosim/error.hpp"
+#include "input_error.hpp"
 #include "mpm/material/material_registry.hpp"
 
 namespace mpm::testing {
@@ -21,14 +21,8 @@ inline std::unique_ptr<Material> material_from_yaml(const std::string& yaml) {
 
 // The InputError that building `yaml` throws, printed as a user reads it.
 inline cosim::InputError material_error(const std::string& yaml) {
-  try {
-    material_from_yaml(yaml);
-  } catch (const cosim::InputError& error) {
-    std::cout << "    InputError: " << error.what() << '\n';
-    return error;
-  }
-  ADD_FAILURE() << "expected an InputError for:\n" << yaml;
-  return cosim::InputError("nothing was thrown");
+  SCOPED_TRACE(yaml);
+  return cosim::testing::input_error_from([&] { material_from_yaml(yaml); });
 }
 
 inline Tensor random_matrix(std::mt19937& rng, double scale) {

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "cosim/error.hpp"
-#include "input_error_message.hpp"
+#include "input_error.hpp"
 #include "openfoam/case/load_case.hpp"
 #include "openfoam/case/mesh_cell_count.hpp"
 #include "replaced_text.hpp"

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "cosim/error.hpp"
-#include "input_error_message.hpp"
+#include "input_error.hpp"
 #include "replaced_text.hpp"
 
 using cosim::testing::replaced;

@@ -3,7 +3,7 @@
 #include <string>
 
 #include "cosim/error.hpp"
-#include "input_error_message.hpp"
+#include "input_error.hpp"
 #include "replaced_text.hpp"
 #include "swe/case/load_case.hpp"
 

@@ -4,11 +4,23 @@
 
 #include <iostream>
 #include <string>
-#include <vector>
 
 #include "cosim/error.hpp"
 
-namespace cosim::config::testing {
+// The cosim::InputError a test's action throws.
+namespace cosim::testing {
+
+// The message of the cosim::InputError `action` throws; "no error" when it
+// throws none.
+template <class Action>
+std::string input_error_message(Action&& action) {
+  try {
+    action();
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "no error";
+}
 
 // The InputError `action` throws, printed so the test log shows what a user
 // would read; a test failure when nothing is thrown.
@@ -24,17 +36,4 @@ InputError input_error_from(Action&& action) {
   return InputError("nothing was thrown");
 }
 
-// The 1-based column of `token` in `line` (0 when absent).
-inline int column_of(const std::string& line, const std::string& token) {
-  const auto at = line.find(token);
-  return at == std::string::npos ? 0 : static_cast<int>(at) + 1;
-}
-
-// `lines` joined with newlines, each line a line of the YAML file.
-inline std::string yaml_text(const std::vector<std::string>& lines) {
-  std::string text;
-  for (const auto& line : lines) text += line + '\n';
-  return text;
-}
-
-}  // namespace cosim::config::testing
+}  // namespace cosim::testing
