@@ -28,7 +28,6 @@
 // 7-8 % short at 0.5 and 1 s; numbers in that file).
 #include <gtest/gtest.h>
 #include <fmt/format.h>
-#include <hdf5.h>
 
 #include <algorithm>
 #include <cmath>
@@ -40,6 +39,7 @@
 #include <string>
 #include <vector>
 
+#include "hdf5_reader.hpp"
 #include "run_process.hpp"
 #include "text_files.hpp"
 
@@ -85,35 +85,22 @@ struct ParticleSnapshot {
   std::vector<double> x, z, speed;
 };
 
-std::vector<double> read_dataset(hid_t file, const char* name, std::size_t& rows, std::size_t& columns) {
-  const hid_t set = H5Dopen2(file, name, H5P_DEFAULT);
-  const hid_t space = H5Dget_space(set);
-  hsize_t dims[2] = {0, 1};
-  const int rank = H5Sget_simple_extent_dims(space, dims, nullptr);
-  rows = dims[0];
-  columns = rank > 1 ? dims[1] : 1;
-  std::vector<double> values(rows * columns);
-  H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
-  H5Sclose(space);
-  H5Dclose(set);
-  return values;
+// Columns of a dataset of rows (1 for a rank-1 one).
+std::size_t columns(const ct::Dataset<double>& d) {
+  return d.dims.size() > 1 ? d.dims[1] : 1;
 }
 
 ParticleSnapshot read_particles(const fs::path& path) {
   ParticleSnapshot s;
-  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  const hid_t attribute = H5Aopen(file, "time", H5P_DEFAULT);
-  H5Aread(attribute, H5T_NATIVE_DOUBLE, &s.time);
-  H5Aclose(attribute);
-  std::size_t n = 0, c = 0;
-  const auto xyz = read_dataset(file, "geometry/xyz", n, c);
-  std::size_t vn = 0, vc = 0;
-  const auto v = read_dataset(file, "fields/velocity", vn, vc);
-  H5Fclose(file);
+  const ct::Hdf5Reader file(path);
+  s.time = file.root_double("time");
+  const auto xyz = file.doubles("geometry/xyz");
+  const auto v = file.doubles("fields/velocity");
+  const std::size_t n = xyz.dims[0], c = columns(xyz), vc = columns(v);
   for (std::size_t p = 0; p < n; ++p) {
-    s.x.push_back(xyz[p * c]);
-    s.z.push_back(xyz[p * c + 1]);
-    s.speed.push_back(std::hypot(v[p * vc], v[p * vc + 1]));
+    s.x.push_back(xyz.values[p * c]);
+    s.z.push_back(xyz.values[p * c + 1]);
+    s.speed.push_back(std::hypot(v.values[p * vc], v.values[p * vc + 1]));
   }
   return s;
 }
