@@ -205,10 +205,8 @@ TEST(ConfigSchema, WrongKindIsRefusedFirst) {
 }
 
 TEST(ConfigSchema, MustExistPathIsCheckedRelativeToTheFile) {
-  namespace fs = std::filesystem;
-  const cosim::testing::ScratchDirectory scratch;
-  const fs::path& dir = scratch.path();
-  scratch.write("mpm/clay.yaml", "kind: mpm_case\n");
+  const cosim::testing::ScratchDirectory dir;
+  dir.write("mpm/clay.yaml", "kind: mpm_case\n");
   Schema schema = Schema::object();
   schema.required("config", Schema::path().must_exist(), "Solver case.");
   EXPECT_NO_THROW(
@@ -220,7 +218,6 @@ TEST(ConfigSchema, MustExistPathIsCheckedRelativeToTheFile) {
   EXPECT_EQ(error.where().column, 9);
   EXPECT_NE(std::string(error.what()).find((dir / "mpm" / "sand.yaml").string()),
             std::string::npos);
-  fs::remove_all(dir);
 }
 
 TEST(ConfigSchema, EmptyStringIsRefusedWhereANameIsRequired) {

@@ -239,8 +239,7 @@ TEST(MpmCaseLoad, GridNeedsUpperOrSpacing) {
 }
 
 TEST(MpmCaseLoad, PrescribedRigidMotionReadsItsHistoryRelativeToTheCase) {
-  const cosim::testing::ScratchDirectory scratch;
-  const fs::path& dir = scratch.path();
+  const cosim::testing::ScratchDirectory dir;
   std::ofstream(dir / "shake.csv") << "time [s],vx [m/s],vy [m/s]\n0,0,0\n0.1,0.2,0\n0.2,-0.2,0\n";
   const std::string text = replaced(valid_case, "rigid: {motion: fixed}",
                                     "rigid: {motion: prescribed, velocity_history: shake.csv}");
@@ -252,8 +251,7 @@ TEST(MpmCaseLoad, PrescribedRigidMotionReadsItsHistoryRelativeToTheCase) {
 }
 
 TEST(MpmCaseLoad, BadVelocityHistoryLineIsLocatedInTheCsv) {
-  const cosim::testing::ScratchDirectory scratch;
-  const fs::path& dir = scratch.path();
+  const cosim::testing::ScratchDirectory dir;
   std::ofstream(dir / "shake.csv") << "time [s],vx [m/s],vy [m/s]\n0,0,0\n0.1,abc,0\n";
   const std::string text = replaced(valid_case, "rigid: {motion: fixed}",
                                     "rigid: {motion: prescribed, velocity_history: shake.csv}");
@@ -263,8 +261,7 @@ TEST(MpmCaseLoad, BadVelocityHistoryLineIsLocatedInTheCsv) {
 }
 
 TEST(MpmCaseLoad, VelocityHistoryHeaderAndOrderAreChecked) {
-  const cosim::testing::ScratchDirectory scratch;
-  const fs::path& dir = scratch.path();
+  const cosim::testing::ScratchDirectory dir;
   const std::string text = replaced(valid_case, "rigid: {motion: fixed}",
                                     "rigid: {motion: prescribed, velocity_history: shake.csv}");
   std::ofstream(dir / "shake.csv") << "t,vx,vy\n0,0,0\n";
@@ -338,8 +335,7 @@ TEST(MpmCaseLoad, DegeneratePolygonIsLocatedAtItsKey) {
 }
 
 TEST(MpmCaseLoad, ReadsParticlesFromAPointsFile) {
-  const cosim::testing::ScratchDirectory scratch;
-  const fs::path& dir = scratch.path();
+  const cosim::testing::ScratchDirectory dir;
   std::ofstream(dir / "block.csv") << "x,y,volume\n0.5,0.5,0.01\n0.5,0.6,0.01\n";
   const auto c = load_case_text(replaced(with_load_from(0.55), "{box: {min: [0.4, 0.5], max: [0.6, 0.7]}}",
                                          "{points: block.csv}"),

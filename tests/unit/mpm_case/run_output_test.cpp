@@ -60,10 +60,9 @@ TEST(MpmLogarithmicStrain, IsTheLogOfTheStretchAndIgnoresRotation) {
 }
 
 TEST(MpmParticleSnapshots, WriteDisplacementFromTheStartAndEveryField) {
-  const cosim::testing::ScratchDirectory scratch;
-  const fs::path& dir = scratch.path();
+  const cosim::testing::ScratchDirectory dir;
   Solver<2> solver(load_case_text(falling_block, dir / "case.yaml"));
-  ParticleSnapshotWriter<2> writer(dir, solver);
+  ParticleSnapshotWriter<2> writer(dir.path(), solver);
   writer.write(solver);
   solver.step(1e-3);
   writer.write(solver);
@@ -127,16 +126,14 @@ class RecordingObserver final : public StepObserver<2> {
 };
 
 TEST(MpmRunDriver, ObserverDrivesTheLoopAndBoundsTheStep) {
-  const cosim::testing::ScratchDirectory scratch;
-  const fs::path& dir = scratch.path();
-  std::ofstream(dir / "case.yaml") << falling_block;
+  const cosim::testing::ScratchDirectory dir;
   Calls calls;
   StepObservers observers;
   observers.for_2d = [&calls](const CaseDescription&) {
     return std::make_unique<RecordingObserver>(calls, 1e-3, 0.005);
   };
   RunOptions options;
-  options.config = dir / "case.yaml";
+  options.config = dir.write("case.yaml", falling_block);
   options.output = dir / "out";
   EXPECT_EQ(run_case(options, observers), 0);
   EXPECT_EQ(calls.initialize, 1);
@@ -154,9 +151,7 @@ TEST(MpmRunDriver, ObserverDrivesTheLoopAndBoundsTheStep) {
 }
 
 TEST(MpmRunDriver, ObserverIsAbortedOnFailure) {
-  const cosim::testing::ScratchDirectory scratch;
-  const fs::path& dir = scratch.path();
-  std::ofstream(dir / "case.yaml") << falling_block;
+  const cosim::testing::ScratchDirectory dir;
   Calls calls;
   StepObservers observers;
   observers.for_2d = [&calls](const CaseDescription&) {
@@ -165,7 +160,7 @@ TEST(MpmRunDriver, ObserverIsAbortedOnFailure) {
     return observer;
   };
   RunOptions options;
-  options.config = dir / "case.yaml";
+  options.config = dir.write("case.yaml", falling_block);
   options.output = dir / "out";
   EXPECT_EQ(run_case(options, observers), 4);
   EXPECT_EQ(calls.abort, 1);
@@ -176,11 +171,9 @@ TEST(MpmRunDriver, ObserverIsAbortedOnFailure) {
 }
 
 TEST(MpmRunDriver, StandaloneRunHitsOutputTimesAndEndTime) {
-  const cosim::testing::ScratchDirectory scratch;
-  const fs::path& dir = scratch.path();
-  std::ofstream(dir / "case.yaml") << falling_block;
+  const cosim::testing::ScratchDirectory dir;
   RunOptions options;
-  options.config = dir / "case.yaml";
+  options.config = dir.write("case.yaml", falling_block);
   options.output = dir / "out";
   ASSERT_EQ(run_case(options), 0);
   // Probes follow the snapshots (probe_every 0): t = 0, 0.01, 0.02 exactly.

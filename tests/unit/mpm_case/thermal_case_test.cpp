@@ -160,11 +160,9 @@ TEST(MpmThermalCase, HelpListsTheThermalKeys) {
 }
 
 TEST(MpmThermalCase, ARunWritesTemperaturesAndTheThermalBalance) {
-  const cosim::testing::ScratchDirectory scratch;
-  const fs::path& dir = scratch.path();
-  std::ofstream(dir / "case.yaml") << thermal_case;
+  const cosim::testing::ScratchDirectory dir;
   RunOptions options;
-  options.config = dir / "case.yaml";
+  options.config = dir.write("case.yaml", thermal_case);
   options.output = dir / "out";
   ASSERT_EQ(run_case(options), 0);
   EXPECT_THAT(read_text(dir / "out" / "particles.xdmf"), HasSubstr("Name=\"temperature\""));
