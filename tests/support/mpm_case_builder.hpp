@@ -18,8 +18,8 @@ inline std::shared_ptr<const Material> material_from_yaml(const std::string& yam
 inline std::shared_ptr<const Material> elastic(double density, double youngs, double poisson,
                                                const std::string& rate = "jaumann") {
   return material_from_yaml("type: linear_elastic\ndensity: " + std::to_string(density) +
-                            "\nyoungs_modulus: " + std::to_string(youngs) +
-                            "\npoisson_ratio: " + std::to_string(poisson) + "\nobjective_rate: " + rate + "\n");
+                            "\nyoungs_modulus: " + std::to_string(youngs) + "\npoisson_ratio: " +
+                            std::to_string(poisson) + "\nobjective_rate: " + rate + "\n");
 }
 
 // A grid of `cells` cells of size h from the origin.
@@ -46,7 +46,8 @@ inline BodySpec box_body(const std::string& name, int material, int dimension, c
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
-        Vec3d x(lo[0] + (i + 0.5) * d, lo[1] + (j + 0.5) * d, dimension == 3 ? lo[2] + (k + 0.5) * d : 0.0);
+        Vec3d x(lo[0] + (i + 0.5) * d, lo[1] + (j + 0.5) * d,
+                dimension == 3 ? lo[2] + (k + 0.5) * d : 0.0);
         body.positions.push_back(x);
         body.volumes.push_back(dimension == 3 ? d * d * d : d * d);
         body.half_lengths.push_back(Vec3d::Constant(0.5 * d));

@@ -14,8 +14,8 @@
 namespace cosim::config {
 namespace {
 
-using testing::column_of;
 using cosim::testing::input_error_from;
+using testing::column_of;
 using testing::yaml_text;
 
 namespace fs = std::filesystem;

@@ -9,8 +9,8 @@
 namespace cosim::config {
 namespace {
 
-using testing::column_of;
 using cosim::testing::input_error_from;
+using testing::column_of;
 using testing::yaml_text;
 
 const std::vector<std::string> job_lines{

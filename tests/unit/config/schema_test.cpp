@@ -14,9 +14,9 @@
 namespace cosim::config {
 namespace {
 
+using cosim::testing::input_error_from;
 using testing::column_of;
 using testing::example_job_schema;
-using cosim::testing::input_error_from;
 using testing::valid_job_lines;
 using testing::yaml_text;
 

@@ -36,7 +36,8 @@ std::string error_of(const fs::path& dir) {
 }
 
 void replace_in(const fs::path& file, const std::string& from, const std::string& to) {
-  cosim::testing::write_text(file, cosim::testing::replaced(cosim::testing::read_text(file), from, to));
+  cosim::testing::write_text(file,
+                             cosim::testing::replaced(cosim::testing::read_text(file), from, to));
 }
 
 TEST(OpenFoamExistingCase, ACompleteCasePasses) {
