@@ -56,7 +56,8 @@ Schema bed_schema() {
       .required("radius", Schema::number().positive().unit("m"), "Radius of the bump.")
       .required("height", Schema::number().unit("m"), "Height at the centre.");
   Schema bed = Schema::object("Initial bed elevation B = base + profile(x) + bumps. A coupled run "
-                              "replaces it by the bed it receives.");
+                              "replaces it by the bed it receives.")
+                .default_value("{}");
   bed.optional("base", Schema::number().unit("m").default_value("0"), "Constant elevation.")
       .optional("profile", Schema::sequence(Schema::vector(2, 2)).length(2, unlimited),
                 "Points [x, B] with increasing x, joined linearly; must cover the domain in x.")
@@ -76,7 +77,7 @@ Schema region_schema() {
       .optional("circle", circle, "The region is a disc.")
       .optional("free_surface", Schema::number().unit("m"), "Free-surface elevation eta; h = max(0, eta - B).")
       .optional("depth", Schema::number().non_negative().unit("m"), "Depth h.")
-      .optional("velocity", Schema::vector(1, 2).unit("m/s").default_value("0"), "Depth-averaged velocity.");
+      .optional("velocity", Schema::vector(1, 2).unit("m/s").default_note("zero"), "Depth-averaged velocity.");
   return region;
 }
 
@@ -84,7 +85,7 @@ Schema initial_schema() {
   Schema initial = Schema::object("Initial water: everywhere, then regions in order. Give `free_surface` or `depth`.");
   initial.optional("free_surface", Schema::number().unit("m"), "Free-surface elevation eta; h = max(0, eta - B).")
       .optional("depth", Schema::number().non_negative().unit("m"), "Depth h.")
-      .optional("velocity", Schema::vector(1, 2).unit("m/s").default_value("0"), "Depth-averaged velocity.")
+      .optional("velocity", Schema::vector(1, 2).unit("m/s").default_note("zero"), "Depth-averaged velocity.")
       .optional("regions", Schema::sequence(region_schema()), "Regions overriding the water inside them.");
   return initial;
 }
@@ -99,7 +100,8 @@ Schema gauge_schema() {
 
 Schema coupling_schema() {
   Schema coupling = Schema::object(
-      "Exchange with a soil solver on the mesh `swe_cells` (used only when run by `cosim run`).");
+      "Exchange with a soil solver on the mesh `swe_cells` (used only when run by `cosim run`).")
+      .default_value("{}");
   coupling
       .optional("reads", Schema::sequence(Schema::one_of({"bed_elevation"})).default_value("[bed_elevation]"),
                 "bed_elevation [m] per cell: replaces the bed every step, keeping depths.")
@@ -116,14 +118,14 @@ Schema coupling_schema() {
 }  // namespace
 
 Schema swe_case_schema() {
-  Schema physics = Schema::object("Physical constants.");
+  Schema physics = Schema::object("Physical constants.").default_value("{}");
   physics.optional("gravity", Schema::number().positive().unit("m/s^2").default_value("9.81"), "g.")
       .optional("density", Schema::number().positive().unit("kg/m^3").default_value("1000"), "Water density.")
       .optional("manning", Schema::number().non_negative().unit("s/m^(1/3)").default_value("0"),
                 "Manning coefficient M_b (Zheng et al., eq. 8).")
       .optional("dry_depth", Schema::number().positive().unit("m").default_value("1e-6"),
                 "Depth below which a cell is dry (no velocity, no momentum).");
-  Schema scheme = Schema::object("Numerical scheme.");
+  Schema scheme = Schema::object("Numerical scheme.").default_value("{}");
   scheme.optional("flux", Schema::one_of(flux_names()).default_value("hllc"),
                   "Face flux: roe (Zheng et al., eqs. 30-32), hll or hllc.")
       .optional("limiter", Schema::one_of(limiter_names()).default_value("van_leer"),
@@ -134,9 +136,9 @@ Schema swe_case_schema() {
   time.required("end_time", Schema::number().positive().unit("s"), "Simulated end time (standalone).")
       .optional("min_time_step", Schema::number().positive().unit("s").default_value("1e-9"),
                 "A stable step below this ends the run as a numerical failure (exit 4).")
-      .optional("max_time_step", Schema::number().positive().unit("s").default_value("none"),
-                "Upper bound of the step.");
-  Schema output = Schema::object("What the run writes.");
+      .optional("max_time_step", Schema::number().non_negative().unit("s").default_value("0"),
+                "Upper bound of the step; 0: none beyond stability.");
+  Schema output = Schema::object("What the run writes.").default_value("{}");
   output.optional("every", Schema::number().non_negative().unit("s").default_value("0"),
                   "Snapshot interval; 0: start and end only.")
       .optional("snapshots", Schema::boolean().default_value("true"), "HDF5 + XDMF snapshots of the cells.")

@@ -36,6 +36,7 @@ class CaseReader {
   CaseDescription read() {
     cosim::config::expect_kind(root_, "swe_case");
     swe_case_schema().validate(root_);
+    swe_case_schema().add_defaults(root_);
     CaseDescription c;
     c.file = document_.path();
     c.config_hash = cosim::hash_bytes(document_.text());
@@ -49,7 +50,7 @@ class CaseReader {
     read_initial(c);
     read_time(c);
     read_output(c);
-    c.threads = root_.get<int>("threads", 0);
+    c.threads = root_.get<int>("threads");
     read_coupling(c);
     return c;
   }
@@ -128,20 +129,18 @@ class CaseReader {
   }
 
   void read_physics(CaseDescription& c) {
-    if (auto p = root_.find("physics")) {
-      c.physics.gravity = p->get<double>("gravity", c.physics.gravity);
-      c.physics.density = p->get<double>("density", c.physics.density);
-      c.physics.manning = p->get<double>("manning", c.physics.manning);
-      c.physics.dry_depth = p->get<double>("dry_depth", c.physics.dry_depth);
-    }
+    const Node physics = root_["physics"];
+    c.physics.gravity = physics.get<double>("gravity");
+    c.physics.density = physics.get<double>("density");
+    c.physics.manning = physics.get<double>("manning");
+    c.physics.dry_depth = physics.get<double>("dry_depth");
   }
 
   void read_scheme(CaseDescription& c) {
-    if (auto s = root_.find("scheme")) {
-      c.scheme.flux = flux_from_string(s->get("flux", to_string(c.scheme.flux)));
-      c.scheme.limiter = limiter_from_string(s->get("limiter", to_string(c.scheme.limiter)));
-      c.scheme.courant = s->get<double>("courant", c.scheme.courant);
-    }
+    const Node scheme = root_["scheme"];
+    c.scheme.flux = flux_from_string(scheme.get<std::string>("flux"));
+    c.scheme.limiter = limiter_from_string(scheme.get<std::string>("limiter"));
+    c.scheme.courant = scheme.get<double>("courant");
   }
 
   static Boundary boundary_of(const Node& node) {
@@ -172,10 +171,9 @@ class CaseReader {
   }
 
   void read_bed(CaseDescription& c) {
-    const auto bed = root_.find("bed");
-    if (!bed) return;
-    c.bed.base = bed->get<double>("base", 0.0);
-    if (auto profile = bed->find("profile")) {
+    const Node bed = root_["bed"];
+    c.bed.base = bed.get<double>("base");
+    if (auto profile = bed.find("profile")) {
       for (const Node& point : profile->items()) {
         const auto p = point.as<std::vector<double>>();
         if (!c.bed.profile.empty() && !(p[0] > c.bed.profile.back()[0]))
@@ -187,7 +185,7 @@ class CaseReader {
                                   "it must cover the domain",
                                   c.bed.profile.front()[0], c.bed.profile.back()[0], lower_[0], upper_[0]));
     }
-    if (auto bumps = bed->find("bumps")) {
+    if (auto bumps = bed.find("bumps")) {
       for (const Node& b : bumps->items()) {
         BedBump bump;
         bump.centre = pair_of(b["centre"], c.dimension);
@@ -241,19 +239,18 @@ class CaseReader {
   void read_time(CaseDescription& c) {
     const Node time = root_["time"];
     c.end_time = time["end_time"].as<double>();
-    c.min_time_step = time.get<double>("min_time_step", c.min_time_step);
-    c.max_time_step = time.get<double>("max_time_step", 0.0);
+    c.min_time_step = time.get<double>("min_time_step");
+    c.max_time_step = time.get<double>("max_time_step");
   }
 
   void read_output(CaseDescription& c) {
-    const auto output = root_.find("output");
-    if (!output) return;
-    c.output_every = output->get<double>("every", 0.0);
-    c.snapshots = output->get<bool>("snapshots", true);
-    c.gauge_every = output->get<double>("gauge_every", 0.0);
+    const Node output = root_["output"];
+    c.output_every = output.get<double>("every");
+    c.snapshots = output.get<bool>("snapshots");
+    c.gauge_every = output.get<double>("gauge_every");
     for (const char* key : {"every", "gauge_every"})
-      if (auto interval = output->find(key)) cosim::check_output_interval(*interval, c.end_time);
-    if (auto gauges = output->find("gauges")) {
+      cosim::check_output_interval(output[key], c.end_time);
+    if (auto gauges = output.find("gauges")) {
       for (const Node& node : gauges->items()) {
         Gauge g;
         g.name = node["name"].as<std::string>();
@@ -281,17 +278,14 @@ class CaseReader {
   }
 
   void read_coupling(CaseDescription& c) {
-    const auto coupling = root_.find("coupling");
-    if (!coupling) return;
+    const Node coupling = root_["coupling"];
     auto listed = [&](const char* key, const char* field) {
-      const auto node = coupling->find(key);
-      if (!node) return true;
-      const auto names = node->as<std::vector<std::string>>();
+      const auto names = coupling.get<std::vector<std::string>>(key);
       return std::find(names.begin(), names.end(), field) != names.end();
     };
     c.coupling.reads_bed = listed("reads", "bed_elevation");
     c.coupling.writes_traction = listed("writes", "bed_traction");
-    if (coupling->get("bed_pressure", "hydrostatic") == "excess") c.coupling.pressure = BedPressure::excess;
+    if (coupling.get<std::string>("bed_pressure") == "excess") c.coupling.pressure = BedPressure::excess;
   }
 
   // The run's size with `cells` cells, refused above what the case's limits allow.
