@@ -202,7 +202,7 @@ ErrorSpec read_error(const config::Node& node) {
     return e;
   }
   e.norm = node["norm"].as<std::string>();
-  e.scale = node.get<double>("scale", 1.0);
+  e.scale = node.get<double>("scale");
   if (auto w = node.find("window")) {
     const auto v = w->as<std::vector<double>>();
     if (!(v[0] <= v[1])) w->fail("a window is [a, b] with a <= b");
@@ -222,7 +222,7 @@ MetricSpec read_metric(const config::Node& node, const BackendCatalog& backends)
   m.key_path = node.key_path();
   m.where = node.location();
   m.label = node.get("label", m.name.c_str());
-  m.unit = node.get("unit", "1");
+  m.unit = node.get<std::string>("unit");
   m.quantity = read_quantity(node["quantity"]);
   if (auto r = node.find("reference")) m.reference = read_reference(*r);
   if (auto e = node.find("error")) m.error = read_error(*e);
@@ -239,7 +239,7 @@ MetricSpec read_metric(const config::Node& node, const BackendCatalog& backends)
   }
   if (auto r = node.find("resolution"))
     m.resolution = r->as<std::string>() == "coarse" ? Resolution::coarse : Resolution::full;
-  m.summarize = node.get("summarize", "end");
+  m.summarize = node.get<std::string>("summarize");
   return m;
 }
 
@@ -297,6 +297,7 @@ Suite load_suite(const std::filesystem::path& file, const BackendCatalog& backen
   const auto doc = config::Document::load_file(file);
   const config::Node root = doc.root();
   suite_schema().validate(root);
+  suite_schema().add_defaults(root);
   Suite suite;
   suite.file = file;
   suite.text = doc.text();
