@@ -89,7 +89,7 @@ cosim::config::Schema DruckerPrager::schema() {
 }
 
 std::unique_ptr<Material> DruckerPrager::make(const cosim::config::Node& parameters) {
-  const std::string match = parameters.get("match", "plane_strain");
+  const std::string match = parameters.get<std::string>("match");
   return std::make_unique<DruckerPrager>(
       material_parameters::read_common_properties(parameters),
       material_parameters::read_objective_rate(parameters), FrictionalParameters::read(parameters),

@@ -32,7 +32,7 @@ Schema& FrictionSoftening::add_keys(Schema& schema) {
                 "constant: the dilation angle is dilation_angle (capped at the mobilised friction angle); "
                 "rowe: Rowe's stress dilatancy, sin psi = (sin phi_m - sin phi_r) / (1 - sin phi_r sin phi_m) "
                 "clamped at psi >= 0 (Tran et al., MPMICE, eq. 100).")
-      .optional("dilation_angle", Schema::number().range(0.0, 90.0).unit("deg").default_value("0"),
+      .optional("dilation_angle", Schema::number().range(0.0, 90.0).unit("deg").default_note("0"),
                 "Dilation angle psi <= friction_angle, with dilatancy: constant only.");
 }
 
@@ -40,7 +40,7 @@ FrictionSoftening FrictionSoftening::read(const Node& node) {
   using material_parameters::read_angle;
   const double peak = read_angle(node, "friction_angle", 0.0);
   const double residual = read_angle(node, "residual_friction_angle", peak * 180.0 / std::numbers::pi);
-  const double rate = node.get("softening_rate", 0.0);
+  const double rate = node.get<double>("softening_rate");
   if (residual > peak) {
     node["residual_friction_angle"].fail(
         fmt::format("residual_friction_angle must be <= friction_angle ({} deg)", node["friction_angle"].as<double>()));
@@ -49,7 +49,7 @@ FrictionSoftening FrictionSoftening::read(const Node& node) {
     node["residual_friction_angle"].fail(
         "residual_friction_angle below friction_angle needs softening_rate > 0 to be reached");
   }
-  const bool rowe = node.get("dilatancy", "constant") == "rowe";
+  const bool rowe = node.get<std::string>("dilatancy") == "rowe";
   if (rowe && node.has("dilation_angle")) {
     node["dilation_angle"].fail_at_key("dilation_angle is not used with dilatancy: rowe");
   }

@@ -24,7 +24,7 @@ Schema& FrictionalParameters::add_keys(Schema& schema) {
 
 FrictionalParameters FrictionalParameters::read(const Node& node) {
   return {material_parameters::read_elastic_constants(node), FrictionSoftening::read(node),
-          node.get("cohesion", 0.0), node.get("tensile_strength", std::numeric_limits<double>::infinity()),
+          node.get<double>("cohesion"), node.get("tensile_strength", std::numeric_limits<double>::infinity()),
           CohesionDegradation::read(node)};
 }
 

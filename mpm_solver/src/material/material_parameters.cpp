@@ -72,7 +72,7 @@ std::optional<ThermalProperties> read_thermal_properties(const Node& node) {
 }
 
 ObjectiveRate read_objective_rate(const Node& node) {
-  return node.get("objective_rate", "jaumann") == "polar_rotation" ? ObjectiveRate::polar_rotation
+  return node.get<std::string>("objective_rate") == "polar_rotation" ? ObjectiveRate::polar_rotation
                                                                     : ObjectiveRate::jaumann;
 }
 
