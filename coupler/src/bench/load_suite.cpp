@@ -67,9 +67,12 @@ OverrideSet read_override_set(const config::Node& parent, const std::set<std::st
 
 std::set<std::string> roles_of(InputForm form) {
   switch (form) {
-    case InputForm::standalone_case: return {"case"};
-    case InputForm::coupled_fluid: return {"soil", "fluid", "job"};
-    case InputForm::ready_job: return {"job"};
+    case InputForm::standalone_case:
+      return {"case"};
+    case InputForm::coupled_fluid:
+      return {"soil", "fluid", "job"};
+    case InputForm::ready_job:
+      return {"job"};
   }
   return {};
 }
@@ -91,8 +94,9 @@ BackendRuns read_backend(const std::string& name, const config::Node& node, bool
   }
   if (forms != 1) node.fail("give exactly one of case, fluid and job");
   if (b.form == InputForm::coupled_fluid && !coupled)
-    node["fluid"].fail("a fluid case is coupled to the scenario's soil: give `soil` and "
-                       "`coupling` in the scenario, or run the case standalone with `case`");
+    node["fluid"].fail(
+        "a fluid case is coupled to the scenario's soil: give `soil` and "
+        "`coupling` in the scenario, or run the case standalone with `case`");
   if (b.form == InputForm::coupled_fluid && !b.backend->is_fluid()) {
     std::vector<std::string> fluids;
     for (const auto& other : backends.names())
@@ -112,9 +116,8 @@ BackendRuns read_backend(const std::string& name, const config::Node& node, bool
     if (!block) continue;
     for (const char* other : {"case", "fluid", "job"})
       if (block->has(other) && std::string(other) != form_key)
-        (*block)[other].fail_at_key(
-            fmt::format("this backend runs a `{}`; give another {} here, not a {}", form_key,
-                        form_key, other));
+        (*block)[other].fail_at_key(fmt::format(
+            "this backend runs a `{}`; give another {} here, not a {}", form_key, form_key, other));
     if (auto f = block->find(form_key)) b.file_at[resolution] = f->as_path();
   }
   if (auto levels = node.find("levels")) {
@@ -154,8 +157,9 @@ QuantitySpec read_quantity(const config::Node& node) {
     }
   }
   if (kinds != 1)
-    node.fail("give exactly one kind: gauge, time_series, profile, water_front, soil, summary "
-              "or wall_gradient");
+    node.fail(
+        "give exactly one kind: gauge, time_series, profile, water_front, soil, summary "
+        "or wall_gradient");
   return q;
 }
 
@@ -259,9 +263,10 @@ Scenario read_scenario(const config::Node& node, const BackendCatalog& backends)
     c.soil = node["soil"].as_path();
     c.soil_backend = backends.soil();
     if (c.soil_backend == nullptr)
-      node["soil"].fail(fmt::format("no registered backend takes the soil's side of a pairing "
-                                    "(registered in {}: {})",
-                                    backends.directory().string(), backends.names_text()));
+      node["soil"].fail(
+          fmt::format("no registered backend takes the soil's side of a pairing "
+                      "(registered in {}: {})",
+                      backends.directory().string(), backends.names_text()));
     const auto coupling = node["coupling"];
     c.end_time = coupling["end_time"].as<double>();
     c.window = coupling["window"].as<double>();

@@ -124,11 +124,13 @@ Schema numerics_schema() {
   Schema turbulence = Schema::object("Smagorinsky LES (eqs. 17-19).");
   turbulence.required("model", Schema::one_of({"smagorinsky"}), "The model.")
       .optional("constant", Schema::number().range(0.0, 1.0).default_value("0.17"), "C_s.");
-  Schema numerics = Schema::object(
-      "Time stepping and schemes. The step is dt = min(cfl / max_c sum_d (|U_d| [+ c]) / dx_d, "
-      "max_step_growth * previous dt, max_time_step, time to the next output); a step whose face "
-      "Courant number exceeds 1 is repeated with half the step.")
-      .default_value("{}");
+  Schema numerics =
+      Schema::object(
+          "Time stepping and schemes. The step is dt = min(cfl / max_c sum_d (|U_d| [+ c]) / dx_d, "
+          "max_step_growth * previous dt, max_time_step, time to the next output); a step whose "
+          "face "
+          "Courant number exceeds 1 is repeated with half the step.")
+          .default_value("{}");
   numerics
       .optional("cfl", Schema::number().range(1e-3, 1.0).default_value("0.4"), "Courant number.")
       .optional("acoustic", Schema::boolean().default_value("false"),
@@ -167,10 +169,11 @@ Schema output_schema() {
 }
 
 Schema coupling_schema() {
-  Schema coupling = Schema::object(
-      "How ice_fluid takes part in a coupled run with a porous solid on its mesh 'ice_cells' "
-      "(ignored standalone).")
-      .default_value("{}");
+  Schema coupling =
+      Schema::object(
+          "How ice_fluid takes part in a coupled run with a porous solid on its mesh 'ice_cells' "
+          "(ignored standalone).")
+          .default_value("{}");
   coupling
       .optional("drag", Schema::one_of({"coupler", "ice"}).default_value("coupler"),
                 "coupler: read the momentum the coupler's exchange gives the fluid "

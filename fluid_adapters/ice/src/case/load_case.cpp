@@ -97,10 +97,10 @@ class CaseReader {
       const double faces = cell_count(c) / c.cells[static_cast<std::size_t>(d)] *
                            (c.cells[static_cast<std::size_t>(d)] + 1.0);
       if (faces > std::numeric_limits<int>::max()) {
-        cells.fail(fmt::format("the grid has {} faces normal to {}, more than the solver's indices "
-                               "hold ({})",
-                               cosim::grouped(faces), axis_names[d],
-                               std::numeric_limits<int>::max()));
+        cells.fail(
+            fmt::format("the grid has {} faces normal to {}, more than the solver's indices "
+                        "hold ({})",
+                        cosim::grouped(faces), axis_names[d], std::numeric_limits<int>::max()));
       }
     }
   }

@@ -72,8 +72,7 @@ class CaseReader {
       if (auto waves = output.find("wave_gauges")) {
         if (!c.generate) waves->fail("wave gauges need a generated case (its columns of cells)");
         for (const Node& g : waves->items()) {
-          WaveGauge gauge{g["name"].as<std::string>(), g["x"].as<double>(),
-                          g.get<double>("z")};
+          WaveGauge gauge{g["name"].as<std::string>(), g["x"].as<double>(), g.get<double>("z")};
           const GeneratedCase& box = *c.generate;
           if (gauge.x < box.origin[0] || gauge.x > box.upper[0]) {
             g["x"].fail(fmt::format("x = {} m is outside the grid [{}, {}] m", gauge.x,
@@ -97,10 +96,10 @@ class CaseReader {
     // Every window starts OpenFOAM afresh (about a second each).
     if (auto window = root_.find("window");
         window && c.end_time / c.window > cosim::max_output_count) {
-      window->fail(fmt::format("the window {} s starts OpenFOAM {:.3g} times over the run's {} s, "
-                               "more than {:g}; give a longer window",
-                               c.window, c.end_time / c.window, c.end_time,
-                               cosim::max_output_count));
+      window->fail(
+          fmt::format("the window {} s starts OpenFOAM {:.3g} times over the run's {} s, "
+                      "more than {:g}; give a longer window",
+                      c.window, c.end_time / c.window, c.end_time, cosim::max_output_count));
     }
     if (!is_whole_number_of_steps(c.end_time, c.time_step)) {
       root_["end_time"].fail(
