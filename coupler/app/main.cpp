@@ -12,8 +12,8 @@
 #include "bench/suite.hpp"
 #include "cosim/error.hpp"
 #include "cosim/fields.hpp"
-#include "job/job.hpp"
 #include "cosim/runtime/stop_request.hpp"
+#include "job/job.hpp"
 #include "run_command.hpp"
 #include "validate_command.hpp"
 
@@ -87,8 +87,9 @@ int main(int argc, char** argv) {
   bench_cmd->add_flag("--resume", bench_resume,
                       "keep the finished runs of an earlier call with the same --output whose "
                       "inputs did not change; run the rest");
-  bench_cmd->add_flag("--overwrite", bench_overwrite,
-                      "clear the report directory of an earlier call and start afresh")
+  bench_cmd
+      ->add_flag("--overwrite", bench_overwrite,
+                 "clear the report directory of an earlier call and start afresh")
       ->excludes("--resume");
   bench_cmd->add_flag("--help-config", bench_help_config,
                       "list every key of a suite file, the analytic solutions and every key of "

@@ -15,9 +15,9 @@
 #include "cosim/error.hpp"
 #include "cosim/io/run_summary.hpp"
 #include "cosim/io/tail_lines.hpp"
-#include "runtime/mpi_launch.hpp"
 #include "cosim/runtime/stop_request.hpp"
 #include "cosim/runtime/supervisor.hpp"
+#include "runtime/mpi_launch.hpp"
 
 namespace cosim::app {
 

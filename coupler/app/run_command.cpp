@@ -1,7 +1,5 @@
 #include "run_command.hpp"
 
-#include "mpi_launcher.hpp"
-
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <sys/prctl.h>
@@ -16,15 +14,16 @@
 
 #include "com/mpi_transport.hpp"
 #include "com/zmq_transport.hpp"
-#include "cplscheme/coupler.hpp"
 #include "cosim/error.hpp"
 #include "cosim/io/files.hpp"
 #include "cosim/io/logging.hpp"
 #include "cosim/io/run_summary.hpp"
-#include "job/job.hpp"
-#include "runtime/mpi_launch.hpp"
 #include "cosim/runtime/stop_request.hpp"
 #include "cosim/runtime/supervisor.hpp"
+#include "cplscheme/coupler.hpp"
+#include "job/job.hpp"
+#include "mpi_launcher.hpp"
+#include "runtime/mpi_launch.hpp"
 
 namespace cosim::app {
 
@@ -76,9 +75,9 @@ void end_participants(runtime::Supervisor& supervisor, const fs::path& output) {
   supervisor.stop_all(stop_grace);
   for (const runtime::ChildExit& e : supervisor.exited())
     if (!e.success())
-      record_failure_in_summary(output / e.name / "summary.json", e.coupled_exit_code(),
-                               fmt::format("participant '{}' {} (recorded by cosim)", e.name,
-                                           e.describe()));
+      record_failure_in_summary(
+          output / e.name / "summary.json", e.coupled_exit_code(),
+          fmt::format("participant '{}' {} (recorded by cosim)", e.name, e.describe()));
 }
 
 // The participants run as children of this process, talking over ZeroMQ.
@@ -137,9 +136,9 @@ void run_with_zmq(const job::Job& job, const RunOptions& o, RunSummary& summary)
   const auto exits = supervisor.wait_all(window_timeout, &runtime::stop_flag());
   if (runtime::stop_requested()) {
     end_participants(supervisor, output);
-    throw Error(ExitCode::participant_failed,
-                fmt::format("{} after the last window; participants stopped",
-                            runtime::describe_stop()));
+    throw Error(
+        ExitCode::participant_failed,
+        fmt::format("{} after the last window; participants stopped", runtime::describe_stop()));
   }
   for (const auto& e : exits) {
     if (e.success()) continue;
@@ -166,10 +165,11 @@ int run_under_mpirun(const job::Job& job, const RunOptions& o, RunSummary& summa
   const int code = run_and_finish(summary, [&] {
     const int expected = 1 + static_cast<int>(job.participants.size());
     if (hub.world_size() != expected)
-      throw InputError(fmt::format("the mpirun line has {} processes; job '{}' needs {} (the "
-                                   "coupler and one per participant): use `cosim run {} "
-                                   "--print-mpi-command`",
-                                   hub.world_size(), job.name, expected, o.job_file));
+      throw InputError(
+          fmt::format("the mpirun line has {} processes; job '{}' needs {} (the "
+                      "coupler and one per participant): use `cosim run {} "
+                      "--print-mpi-command`",
+                      hub.world_size(), job.name, expected, o.job_file));
     cplscheme::CouplerOptions options;
     options.output_dir = fs::absolute(o.output);
     options.job_id = o.job_id;
@@ -189,13 +189,13 @@ int run_under_mpirun(const job::Job& job, const RunOptions& o, RunSummary& summa
 RunSummary begin_summary(const job::Job& job, const RunOptions& o) {
   RunSummary summary(o.output, "cosim run");
   summary.set_config(fs::absolute(o.job_file), std::stoull(job.config_hash, nullptr, 16));
-  summary.set_section(
-      "job", {{"name", job.name},
-              {"id", o.job_id},
-              {"transport", job.transport == job::TransportKind::mpi ? "mpi" : "zmq"},
-              {"window_s", job.window},
-              {"start_time_s", job.start_time},
-              {"end_time_s", job.end_time}});
+  summary.set_section("job",
+                      {{"name", job.name},
+                       {"id", o.job_id},
+                       {"transport", job.transport == job::TransportKind::mpi ? "mpi" : "zmq"},
+                       {"window_s", job.window},
+                       {"start_time_s", job.start_time},
+                       {"end_time_s", job.end_time}});
   summary.write();
   return summary;
 }
@@ -221,9 +221,10 @@ int run_job(const RunOptions& o) {
     return launch_mpirun(job, opts);
   }
   if (o.print_mpi_command)
-    throw InputError(fmt::format("{}: job '{}' uses transport '{}'; --print-mpi-command "
-                                 "needs 'transport: mpi'",
-                                 o.job_file, job.name, "zmq"));
+    throw InputError(
+        fmt::format("{}: job '{}' uses transport '{}'; --print-mpi-command "
+                    "needs 'transport: mpi'",
+                    o.job_file, job.name, "zmq"));
 
   // Under mpirun the launching cosim has prepared the directory (and writes
   // mpirun.log into it); this rank dies with mpirun.

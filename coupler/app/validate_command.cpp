@@ -7,9 +7,9 @@
 
 #include "cosim/error.hpp"
 #include "cosim/io/tail_lines.hpp"
-#include "job/job.hpp"
 #include "cosim/runtime/stop_request.hpp"
 #include "cosim/runtime/supervisor.hpp"
+#include "job/job.hpp"
 
 namespace cosim::app {
 
@@ -56,8 +56,8 @@ std::string indented(const std::vector<std::string>& lines) {
 int validate_job(const std::string& job_file) {
   const job::Job job = job::load_job(job_file);
   std::cout << fmt::format(
-      "{}: job '{}': {} participants, {} exchanges, {} windows of {} s, config hash {}\n",
-      job_file, job.name, job.participants.size(), job.exchanges.size(), job.windows(), job.window,
+      "{}: job '{}': {} participants, {} exchanges, {} windows of {} s, config hash {}\n", job_file,
+      job.name, job.participants.size(), job.exchanges.size(), job.windows(), job.window,
       job.config_hash);
 
   const ScratchDirectory scratch;
@@ -86,7 +86,8 @@ int validate_job(const std::string& job_file) {
       std::cout << fmt::format("  {}: no config file\n", p.name);
       continue;
     }
-    const auto e = std::find_if(exits.begin(), exits.end(), [&](auto& x) { return x.name == p.name; });
+    const auto e =
+        std::find_if(exits.begin(), exits.end(), [&](auto& x) { return x.name == p.name; });
     const auto lines = tail_lines(supervisor.log_file(p.name), 20);
     if (e != exits.end() && e->success()) {
       std::cout << fmt::format("  {} ({}): {}\n", p.name, p.executable,

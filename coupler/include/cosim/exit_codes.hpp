@@ -13,7 +13,9 @@ enum class ExitCode : int {
   numerical_failure = 4,   // NaN, or a CFL violation adaptive stepping could not recover
 };
 
-constexpr int to_int(ExitCode code) { return static_cast<int>(code); }
+constexpr int to_int(ExitCode code) {
+  return static_cast<int>(code);
+}
 
 // "bad_input", "numerical_failure", ...: how summary.json and the abort
 // message of the coupling protocol name an exit code.

@@ -36,11 +36,11 @@ struct ValidatedCase {
 };
 
 struct SolverProgram {
-  std::string name;         // e.g. "swe_fluid", used in messages
-  std::string description;  // the --help title
-  std::string case_kind;    // e.g. "swe_case"
-  std::function<std::string()> help_config;                 // the case file's keys
-  std::function<int(const SolverCommandLine&)> run;         // returns the exit code
+  std::string name;                                  // e.g. "swe_fluid", used in messages
+  std::string description;                           // the --help title
+  std::string case_kind;                             // e.g. "swe_case"
+  std::function<std::string()> help_config;          // the case file's keys
+  std::function<int(const SolverCommandLine&)> run;  // returns the exit code
   // Loads and checks the case file as `run` would (schema, values, size
   // against its limits), touching nothing; throws InputError when it cannot run.
   std::function<ValidatedCase(const std::filesystem::path& config)> validate;

@@ -73,8 +73,9 @@ RunResult evaluate_run(const PlannedRun& run, const RunRecord& record) {
       result.metrics.push_back(unavailable(m, run.backend_name(), e.what()));
     }
     const MetricResult& x = result.metrics.back();
-    spdlog::info("{} {}: {} {}{}{}", run.id(), m.name, x.value ? fmt::format("{:.6g}", *x.value) : "-",
-                 m.unit, x.error ? fmt::format(", error {:.4g}", *x.error) : "",
+    spdlog::info("{} {}: {} {}{}{}", run.id(), m.name,
+                 x.value ? fmt::format("{:.6g}", *x.value) : "-", m.unit,
+                 x.error ? fmt::format(", error {:.4g}", *x.error) : "",
                  fmt::format(" ({}{})", to_string(x.verdict), x.note.empty() ? "" : ": " + x.note));
   }
   return result;
@@ -103,8 +104,8 @@ bool draw_plots(const fs::path& plots, std::string& why) {
     return false;
   }
   runtime::Supervisor supervisor;
-  runtime::ChildSpec child{"bench_plots", python, {script->string(), plots.string()},
-                           plots / "bench_plots.log"};
+  runtime::ChildSpec child{
+      "bench_plots", python, {script->string(), plots.string()}, plots / "bench_plots.log"};
   supervisor.start(child);
   const auto exits = supervisor.wait_all(std::chrono::milliseconds(600000));
   if (exits.empty() || !exits.front().success()) {
@@ -132,10 +133,9 @@ int run_bench(const BenchRunOptions& o) {
     throw InputError(fmt::format("--overwrite would clear '{}', which holds the suite file '{}'",
                                  output.string(), o.bench.suite_file.string()));
   // A dry run clears nothing: with --overwrite it lists every run as to run.
-  prepare_output_directory(output,
-                           o.dry_run && o.reuse == OutputReuse::overwrite ? OutputReuse::resume
-                                                                          : o.reuse,
-                           {"summary.json"}, true);
+  prepare_output_directory(
+      output, o.dry_run && o.reuse == OutputReuse::overwrite ? OutputReuse::resume : o.reuse,
+      {"summary.json"}, true);
   init_logging(output, "cosim", parse_verbosity(o.verbosity));
   RunSummary summary(output, "cosim bench");
   summary.set_config(fs::absolute(o.bench.suite_file), hash_bytes(suite.text));
@@ -154,8 +154,8 @@ int run_bench(const BenchRunOptions& o) {
     if (o.dry_run) {
       for (const auto& run : runs) {
         const RunRecord previous = read_record(run);
-        const bool kept = o.reuse == OutputReuse::resume && previous.completed() &&
-                          previous.key == run.key;
+        const bool kept =
+            o.reuse == OutputReuse::resume && previous.completed() && previous.key == run.key;
         std::printf("%-40s %-12s %s %s\n", run.id().c_str(), kept ? "(kept)" : "(to run)",
                     run.executable.c_str(), fmt::format("{}", fmt::join(run.args, " ")).c_str());
       }
@@ -169,7 +169,8 @@ int run_bench(const BenchRunOptions& o) {
     std::vector<RunResult> results;
     {
       auto scope = summary.phases().measure("evaluation");
-      for (std::size_t i = 0; i < runs.size(); ++i) results.push_back(evaluate_run(runs[i], records[i]));
+      for (std::size_t i = 0; i < runs.size(); ++i)
+        results.push_back(evaluate_run(runs[i], records[i]));
     }
     auto scope = summary.phases().measure("report");
     write_results_csv(output / "results.csv", results);
@@ -190,14 +191,16 @@ int run_bench(const BenchRunOptions& o) {
     summary.set_metric("metrics_within_tolerance", verdicts[Verdict::pass], "1");
     summary.set_metric("metrics_outside_tolerance", verdicts[Verdict::fail], "1");
     summary.set_metric("metrics_unavailable", verdicts[Verdict::unavailable], "1");
-    spdlog::info("{} runs, {} not finished; metrics: {} within tolerance, {} outside, {} measured, "
-                 "{} unavailable; report: {}",
-                 results.size(), failed, verdicts[Verdict::pass], verdicts[Verdict::fail],
-                 verdicts[Verdict::measured], verdicts[Verdict::unavailable],
-                 (output / "report.md").string());
+    spdlog::info(
+        "{} runs, {} not finished; metrics: {} within tolerance, {} outside, {} measured, "
+        "{} unavailable; report: {}",
+        results.size(), failed, verdicts[Verdict::pass], verdicts[Verdict::fail],
+        verdicts[Verdict::measured], verdicts[Verdict::unavailable],
+        (output / "report.md").string());
     if (failed > 0)
-      throw Error(ExitCode::participant_failed,
-                  fmt::format("{} of {} runs did not finish (see report.md)", failed, results.size()));
+      throw Error(
+          ExitCode::participant_failed,
+          fmt::format("{} of {} runs did not finish (see report.md)", failed, results.size()));
   });
 }
 

@@ -136,9 +136,12 @@ class ShockTube final : public AnalyticSolution {
   explicit ShockTube(Variable v) : variable_(v) {}
   std::string name() const override {
     switch (variable_) {
-      case Variable::density: return "shock_tube_density";
-      case Variable::pressure: return "shock_tube_pressure";
-      case Variable::velocity: return "shock_tube_velocity";
+      case Variable::density:
+        return "shock_tube_density";
+      case Variable::pressure:
+        return "shock_tube_pressure";
+      case Variable::velocity:
+        return "shock_tube_velocity";
     }
     return {};
   }
@@ -147,10 +150,14 @@ class ShockTube final : public AnalyticSolution {
            "Toro, ch. 4) against x.";
   }
   std::vector<ParameterDoc> parameters() const override {
-    return {{"left_density", "[kg/m^3]", std::nullopt},   {"left_pressure", "[Pa]", std::nullopt},
-            {"left_velocity", "[m/s]", 0.0},               {"right_density", "[kg/m^3]", std::nullopt},
-            {"right_pressure", "[Pa]", std::nullopt},     {"right_velocity", "[m/s]", 0.0},
-            {"gamma", "ratio of specific heats", 1.4},    {"diaphragm", "x0 [m]", std::nullopt}};
+    return {{"left_density", "[kg/m^3]", std::nullopt},
+            {"left_pressure", "[Pa]", std::nullopt},
+            {"left_velocity", "[m/s]", 0.0},
+            {"right_density", "[kg/m^3]", std::nullopt},
+            {"right_pressure", "[Pa]", std::nullopt},
+            {"right_velocity", "[m/s]", 0.0},
+            {"gamma", "ratio of specific heats", 1.4},
+            {"diaphragm", "x0 [m]", std::nullopt}};
   }
   bool is_curve() const override { return true; }
   double value(const Parameters& p, double x, double t) const override {
@@ -160,9 +167,12 @@ class ShockTube final : public AnalyticSolution {
     const double dx = x - p.at("diaphragm");
     const GasState state = t > 0.0 ? s.sample(dx / t) : s.sample(dx < 0.0 ? -1e300 : 1e300);
     switch (variable_) {
-      case Variable::density: return state.density;
-      case Variable::pressure: return state.pressure;
-      case Variable::velocity: return state.velocity;
+      case Variable::density:
+        return state.density;
+      case Variable::pressure:
+        return state.pressure;
+      case Variable::velocity:
+        return state.velocity;
     }
     return 0.0;
   }

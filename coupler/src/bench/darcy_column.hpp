@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-// Tran et al., MPMICE, "Fluid flow through isothermal porous media": water driven by dp through a column of length L of grains of size
-// d at solid fraction phi_s moves through the pores at
+// Tran et al., MPMICE, "Fluid flow through isothermal porous media": water driven by dp through a
+// column of length L of grains of size d at solid fraction phi_s moves through the pores at
 //   U_f = (1/n) d^2 (1 - phi_s)^3 / (180 phi_s^2 mu) dp / L,  n = 1 - phi_s  (eq. 98).
 namespace cosim::bench {
 

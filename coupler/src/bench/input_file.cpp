@@ -89,9 +89,9 @@ void InputFile::apply(const Override& o) {
       path.push_back(here[std::stoul(part)]);
     } else {
       if (!(here.IsMap() || here.IsNull()))
-        throw InputError(o.where, o.key_path,
-                         fmt::format("'{}' in {} is a value, not a mapping", walked,
-                                     source_.string()));
+        throw InputError(
+            o.where, o.key_path,
+            fmt::format("'{}' in {} is a value, not a mapping", walked, source_.string()));
       if (last) {
         here[part] = YAML::Clone(o.value);
         return;

@@ -67,9 +67,12 @@ OverrideSet read_override_set(const config::Node& parent, const std::set<std::st
 
 std::set<std::string> roles_of(InputForm form) {
   switch (form) {
-    case InputForm::standalone_case: return {"case"};
-    case InputForm::coupled_fluid: return {"soil", "fluid", "job"};
-    case InputForm::ready_job: return {"job"};
+    case InputForm::standalone_case:
+      return {"case"};
+    case InputForm::coupled_fluid:
+      return {"soil", "fluid", "job"};
+    case InputForm::ready_job:
+      return {"job"};
   }
   return {};
 }
@@ -91,8 +94,9 @@ BackendRuns read_backend(const std::string& name, const config::Node& node, bool
   }
   if (forms != 1) node.fail("give exactly one of case, fluid and job");
   if (b.form == InputForm::coupled_fluid && !coupled)
-    node["fluid"].fail("a fluid case is coupled to the scenario's soil: give `soil` and "
-                       "`coupling` in the scenario, or run the case standalone with `case`");
+    node["fluid"].fail(
+        "a fluid case is coupled to the scenario's soil: give `soil` and "
+        "`coupling` in the scenario, or run the case standalone with `case`");
   if (b.form == InputForm::coupled_fluid && !b.backend->is_fluid()) {
     std::vector<std::string> fluids;
     for (const auto& other : backends.names())
@@ -112,9 +116,8 @@ BackendRuns read_backend(const std::string& name, const config::Node& node, bool
     if (!block) continue;
     for (const char* other : {"case", "fluid", "job"})
       if (block->has(other) && std::string(other) != form_key)
-        (*block)[other].fail_at_key(
-            fmt::format("this backend runs a `{}`; give another {} here, not a {}", form_key,
-                        form_key, other));
+        (*block)[other].fail_at_key(fmt::format(
+            "this backend runs a `{}`; give another {} here, not a {}", form_key, form_key, other));
     if (auto f = block->find(form_key)) b.file_at[resolution] = f->as_path();
   }
   if (auto levels = node.find("levels")) {
@@ -154,8 +157,9 @@ QuantitySpec read_quantity(const config::Node& node) {
     }
   }
   if (kinds != 1)
-    node.fail("give exactly one kind: gauge, time_series, profile, water_front, soil, summary "
-              "or wall_gradient");
+    node.fail(
+        "give exactly one kind: gauge, time_series, profile, water_front, soil, summary "
+        "or wall_gradient");
   return q;
 }
 
@@ -202,7 +206,7 @@ ErrorSpec read_error(const config::Node& node) {
     return e;
   }
   e.norm = node["norm"].as<std::string>();
-  e.scale = node.get<double>("scale", 1.0);
+  e.scale = node.get<double>("scale");
   if (auto w = node.find("window")) {
     const auto v = w->as<std::vector<double>>();
     if (!(v[0] <= v[1])) w->fail("a window is [a, b] with a <= b");
@@ -222,7 +226,7 @@ MetricSpec read_metric(const config::Node& node, const BackendCatalog& backends)
   m.key_path = node.key_path();
   m.where = node.location();
   m.label = node.get("label", m.name.c_str());
-  m.unit = node.get("unit", "1");
+  m.unit = node.get<std::string>("unit");
   m.quantity = read_quantity(node["quantity"]);
   if (auto r = node.find("reference")) m.reference = read_reference(*r);
   if (auto e = node.find("error")) m.error = read_error(*e);
@@ -239,7 +243,7 @@ MetricSpec read_metric(const config::Node& node, const BackendCatalog& backends)
   }
   if (auto r = node.find("resolution"))
     m.resolution = r->as<std::string>() == "coarse" ? Resolution::coarse : Resolution::full;
-  m.summarize = node.get("summarize", "end");
+  m.summarize = node.get<std::string>("summarize");
   return m;
 }
 
@@ -259,9 +263,10 @@ Scenario read_scenario(const config::Node& node, const BackendCatalog& backends)
     c.soil = node["soil"].as_path();
     c.soil_backend = backends.soil();
     if (c.soil_backend == nullptr)
-      node["soil"].fail(fmt::format("no registered backend takes the soil's side of a pairing "
-                                    "(registered in {}: {})",
-                                    backends.directory().string(), backends.names_text()));
+      node["soil"].fail(
+          fmt::format("no registered backend takes the soil's side of a pairing "
+                      "(registered in {}: {})",
+                      backends.directory().string(), backends.names_text()));
     const auto coupling = node["coupling"];
     c.end_time = coupling["end_time"].as<double>();
     c.window = coupling["window"].as<double>();
@@ -297,6 +302,7 @@ Suite load_suite(const std::filesystem::path& file, const BackendCatalog& backen
   const auto doc = config::Document::load_file(file);
   const config::Node root = doc.root();
   suite_schema().validate(root);
+  suite_schema().add_defaults(root);
   Suite suite;
   suite.file = file;
   suite.text = doc.text();

@@ -14,10 +14,14 @@ namespace cosim::bench {
 
 std::string to_string(Verdict v) {
   switch (v) {
-    case Verdict::pass: return "pass";
-    case Verdict::fail: return "fail";
-    case Verdict::measured: return "measured";
-    case Verdict::unavailable: return "unavailable";
+    case Verdict::pass:
+      return "pass";
+    case Verdict::fail:
+      return "fail";
+    case Verdict::measured:
+      return "measured";
+    case Verdict::unavailable:
+      return "unavailable";
   }
   return "?";
 }
@@ -67,7 +71,8 @@ Reference read_reference(const ReferenceSpec& spec) {
     r.solution = find_analytic_solution(p["analytic"].as<std::string>());
     Parameters given;
     if (p["parameters"])
-      for (const auto& e : p["parameters"]) given[e.first.as<std::string>()] = e.second.as<double>();
+      for (const auto& e : p["parameters"])
+        given[e.first.as<std::string>()] = e.second.as<double>();
     r.parameters = r.solution->with_defaults(given);
     r.label = p["label"] ? p["label"].as<std::string>() : r.solution->name();
     if (!r.solution->is_curve()) r.value = r.solution->value(r.parameters, 0.0, 0.0);
@@ -124,10 +129,10 @@ Pairs pair_up(const Measurement& m, const Reference& r, const ErrorSpec& e, doub
     if (!in_window(e, m.x[i])) continue;
     p.x.push_back(m.x[i]);
     p.measured.push_back(m.y[i]);
-    p.reference.push_back(r.value ? *r.value
-                                  : r.solution->value(r.parameters, m.x[i],
-                                                      m.abscissa.rfind("t ", 0) == 0 ? m.x[i]
-                                                                                     : m.time));
+    p.reference.push_back(
+        r.value ? *r.value
+                : r.solution->value(r.parameters, m.x[i],
+                                    m.abscissa.rfind("t ", 0) == 0 ? m.x[i] : m.time));
   }
   return p;
 }
@@ -216,8 +221,9 @@ MetricResult evaluate(const MetricSpec& spec, const std::string& backend,
   // A curve measured against a reference is summed up by its error; one
   // measured only, by the value `summarize` picks.
   out.value = !measured.is_curve() ? measured.value
-              : spec.reference.kind == "none" ? std::optional<double>(summarize(spec.summarize, measured.y))
-                                              : std::nullopt;
+              : spec.reference.kind == "none"
+                  ? std::optional<double>(summarize(spec.summarize, measured.y))
+                  : std::nullopt;
   if (spec.reference.kind == "none") {
     out.verdict = Verdict::measured;
     return out;
@@ -244,14 +250,15 @@ MetricResult evaluate(const MetricSpec& spec, const std::string& backend,
   } else {
     if (!r.value) {
       // A number against a curve: the curve at the measurement's time.
-      r.value = r.solution != nullptr ? r.solution->value(r.parameters, measured.time, measured.time)
-                                      : interpolate(r.x, r.y, measured.time);
+      r.value = r.solution != nullptr
+                    ? r.solution->value(r.parameters, measured.time, measured.time)
+                    : interpolate(r.x, r.y, measured.time);
     }
     out.reference = r.value;
     const double v = *measured.value;
     const bool relative = spec.error.norm != "absolute" && *r.value != 0.0;
-    out.error = (relative ? std::abs(v / *r.value - 1.0) : std::abs(v - *r.value)) /
-                spec.error.scale;
+    out.error =
+        (relative ? std::abs(v / *r.value - 1.0) : std::abs(v - *r.value)) / spec.error.scale;
   }
   if (!out.error || std::isnan(*out.error)) {
     out.verdict = Verdict::unavailable;

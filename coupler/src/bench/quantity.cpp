@@ -94,9 +94,10 @@ std::size_t snapshot_at(const SnapshotReader& snapshots, const YAML::Node& p) {
   const std::size_t s = snapshots.nearest(t);
   const double tolerance = number_or(p, "time_tolerance", 0.05 * t + 1e-12);
   if (std::abs(snapshots.times()[s] - t) > tolerance)
-    missing(fmt::format("no snapshot within {:.3g} s of t = {:.6g} s (the nearest is at {:.6g} s; "
-                        "the last at {:.6g} s)",
-                        tolerance, t, snapshots.times()[s], snapshots.times().back()));
+    missing(
+        fmt::format("no snapshot within {:.3g} s of t = {:.6g} s (the nearest is at {:.6g} s; "
+                    "the last at {:.6g} s)",
+                    tolerance, t, snapshots.times()[s], snapshots.times().back()));
   return s;
 }
 
@@ -205,9 +206,9 @@ Measurement profile(const YAML::Node& p, const RunLayout& run) {
     std::array<double, 3> at{};
     for (std::size_t d = 0; d < 3; ++d) at[d] = from[d] + w * (to[d] - from[d]);
     const std::size_t e = snapshots.element_at(s, at);
-    const double value = surface_of_cells
-                             ? water_column_height(*snapshots.grid(), field, air ? &*air : nullptr, e)
-                             : field.at(e, stored.component);
+    const double value =
+        surface_of_cells ? water_column_height(*snapshots.grid(), field, air ? &*air : nullptr, e)
+                         : field.at(e, stored.component);
     m.x.push_back(at[a]);
     m.y.push_back((value - offset) / divide_by);
   }
@@ -223,9 +224,10 @@ Measurement water_front(const YAML::Node& p, const RunLayout& run) {
   const double length_scale = number_or(p, "length_scale", 1.0);
   const double time_scale = number_or(p, "time_scale", 1.0);
   if (run.backend->front_field.empty())
-    missing(fmt::format("the {} backend has no field a water front is measured on (front_field "
-                        "in {})",
-                        run.backend->name, run.backend->file.string()));
+    missing(
+        fmt::format("the {} backend has no field a water front is measured on (front_field "
+                    "in {})",
+                    run.backend->name, run.backend->file.string()));
   const StoredField stored = run.backend->stored_field(run.backend->front_field);
   Measurement m;
   m.abscissa = time_scale == 1.0 ? "t [s]" : fmt::format("t x {:.5g} [1]", time_scale);
@@ -245,9 +247,9 @@ Measurement water_front(const YAML::Node& p, const RunLayout& run) {
       // A line: cell edges halfway between centres.
       for (std::size_t e = 0; e < centres.size(); ++e) {
         if (values.at(e) <= threshold) continue;
-        const double half = e + 1 < centres.size() ? 0.5 * (centres[e + 1][0] - centres[e][0])
-                                                   : (e > 0 ? 0.5 * (centres[e][0] - centres[e - 1][0])
-                                                            : 0.0);
+        const double half = e + 1 < centres.size()
+                                ? 0.5 * (centres[e + 1][0] - centres[e][0])
+                                : (e > 0 ? 0.5 * (centres[e][0] - centres[e - 1][0]) : 0.0);
         front = std::max(front, centres[e][0] + half);
       }
     }
@@ -347,9 +349,9 @@ Measurement soil(const YAML::Node& p, const RunLayout& run) {
 }
 
 Measurement summary(const YAML::Node& p, const RunLayout& run) {
-  const fs::path file = (p["participant"] ? run.participant(p["participant"].as<std::string>())
-                                          : run.output) /
-                        "summary.json";
+  const fs::path file =
+      (p["participant"] ? run.participant(p["participant"].as<std::string>()) : run.output) /
+      "summary.json";
   std::ifstream in(file);
   if (!in) missing("cannot read " + file.string());
   nlohmann::json j;
@@ -373,9 +375,14 @@ Measurement summary(const YAML::Node& p, const RunLayout& run) {
 }  // namespace
 
 Measurement measure(const QuantitySpec& q, const RunLayout& run) {
-  static const std::map<std::string, std::function<Measurement(const YAML::Node&, const RunLayout&)>>
-      kinds{{"gauge", gauge},       {"time_series", time_series}, {"profile", profile},
-            {"water_front", water_front}, {"soil", soil},               {"summary", summary},
+  static const std::map<std::string,
+                        std::function<Measurement(const YAML::Node&, const RunLayout&)>>
+      kinds{{"gauge", gauge},
+            {"time_series", time_series},
+            {"profile", profile},
+            {"water_front", water_front},
+            {"soil", soil},
+            {"summary", summary},
             {"wall_gradient", wall_gradient}};
   const auto it = kinds.find(q.kind);
   if (it == kinds.end()) missing("unknown quantity kind '" + q.kind + "'");

@@ -146,8 +146,8 @@ std::vector<std::string> convergence_notes(const Scenario& s,
                               std::log(points[k - 1].second / points[k].second) /
                                   std::log(points[k].first / points[k - 1].first),
                               points[k - 1].first, points[k].first);
-      notes.push_back(
-          fmt::format("{}, {}: observed order of convergence {}", backend, s.metrics[i].name, orders));
+      notes.push_back(fmt::format("{}, {}: observed order of convergence {}", backend,
+                                  s.metrics[i].name, orders));
     }
   }
   return notes;
@@ -165,14 +165,14 @@ void write_results_csv(const fs::path& file, const std::vector<RunResult>& resul
                          const MetricResult* x) {
       std::string note = x != nullptr ? x->note : std::string();
       if (!r.record.completed()) note = failure_line(r.record.message);
-      out += fmt::format(
-          "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", cell(run.scenario->name),
-          run.backend_name(), cell(run.level_label()),
-          run.level != nullptr ? number(run.level->cells) : "", cell(metric), cell(unit),
-          x ? number(x->value) : "", x ? number(x->reference) : "",
-          x ? cell(x->reference_label) : "", x ? number(x->error) : "",
-          x ? number(x->tolerance) : "", x ? to_string(x->verdict) : "", number(r.record.wall_time_s),
-          number(r.coupling_share), r.record.state, cell(note));
+      out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+                         cell(run.scenario->name), run.backend_name(), cell(run.level_label()),
+                         run.level != nullptr ? number(run.level->cells) : "", cell(metric),
+                         cell(unit), x ? number(x->value) : "", x ? number(x->reference) : "",
+                         x ? cell(x->reference_label) : "", x ? number(x->error) : "",
+                         x ? number(x->tolerance) : "", x ? to_string(x->verdict) : "",
+                         number(r.record.wall_time_s), number(r.coupling_share), r.record.state,
+                         cell(note));
     };
     if (run.scenario->metrics.empty()) row("", "", nullptr);
     for (std::size_t i = 0; i < run.scenario->metrics.size(); ++i)
@@ -200,7 +200,8 @@ std::vector<fs::path> write_plot_manifest(const fs::path& dir, const Suite& suit
         for (const RunResult* r : runs) {
           const MetricResult& x = r->metrics[i];
           if (!x.measured.is_curve()) continue;
-          curves.push_back({{"label", run_label(*r->run)}, {"x", x.measured.x}, {"y", x.measured.y}});
+          curves.push_back(
+              {{"label", run_label(*r->run)}, {"x", x.measured.x}, {"y", x.measured.y}});
           if (reference.is_null() && !x.reference_x.empty())
             reference = {{"label", x.reference_label}, {"x", x.reference_x}, {"y", x.reference_y}};
         }
@@ -227,23 +228,24 @@ std::vector<fs::path> write_plot_manifest(const fs::path& dir, const Suite& suit
         for (const auto& [backend, xy] : series)
           lines.push_back({{"label", backend}, {"x", xy.first}, {"y", xy.second}});
         const std::string file = plot_name(s.name, m.name + "_convergence");
-        figures.push_back({{"kind", "convergence"},
-                           {"file", file},
-                           {"title", fmt::format("{}: error of {} against resolution", s.title,
-                                                 m.name)},
-                           {"xlabel", "cells"},
-                           {"ylabel", fmt::format("error ({})", m.error.norm)},
-                           {"curves", lines},
-                           {"tolerance", m.tolerance ? json(*m.tolerance) : json(nullptr)}});
+        figures.push_back(
+            {{"kind", "convergence"},
+             {"file", file},
+             {"title", fmt::format("{}: error of {} against resolution", s.title, m.name)},
+             {"xlabel", "cells"},
+             {"ylabel", fmt::format("error ({})", m.error.norm)},
+             {"curves", lines},
+             {"tolerance", m.tolerance ? json(*m.tolerance) : json(nullptr)}});
         files.push_back(dir / file);
       }
     }
     json bars = json::array();
     for (const RunResult* r : runs) {
       if (!r->record.completed()) continue;
-      bars.push_back({{"label", run_label(*r->run)},
-                      {"wall_time_s", r->record.wall_time_s},
-                      {"coupling_share", r->coupling_share ? json(*r->coupling_share) : json(nullptr)}});
+      bars.push_back(
+          {{"label", run_label(*r->run)},
+           {"wall_time_s", r->record.wall_time_s},
+           {"coupling_share", r->coupling_share ? json(*r->coupling_share) : json(nullptr)}});
     }
     if (!bars.empty()) {
       const std::string file = plot_name(s.name, "wall_time");
@@ -255,7 +257,8 @@ std::vector<fs::path> write_plot_manifest(const fs::path& dir, const Suite& suit
     }
   }
   create_output_directory(dir);
-  write_file_atomically(dir / "plots.json", json{{"suite", suite.name}, {"figures", figures}}.dump(1));
+  write_file_atomically(dir / "plots.json",
+                        json{{"suite", suite.name}, {"figures", figures}}.dump(1));
   return files;
 }
 
@@ -310,12 +313,14 @@ std::string scenario_summary(const Scenario& s, const std::vector<const RunResul
       const auto mean = [&](const RunResult* x) {
         return ratio_count[x] > 0 ? ratio_sum[x] / ratio_count[x] : 0.0;
       };
-      if (closest == nullptr || w > wins[closest] || (w == wins[closest] && mean(r) < mean(closest)))
+      if (closest == nullptr || w > wins[closest] ||
+          (w == wins[closest] && mean(r) < mean(closest)))
         closest = r;
     }
-    sentences.push_back(fmt::format("Closest to the reference: **{}** (smallest error on {} of {} "
-                                    "compared metrics).",
-                                    run_label(*closest->run), wins[closest], compared));
+    sentences.push_back(
+        fmt::format("Closest to the reference: **{}** (smallest error on {} of {} "
+                    "compared metrics).",
+                    run_label(*closest->run), wins[closest], compared));
   }
   const RunResult* cheapest = nullptr;
   const RunResult* dearest = nullptr;
@@ -341,8 +346,8 @@ std::string scenario_summary(const Scenario& s, const std::vector<const RunResul
     int failing = 0;
     for (const auto& x : r->metrics) failing += x.verdict == Verdict::fail ? 1 : 0;
     if (failing > 0)
-      sentences.push_back(fmt::format("{} is outside tolerance on {} metric{}.",
-                                      run_label(*r->run), failing, failing > 1 ? "s" : ""));
+      sentences.push_back(fmt::format("{} is outside tolerance on {} metric{}.", run_label(*r->run),
+                                      failing, failing > 1 ? "s" : ""));
   }
   std::string out;
   for (const auto& sentence : sentences) out += (out.empty() ? "" : " ") + sentence;
@@ -365,7 +370,8 @@ void write_report(const fs::path& file, const Suite& suite, const std::vector<Ru
       "Suite `{}` ({}), resolution **{}**, run {} on {} with cosim {}. {} runs ({} kept from an "
       "earlier run with the same inputs, {} not finished); metrics: {} within tolerance, {} "
       "outside, {} measured without a tolerance, {} unavailable. Every number is in "
-      "`results.csv`; each run's inputs, outputs and console are in `runs/<scenario>/<backend>/`.\n\n",
+      "`results.csv`; each run's inputs, outputs and console are in "
+      "`runs/<scenario>/<backend>/`.\n\n",
       suite.name, suite.file.string(), to_string(context.resolution), context.started_at,
       context.machine, COSIM_VERSION, results.size(), reused, failed, verdicts[Verdict::pass],
       verdicts[Verdict::fail], verdicts[Verdict::measured], verdicts[Verdict::unavailable]);
@@ -391,13 +397,15 @@ void write_report(const fs::path& file, const Suite& suite, const std::vector<Ru
       for (const RunResult* r : runs) {
         const MetricResult& x = r->metrics[i];
         if (!x.reference_label.empty()) {
-          reference = x.reference ? fmt::format("{} ({})", short_number(x.reference), x.reference_label)
-                                  : x.reference_label;
+          reference = x.reference
+                          ? fmt::format("{} ({})", short_number(x.reference), x.reference_label)
+                          : x.reference_label;
           break;
         }
       }
       md << fmt::format("| {} [{}] | {} |", md_cell(m.label), m.unit, md_cell(reference));
-      for (const RunResult* r : runs) md << " " << md_cell(result_cell(m, *r, r->metrics[i])) << " |";
+      for (const RunResult* r : runs)
+        md << " " << md_cell(result_cell(m, *r, r->metrics[i])) << " |";
       md << "\n";
     }
     md << "| wall time [s] | |";
@@ -406,8 +414,7 @@ void write_report(const fs::path& file, const Suite& suite, const std::vector<Ru
          << " |";
     md << "\n| coupling share | |";
     for (const RunResult* r : runs)
-      md << " "
-         << (r->coupling_share ? fmt::format("{:.1f} %", 100.0 * *r->coupling_share) : "–")
+      md << " " << (r->coupling_share ? fmt::format("{:.1f} %", 100.0 * *r->coupling_share) : "–")
          << " |";
     md << "\n\n";
     std::vector<std::string> notes;

@@ -103,10 +103,9 @@ void prepare(PlannedRun& run, Resolution resolution) {
       fluid.apply_all(overrides, "fluid");
       const fs::path soil_file = input / "soil.yaml";
       const fs::path fluid_file = input / "fluid.yaml";
-      PairedJob paired =
-          make_paired_job(*b.backend, s, std::move(soil), std::move(fluid),
-                          directory_name(s.name + "_" + b.backend->name), soil_file.string(),
-                          fluid_file.string());
+      PairedJob paired = make_paired_job(*b.backend, s, std::move(soil), std::move(fluid),
+                                         directory_name(s.name + "_" + b.backend->name),
+                                         soil_file.string(), fluid_file.string());
       paired.job.apply_all(overrides, "job");
       paired.soil.write(soil_file);
       paired.fluid.write(fluid_file);

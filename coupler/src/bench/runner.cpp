@@ -27,14 +27,14 @@ fs::path record_path(const PlannedRun& run) {
 }
 
 void write_record(const PlannedRun& run, const RunRecord& r) {
-  const nlohmann::json j{{"run", run.id()},
-                         {"key", r.key},
-                         {"state", r.state},
-                         {"exit_code", r.exit_code},
-                         {"wall_time_s", r.wall_time_s},
-                         {"message", r.message},
-                         {"command", fmt::format("{} {}", run.executable,
-                                                 fmt::join(run.args, " "))}};
+  const nlohmann::json j{
+      {"run", run.id()},
+      {"key", r.key},
+      {"state", r.state},
+      {"exit_code", r.exit_code},
+      {"wall_time_s", r.wall_time_s},
+      {"message", r.message},
+      {"command", fmt::format("{} {}", run.executable, fmt::join(run.args, " "))}};
   write_file_atomically(record_path(run), j.dump(2) + "\n");
 }
 
@@ -205,8 +205,8 @@ std::vector<RunRecord> run_all(const std::vector<PlannedRun>& runs, const Runner
         child.executable = runtime::resolve_executable(run.executable, run.directory);
         const pid_t pid = supervisor.start(child);
         active[pid] = {i, Clock::now()};
-        display.event(fmt::format("{}: started ({} {})", run.id(), run.executable,
-                                  fmt::join(run.args, " ")));
+        display.event(
+            fmt::format("{}: started ({} {})", run.id(), run.executable, fmt::join(run.args, " ")));
       } catch (const std::exception& e) {
         records[i].state = "failed";
         records[i].exit_code = to_int(ExitCode::bad_input);

@@ -16,8 +16,8 @@ struct RunRecord {
   std::string state = "pending";  // completed | failed | interrupted
   int exit_code = 0;
   double wall_time_s = 0.0;  // as the run measured itself (summary.json), else from outside
-  std::string message;  // why it failed: exit status and the log's last lines
-  bool reused = false;  // completed by an earlier `cosim bench`
+  std::string message;       // why it failed: exit status and the log's last lines
+  bool reused = false;       // completed by an earlier `cosim bench`
   bool completed() const { return state == "completed"; }
 };
 

@@ -11,7 +11,8 @@ namespace cosim::bench {
 
 class ExactDamBreak {
  public:
-  ExactDamBreak(double h_l, double h_r, double x0, double g) : h_l_(h_l), h_r_(h_r), x0_(x0), g_(g) {
+  ExactDamBreak(double h_l, double h_r, double x0, double g)
+      : h_l_(h_l), h_r_(h_r), x0_(x0), g_(g) {
     c_l_ = std::sqrt(g * h_l);
     if (h_r <= 0.0) {  // Ritter: a rarefaction down to the dry bed
       h_star_ = 0.0;

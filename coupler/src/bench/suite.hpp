@@ -67,7 +67,7 @@ struct BackendRuns {
 
 // The coupling settings a coupled scenario writes once for all its pairings.
 struct Coupling {
-  std::filesystem::path soil;                 // the MPM case
+  std::filesystem::path soil;                       // the MPM case
   const BackendDescriptor* soil_backend = nullptr;  // its solver
   double end_time = 0.0;
   double window = 0.0;

@@ -7,8 +7,7 @@ using config::Schema;
 namespace {
 
 Schema overrides_schema() {
-  return Schema::map_of(Schema::map_of(Schema::any()))
-      .default_value("{}");
+  return Schema::map_of(Schema::map_of(Schema::any())).default_value("{}");
 }
 
 const char* const overrides_doc =
@@ -42,8 +41,8 @@ Schema level_schema() {
 }
 
 Schema backend_schema() {
-  Schema s = Schema::object(
-      "How one backend runs the scenario: exactly one of case, fluid and job.");
+  Schema s =
+      Schema::object("How one backend runs the scenario: exactly one of case, fluid and job.");
   s.optional("case", Schema::path().must_exist(),
              "A standalone case of the backend's solver (kind: ice_case, openfoam_case, "
              "swe_case or mpm_case), run as `<solver> --config`.")
@@ -73,7 +72,6 @@ Schema coupling_schema() {
                 "Fields the soil also sends to backends that read them.");
   return s;
 }
-
 
 Schema offset_schema() {
   return Schema::any_of({Schema::number(), Schema::map_of(Schema::number())}).default_value("0");
@@ -308,8 +306,7 @@ Schema make_suite_schema() {
   s.required("name", Schema::string().non_empty(), "Identifier of the suite.")
       .optional("title", Schema::string(), "Title of the report.")
       .optional("about", Schema::string(), "Introduction of the report.")
-      .required("scenarios", Schema::sequence(scenario_schema()).length(1, 256),
-                "The scenarios.");
+      .required("scenarios", Schema::sequence(scenario_schema()).length(1, 256), "The scenarios.");
   return s;
 }
 

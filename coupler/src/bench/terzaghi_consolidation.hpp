@@ -21,10 +21,10 @@ inline double oedometric_modulus(double youngs_modulus, double poisson_ratio) {
 }
 
 struct TerzaghiColumn {
-  double height = 1.0;         // h [m]
-  double load = 1.0e4;         // p0 [Pa]
-  double consolidation = 1.0;  // c_v [m^2/s]
-  double ramp_time = 0.0;      // [s]; 0: the load at once
+  double height = 1.0;          // h [m]
+  double load = 1.0e4;          // p0 [Pa]
+  double consolidation = 1.0;   // c_v [m^2/s]
+  double ramp_time = 0.0;       // [s]; 0: the load at once
   bool cycloidal_ramp = false;  // the ramp's shape: linear, or cycloidal
 
   // z measured up from the impermeable bottom [m], t [s].

@@ -1,10 +1,10 @@
 #include "com/handshake.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdint>
 #include <limits>
-
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "cosim/error.hpp"
@@ -21,7 +21,8 @@ namespace {
 long whole_number(const json& j, long lo, long hi, const char* what) {
   if (j.is_number_unsigned()) {
     const auto v = j.get<std::uint64_t>();
-    if (v <= static_cast<std::uint64_t>(hi) && static_cast<long>(v) >= lo) return static_cast<long>(v);
+    if (v <= static_cast<std::uint64_t>(hi) && static_cast<long>(v) >= lo)
+      return static_cast<long>(v);
   } else if (j.is_number_integer()) {
     const auto v = j.get<std::int64_t>();
     if (v >= lo && v <= hi) return static_cast<long>(v);
@@ -81,10 +82,13 @@ constexpr std::uint32_t grid_record = 11;
 }  // namespace
 
 std::string to_json(const Hello& h) {
-  json j{{"participant", h.participant}, {"config_hash", h.config_hash},
-         {"token", h.token},             {"program", h.program},
+  json j{{"participant", h.participant},
+         {"config_hash", h.config_hash},
+         {"token", h.token},
+         {"program", h.program},
          {"pid", h.pid},
-         {"meshes", json::array()},      {"writes", json::array()},
+         {"meshes", json::array()},
+         {"writes", json::array()},
          {"reads", json::array()}};
   for (const auto& m : h.meshes)
     j["meshes"].push_back({{"name", m.name}, {"kind", to_string(m.kind)}, {"dim", m.dim}});
@@ -133,8 +137,9 @@ Welcome parse_welcome(const std::string& text, const std::string& peer) {
     w.start_time = j.at("start_time").get<double>();
     w.end_time = j.at("end_time").get<double>();
     w.window = j.at("window").get<double>();
-    w.extrapolation = j.at("extrapolation").get<std::string>() == "linear" ? Extrapolation::linear
-                                                                           : Extrapolation::constant;
+    w.extrapolation = j.at("extrapolation").get<std::string>() == "linear"
+                          ? Extrapolation::linear
+                          : Extrapolation::constant;
     w.timeout_s = j.at("timeout_s").get<double>();
     w.sends = j.at("sends").get<std::vector<std::string>>();
     if (!(w.window > 0.0) || !(w.end_time >= w.start_time) || !(w.timeout_s > 0.0))
@@ -169,8 +174,10 @@ Message make_mesh_message(const std::string& job_id, const std::string& sender,
           values = g.edges;
         } else {
           const auto& coords = [&]() -> const std::vector<double>& {
-            if constexpr (std::is_same_v<G, PointCloud>) return g.positions;
-            else return g.centres;
+            if constexpr (std::is_same_v<G, PointCloud>)
+              return g.positions;
+            else
+              return g.centres;
           }();
           components = static_cast<std::uint32_t>(g.dim + 1);
           values.reserve(g.size() * components);
@@ -229,8 +236,10 @@ Mesh decode_mesh_message(const Message& message, const std::string& peer) {
         for (int d = 0; d < dim; ++d) coords.push_back(v[p * h.components + d]);
         volumes.push_back(v[p * h.components + dim]);
       }
-      if (kind == MeshKind::point_cloud) mesh.geometry = PointCloud{dim, coords, volumes};
-      else mesh.geometry = CellCloud{dim, coords, volumes};
+      if (kind == MeshKind::point_cloud)
+        mesh.geometry = PointCloud{dim, coords, volumes};
+      else
+        mesh.geometry = CellCloud{dim, coords, volumes};
     }
     validate(mesh);
   } catch (const std::exception& e) {

@@ -39,7 +39,7 @@ struct Welcome {
   double end_time = 0.0;
   double window = 0.0;
   Extrapolation extrapolation = Extrapolation::constant;
-  double timeout_s = 600.0;  // longest wait for the coupler (beyond its own window timeout)
+  double timeout_s = 600.0;        // longest wait for the coupler (beyond its own window timeout)
   std::vector<std::string> sends;  // the participant's reads the job sends it
 };
 

@@ -1,11 +1,11 @@
 #include "com/mpi_transport.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <climits>
 #include <cstdlib>
 #include <thread>
-
-#include <fmt/format.h>
 
 #include "com/allocator_tuning.hpp"
 #include "cosim/error.hpp"
@@ -113,8 +113,10 @@ std::optional<int> probe_header(MPI_Comm comm, int source, std::chrono::millisec
     if (flag) return status.MPI_SOURCE;
     const auto now = std::chrono::steady_clock::now();
     if (now >= deadline) return std::nullopt;
-    if (now < eager_until) std::this_thread::yield();
-    else std::this_thread::sleep_for(std::chrono::microseconds(200));
+    if (now < eager_until)
+      std::this_thread::yield();
+    else
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
   }
 }
 
@@ -169,14 +171,19 @@ MpiHub::MpiHub(std::vector<std::string> participants) : impl_(std::make_unique<I
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &impl_->world_size);
   if (rank != coupler_rank)
-    throw InputError(fmt::format("cosim must be the first application of the mpirun line (world "
-                                 "rank 0), it is rank {}",
-                                 rank));
+    throw InputError(
+        fmt::format("cosim must be the first application of the mpirun line (world "
+                    "rank 0), it is rank {}",
+                    rank));
 }
 
-MpiHub::~MpiHub() { MpiEnvironment::instance().release(); }
+MpiHub::~MpiHub() {
+  MpiEnvironment::instance().release();
+}
 
-int MpiHub::world_size() const { return impl_->world_size; }
+int MpiHub::world_size() const {
+  return impl_->world_size;
+}
 
 std::string MpiHub::describe() const {
   return fmt::format("MPI hub (world rank 0 of {})", impl_->world_size);
@@ -255,9 +262,13 @@ MpiClient::MpiClient(const std::string& participant_name) : impl_(std::make_uniq
   MpiEnvironment::instance().acquire();
 }
 
-MpiClient::~MpiClient() { MpiEnvironment::instance().release(); }
+MpiClient::~MpiClient() {
+  MpiEnvironment::instance().release();
+}
 
-std::string MpiClient::describe() const { return "MPI client of world rank 0"; }
+std::string MpiClient::describe() const {
+  return "MPI client of world rank 0";
+}
 
 void MpiClient::send(const std::string& peer, const Message& message) {
   if (peer != coupler_peer)
@@ -280,21 +291,45 @@ namespace {
 }  // namespace
 
 struct MpiHub::Impl {};
-MpiHub::MpiHub(std::vector<std::string>) { no_mpi(); }
+MpiHub::MpiHub(std::vector<std::string>) {
+  no_mpi();
+}
 MpiHub::~MpiHub() = default;
-int MpiHub::world_size() const { return 0; }
-std::string MpiHub::participant_of_rank(int) const { return {}; }
-void MpiHub::abort_job(int exit_code) { std::_Exit(exit_code); }
-void MpiHub::admit(const std::string&, const std::string&) { no_mpi(); }
-void MpiHub::send(const std::string&, const Message&) { no_mpi(); }
-std::optional<Received> MpiHub::receive(std::chrono::milliseconds) { no_mpi(); }
-std::string MpiHub::describe() const { return "MPI (not built)"; }
+int MpiHub::world_size() const {
+  return 0;
+}
+std::string MpiHub::participant_of_rank(int) const {
+  return {};
+}
+void MpiHub::abort_job(int exit_code) {
+  std::_Exit(exit_code);
+}
+void MpiHub::admit(const std::string&, const std::string&) {
+  no_mpi();
+}
+void MpiHub::send(const std::string&, const Message&) {
+  no_mpi();
+}
+std::optional<Received> MpiHub::receive(std::chrono::milliseconds) {
+  no_mpi();
+}
+std::string MpiHub::describe() const {
+  return "MPI (not built)";
+}
 struct MpiClient::Impl {};
-MpiClient::MpiClient(const std::string&) { no_mpi(); }
+MpiClient::MpiClient(const std::string&) {
+  no_mpi();
+}
 MpiClient::~MpiClient() = default;
-void MpiClient::send(const std::string&, const Message&) { no_mpi(); }
-std::optional<Received> MpiClient::receive(std::chrono::milliseconds) { no_mpi(); }
-std::string MpiClient::describe() const { return "MPI (not built)"; }
+void MpiClient::send(const std::string&, const Message&) {
+  no_mpi();
+}
+std::optional<Received> MpiClient::receive(std::chrono::milliseconds) {
+  no_mpi();
+}
+std::string MpiClient::describe() const {
+  return "MPI (not built)";
+}
 
 #endif  // COSIM_HAVE_MPI
 

@@ -67,15 +67,15 @@ std::size_t remove_abandoned_directories(const fs::path& root, const std::string
     const std::string name = entry.path().filename().string();
     if (name.rfind(prefix + "-", 0) != 0) continue;
     struct stat st {};
-    if (::lstat(entry.path().c_str(), &st) != 0 || !S_ISDIR(st.st_mode) ||
-        st.st_uid != ::geteuid())
+    if (::lstat(entry.path().c_str(), &st) != 0 || !S_ISDIR(st.st_mode) || st.st_uid != ::geteuid())
       continue;
     if (!fs::exists(entry.path() / owner_file, ec) || owner_is_running(entry.path())) continue;
     std::error_code ignored;
     fs::remove_all(entry.path(), ignored);
     if (!ignored) {
       ++removed;
-      spdlog::info("removed {}, left by a coupler that did not stop cleanly", entry.path().string());
+      spdlog::info("removed {}, left by a coupler that did not stop cleanly",
+                   entry.path().string());
     }
   }
   return removed;

@@ -1,5 +1,6 @@
 #include "com/zmq_transport.hpp"
 
+#include <fmt/format.h>
 #include <sys/stat.h>
 
 #include <array>
@@ -8,8 +9,6 @@
 #include <set>
 #include <system_error>
 #include <zmq.hpp>
-
-#include <fmt/format.h>
 
 #include "com/allocator_tuning.hpp"
 #include "cosim/error.hpp"
@@ -102,8 +101,8 @@ struct ZmqHub::Impl {
   std::string endpoint;
   // Connections by their ZeroMQ routing id (assigned by this socket: a
   // client cannot choose it, so it cannot pose as another).
-  std::map<std::string, std::string> label_of;     // routing id -> label or participant
-  std::map<std::string, std::string> routing_of;   // label or participant -> routing id
+  std::map<std::string, std::string> label_of;    // routing id -> label or participant
+  std::map<std::string, std::string> routing_of;  // label or participant -> routing id
   std::set<std::string> admitted;
   std::size_t connections = 0;
 
@@ -128,17 +127,19 @@ ZmqHub::ZmqHub(const ZmqHubOptions& options) : impl_(std::make_unique<Impl>()) {
     s.bind(impl_->endpoint);
   } else {
     if (!is_loopback(options.tcp_host) && !options.allow_non_loopback)
-      throw InputError(fmt::format("transport: binding tcp on '{}' (not loopback) needs "
-                                   "'zmq.allow_non_loopback: true' in the job",
-                                   options.tcp_host));
+      throw InputError(
+          fmt::format("transport: binding tcp on '{}' (not loopback) needs "
+                      "'zmq.allow_non_loopback: true' in the job",
+                      options.tcp_host));
     const std::string address = tcp_bind_address(options.tcp_host);
     if (address.front() == '[') s.set(zmq::sockopt::ipv6, 1);
     try {
       s.bind(fmt::format("tcp://{}:*", address));
     } catch (const zmq::error_t& e) {
-      throw InputError(fmt::format("zmq.host: cannot bind tcp on '{}': {} (give the IP address of "
-                                   "a local interface, e.g. 127.0.0.1 or ::1)",
-                                   options.tcp_host, e.what()));
+      throw InputError(
+          fmt::format("zmq.host: cannot bind tcp on '{}': {} (give the IP address of "
+                      "a local interface, e.g. 127.0.0.1 or ::1)",
+                      options.tcp_host, e.what()));
     }
     impl_->endpoint = s.get(zmq::sockopt::last_endpoint);
   }
@@ -149,12 +150,16 @@ ZmqHub::~ZmqHub() {
   impl_->context.close();
 }
 
-const std::string& ZmqHub::endpoint() const { return impl_->endpoint; }
+const std::string& ZmqHub::endpoint() const {
+  return impl_->endpoint;
+}
 const std::filesystem::path& ZmqHub::private_directory() const {
   static const std::filesystem::path none;
   return impl_->directory ? impl_->directory->path() : none;
 }
-std::string ZmqHub::describe() const { return "zeromq hub at " + impl_->endpoint; }
+std::string ZmqHub::describe() const {
+  return "zeromq hub at " + impl_->endpoint;
+}
 
 void ZmqHub::admit(const std::string& connection, const std::string& participant) {
   Impl& s = *impl_;
@@ -214,8 +219,8 @@ struct ZmqClient::Impl {
 ZmqClient::ZmqClient(const std::string& endpoint, const std::string& participant_name)
     : impl_(std::make_unique<Impl>()) {
   if (endpoint.rfind("ipc://", 0) != 0 && endpoint.rfind("tcp://", 0) != 0)
-    throw InputError(fmt::format("coupling endpoint '{}' is not an ipc:// or tcp:// address",
-                                 endpoint));
+    throw InputError(
+        fmt::format("coupling endpoint '{}' is not an ipc:// or tcp:// address", endpoint));
   impl_->endpoint = endpoint;
   impl_->name = participant_name;
   // The hub assigns the routing id: a participant proves who it is by its
@@ -257,8 +262,8 @@ std::optional<Received> ZmqClient::receive(std::chrono::milliseconds timeout) {
   }
   Received r;
   r.peer = coupler_peer;
-  r.message.header = decode_header(
-      std::span(static_cast<const std::byte*>(header.data()), header.size()), r.peer);
+  r.message.header =
+      decode_header(std::span(static_cast<const std::byte*>(header.data()), header.size()), r.peer);
   r.message.payload = from_zmq(std::move(payload));
   return r;
 }

@@ -286,9 +286,9 @@ void Schema::validate(const Node& node) const {
       const std::filesystem::path resolved = node.as_path();
       std::error_code status;
       if (spec.must_exist && !std::filesystem::exists(resolved, status)) {
-        node.fail(status ? fmt::format("cannot use the path {}: {}", resolved.string(),
-                                       status.message())
-                         : fmt::format("no such file or directory: {}", resolved.string()));
+        node.fail(
+            status ? fmt::format("cannot use the path {}: {}", resolved.string(), status.message())
+                   : fmt::format("no such file or directory: {}", resolved.string()));
       }
       return;
     }
@@ -437,6 +437,8 @@ void check_defaults_of(const Schema& schema, const std::string& path) {
 
 }  // namespace
 
-void Schema::check_defaults() const { check_defaults_of(*this, ""); }
+void Schema::check_defaults() const {
+  check_defaults_of(*this, "");
+}
 
 }  // namespace cosim::config

@@ -21,7 +21,8 @@ constexpr std::size_t text_limit = 2048;
 
 std::string located_message(const SourceLocation& where, const std::string& key_path,
                             const std::string& what) {
-  std::string prefix = where.file.empty() ? std::string("<input>") : abbreviated(where.file, name_limit);
+  std::string prefix =
+      where.file.empty() ? std::string("<input>") : abbreviated(where.file, name_limit);
   if (where.line > 0) prefix += fmt::format(":{}:{}", where.line, where.column);
   if (key_path.empty()) return fmt::format("{}: {}", prefix, abbreviated(what, text_limit));
   return fmt::format("{}: key '{}': {}", prefix, abbreviated(key_path, name_limit),

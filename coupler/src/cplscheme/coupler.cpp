@@ -15,9 +15,9 @@
 #include "cosim/fields.hpp"
 #include "cosim/io/snapshot_writer.hpp"
 #include "cosim/io/tail_lines.hpp"
+#include "energy_exchange_step.hpp"
 #include "mapping/bounded_redistribution.hpp"
 #include "mapping/build_operator.hpp"
-#include "energy_exchange_step.hpp"
 #include "momentum_exchange_step.hpp"
 #include "operator_cache.hpp"
 #include "progress.hpp"
@@ -83,8 +83,7 @@ class StrangerLog {
 bool same_secret(const std::string& a, const std::string& b) {
   if (a.size() != b.size()) return false;
   unsigned char difference = 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    difference |= static_cast<unsigned char>(a[i] ^ b[i]);
+  for (std::size_t i = 0; i < a.size(); ++i) difference |= static_cast<unsigned char>(a[i] ^ b[i]);
   return difference == 0;
 }
 
@@ -108,8 +107,7 @@ struct Coupler::Impl {
   double next_output_time = 0.0;
   StrangerLog strangers;
 
-  Impl(const job::Job& j, com::Hub& t, runtime::Supervisor* s, RunSummary& sum,
-       CouplerOptions o)
+  Impl(const job::Job& j, com::Hub& t, runtime::Supervisor* s, RunSummary& sum, CouplerOptions o)
       : job(j), transport(t), supervisor(s), summary(sum), options(std::move(o)) {
     for (const auto& p : job.participants) peers[p.name].spec = &p;
     if (job.momentum_exchange) momentum_exchange.emplace(*job.momentum_exchange, job.file.string());
@@ -250,8 +248,8 @@ struct Coupler::Impl {
     std::size_t connected = 0;
     while (connected < peers.size()) {
       const std::optional<com::Received> r = receive(
-          deadline, fmt::format("{} to connect ({} of {} did)", not_connected(), connected,
-                                peers.size()));
+          deadline,
+          fmt::format("{} to connect ({} of {} did)", not_connected(), connected, peers.size()));
       if (r->malformed) {
         // A peer speaking another protocol version or garbage: say why, and
         // keep waiting for the real participants.
@@ -263,9 +261,8 @@ struct Coupler::Impl {
       if (r->admitted) {
         check_signature(r->peer, h);
         if (h.type == MessageType::abort) throw participant_abort(r->peer, r->message);
-        throw ProtocolError(r->peer,
-                            fmt::format("sent '{}' before every participant had connected",
-                                        com::to_string(h.type)));
+        throw ProtocolError(r->peer, fmt::format("sent '{}' before every participant had connected",
+                                                 com::to_string(h.type)));
       }
       if (h.type == MessageType::abort) continue;  // a refused peer saying goodbye
       if (h.type != MessageType::hello) {
@@ -319,8 +316,8 @@ struct Coupler::Impl {
       throw ProtocolError(name, fmt::format("sent a '{}' message for job '{}' in job '{}'",
                                             com::to_string(h.type), h.job_id, options.job_id));
     if (h.sender != name)
-      throw ProtocolError(name, fmt::format("sent a '{}' message signed '{}'",
-                                            com::to_string(h.type), h.sender));
+      throw ProtocolError(
+          name, fmt::format("sent a '{}' message signed '{}'", com::to_string(h.type), h.sender));
   }
 
   // A participant that reports its own failure is given a moment to finish
@@ -464,8 +461,8 @@ struct Coupler::Impl {
   void check_explicit_stability() {
     if (!momentum_exchange) return;
     const job::MomentumExchangeSpec& spec = *job.momentum_exchange;
-    const auto bound =
-        momentum_exchange->explicit_window_bound(side_of(spec.fluid), side_of(spec.solid), operators);
+    const auto bound = momentum_exchange->explicit_window_bound(side_of(spec.fluid),
+                                                                side_of(spec.solid), operators);
     if (!bound || !bound->applies()) return;
     const double ratio = job.window / bound->window;
     const Vec3 at = peers.at(spec.mesh_owner).meshes.at(spec.mesh).position(bound->cell);
@@ -485,7 +482,8 @@ struct Coupler::Impl {
       return;
     }
     const std::string what = fmt::format(
-        "the window {} s is {:.3g} times the explicit coupling's stability bound {:.3g} s: the pore "
+        "the window {} s is {:.3g} times the explicit coupling's stability bound {:.3g} s: the "
+        "pore "
         "fluid's undrained pressure wave ({:.4g} m/s at porosity {:.3g}) crosses an exchange "
         "cell of {:.3g} m in that time (at ({:.4g}, {:.4g}, {:.4g}) m of {}.{}), and an explicit "
         "exchange of porosity and pore pressure over a longer window grows without bound "
@@ -493,15 +491,15 @@ struct Coupler::Impl {
         job.window, ratio, bound->window, bound->wave_speed, bound->porosity, bound->cell_width,
         at[0], at[1], at[2], spec.mesh_owner, spec.mesh, bound->window);
     if (ratio > job.stability.refuse_above && !job.stability.accept_unstable)
-      throw InputError(job.window_where.file.empty()
-                           ? SourceLocation{job.file.string(), job.window_where.line,
-                                            job.window_where.column}
-                           : job.window_where,
-                       "window",
-                       what + fmt::format(" (a window above {} times the bound is refused; "
-                                          "`stability_check: {{accept_unstable: true}}` runs it "
-                                          "anyway)",
-                                          job.stability.refuse_above));
+      throw InputError(
+          job.window_where.file.empty()
+              ? SourceLocation{job.file.string(), job.window_where.line, job.window_where.column}
+              : job.window_where,
+          "window",
+          what + fmt::format(" (a window above {} times the bound is refused; "
+                             "`stability_check: {{accept_unstable: true}}` runs it "
+                             "anyway)",
+                             job.stability.refuse_above));
     spdlog::warn("explicit coupling: {}", what);
   }
 

@@ -9,8 +9,8 @@
 
 #include "com/transport.hpp"
 #include "cosim/io/run_summary.hpp"
-#include "job/job.hpp"
 #include "cosim/runtime/supervisor.hpp"
+#include "job/job.hpp"
 
 // The coupler's side of a coupled run: admits the participants (handshake),
 // then, window after window, collects what each wrote, maps every exchange

@@ -58,8 +58,7 @@ EnergyExchangeStep::Heat EnergyExchangeStep::run(double window, const PhaseSide&
                           exchange_name,
                           mapping::Constraint::consistent,
                           mapping::Kernel::linear};
-    return operators
-        .get(key, side.mesh(mesh), side.version(mesh), exchange_mesh, exchange_version)
+    return operators.get(key, side.mesh(mesh), side.version(mesh), exchange_mesh, exchange_version)
         .apply(side.written->at(field), 1);
   };
   const auto t_f = on_exchange_mesh(fluid, f::fluid_temperature.name);

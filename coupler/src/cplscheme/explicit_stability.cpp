@@ -24,7 +24,8 @@ double smallest_width(const Mesh& mesh, std::size_t cell) {
 
 }  // namespace
 
-ExplicitStabilityBound undrained_wave_bound(const Mesh& mesh, std::span<const double> solid_fraction,
+ExplicitStabilityBound undrained_wave_bound(const Mesh& mesh,
+                                            std::span<const double> solid_fraction,
                                             std::span<const double> solid_bulk_density,
                                             std::span<const double> fluid_bulk_density,
                                             std::span<const double> fluid_bulk_modulus) {

@@ -29,7 +29,8 @@ struct ExplicitStabilityBound {
 
 // All fields per cell of `mesh`: solid fraction, the phases' bulk densities
 // [kg/m^3] and the pore fluid's bulk modulus [Pa].
-ExplicitStabilityBound undrained_wave_bound(const Mesh& mesh, std::span<const double> solid_fraction,
+ExplicitStabilityBound undrained_wave_bound(const Mesh& mesh,
+                                            std::span<const double> solid_fraction,
                                             std::span<const double> solid_bulk_density,
                                             std::span<const double> fluid_bulk_density,
                                             std::span<const double> fluid_bulk_modulus);

@@ -51,8 +51,8 @@ std::vector<double> on_exchange_mesh(const PhaseSide& side, const std::string& f
                         exchange_cells.name,
                         mapping::Constraint::consistent,
                         mapping::Kernel::linear};
-  return operators.get(key, side.mesh(mesh), side.version(mesh), exchange_cells.mesh,
-                       exchange_cells.version)
+  return operators
+      .get(key, side.mesh(mesh), side.version(mesh), exchange_cells.mesh, exchange_cells.version)
       .apply(side.written->at(field), components);
 }
 
@@ -159,10 +159,9 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const Ph
     // finite impermeable value.
     for (double& k : drag) k = std::min(k, impermeable_drag);
     const std::string& drag_mesh = fluid.spec->reads.at(f::drag_coefficient.name);
-    out.drag_coefficient =
-        map(exchange_cells.name, exchange_mesh, exchange_version, {fluid.spec->name, drag_mesh},
-            fluid.mesh(drag_mesh), fluid.version(drag_mesh), mapping::Constraint::consistent, drag,
-            1);
+    out.drag_coefficient = map(exchange_cells.name, exchange_mesh, exchange_version,
+                               {fluid.spec->name, drag_mesh}, fluid.mesh(drag_mesh),
+                               fluid.version(drag_mesh), mapping::Constraint::consistent, drag, 1);
     const std::string& from_mesh = fluid.spec->writes.at(f::momentum_exchange_impulse.name);
     given = &fluid.written->at(f::momentum_exchange_impulse.name);
     out.solid = impulse_to(solid, {fluid.spec->name, from_mesh}, fluid.mesh(from_mesh),

@@ -8,8 +8,8 @@
 
 #include "com/handshake.hpp"
 #include "exchange/drag_law.hpp"
-#include "job/job.hpp"
 #include "explicit_stability.hpp"
+#include "job/job.hpp"
 #include "operator_cache.hpp"
 #include "phase_side.hpp"
 

@@ -4,8 +4,8 @@
 #include <map>
 #include <string>
 
-#include "mapping/build_operator.hpp"
 #include "cosim/mesh.hpp"
+#include "mapping/build_operator.hpp"
 
 namespace cosim::cplscheme {
 

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "com/handshake.hpp"
-#include "job/job.hpp"
 #include "cosim/mesh.hpp"
+#include "job/job.hpp"
 
 namespace cosim::cplscheme {
 

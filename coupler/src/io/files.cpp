@@ -29,7 +29,8 @@ void create_output_directory(const fs::path& directory) {
 void prepare_output_directory(const fs::path& directory, OutputReuse reuse,
                               const std::vector<std::string>& markers, bool resumable) {
   std::error_code ec;
-  if (!fs::exists(directory, ec) || (fs::is_directory(directory, ec) && fs::is_empty(directory, ec))) {
+  if (!fs::exists(directory, ec) ||
+      (fs::is_directory(directory, ec) && fs::is_empty(directory, ec))) {
     create_output_directory(directory);
     return;
   }
@@ -56,10 +57,11 @@ void prepare_output_directory(const fs::path& directory, OutputReuse reuse,
                             directory.string(), names.size(), shown,
                             resumable ? "--resume to continue it, " : ""));
   if (!earlier_run)
-    throw Error(ExitCode::bad_input,
-                fmt::format("output directory '{}' holds {} but no '{}': it is not an earlier run's "
-                            "directory, so --overwrite will not clear it; choose another directory",
-                            directory.string(), shown, markers.empty() ? "" : markers.front()));
+    throw Error(
+        ExitCode::bad_input,
+        fmt::format("output directory '{}' holds {} but no '{}': it is not an earlier run's "
+                    "directory, so --overwrite will not clear it; choose another directory",
+                    directory.string(), shown, markers.empty() ? "" : markers.front()));
   for (const auto& name : names) {
     fs::remove_all(directory / name, ec);
     if (ec)

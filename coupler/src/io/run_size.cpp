@@ -83,8 +83,9 @@ config::Schema run_limits_schema() {
   config::Schema limits = config::Schema::object(
       "What the run may use. The solver estimates its memory from the case before it allocates "
       "anything (`--validate` prints the estimate) and refuses a case above the limit.");
-  limits.optional("memory_gib", config::Schema::number().positive().unit("GiB").default_value(
-                                    fmt::format("{:g}", RunLimits::default_memory_gib)),
+  limits.optional("memory_gib",
+                  config::Schema::number().positive().unit("GiB").default_value(
+                      fmt::format("{:g}", RunLimits::default_memory_gib)),
                   "Most memory the run may need; raise it for a case the machine can hold.");
   return limits;
 }

@@ -17,10 +17,9 @@ namespace cosim {
 
 namespace {
 
-constexpr std::array reserved_keys{"program",    "version",     "config",      "status",
-                                   "started_at", "updated_at",  "finished_at", "steps",
-                                   "windows",    "wall_time_s", "conserved",   "metrics",
-                                   "progress"};
+constexpr std::array reserved_keys{"program",    "version",     "config",  "status",  "started_at",
+                                   "updated_at", "finished_at", "steps",   "windows", "wall_time_s",
+                                   "conserved",  "metrics",     "progress"};
 
 nlohmann::json optional_number(const std::optional<double>& value) {
   return value ? nlohmann::json(*value) : nlohmann::json(nullptr);

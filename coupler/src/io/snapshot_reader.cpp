@@ -3,11 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <limits>
 #include <map>
-#include <cctype>
 #include <sstream>
 
 #include "cosim/error.hpp"
@@ -228,7 +228,8 @@ std::size_t SnapshotReader::element_at(std::size_t snapshot,
   double best_distance = std::numeric_limits<double>::infinity();
   for (std::size_t e = 0; e < centres.size(); ++e) {
     double d2 = 0.0;
-    for (std::size_t d = 0; d < 3; ++d) d2 += (centres[e][d] - point[d]) * (centres[e][d] - point[d]);
+    for (std::size_t d = 0; d < 3; ++d)
+      d2 += (centres[e][d] - point[d]) * (centres[e][d] - point[d]);
     if (d2 < best_distance) {
       best_distance = d2;
       best = e;

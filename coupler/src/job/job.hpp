@@ -9,8 +9,8 @@
 #include "com/handshake.hpp"
 #include "cosim/config/schema.hpp"
 #include "cosim/error.hpp"
-#include "mapping/constraint.hpp"
 #include "cosim/mesh.hpp"
+#include "mapping/constraint.hpp"
 
 // A coupled run as its YAML `kind: job` file describes it, validated in full
 // before anything starts.

@@ -140,8 +140,7 @@ Schema make_job_schema() {
       .optional("zmq", zmq_schema().default_value("{}"), "ZeroMQ options.")
       .optional("extrapolation", Schema::one_of({"constant", "linear"}).default_value("constant"),
                 "How a participant sees its partner's fields inside a window.")
-      .optional("window_timeout",
-                Schema::number().range(1e-3, 1e6).unit("s").default_value("600"),
+      .optional("window_timeout", Schema::number().range(1e-3, 1e6).unit("s").default_value("600"),
                 "Longest wall time a window may take before a participant is declared hung; "
                 "also how long participants may take to exit after the last window.")
       .required("participants", Schema::map_of(participant_schema()).length(1, 64),

@@ -203,7 +203,8 @@ MomentumExchangeSpec read_momentum_exchange(const Job& job, const config::Node& 
   const auto law = exchange::make_drag_law(m["drag"]);
   const ParticipantSpec& fluid = *pair.fluid;
   const ParticipantSpec& solid = *pair.solid;
-  for (const char* field : {f::solid_fraction.name, f::solid_velocity.name, f::solid_bulk_density.name})
+  for (const char* field :
+       {f::solid_fraction.name, f::solid_velocity.name, f::solid_bulk_density.name})
     pair.require(solid, solid.writes, field, "write");
   if (law->cell_input() == exchange::CellInput::grain_size)
     pair.require(solid, solid.writes, f::grain_size.name, "write");
@@ -316,16 +317,17 @@ Job load_job(const std::filesystem::path& file) {
   const config::Node output = root["output"];
   job.output_every = output.get<double>("every");
   if (job.output_every > 0.0 && (job.end_time - job.start_time) / job.output_every > 1e6)
-    output["every"].fail(fmt::format("{} s gives more than a million snapshots over the run",
-                                     job.output_every));
+    output["every"].fail(
+        fmt::format("{} s gives more than a million snapshots over the run", job.output_every));
 
   for (const auto& [name, p] : root["participants"].entries()) {
     if (name == com::coupler_peer) p.fail_at_key("'coupler' is reserved for the coupler itself");
     if (name.size() > 64 || name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTU"
                                                    "VWXYZ0123456789_-") != std::string::npos)
-      p.fail_at_key(fmt::format("participant name '{}' must be 1 to 64 letters, digits, '_' and "
-                                "'-'",
-                                name.size() > 64 ? name.substr(0, 64) + "..." : name));
+      p.fail_at_key(
+          fmt::format("participant name '{}' must be 1 to 64 letters, digits, '_' and "
+                      "'-'",
+                      name.size() > 64 ? name.substr(0, 64) + "..." : name));
     job.participants.push_back(read_participant(name, p));
   }
   check_exchanges(job, root);

@@ -1,8 +1,8 @@
 #pragma once
 
+#include "cosim/mesh.hpp"
 #include "mapping/constraint.hpp"
 #include "mapping/operator.hpp"
-#include "cosim/mesh.hpp"
 
 namespace cosim::mapping::detail {
 

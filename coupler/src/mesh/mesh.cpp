@@ -34,7 +34,8 @@ Vec3 UniformGrid::position(std::size_t flat_index) const {
   const Index3 ijk = unflat(flat_index);
   const double shift = location == GridLocation::cell ? 0.5 : 0.0;
   Vec3 x{0, 0, 0};
-  for (int d = 0; d < dim; ++d) x[d] = origin[d] + (static_cast<double>(ijk[d]) + shift) * spacing[d];
+  for (int d = 0; d < dim; ++d)
+    x[d] = origin[d] + (static_cast<double>(ijk[d]) + shift) * spacing[d];
   return x;
 }
 
@@ -71,8 +72,10 @@ int Mesh::dimension() const {
   return std::visit(
       [](const auto& g) -> int {
         using G = std::decay_t<decltype(g)>;
-        if constexpr (std::is_same_v<G, NonUniformLine>) return 1;
-        else return g.dim;
+        if constexpr (std::is_same_v<G, NonUniformLine>)
+          return 1;
+        else
+          return g.dim;
       },
       geometry);
 }
@@ -85,9 +88,12 @@ double Mesh::control_volume(std::size_t e) const {
   return std::visit(
       [e](const auto& g) -> double {
         using G = std::decay_t<decltype(g)>;
-        if constexpr (std::is_same_v<G, UniformGrid>) return g.control_volume(e);
-        else if constexpr (std::is_same_v<G, NonUniformLine>) return g.width(e);
-        else return g.volumes[e];
+        if constexpr (std::is_same_v<G, UniformGrid>)
+          return g.control_volume(e);
+        else if constexpr (std::is_same_v<G, NonUniformLine>)
+          return g.width(e);
+        else
+          return g.volumes[e];
       },
       geometry);
 }
@@ -96,20 +102,28 @@ Vec3 Mesh::position(std::size_t e) const {
   return std::visit(
       [e](const auto& g) -> Vec3 {
         using G = std::decay_t<decltype(g)>;
-        if constexpr (std::is_same_v<G, UniformGrid>) return g.position(e);
-        else if constexpr (std::is_same_v<G, NonUniformLine>) return {g.centre(e), 0.0, 0.0};
-        else if constexpr (std::is_same_v<G, PointCloud>) return g.position(e);
-        else return g.centre(e);
+        if constexpr (std::is_same_v<G, UniformGrid>)
+          return g.position(e);
+        else if constexpr (std::is_same_v<G, NonUniformLine>)
+          return {g.centre(e), 0.0, 0.0};
+        else if constexpr (std::is_same_v<G, PointCloud>)
+          return g.position(e);
+        else
+          return g.centre(e);
       },
       geometry);
 }
 
 const char* to_string(MeshKind kind) {
   switch (kind) {
-    case MeshKind::uniform_grid: return "uniform_grid";
-    case MeshKind::nonuniform_line: return "nonuniform_line";
-    case MeshKind::point_cloud: return "point_cloud";
-    case MeshKind::cell_cloud: return "cell_cloud";
+    case MeshKind::uniform_grid:
+      return "uniform_grid";
+    case MeshKind::nonuniform_line:
+      return "nonuniform_line";
+    case MeshKind::point_cloud:
+      return "point_cloud";
+    case MeshKind::cell_cloud:
+      return "cell_cloud";
   }
   return "unknown";
 }
@@ -139,7 +153,8 @@ void check_cloud(const Mesh& mesh, const Cloud& cloud, const std::vector<double>
     if (!(cloud.volumes[p] > 0.0) || !std::isfinite(cloud.volumes[p]))
       reject(mesh, "volume of element " + std::to_string(p) + " is not positive and finite");
   for (std::size_t c = 0; c < coords.size(); ++c)
-    if (!std::isfinite(coords[c])) reject(mesh, "non-finite coordinate at index " + std::to_string(c));
+    if (!std::isfinite(coords[c]))
+      reject(mesh, "non-finite coordinate at index " + std::to_string(c));
 }
 
 }  // namespace
@@ -162,8 +177,7 @@ void validate(const Mesh& mesh) {
           constexpr std::int64_t max_cells = std::int64_t{1} << 40;
           std::int64_t cells = 1;
           for (int d = 0; d < g.dim; ++d) {
-            if (g.cells[d] > max_cells / cells)
-              reject(mesh, "has more than 2^40 cells");
+            if (g.cells[d] > max_cells / cells) reject(mesh, "has more than 2^40 cells");
             cells *= g.cells[d];
           }
         } else if constexpr (std::is_same_v<G, NonUniformLine>) {

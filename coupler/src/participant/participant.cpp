@@ -100,7 +100,8 @@ struct Participant::Impl {
   // Computed from the window's index, as the coupler does, never accumulated:
   // over thousands of windows a running sum drifts past the coupler's tolerance.
   double window_end() const {
-    return std::min(schedule.end_time, schedule.start_time + static_cast<double>(window) * schedule.window);
+    return std::min(schedule.end_time,
+                    schedule.start_time + static_cast<double>(window) * schedule.window);
   }
 
   void send(com::Message message) {
@@ -146,8 +147,9 @@ struct Participant::Impl {
       throw ProtocolError(com::coupler_peer, fmt::format("message for job '{}', this is job '{}'",
                                                          m.header.job_id, endpoint.job_id));
     if (m.header.sender != com::coupler_peer)
-      throw ProtocolError(com::coupler_peer,
-                          fmt::format("message signed by '{}', not by the coupler", m.header.sender));
+      throw ProtocolError(
+          com::coupler_peer,
+          fmt::format("message signed by '{}', not by the coupler", m.header.sender));
     if (m.header.type == MessageType::abort)
       throw Error(ExitCode::participant_failed,
                   fmt::format("the coupler aborted the run: {}", m.payload.text()));
@@ -157,8 +159,8 @@ struct Participant::Impl {
   // The abort message: the reason, and the exit code this process ends
   // with (in the header's field name), when it ends on a cosim::Error.
   com::Message abort_message(std::string_view reason) const {
-    com::Message m = com::make_text_message(MessageType::abort, endpoint.job_id, name, window,
-                                            time, reason);
+    com::Message m =
+        com::make_text_message(MessageType::abort, endpoint.job_id, name, window, time, reason);
     ExitCode code = ExitCode::participant_failed;
     if (std::current_exception()) {
       try {

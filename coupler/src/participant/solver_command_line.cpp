@@ -1,8 +1,8 @@
 #include "cosim/solver_command_line.hpp"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <iostream>
 
 #include "cosim/error.hpp"
@@ -38,7 +38,8 @@ int run_solver_program(const SolverProgram& program, int argc, char** argv) {
   app.add_flag("--validate", check_only,
                "check the case file (keys, values, the run's estimated size against its limits) "
                "without running; prints one line and exits 0, or the error and exits 2");
-  app.add_option("-c,--config", line.config, "the case's YAML file (kind: " + program.case_kind + ")");
+  app.add_option("-c,--config", line.config,
+                 "the case's YAML file (kind: " + program.case_kind + ")");
   app.add_option("-o,--output", line.output, "run directory (refused when it is not empty)");
   app.add_flag("--overwrite", overwrite,
                "clear the earlier run an --output directory holds, then run afresh");

@@ -30,9 +30,13 @@ void install_stop_handlers() {
   std::signal(SIGPIPE, SIG_IGN);
 }
 
-int stop_signal() { return requested_by.load(); }
+int stop_signal() {
+  return requested_by.load();
+}
 
-const std::atomic<bool>& stop_flag() { return requested; }
+const std::atomic<bool>& stop_flag() {
+  return requested;
+}
 
 std::string describe_stop() {
   const int signal = stop_signal();

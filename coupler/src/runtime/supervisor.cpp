@@ -1,6 +1,7 @@
 #include "cosim/runtime/supervisor.hpp"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <linux/close_range.h>
 #include <sys/prctl.h>
 #include <sys/syscall.h>
@@ -13,8 +14,6 @@
 #include <cstring>
 #include <fstream>
 #include <thread>
-
-#include <fmt/format.h>
 
 #include "cosim/error.hpp"
 
@@ -82,21 +81,22 @@ pid_t Supervisor::start(const ChildSpec& spec) {
   std::vector<std::string> environment_storage;
   for (char** e = environ; *e != nullptr; ++e) {
     const std::string_view entry(*e);
-    const bool replaced = std::any_of(spec.environment.begin(), spec.environment.end(), [&](auto& kv) {
-      return entry.substr(0, entry.find('=')) == kv.first;
-    });
+    const bool replaced =
+        std::any_of(spec.environment.begin(), spec.environment.end(),
+                    [&](auto& kv) { return entry.substr(0, entry.find('=')) == kv.first; });
     if (!replaced) environment_storage.emplace_back(entry);
   }
-  for (const auto& [key, value] : spec.environment) environment_storage.push_back(key + "=" + value);
+  for (const auto& [key, value] : spec.environment)
+    environment_storage.push_back(key + "=" + value);
   std::vector<char*> envp;
   for (auto& e : environment_storage) envp.push_back(e.data());
   envp.push_back(nullptr);
   const std::string exe = spec.executable.string();
   const int log_fd = ::open(spec.log_file.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (log_fd < 0)
-    throw Error(ExitCode::bad_input, fmt::format("cannot open log file {} for participant '{}': {}",
-                                                 spec.log_file.string(), spec.name,
-                                                 std::strerror(errno)));
+    throw Error(ExitCode::bad_input,
+                fmt::format("cannot open log file {} for participant '{}': {}",
+                            spec.log_file.string(), spec.name, std::strerror(errno)));
   // The child reports a failed exec through this pipe; a successful exec
   // closes it (O_CLOEXEC) and the parent reads nothing.
   int exec_report[2];
@@ -216,7 +216,8 @@ std::vector<ChildExit> Supervisor::stop_all(std::chrono::milliseconds grace) {
 
 std::string Supervisor::running_names() const {
   std::string names;
-  for (const auto& [pid, child] : children_) names += (names.empty() ? "'" : ", '") + child.name + "'";
+  for (const auto& [pid, child] : children_)
+    names += (names.empty() ? "'" : ", '") + child.name + "'";
   return names;
 }
 
@@ -274,9 +275,10 @@ std::filesystem::path resolve_executable(const std::string& name_or_path,
       rest.remove_prefix(colon + 1);
     }
   }
-  throw InputError(fmt::format("participant executable '{}' found neither next to cosim ({}) nor "
-                               "on PATH",
-                               name_or_path, self_directory().string()));
+  throw InputError(
+      fmt::format("participant executable '{}' found neither next to cosim ({}) nor "
+                  "on PATH",
+                  name_or_path, self_directory().string()));
 }
 
 }  // namespace cosim::runtime

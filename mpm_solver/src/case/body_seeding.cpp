@@ -23,7 +23,8 @@ template <int Dim>
 Vec<Dim> point(const Node& node) {
   const auto values = node.as<std::vector<double>>();
   if (values.size() != static_cast<std::size_t>(Dim))
-    node.fail(fmt::format("expected {} coordinates (dimension: {}), got {}", Dim, Dim, values.size()));
+    node.fail(
+        fmt::format("expected {} coordinates (dimension: {}), got {}", Dim, Dim, values.size()));
   Vec<Dim> x;
   for (int d = 0; d < Dim; ++d) x[d] = values[static_cast<std::size_t>(d)];
   return x;
@@ -90,8 +91,10 @@ GridGeometry<Dim> covering(GridGeometry<Dim> grid, const Box<Dim>& bounds) {
   for (int d = 0; d < Dim; ++d) {
     const auto i = static_cast<std::size_t>(d);
     const double upper = grid.origin[d] + grid.spacing[d] * grid.cells[i];
-    const int below = std::max(0, static_cast<int>(std::ceil((grid.origin[d] - bounds.lower[d]) / grid.spacing[d])));
-    const int above = std::max(0, static_cast<int>(std::ceil((bounds.upper[d] - upper) / grid.spacing[d])));
+    const int below = std::max(
+        0, static_cast<int>(std::ceil((grid.origin[d] - bounds.lower[d]) / grid.spacing[d])));
+    const int above =
+        std::max(0, static_cast<int>(std::ceil((bounds.upper[d] - upper) / grid.spacing[d])));
     grid.origin[d] -= below * grid.spacing[d];
     grid.cells[i] += below + above;
   }
@@ -155,9 +158,8 @@ SeededParticles<Dim> seed(const Node& geometry, const GridSpec& spec,
   }
   // Listed particles: as many as the file holds, counted once read.
   const Node points = geometry["points"];
-  SeededParticles<Dim> listed = located_at(points, [&] {
-    return read_particle_file<Dim>(points.as_path().string()).particles;
-  });
+  SeededParticles<Dim> listed = located_at(
+      points, [&] { return read_particle_file<Dim>(points.as_path().string()).particles; });
   before_seeding(static_cast<double>(listed.positions.size()));
   return listed;
 }
@@ -187,7 +189,8 @@ SeededBody seed_body(const Node& geometry, const GridSpec& grid,
 SeededBody seed_body(const Node& geometry, int dimension, const GridSpec& grid,
                      const std::array<int, 3>& particles_per_cell, Seeding seeding,
                      const BeforeSeeding& before_seeding) {
-  if (dimension == 2) return seed_body<2>(geometry, grid, particles_per_cell, seeding, before_seeding);
+  if (dimension == 2)
+    return seed_body<2>(geometry, grid, particles_per_cell, seeding, before_seeding);
   return seed_body<3>(geometry, grid, particles_per_cell, seeding, before_seeding);
 }
 

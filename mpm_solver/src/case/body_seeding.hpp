@@ -15,8 +15,8 @@ enum class Seeding { regular, r2 };
 
 struct SeededBody {
   std::vector<Vec3d> positions;
-  std::vector<double> volumes;       // [m^3], per unit depth in 2D [m^2]
-  std::vector<Vec3d> half_lengths;   // [m]
+  std::vector<double> volumes;      // [m^3], per unit depth in 2D [m^2]
+  std::vector<Vec3d> half_lengths;  // [m]
 };
 
 // Called with the particles a body is estimated to get (from its region's

@@ -15,13 +15,14 @@ namespace {
 
 constexpr std::size_t unlimited = std::numeric_limits<std::size_t>::max();
 
-Schema coordinates() { return Schema::vector(2, 3); }
+Schema coordinates() {
+  return Schema::vector(2, 3);
+}
 
 Schema grid_schema() {
   Schema grid = Schema::object("The uniform background grid.");
   grid.required("origin", coordinates().unit("m"), "Lower corner, one value per dimension.")
-      .optional("upper", coordinates().unit("m"),
-                "Upper corner; give either `upper` or `spacing`.")
+      .optional("upper", coordinates().unit("m"), "Upper corner; give either `upper` or `spacing`.")
       .optional("spacing", coordinates().unit("m"), "Cell size per direction.")
       .required("cells", Schema::vector(2, 3), "Cells per direction (whole numbers >= 1).");
   return grid;
@@ -56,14 +57,15 @@ Schema geometry_schema() {
   box.required("min", coordinates().unit("m"), "Lower corner.")
       .required("max", coordinates().unit("m"), "Upper corner.");
   Schema polyhedron = Schema::object("Closed triangulated surface (3D).");
-  polyhedron.required("vertices", Schema::sequence(Schema::vector(3, 3)).length(4, unlimited), "Vertex coordinates [m].")
+  polyhedron
+      .required("vertices", Schema::sequence(Schema::vector(3, 3)).length(4, unlimited),
+                "Vertex coordinates [m].")
       .required("triangles", Schema::sequence(Schema::vector(3, 3)).length(4, unlimited),
                 "Vertex indices (0-based) of each triangle, outward normals by the right-hand "
                 "rule.");
   Schema geometry = Schema::object("Where the body's particles are seeded; exactly one key.");
   geometry.optional("box", box, "Axis-aligned box.")
-      .optional("polygon",
-                Schema::sequence(Schema::vector(2, 2)).length(3, unlimited),
+      .optional("polygon", Schema::sequence(Schema::vector(2, 2)).length(3, unlimited),
                 "Simple polygon (2D): vertices [x, y] in order [m].")
       .optional("polyhedron", polyhedron, "Closed triangulated surface (3D).")
       .optional("points", Schema::path().must_exist(),
@@ -85,7 +87,8 @@ Schema porous_schema() {
       "Porous skeleton: the material density is the grain density, particle mass rho_s (1 - n0) "
       "V.");
   porous.required("porosity", Schema::number().range(0.0, 0.99), "Initial porosity n0.")
-      .optional("grain_size", Schema::number().positive().unit("m"), "D50 (needed by Kozeny-Carman).")
+      .optional("grain_size", Schema::number().positive().unit("m"),
+                "D50 (needed by Kozeny-Carman).")
       .optional("max_porosity", Schema::number().range(0.0, 1.0).default_value("0.99"),
                 "Cap of the porosity update (Pan et al. 2021, text after eq. 76).")
       .optional("permeability", permeability, "Permeability model.");
@@ -136,10 +139,11 @@ Schema contact_schema() {
   Schema pair = Schema::object("Friction of one pair of bodies.");
   pair.required("bodies", Schema::sequence(Schema::string()).length(2, 2), "Two body names.")
       .required("friction", Schema::number().non_negative(), "Coulomb coefficient.");
-  Schema contact = Schema::object(
-      "Grid contact between bodies (one velocity field per body, Bardenhagen).");
-  contact.optional("enabled", Schema::boolean().default_value("false"),
-                   "false: all bodies share one velocity field (no-slip).")
+  Schema contact =
+      Schema::object("Grid contact between bodies (one velocity field per body, Bardenhagen).");
+  contact
+      .optional("enabled", Schema::boolean().default_value("false"),
+                "false: all bodies share one velocity field (no-slip).")
       .optional("friction", Schema::number().non_negative().default_value("0"),
                 "Coulomb coefficient of every pair.")
       .optional("pairs", Schema::sequence(pair), "Per-pair coefficients.");

@@ -36,7 +36,8 @@ int velocity_fields(const Node& case_root) {
   bool contact = false;
   if (auto c = case_root.find("contact")) contact = c->get<bool>("enabled", false);
   int rigid = 0, deformable = 0;
-  for (const Node& body : case_root["bodies"].items()) (body.has("rigid") ? rigid : deformable) += 1;
+  for (const Node& body : case_root["bodies"].items())
+    (body.has("rigid") ? rigid : deformable) += 1;
   const int fields = rigid + (contact ? deformable : (deformable > 0 ? 1 : 0));
   return fields > 0 ? fields : 1;
 }

@@ -74,14 +74,14 @@ int index_of(const std::vector<std::string>& names, const Node& node, const char
   const auto name = node.as<std::string>();
   const auto it = std::find(names.begin(), names.end(), name);
   if (it == names.end())
-    node.fail(fmt::format("unknown {} '{}'; {}", what, name, cosim::config::suggestion(name, names)));
+    node.fail(
+        fmt::format("unknown {} '{}'; {}", what, name, cosim::config::suggestion(name, names)));
   return static_cast<int>(it - names.begin());
 }
 
 class CaseReader {
  public:
-  explicit CaseReader(const cosim::config::Document& document)
-      : root_(document.root()) {
+  explicit CaseReader(const cosim::config::Document& document) : root_(document.root()) {
     c_.file = document.path();
   }
 
@@ -93,18 +93,19 @@ class CaseReader {
     c_.dimension = dim_;
     read_grid(root_["grid"]);
     c_.shape = read_choice<ShapeKind>(root_, "shape",
-                           {{"linear", ShapeKind::linear},
-                            {"gimp", ShapeKind::gimp},
-                            {"quadratic_bspline", ShapeKind::quadratic_bspline}});
-    c_.scheme = read_choice<UpdateScheme>(root_, "scheme",
-                            {{"usl", UpdateScheme::usl}, {"musl", UpdateScheme::musl}});
+                                      {{"linear", ShapeKind::linear},
+                                       {"gimp", ShapeKind::gimp},
+                                       {"quadratic_bspline", ShapeKind::quadratic_bspline}});
+    c_.scheme = read_choice<UpdateScheme>(
+        root_, "scheme", {{"usl", UpdateScheme::usl}, {"musl", UpdateScheme::musl}});
     c_.flip_fraction = root_.get<double>("flip_fraction");
     c_.locking = read_choice<LockingMitigation>(root_, "locking",
-                             {{"none", LockingMitigation::none},
-                              {"bbar", LockingMitigation::bbar},
-                              {"fbar", LockingMitigation::fbar}});
-    c_.gimp_domain = read_choice<GimpDomain>(root_, "gimp_domain",
-                                 {{"initial", GimpDomain::initial}, {"deformed", GimpDomain::deformed}});
+                                                {{"none", LockingMitigation::none},
+                                                 {"bbar", LockingMitigation::bbar},
+                                                 {"fbar", LockingMitigation::fbar}});
+    c_.gimp_domain = read_choice<GimpDomain>(
+        root_, "gimp_domain",
+        {{"initial", GimpDomain::initial}, {"deformed", GimpDomain::deformed}});
     read_time(root_["time"]);
     if (auto g = root_.find("gravity")) c_.gravity = read_vector(*g, dim_);
     c_.gravity_ramp_time = root_.get<double>("gravity_ramp_time");
@@ -150,7 +151,8 @@ class CaseReader {
       for (int d = 0; d < dim_; ++d) {
         if (!(top[d] > c_.grid.origin[d]))
           upper->fail("upper must exceed origin in every direction");
-        c_.grid.spacing[d] = (top[d] - c_.grid.origin[d]) / c_.grid.cells[static_cast<std::size_t>(d)];
+        c_.grid.spacing[d] =
+            (top[d] - c_.grid.origin[d]) / c_.grid.cells[static_cast<std::size_t>(d)];
       }
     }
     if (dim_ == 2) {
@@ -217,9 +219,9 @@ class CaseReader {
 
     const Node ppc_node = node["particles_per_cell"];
     const std::array<int, 3> ppc = read_counts(ppc_node, dim_, "particles_per_cell");
-    const auto seeding = read_choice<case_loading::Seeding>(node, "seeding",
-                                     {{"regular", case_loading::Seeding::regular},
-                                      {"r2", case_loading::Seeding::r2}});
+    const auto seeding = read_choice<case_loading::Seeding>(
+        node, "seeding",
+        {{"regular", case_loading::Seeding::regular}, {"r2", case_loading::Seeding::r2}});
     const Node geometry = node["geometry"];
     if (geometry.size() != 1)
       geometry.fail("give exactly one of `box`, `polygon`, `polyhedron` and `points`");
@@ -258,9 +260,9 @@ class CaseReader {
   RigidMotion read_rigid(const Node& rigid) {
     RigidMotion motion;
     motion.kind = read_choice<RigidMotion::Kind>(rigid, "motion",
-                              {{"fixed", RigidMotion::Kind::fixed},
-                               {"prescribed", RigidMotion::Kind::prescribed},
-                               {"free", RigidMotion::Kind::free}});
+                                                 {{"fixed", RigidMotion::Kind::fixed},
+                                                  {"prescribed", RigidMotion::Kind::prescribed},
+                                                  {"free", RigidMotion::Kind::free}});
     const auto history = rigid.find("velocity_history");
     if (motion.kind == RigidMotion::Kind::prescribed) {
       if (!history) rigid.fail("motion: prescribed needs a `velocity_history`");
@@ -280,11 +282,11 @@ class CaseReader {
       porous["porosity"].fail(
           fmt::format("porosity {} exceeds max_porosity {}", p.porosity, p.max_porosity));
     if (auto permeability = porous.find("permeability")) {
-      p.permeability_model =
-          read_choice<PermeabilityModel>(*permeability, "model",
-                      {{"kozeny_carman_pan", PermeabilityModel::kozeny_carman_pan},
-                       {"kozeny_carman_tran", PermeabilityModel::kozeny_carman_tran},
-                       {"constant", PermeabilityModel::constant}});
+      p.permeability_model = read_choice<PermeabilityModel>(
+          *permeability, "model",
+          {{"kozeny_carman_pan", PermeabilityModel::kozeny_carman_pan},
+           {"kozeny_carman_tran", PermeabilityModel::kozeny_carman_tran},
+           {"constant", PermeabilityModel::constant}});
       const auto value = permeability->find("value");
       if (p.permeability_model == PermeabilityModel::constant) {
         if (!value) permeability->fail("model: constant needs a `value` [m^2]");
@@ -307,8 +309,7 @@ class CaseReader {
         const int a = index_of(body_names_, bodies[0], "body");
         const int b = index_of(body_names_, bodies[1], "body");
         if (a == b) pair["bodies"].fail("a contact pair needs two different bodies");
-        c_.contact.pair_friction[{std::min(a, b), std::max(a, b)}] =
-            pair["friction"].as<double>();
+        c_.contact.pair_friction[{std::min(a, b), std::max(a, b)}] = pair["friction"].as<double>();
       }
     }
   }
@@ -386,8 +387,7 @@ class CaseReader {
       if (inside) load.particles.push_back(p);
     }
     if (load.particles.empty())
-      region.fail(fmt::format("load '{}' selects no particle of body '{}'", load.name,
-                              spec.name));
+      region.fail(fmt::format("load '{}' selects no particle of body '{}'", load.name, spec.name));
     load.face = face_index(node.get<std::string>("face"));
     if (dim_ == 2 && load.face >= 4) node["face"].fail("a 2D case has no z faces");
     const auto traction = node.find("traction");
@@ -397,7 +397,8 @@ class CaseReader {
     if (traction) load.traction = read_vector(*traction, dim_);
     if (pressure) load.pressure = pressure->as<double>();
     load.ramp_time = node.get<double>("ramp_time");
-    if (node.get<std::string>("ramp_shape") == "cycloidal") load.ramp_shape = LoadSpec::RampShape::cycloidal;
+    if (node.get<std::string>("ramp_shape") == "cycloidal")
+      load.ramp_shape = LoadSpec::RampShape::cycloidal;
     c_.loads.push_back(std::move(load));
   }
 
@@ -443,9 +444,10 @@ class CaseReader {
       const auto k = static_cast<std::size_t>(d);
       per_cell *= ppc[k];
       if (refined && static_cast<double>(ppc[k]) * c_.grid.cells[k] > most)
-        node.fail(fmt::format("{} particles per cell along {} grid cells make more seeding cells "
-                              "than its counters hold ({})",
-                              ppc[k], c_.grid.cells[k], cosim::grouped(most)));
+        node.fail(
+            fmt::format("{} particles per cell along {} grid cells make more seeding cells "
+                        "than its counters hold ({})",
+                        ppc[k], c_.grid.cells[k], cosim::grouped(most)));
     }
     if (per_cell > most)
       node.fail(fmt::format("{} particles per cell, more than the seeding's counters hold ({})",

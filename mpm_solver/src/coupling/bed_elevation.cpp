@@ -24,15 +24,20 @@ std::vector<Plateau> visible_plateaus(const std::vector<Plateau>& plateaus, doub
   for (const Plateau& p : plateaus) narrowest = std::min(narrowest, p.to - p.from);
   const double width = 0.5 * narrowest;
   const double bins_wanted = (x1 - x0) / width;
-  if (!(width > 0.0) || bins_wanted > 4.0 * static_cast<double>(plateaus.size()) + 1024.0) return plateaus;
+  if (!(width > 0.0) || bins_wanted > 4.0 * static_cast<double>(plateaus.size()) + 1024.0)
+    return plateaus;
   const int bins = static_cast<int>(std::ceil(bins_wanted));
-  auto bin_of = [&](double x) { return std::clamp(static_cast<int>(std::floor((x - x0) / width)), 0, bins - 1); };
-  std::vector<double> covered_to(static_cast<std::size_t>(bins), -std::numeric_limits<double>::infinity());
+  auto bin_of = [&](double x) {
+    return std::clamp(static_cast<int>(std::floor((x - x0) / width)), 0, bins - 1);
+  };
+  std::vector<double> covered_to(static_cast<std::size_t>(bins),
+                                 -std::numeric_limits<double>::infinity());
   for (const Plateau& p : plateaus) {
     const int first = static_cast<int>(std::ceil((p.from - x0) / width));  // bins inside [from, to]
     const int last = static_cast<int>(std::floor((p.to - x0) / width)) - 1;
     for (int b = std::max(first, 0); b <= std::min(last, bins - 1); ++b)
-      covered_to[static_cast<std::size_t>(b)] = std::max(covered_to[static_cast<std::size_t>(b)], p.height);
+      covered_to[static_cast<std::size_t>(b)] =
+          std::max(covered_to[static_cast<std::size_t>(b)], p.height);
   }
   std::vector<Plateau> visible;
   for (const Plateau& p : plateaus) {
@@ -105,8 +110,8 @@ std::vector<double> bed_elevation(const SurfaceGrid<Dim>& surface, const Particl
     std::vector<Plateau> plateaus;
     for (std::size_t p = 0; p < particles.size(); ++p)
       if (roles[particles.body[p]].bed) plateaus.push_back(plateau_of(p));
-    add_envelope_averages(plateaus, surface.origin[0], surface.spacing[0], surface.cells[0], surface.bottom, 1.0,
-                          bed.data());
+    add_envelope_averages(plateaus, surface.origin[0], surface.spacing[0], surface.cells[0],
+                          surface.bottom, 1.0, bed.data());
   } else {
     // Lines across y at the centres of `strips` equal strips of every row of cells.
     const int rows = surface.cells[1];
@@ -121,12 +126,13 @@ std::vector<double> bed_elevation(const SurfaceGrid<Dim>& surface, const Particl
       const double s1 = (y + ly - surface.origin[1]) / dy - 0.5;
       const int first = std::max(0, static_cast<int>(std::ceil(s0)));
       const int last = std::min(lines - 1, static_cast<int>(std::floor(s1)));
-      for (int k = first; k <= last; ++k) on_line[static_cast<std::size_t>(k)].push_back(plateau_of(p));
+      for (int k = first; k <= last; ++k)
+        on_line[static_cast<std::size_t>(k)].push_back(plateau_of(p));
     }
     const auto nx = static_cast<std::size_t>(surface.cells[0]);
     for (int k = 0; k < lines; ++k)
-      add_envelope_averages(on_line[static_cast<std::size_t>(k)], surface.origin[0], surface.spacing[0],
-                            surface.cells[0], surface.bottom, 1.0 / strips,
+      add_envelope_averages(on_line[static_cast<std::size_t>(k)], surface.origin[0],
+                            surface.spacing[0], surface.cells[0], surface.bottom, 1.0 / strips,
                             bed.data() + static_cast<std::size_t>(k / strips) * nx);
   }
   return bed;

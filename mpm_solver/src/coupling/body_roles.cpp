@@ -44,7 +44,9 @@ std::vector<std::uint8_t> held_particles(const Particles<Dim>& particles, const 
                                          const std::vector<BodyRole>& roles,
                                          const FaceConditions& faces, bool at_fixed_faces) {
   std::vector<std::uint8_t> held(particles.size(), 0);
-  auto fixed = [&](int face) { return faces[static_cast<std::size_t>(face)].kind == FaceCondition::Kind::fixed; };
+  auto fixed = [&](int face) {
+    return faces[static_cast<std::size_t>(face)].kind == FaceCondition::Kind::fixed;
+  };
   for (std::size_t p = 0; p < particles.size(); ++p) {
     if (roles[particles.body[p]].held) {
       held[p] = 1;
@@ -54,7 +56,8 @@ std::vector<std::uint8_t> held_particles(const Particles<Dim>& particles, const 
     const auto cell = grid.cell_of(particles.position[p]);
     for (int d = 0; d < Dim; ++d) {
       const int i = cell[static_cast<std::size_t>(d)];
-      if ((i == 0 && fixed(2 * d)) || (i == grid.cells[static_cast<std::size_t>(d)] - 1 && fixed(2 * d + 1)))
+      if ((i == 0 && fixed(2 * d)) ||
+          (i == grid.cells[static_cast<std::size_t>(d)] - 1 && fixed(2 * d + 1)))
         held[p] = 1;
     }
   }
@@ -62,8 +65,10 @@ std::vector<std::uint8_t> held_particles(const Particles<Dim>& particles, const 
 }
 
 template std::vector<std::uint8_t> held_particles<2>(const Particles<2>&, const Grid<2>&,
-                                                     const std::vector<BodyRole>&, const FaceConditions&, bool);
+                                                     const std::vector<BodyRole>&,
+                                                     const FaceConditions&, bool);
 template std::vector<std::uint8_t> held_particles<3>(const Particles<3>&, const Grid<3>&,
-                                                     const std::vector<BodyRole>&, const FaceConditions&, bool);
+                                                     const std::vector<BodyRole>&,
+                                                     const FaceConditions&, bool);
 
 }  // namespace mpm::coupling

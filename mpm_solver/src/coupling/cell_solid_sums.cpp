@@ -32,7 +32,8 @@ void CellSolidSums::move(std::size_t from, std::size_t to, double fraction) {
     v[i] -= amount;
     v[j] += amount;
   };
-  for (auto* v : {&domain, &solid_volume, &mass, &porous_mass, &permeability_mass, &grain_size_mass})
+  for (auto* v :
+       {&domain, &solid_volume, &mass, &porous_mass, &permeability_mass, &grain_size_mass})
     shift(*v, from, to);
   for (std::size_t k = 0; k < dim_; ++k) {
     shift(momentum, from * dim_ + k, to * dim_ + k);
@@ -45,9 +46,7 @@ std::size_t spread_overfilled_cells(const ExchangeGrid<Dim>& grid, CellSolidSums
                                     const CellSolidSums& held) {
   const std::size_t cells = grid.size();
   const double cell_volume = grid.cell_volume();
-  auto room = [&](std::size_t c) {
-    return cell_volume - free.domain[c] - held.domain[c];
-  };
+  auto room = [&](std::size_t c) { return cell_volume - free.domain[c] - held.domain[c]; };
   std::size_t overfilled = 0;
   for (std::size_t c = 0; c < cells; ++c)
     if (free.domain[c] > 0.0 && room(c) < -overfill_tolerance * cell_volume) ++overfilled;
@@ -61,8 +60,7 @@ std::size_t spread_overfilled_cells(const ExchangeGrid<Dim>& grid, CellSolidSums
       // as a cell starts to overfill or a neighbour to be reached, so the
       // fields stay continuous in time (a compressible pore fluid turns a
       // jump of phi_s into one of pressure).
-      const double excess =
-          std::min(free.domain[c], -room(c) - overfill_tolerance * cell_volume);
+      const double excess = std::min(free.domain[c], -room(c) - overfill_tolerance * cell_volume);
       if (!(free.domain[c] > 0.0) || excess <= 0.0) continue;
       std::array<std::size_t, 2 * Dim> neighbour{};
       std::array<double, 2 * Dim> capacity{};
@@ -94,7 +92,9 @@ std::size_t spread_overfilled_cells(const ExchangeGrid<Dim>& grid, CellSolidSums
   return overfilled;
 }
 
-template std::size_t spread_overfilled_cells<2>(const ExchangeGrid<2>&, CellSolidSums&, const CellSolidSums&);
-template std::size_t spread_overfilled_cells<3>(const ExchangeGrid<3>&, CellSolidSums&, const CellSolidSums&);
+template std::size_t spread_overfilled_cells<2>(const ExchangeGrid<2>&, CellSolidSums&,
+                                                const CellSolidSums&);
+template std::size_t spread_overfilled_cells<3>(const ExchangeGrid<3>&, CellSolidSums&,
+                                                const CellSolidSums&);
 
 }  // namespace mpm::coupling

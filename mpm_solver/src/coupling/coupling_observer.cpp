@@ -24,7 +24,8 @@ CouplingSpec coupling_spec_of(const CaseDescription& description) {
 }  // namespace
 
 template <int Dim>
-CouplingObserver<Dim>::CouplingObserver(cosim::CouplingEndpoint endpoint, std::string name, CouplingSpec spec)
+CouplingObserver<Dim>::CouplingObserver(cosim::CouplingEndpoint endpoint, std::string name,
+                                        CouplingSpec spec)
     : endpoint_(std::move(endpoint)), name_(std::move(name)), spec_(std::move(spec)) {}
 
 template <int Dim>
@@ -83,12 +84,15 @@ nlohmann::json CouplingObserver<Dim>::summary() const {
           {"heat_absorbed", d.heat_total.absorbed}};
 }
 
-StepObservers coupling_observers(const cosim::CouplingEndpoint& endpoint, const std::string& default_name) {
+StepObservers coupling_observers(const cosim::CouplingEndpoint& endpoint,
+                                 const std::string& default_name) {
   StepObservers observers;
-  observers.for_2d = [endpoint, default_name](const CaseDescription& d) -> std::unique_ptr<StepObserver<2>> {
+  observers.for_2d = [endpoint,
+                      default_name](const CaseDescription& d) -> std::unique_ptr<StepObserver<2>> {
     return std::make_unique<CouplingObserver<2>>(endpoint, default_name, coupling_spec_of(d));
   };
-  observers.for_3d = [endpoint, default_name](const CaseDescription& d) -> std::unique_ptr<StepObserver<3>> {
+  observers.for_3d = [endpoint,
+                      default_name](const CaseDescription& d) -> std::unique_ptr<StepObserver<3>> {
     return std::make_unique<CouplingObserver<3>>(endpoint, default_name, coupling_spec_of(d));
   };
   return observers;

@@ -32,22 +32,23 @@ Schema exchange_grid_schema() {
                             names::permeability, names::grain_size, names::solid_volume_flux,
                             names::solid_temperature, names::solid_heat_capacity})
                     .default_note("[solid_fraction, solid_velocity, solid_bulk_density, "
-                                   "permeability, grain_size], and solid_temperature, "
-                                   "solid_heat_capacity when the case conducts heat"),
+                                  "permeability, grain_size], and solid_temperature, "
+                                  "solid_heat_capacity when the case conducts heat"),
                 "Fields written per cell at every window end; the thermal ones need heat "
                 "conduction. solid_volume_flux (sum of phi_i U_i) is for fluids that take the "
                 "solids' displaced volume from it.")
-      .optional("reads",
-                field_list({names::pore_pressure, names::pore_pressure_force, names::impulse,
-                            names::heat})
-                    .default_note("[pore_pressure, momentum_exchange_impulse], and "
-                                   "heat_exchange_energy when the case conducts heat"),
-                "Fields read; the job must send each of them (a thermal soil coupled without an "
-                "energy exchange lists its reads). With pore_pressure_force the solid takes the "
-                "fluid solver's pressure force per cell (split by solid volume) instead of -phi_s grad p "
-                "from pore_pressure, which then only sets the points' pore pressure. "
-                "heat_exchange_energy needs heat conduction and is shared over the particles by "
-                "heat capacity.")
+      .optional(
+          "reads",
+          field_list(
+              {names::pore_pressure, names::pore_pressure_force, names::impulse, names::heat})
+              .default_note("[pore_pressure, momentum_exchange_impulse], and "
+                            "heat_exchange_energy when the case conducts heat"),
+          "Fields read; the job must send each of them (a thermal soil coupled without an "
+          "energy exchange lists its reads). With pore_pressure_force the solid takes the "
+          "fluid solver's pressure force per cell (split by solid volume) instead of -phi_s grad p "
+          "from pore_pressure, which then only sets the points' pore pressure. "
+          "heat_exchange_energy needs heat conduction and is shared over the particles by "
+          "heat capacity.")
       .optional("held_density_factor", Schema::number().range(1.0, 1e100).default_value("1e30"),
                 "Factor on solid_bulk_density in cells whose solid cannot take the exchange "
                 "impulse (rigid bodies, held bodies, fixed faces).")
@@ -76,7 +77,8 @@ Schema surface_schema() {
   return s;
 }
 
-std::vector<std::string> strings_or(const Node& n, const char* key, std::vector<std::string> fallback) {
+std::vector<std::string> strings_or(const Node& n, const char* key,
+                                    std::vector<std::string> fallback) {
   auto child = n.find(key);
   return child ? child->as<std::vector<std::string>>() : fallback;
 }
@@ -95,10 +97,18 @@ void refuse_thermal_fields(const Node& exchange_grid, const char* key) {
 
 }  // namespace
 
-bool ExchangeGridSpec::writes_field(const std::string& f) const { return contains(writes, f); }
-bool ExchangeGridSpec::reads_field(const std::string& f) const { return contains(reads, f); }
-bool SurfaceSpec::writes_field(const std::string& f) const { return contains(writes, f); }
-bool SurfaceSpec::reads_field(const std::string& f) const { return contains(reads, f); }
+bool ExchangeGridSpec::writes_field(const std::string& f) const {
+  return contains(writes, f);
+}
+bool ExchangeGridSpec::reads_field(const std::string& f) const {
+  return contains(reads, f);
+}
+bool SurfaceSpec::writes_field(const std::string& f) const {
+  return contains(writes, f);
+}
+bool SurfaceSpec::reads_field(const std::string& f) const {
+  return contains(reads, f);
+}
 
 Schema coupling_schema() {
   Schema s = Schema::object(

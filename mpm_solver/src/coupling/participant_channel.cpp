@@ -18,7 +18,8 @@ void ParticipantChannel::write(std::string_view field, std::span<const double> v
 void ParticipantChannel::read(std::string_view field, std::span<double> values) {
   participant_.read(field, values);
 }
-void ParticipantChannel::read_increment(std::string_view field, double dt, std::span<double> values) {
+void ParticipantChannel::read_increment(std::string_view field, double dt,
+                                        std::span<double> values) {
   participant_.read_increment(field, dt, values);
 }
 double ParticipantChannel::max_time_step() const {

@@ -16,8 +16,8 @@ constexpr double max_free_fraction_of_held_cell = 0.1;
 
 template <int Dim>
 PorousFields porous_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& particles,
-                           const std::vector<BodyRole>& roles, const std::vector<std::uint8_t>& held,
-                           double held_density_factor) {
+                           const std::vector<BodyRole>& roles,
+                           const std::vector<std::uint8_t>& held, double held_density_factor) {
   const std::size_t n = grid.size();
   const auto dim = static_cast<std::size_t>(Dim);
   CellSolidSums free(n, Dim), held_sums(n, Dim);
@@ -27,20 +27,21 @@ PorousFields porous_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& 
     const double solid_volume = (1.0 - particles.porosity[p]) * particles.volume[p];
     const bool porous = roles[particles.body[p]].porous;
     const Vec<Dim>& v = particles.velocity[p];
-    grid.for_each_conservative(particles.position[p], particles.half_length[p], [&](std::size_t c, double w) {
-      sums.domain[c] += w * particles.volume[p];
-      sums.solid_volume[c] += w * solid_volume;
-      sums.mass[c] += w * m;
-      for (std::size_t k = 0; k < dim; ++k) {
-        sums.momentum[c * dim + k] += w * m * v[static_cast<int>(k)];
-        sums.volume_momentum[c * dim + k] += w * solid_volume * v[static_cast<int>(k)];
-      }
-      if (porous) {
-        sums.porous_mass[c] += w * m;
-        sums.permeability_mass[c] += w * m * particles.permeability[p];
-        sums.grain_size_mass[c] += w * m * particles.grain_size[p];
-      }
-    });
+    grid.for_each_conservative(
+        particles.position[p], particles.half_length[p], [&](std::size_t c, double w) {
+          sums.domain[c] += w * particles.volume[p];
+          sums.solid_volume[c] += w * solid_volume;
+          sums.mass[c] += w * m;
+          for (std::size_t k = 0; k < dim; ++k) {
+            sums.momentum[c * dim + k] += w * m * v[static_cast<int>(k)];
+            sums.volume_momentum[c * dim + k] += w * solid_volume * v[static_cast<int>(k)];
+          }
+          if (porous) {
+            sums.porous_mass[c] += w * m;
+            sums.permeability_mass[c] += w * m * particles.permeability[p];
+            sums.grain_size_mass[c] += w * m * particles.grain_size[p];
+          }
+        });
   }
   PorousFields out;
   out.overfilled_cells = spread_overfilled_cells(grid, free, held_sums);
@@ -68,7 +69,8 @@ PorousFields porous_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& 
     }
     const double porous_mass = free.porous_mass[c] + held_sums.porous_mass[c];
     if (porous_mass > 0.0) {
-      out.permeability[c] = (free.permeability_mass[c] + held_sums.permeability_mass[c]) / porous_mass;
+      out.permeability[c] =
+          (free.permeability_mass[c] + held_sums.permeability_mass[c]) / porous_mass;
       out.grain_size[c] = (free.grain_size_mass[c] + held_sums.grain_size_mass[c]) / porous_mass;
     }
     double& phi = out.solid_fraction[c];
@@ -113,9 +115,11 @@ PorousFields porous_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& 
   return out;
 }
 
-template PorousFields porous_fields<2>(const ExchangeGrid<2>&, const Particles<2>&, const std::vector<BodyRole>&,
+template PorousFields porous_fields<2>(const ExchangeGrid<2>&, const Particles<2>&,
+                                       const std::vector<BodyRole>&,
                                        const std::vector<std::uint8_t>&, double);
-template PorousFields porous_fields<3>(const ExchangeGrid<3>&, const Particles<3>&, const std::vector<BodyRole>&,
+template PorousFields porous_fields<3>(const ExchangeGrid<3>&, const Particles<3>&,
+                                       const std::vector<BodyRole>&,
                                        const std::vector<std::uint8_t>&, double);
 
 }  // namespace mpm::coupling

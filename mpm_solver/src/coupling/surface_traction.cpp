@@ -6,8 +6,10 @@
 namespace mpm::coupling {
 
 template <int Dim>
-TractionTotals<Dim> surface_traction(const SurfaceGrid<Dim>& surface, std::span<const double> traction,
-                                     const Particles<Dim>& particles, const std::vector<BodyRole>& roles,
+TractionTotals<Dim> surface_traction(const SurfaceGrid<Dim>& surface,
+                                     std::span<const double> traction,
+                                     const Particles<Dim>& particles,
+                                     const std::vector<BodyRole>& roles,
                                      std::vector<Vec<Dim>>& force) {
   constexpr int up = Dim - 1;
   const std::size_t columns = surface.size();
@@ -16,7 +18,9 @@ TractionTotals<Dim> surface_traction(const SurfaceGrid<Dim>& surface, std::span<
     const BodyRole& role = roles[particles.body[p]];
     return role.bed && !role.rigid;
   };
-  auto top = [&](std::size_t p) { return particles.position[p][up] + particles.half_length[p][up]; };
+  auto top = [&](std::size_t p) {
+    return particles.position[p][up] + particles.half_length[p][up];
+  };
 
   std::vector<double> highest(columns, -std::numeric_limits<double>::infinity());
   std::vector<std::size_t> column(particles.size());
@@ -27,9 +31,12 @@ TractionTotals<Dim> surface_traction(const SurfaceGrid<Dim>& surface, std::span<
   }
   auto on_surface = [&](std::size_t p) {
     // Strictly less than one particle height below, so a regular layer under the top one is out.
-    return takes_traction(p) && highest[column[p]] - top(p) < 2.0 * particles.half_length[p][up] * (1.0 - 1e-9);
+    return takes_traction(p) &&
+           highest[column[p]] - top(p) < 2.0 * particles.half_length[p][up] * (1.0 - 1e-9);
   };
-  auto face_area = [&](std::size_t p) { return particles.initial_volume[p] / (2.0 * particles.half_length[p][up]); };
+  auto face_area = [&](std::size_t p) {
+    return particles.initial_volume[p] / (2.0 * particles.half_length[p][up]);
+  };
 
   std::vector<double> area(columns, 0.0);
   TractionTotals<Dim> totals;
@@ -58,9 +65,11 @@ TractionTotals<Dim> surface_traction(const SurfaceGrid<Dim>& surface, std::span<
   return totals;
 }
 
-template TractionTotals<2> surface_traction<2>(const SurfaceGrid<2>&, std::span<const double>, const Particles<2>&,
-                                               const std::vector<BodyRole>&, std::vector<Vec<2>>&);
-template TractionTotals<3> surface_traction<3>(const SurfaceGrid<3>&, std::span<const double>, const Particles<3>&,
-                                               const std::vector<BodyRole>&, std::vector<Vec<3>>&);
+template TractionTotals<2> surface_traction<2>(const SurfaceGrid<2>&, std::span<const double>,
+                                               const Particles<2>&, const std::vector<BodyRole>&,
+                                               std::vector<Vec<2>>&);
+template TractionTotals<3> surface_traction<3>(const SurfaceGrid<3>&, std::span<const double>,
+                                               const Particles<3>&, const std::vector<BodyRole>&,
+                                               std::vector<Vec<3>>&);
 
 }  // namespace mpm::coupling

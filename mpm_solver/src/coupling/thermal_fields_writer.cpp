@@ -13,10 +13,11 @@ ThermalFields thermal_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>
     const double CT = C * particles.temperature[p];
     total_capacity += C;
     total_energy += CT;
-    grid.for_each_conservative(particles.position[p], particles.half_length[p], [&](std::size_t c, double w) {
-      capacity[c] += w * C;
-      energy[c] += w * CT;
-    });
+    grid.for_each_conservative(particles.position[p], particles.half_length[p],
+                               [&](std::size_t c, double w) {
+                                 capacity[c] += w * C;
+                                 energy[c] += w * CT;
+                               });
   }
   const double solid_mean = total_capacity > 0.0 ? total_energy / total_capacity : 0.0;
   ThermalFields out;

@@ -10,7 +10,8 @@ namespace mpm {
 
 Polygon::Polygon(std::vector<Vec<2>> vertices) : vertices_(std::move(vertices)) {
   if (vertices_.size() < 3)
-    throw cosim::InputError("polygon needs at least 3 vertices, got " + std::to_string(vertices_.size()));
+    throw cosim::InputError("polygon needs at least 3 vertices, got " +
+                            std::to_string(vertices_.size()));
   bounds_.lower = bounds_.upper = vertices_.front();
   for (const Vec<2>& v : vertices_) {
     if (!v.allFinite()) throw cosim::InputError("polygon vertex is not finite");

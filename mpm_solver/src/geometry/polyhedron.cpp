@@ -23,7 +23,8 @@ Polyhedron::Polyhedron(std::vector<Vec<3>> vertices, std::vector<std::array<int,
   }
   // Closed and consistently oriented: each edge a -> b of a triangle is
   // matched by b -> a of another.
-  std::map<std::pair<int, int>, int> edge_balance;  // (min, max) -> count(min->max) - count(max->min)
+  std::map<std::pair<int, int>, int>
+      edge_balance;  // (min, max) -> count(min->max) - count(max->min)
   const int n = static_cast<int>(vertices_.size());
   for (std::size_t t = 0; t < triangles_.size(); ++t) {
     const auto& tri = triangles_[t];
@@ -41,8 +42,9 @@ Polyhedron::Polyhedron(std::vector<Vec<3>> vertices, std::vector<std::array<int,
   }
   for (const auto& [edge, balance] : edge_balance) {
     if (balance != 0)
-      throw cosim::InputError("polyhedron surface is not closed and consistently oriented at edge (" +
-                              std::to_string(edge.first) + ", " + std::to_string(edge.second) + ")");
+      throw cosim::InputError(
+          "polyhedron surface is not closed and consistently oriented at edge (" +
+          std::to_string(edge.first) + ", " + std::to_string(edge.second) + ")");
   }
   if (!(volume() > 0.0)) throw cosim::InputError("polyhedron encloses no volume");
 
@@ -51,7 +53,8 @@ Polyhedron::Polyhedron(std::vector<Vec<3>> vertices, std::vector<std::array<int,
       std::clamp(static_cast<int>(std::sqrt(static_cast<double>(triangles_.size()))), 1, 256);
   bins_y_ = bounds_.upper.y() > bounds_.lower.y() ? per_direction : 1;
   bins_z_ = bounds_.upper.z() > bounds_.lower.z() ? per_direction : 1;
-  const std::size_t bin_count = static_cast<std::size_t>(bins_y_) * static_cast<std::size_t>(bins_z_);
+  const std::size_t bin_count =
+      static_cast<std::size_t>(bins_y_) * static_cast<std::size_t>(bins_z_);
   std::vector<std::array<int, 4>> ranges(triangles_.size());  // y0, y1, z0, z1
   std::vector<int> count(bin_count, 0);
   for (std::size_t t = 0; t < triangles_.size(); ++t) {
@@ -62,7 +65,8 @@ Polyhedron::Polyhedron(std::vector<Vec<3>> vertices, std::vector<std::array<int,
     ranges[t] = {bin_y(std::min({a.y(), b.y(), c.y()})), bin_y(std::max({a.y(), b.y(), c.y()})),
                  bin_z(std::min({a.z(), b.z(), c.z()})), bin_z(std::max({a.z(), b.z(), c.z()}))};
     for (int j = ranges[t][2]; j <= ranges[t][3]; ++j)
-      for (int i = ranges[t][0]; i <= ranges[t][1]; ++i) ++count[static_cast<std::size_t>(j * bins_y_ + i)];
+      for (int i = ranges[t][0]; i <= ranges[t][1]; ++i)
+        ++count[static_cast<std::size_t>(j * bins_y_ + i)];
   }
   bin_start_.assign(bin_count + 1, 0);
   for (std::size_t b = 0; b < bin_count; ++b) bin_start_[b + 1] = bin_start_[b] + count[b];
@@ -71,8 +75,8 @@ Polyhedron::Polyhedron(std::vector<Vec<3>> vertices, std::vector<std::array<int,
   for (std::size_t t = 0; t < triangles_.size(); ++t)
     for (int j = ranges[t][2]; j <= ranges[t][3]; ++j)
       for (int i = ranges[t][0]; i <= ranges[t][1]; ++i)
-        bin_triangles_[static_cast<std::size_t>(fill[static_cast<std::size_t>(j * bins_y_ + i)]++)] =
-            static_cast<int>(t);
+        bin_triangles_[static_cast<std::size_t>(
+            fill[static_cast<std::size_t>(j * bins_y_ + i)]++)] = static_cast<int>(t);
 }
 
 int Polyhedron::bin_y(double y) const {
@@ -88,11 +92,13 @@ int Polyhedron::bin_z(double z) const {
 }
 
 bool Polyhedron::contains(const Vec<3>& x) const {
-  if ((x.array() < bounds_.lower.array()).any() || (x.array() > bounds_.upper.array()).any()) return false;
+  if ((x.array() < bounds_.lower.array()).any() || (x.array() > bounds_.upper.array()).any())
+    return false;
   const std::size_t bin = static_cast<std::size_t>(bin_z(x.z()) * bins_y_ + bin_y(x.y()));
   bool inside = false;
   for (int k = bin_start_[bin]; k < bin_start_[bin + 1]; ++k) {
-    const auto& tri = triangles_[static_cast<std::size_t>(bin_triangles_[static_cast<std::size_t>(k)])];
+    const auto& tri =
+        triangles_[static_cast<std::size_t>(bin_triangles_[static_cast<std::size_t>(k)])];
     const Vec<3>& a = vertices_[static_cast<std::size_t>(tri[0])];
     const Vec<3>& b = vertices_[static_cast<std::size_t>(tri[1])];
     const Vec<3>& c = vertices_[static_cast<std::size_t>(tri[2])];
@@ -107,7 +113,8 @@ bool Polyhedron::contains(const Vec<3>& x) const {
     // Where the ray meets the triangle's plane n . (q - a) = 0.
     const Vec<3> normal = (b - a).cross(c - a);
     if (normal.x() == 0.0) continue;  // parallel to the ray (zero projected area)
-    const double hit = a.x() - (normal.y() * (x.y() - a.y()) + normal.z() * (x.z() - a.z())) / normal.x();
+    const double hit =
+        a.x() - (normal.y() * (x.y() - a.y()) + normal.z() * (x.z() - a.z())) / normal.x();
     if (hit > x.x()) inside = !inside;
   }
   return inside;

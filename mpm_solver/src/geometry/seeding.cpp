@@ -10,7 +10,8 @@ namespace mpm {
 
 template <int Dim>
 int points_per_cell(const SeedingPattern& pattern) {
-  if (pattern.kind == SeedingPattern::Kind::quasi_random && pattern.per_cell > 0) return pattern.per_cell;
+  if (pattern.kind == SeedingPattern::Kind::quasi_random && pattern.per_cell > 0)
+    return pattern.per_cell;
   if (pattern.per_direction < 1)
     throw cosim::InputError("particles per direction must be at least 1, got " +
                             std::to_string(pattern.per_direction));
@@ -65,8 +66,9 @@ std::vector<Vec<Dim>> cell_pattern(const SeedingPattern& pattern) {
 }
 
 template <int Dim>
-SeededParticles<Dim> seed_cells(const std::function<bool(const Vec<Dim>&)>& inside, const Box<Dim>& bounds,
-                                const GridGeometry<Dim>& grid, const SeedingPattern& pattern) {
+SeededParticles<Dim> seed_cells(const std::function<bool(const Vec<Dim>&)>& inside,
+                                const Box<Dim>& bounds, const GridGeometry<Dim>& grid,
+                                const SeedingPattern& pattern) {
   for (int d = 0; d < Dim; ++d) {
     if (grid.cells[d] < 1 || !(grid.spacing[d] > 0.0))
       throw cosim::InputError("seeding needs a grid with cells and a positive spacing");

@@ -1,9 +1,9 @@
 #include "mpm/grid/grid.hpp"
 
-#include "mpm/shape/shape_dispatch.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "mpm/shape/shape_dispatch.hpp"
 
 namespace mpm {
 namespace {
@@ -15,7 +15,8 @@ int dofs_per_direction(ShapeKind shape, int cells) {
 }
 
 double dof_coordinate(ShapeKind shape, int i, int cells) {
-  return with_kernel<1>(shape, [&](auto kernel) { return decltype(kernel)::dof_coordinate(i, cells); });
+  return with_kernel<1>(shape,
+                        [&](auto kernel) { return decltype(kernel)::dof_coordinate(i, cells); });
 }
 
 }  // namespace

@@ -11,8 +11,8 @@ namespace {
 template <int Dim>
 cosim::Mesh node_grid(const Grid<Dim>& grid) {
   if (!GridSnapshotWriter<Dim>::supports(grid.shape))
-    throw cosim::InputError(fmt::format("grid snapshots are not available for the {} shape",
-                                        to_string(grid.shape)));
+    throw cosim::InputError(
+        fmt::format("grid snapshots are not available for the {} shape", to_string(grid.shape)));
   cosim::UniformGrid g;
   g.dim = Dim;
   g.location = cosim::GridLocation::node;
@@ -36,8 +36,9 @@ template <int Dim>
 void GridSnapshotWriter<Dim>::write(double time, const Grid<Dim>& grid) {
   const std::size_t n = grid.size();
   if (n != writer_.mesh().size())
-    throw cosim::Error(cosim::ExitCode::internal_error,
-                       fmt::format("grid has {} values, the node mesh {}", n, writer_.mesh().size()));
+    throw cosim::Error(
+        cosim::ExitCode::internal_error,
+        fmt::format("grid has {} values, the node mesh {}", n, writer_.mesh().size()));
   mass_.assign(n, 0.0);
   velocity_.assign(n * Dim, 0.0);
   const bool stepped = grid.mass.size() >= n * static_cast<std::size_t>(grid.fields) &&

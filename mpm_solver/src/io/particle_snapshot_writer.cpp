@@ -18,7 +18,9 @@ cosim::Mesh point_cloud(const Particles<Dim>& particles) {
   return cosim::Mesh{"particles", std::move(cloud)};
 }
 
-void append(std::vector<double>& out, const Voigt& v) { out.insert(out.end(), v.begin(), v.end()); }
+void append(std::vector<double>& out, const Voigt& v) {
+  out.insert(out.end(), v.begin(), v.end());
+}
 
 template <int Dim>
 void append(std::vector<double>& out, const Vec<Dim>& v) {

@@ -45,7 +45,8 @@ ProbeRecorder<Dim>::ProbeRecorder(const std::filesystem::path& file, const Solve
     : probes_(solver.description().probes),
       thermal_(solver.conducts_heat()),
       writer_(file, columns(probes_, thermal_)) {
-  for (const auto& probe : probes_) initial_position_.push_back(solver.particles().position[probe.particle]);
+  for (const auto& probe : probes_)
+    initial_position_.push_back(solver.particles().position[probe.particle]);
 }
 
 template <int Dim>

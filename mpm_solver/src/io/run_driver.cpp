@@ -42,7 +42,8 @@ void record_conserved(cosim::RunSummary& summary, const Totals<Dim>& totals, boo
   };
   set("mass", totals.mass, "kg");
   static constexpr const char* axes[] = {"x", "y", "z"};
-  for (int d = 0; d < Dim; ++d) set(std::string("momentum_") + axes[d], totals.momentum[d], "kg m/s");
+  for (int d = 0; d < Dim; ++d)
+    set(std::string("momentum_") + axes[d], totals.momentum[d], "kg m/s");
   set("kinetic_energy", totals.kinetic_energy, "J");
   set("strain_energy", totals.strain_energy, "J");
   set("gravitational_energy", totals.gravitational_energy, "J");
@@ -71,9 +72,11 @@ nlohmann::json case_section(const CaseDescription& c) {
   nlohmann::json bodies = nlohmann::json::array();
   std::size_t particles = 0;
   for (const auto& b : c.bodies) {
-    bodies.push_back({{"name", b.name},
-                      {"particles", b.positions.size()},
-                      {"material", b.material >= 0 ? c.material_names[static_cast<std::size_t>(b.material)] : "rigid"}});
+    bodies.push_back(
+        {{"name", b.name},
+         {"particles", b.positions.size()},
+         {"material",
+          b.material >= 0 ? c.material_names[static_cast<std::size_t>(b.material)] : "rigid"}});
     particles += b.positions.size();
   }
   std::vector<int> cells(c.grid.cells.begin(), c.grid.cells.begin() + c.dimension);
@@ -91,8 +94,8 @@ nlohmann::json case_section(const CaseDescription& c) {
 template <int Dim>
 class CaseRun {
  public:
-  CaseRun(const CaseDescription& description, const RunOptions& options,
-          cosim::RunSummary& summary, std::unique_ptr<StepObserver<Dim>> observer)
+  CaseRun(const CaseDescription& description, const RunOptions& options, cosim::RunSummary& summary,
+          std::unique_ptr<StepObserver<Dim>> observer)
       : options_(options),
         summary_(summary),
         observer_(std::move(observer)),
@@ -186,7 +189,8 @@ class CaseRun {
       const double now = solver_.time();
       const bool snapshot = snapshots_.due(now, tolerance_);
       const bool probe = probe_times_.due(now, tolerance_);
-      if (snapshot || probe || solver_.step_count() % static_cast<std::size_t>(options_.check_every) == 0)
+      if (snapshot || probe ||
+          solver_.step_count() % static_cast<std::size_t>(options_.check_every) == 0)
         solver_.check_state();
       if (snapshot) write_snapshot();
       if (probe) record_probes();
@@ -236,7 +240,8 @@ class CaseRun {
       const auto steps = solver_.step_count();
       summary_.set_steps(static_cast<std::int64_t>(steps));
       const double advance = summary_.phases().seconds("advance");
-      const double updates = static_cast<double>(steps) * static_cast<double>(solver_.particles().size());
+      const double updates =
+          static_cast<double>(steps) * static_cast<double>(solver_.particles().size());
       summary_.set_metric("simulated_time", solver_.time(), "s");
       summary_.set_metric("particles", static_cast<double>(solver_.particles().size()), "1");
       summary_.set_metric("particle_updates_per_second", advance > 0.0 ? updates / advance : 0.0,
@@ -245,7 +250,8 @@ class CaseRun {
         summary_.set_metric("stable_time_step_min", min_stable_, "s");
         summary_.set_metric("stable_time_step_max", max_stable_, "s");
       }
-      if (particles_) summary_.set_metric("snapshots", static_cast<double>(particles_->snapshots_written()), "1");
+      if (particles_)
+        summary_.set_metric("snapshots", static_cast<double>(particles_->snapshots_written()), "1");
       if (observer_) {
         auto coupling = observer_->summary();
         if (!coupling.is_null()) summary_.set_section("coupling", std::move(coupling));

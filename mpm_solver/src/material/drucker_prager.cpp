@@ -23,7 +23,8 @@ std::pair<double, double> match_coefficients(DruckerPragerMatch match, double an
     case DruckerPragerMatch::compression_cone:
     case DruckerPragerMatch::extension_cone: {
       const double s = std::sin(angle);
-      const double denominator = sqrt3 * (match == DruckerPragerMatch::compression_cone ? 3.0 - s : 3.0 + s);
+      const double denominator =
+          sqrt3 * (match == DruckerPragerMatch::compression_cone ? 3.0 - s : 3.0 + s);
       return {2.0 * s / denominator, 6.0 * std::cos(angle) / denominator};
     }
   }
@@ -32,17 +33,22 @@ std::pair<double, double> match_coefficients(DruckerPragerMatch match, double an
 
 }  // namespace
 
-DruckerPragerCone DruckerPragerCone::matched(DruckerPragerMatch match, double friction_angle, double dilation_angle,
-                                             double cohesion, double tensile_strength) {
+DruckerPragerCone DruckerPragerCone::matched(DruckerPragerMatch match, double friction_angle,
+                                             double dilation_angle, double cohesion,
+                                             double tensile_strength) {
   const auto [alpha, k_per_c] = match_coefficients(match, friction_angle);
-  return {alpha, match_coefficients(match, dilation_angle).first, k_per_c * cohesion, tensile_strength};
+  return {alpha, match_coefficients(match, dilation_angle).first, k_per_c * cohesion,
+          tensile_strength};
 }
 
 double DruckerPragerCone::apex() const {
-  return alpha_friction > 0.0 ? strength / (3.0 * alpha_friction) : std::numeric_limits<double>::infinity();
+  return alpha_friction > 0.0 ? strength / (3.0 * alpha_friction)
+                              : std::numeric_limits<double>::infinity();
 }
 
-double DruckerPragerCone::mean_stress_limit() const { return std::min(tensile_strength, apex()); }
+double DruckerPragerCone::mean_stress_limit() const {
+  return std::min(tensile_strength, apex());
+}
 
 double DruckerPragerCone::yield(const Tensor& stress) const {
   const double p = stress.trace() / 3.0;
@@ -50,7 +56,8 @@ double DruckerPragerCone::yield(const Tensor& stress) const {
   return std::max(3.0 * alpha_friction * p + q - strength, p - tensile_strength);
 }
 
-Tensor drucker_prager_return(const Tensor& trial, const DruckerPragerCone& cone, const ElasticConstants& elastic) {
+Tensor drucker_prager_return(const Tensor& trial, const DruckerPragerCone& cone,
+                             const ElasticConstants& elastic) {
   const double p = trial.trace() / 3.0;
   const Tensor s = trial - p * Tensor::Identity();
   const double q = std::sqrt(0.5 * s.squaredNorm());
@@ -75,21 +82,28 @@ Tensor drucker_prager_return(const Tensor& trial, const DruckerPragerCone& cone,
 cosim::config::Schema DruckerPrager::schema() {
   auto schema = material_parameters::base_schema(
       std::string(name),
-      "Non-associated Drucker-Prager elastoplasticity (Zheng et al., eqs. 3-4) matched to Mohr-Coulomb "
-      "(van den Bout et al., eq. 20), with tension cut-off on the mean stress, friction softening, constant or Rowe "
+      "Non-associated Drucker-Prager elastoplasticity (Zheng et al., eqs. 3-4) matched to "
+      "Mohr-Coulomb "
+      "(van den Bout et al., eq. 20), with tension cut-off on the mean stress, friction softening, "
+      "constant or Rowe "
       "dilatancy and optional cohesion degradation; exact return to cone, cut-off and apex.");
   FrictionalParameters::add_keys(schema);
   return schema.optional(
-      "match", cosim::config::Schema::one_of({"plane_strain", "compression_cone", "extension_cone"})
-                   .default_value("plane_strain"),
-      "Which Mohr-Coulomb surface the cone fits: plane_strain, alpha = tan phi / sqrt(9 + 12 tan^2 phi), "
-      "k = 3c / sqrt(9 + 12 tan^2 phi); compression_cone (outer), alpha = 2 sin phi / (sqrt3 (3 - sin phi)), "
-      "k = 6 c cos phi / (sqrt3 (3 - sin phi)); extension_cone (inner), the same with 3 + sin phi. The "
-      "dilation coefficient alpha_psi follows the same rule with psi. The tension cut-off applies to the mean stress.");
+      "match",
+      cosim::config::Schema::one_of({"plane_strain", "compression_cone", "extension_cone"})
+          .default_value("plane_strain"),
+      "Which Mohr-Coulomb surface the cone fits: plane_strain, alpha = tan phi / sqrt(9 + 12 tan^2 "
+      "phi), "
+      "k = 3c / sqrt(9 + 12 tan^2 phi); compression_cone (outer), alpha = 2 sin phi / (sqrt3 (3 - "
+      "sin phi)), "
+      "k = 6 c cos phi / (sqrt3 (3 - sin phi)); extension_cone (inner), the same with 3 + sin phi. "
+      "The "
+      "dilation coefficient alpha_psi follows the same rule with psi. The tension cut-off applies "
+      "to the mean stress.");
 }
 
 std::unique_ptr<Material> DruckerPrager::make(const cosim::config::Node& parameters) {
-  const std::string match = parameters.get("match", "plane_strain");
+  const std::string match = parameters.get<std::string>("match");
   return std::make_unique<DruckerPrager>(
       material_parameters::read_common_properties(parameters),
       material_parameters::read_objective_rate(parameters), FrictionalParameters::read(parameters),
@@ -109,17 +123,22 @@ DruckerPragerCone DruckerPrager::cone(const MaterialState& state) const {
   if (fixed_cone_) return *fixed_cone_;
   const double phi = parameters_.friction.friction_angle(state.plastic_strain);
   return DruckerPragerCone::matched(match_, phi, parameters_.friction.dilation_angle(phi),
-                                    parameters_.cohesion_at(state), parameters_.tensile_strength_at(state));
+                                    parameters_.cohesion_at(state),
+                                    parameters_.tensile_strength_at(state));
 }
 
 void DruckerPrager::update(const Deformation& deformation, MaterialState& state) const {
-  const Tensor trial = state.stress + parameters_.elastic.stress_increment(deformation.strain_increment);
+  const Tensor trial =
+      state.stress + parameters_.elastic.stress_increment(deformation.strain_increment);
   state.stress = drucker_prager_return(trial, cone(state), parameters_.elastic);
   if (state.stress == trial) return;
-  parameters_.record_plastic_step(trial - state.stress, deformation.strain_increment.trace(), state);
+  parameters_.record_plastic_step(trial - state.stress, deformation.strain_increment.trace(),
+                                  state);
 }
 
-double DruckerPrager::yield_function(const MaterialState& state) const { return cone(state).yield(state.stress); }
+double DruckerPrager::yield_function(const MaterialState& state) const {
+  return cone(state).yield(state.stress);
+}
 
 double DruckerPrager::friction_angle(const MaterialState& state) const {
   return parameters_.friction.friction_angle(state.plastic_strain);

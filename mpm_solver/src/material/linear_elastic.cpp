@@ -5,7 +5,8 @@
 namespace mpm {
 
 cosim::config::Schema LinearElastic::schema() {
-  auto schema = material_parameters::base_schema(std::string(name), "Isotropic linear elasticity (Hooke), incremental.");
+  auto schema = material_parameters::base_schema(
+      std::string(name), "Isotropic linear elasticity (Hooke), incremental.");
   return material_parameters::add_elastic_keys(schema);
 }
 

@@ -12,13 +12,15 @@ using cosim::config::Schema;
 Schema base_schema(const std::string& type, std::string doc, bool hypoelastic) {
   Schema schema = Schema::object(std::move(doc));
   schema.required("type", Schema::one_of({type}), "The constitutive model.")
-      .required("density", Schema::number().positive().unit("kg/m3"),
-                "Density of the material: the grain density of a porous body, else the bulk density.");
+      .required(
+          "density", Schema::number().positive().unit("kg/m3"),
+          "Density of the material: the grain density of a porous body, else the bulk density.");
   add_thermal_keys(schema);
   if (hypoelastic) {
-    schema.optional("objective_rate", Schema::one_of({"jaumann", "polar_rotation"}).default_value("jaumann"),
-                    "How the stress is kept objective under rotation: the Jaumann rate (Zheng et al., eq. 5) "
-                    "or the polar rotation of F (Tran et al., MPMICE, eqs. 11-14).");
+    schema.optional(
+        "objective_rate", Schema::one_of({"jaumann", "polar_rotation"}).default_value("jaumann"),
+        "How the stress is kept objective under rotation: the Jaumann rate (Zheng et al., eq. 5) "
+        "or the polar rotation of F (Tran et al., MPMICE, eqs. 11-14).");
   }
   return schema;
 }
@@ -72,8 +74,8 @@ std::optional<ThermalProperties> read_thermal_properties(const Node& node) {
 }
 
 ObjectiveRate read_objective_rate(const Node& node) {
-  return node.get("objective_rate", "jaumann") == "polar_rotation" ? ObjectiveRate::polar_rotation
-                                                                    : ObjectiveRate::jaumann;
+  return node.get<std::string>("objective_rate") == "polar_rotation" ? ObjectiveRate::polar_rotation
+                                                                     : ObjectiveRate::jaumann;
 }
 
 ElasticConstants read_elastic_constants(const Node& node) {
@@ -85,12 +87,14 @@ ElasticConstants read_elastic_constants(const Node& node) {
   return ElasticConstants::from_youngs_poisson(youngs, nu);
 }
 
-double read_angle(const Node& node, std::string_view key, double fallback_degrees, double below_degrees) {
+double read_angle(const Node& node, std::string_view key, double fallback_degrees,
+                  double below_degrees) {
   double degrees = fallback_degrees;
   if (const auto value = node.find(key)) {
     degrees = value->as<double>();
     if (!(degrees >= 0.0 && degrees < below_degrees)) {
-      value->fail(fmt::format("{} must be in [0, {}) degrees (got {})", key, below_degrees, degrees));
+      value->fail(
+          fmt::format("{} must be in [0, {}) degrees (got {})", key, below_degrees, degrees));
     }
   }
   return degrees * std::numbers::pi / 180.0;

@@ -26,11 +26,13 @@ PrincipalStress principal_stress(const Tensor& stress) {
 }  // namespace
 
 cosim::config::Schema MohrCoulomb::schema() {
-  auto schema = material_parameters::base_schema(
-      std::string(name),
-      "Non-associated Mohr-Coulomb elastoplasticity (Tran et al., MPMICE, eq. 16) with tension cut-off, friction "
-      "softening, constant or Rowe dilatancy and optional cohesion degradation; corner-aware return in principal "
-      "stress space.");
+  auto schema =
+      material_parameters::base_schema(std::string(name),
+                                       "Non-associated Mohr-Coulomb elastoplasticity (Tran et al., "
+                                       "MPMICE, eq. 16) with tension cut-off, friction "
+                                       "softening, constant or Rowe dilatancy and optional "
+                                       "cohesion degradation; corner-aware return in principal "
+                                       "stress space.");
   return FrictionalParameters::add_keys(schema);
 }
 
@@ -51,16 +53,19 @@ MohrCoulombSurface MohrCoulomb::surface(const MaterialState& state) const {
   if (fixed_surface_) return *fixed_surface_;
   const double phi = parameters_.friction.friction_angle(state.plastic_strain);
   return MohrCoulombSurface::from_angles(phi, parameters_.friction.dilation_angle(phi),
-                                         parameters_.cohesion_at(state), parameters_.tensile_strength_at(state));
+                                         parameters_.cohesion_at(state),
+                                         parameters_.tensile_strength_at(state));
 }
 
 void MohrCoulomb::update(const Deformation& deformation, MaterialState& state) const {
-  const Tensor trial = state.stress + parameters_.elastic.stress_increment(deformation.strain_increment);
+  const Tensor trial =
+      state.stress + parameters_.elastic.stress_increment(deformation.strain_increment);
   state.stress = trial;
   const MohrCoulombSurface yield_surface = surface(state);
   if (yield_surface.surely_inside(trial)) return;
   const PrincipalStress principal = principal_stress(trial);
-  const PrincipalReturn result = mohr_coulomb_return(principal.values, yield_surface, parameters_.elastic);
+  const PrincipalReturn result =
+      mohr_coulomb_return(principal.values, yield_surface, parameters_.elastic);
   if (result.active == 0) return;
   // Subtracting the correction, rather than rebuilding the stress from its
   // principal values, keeps the error of the eigenvectors out of the elastic part.

@@ -18,7 +18,9 @@ struct Plane {
   Vec3d return_direction;
 };
 
-double value(const Plane& plane, const Vec3d& sigma) { return plane.a.dot(sigma) - plane.a0; }
+double value(const Plane& plane, const Vec3d& sigma) {
+  return plane.a.dot(sigma) - plane.a0;
+}
 
 // Sets of plane indices tried in order; -1 ends a set.
 using Set = std::array<int, 3>;
@@ -50,15 +52,16 @@ int size_of(const Set& set) {
 }  // namespace
 
 double MohrCoulombSurface::yield(const Vec3d& principal) const {
-  const double shear = (principal[0] - principal[2]) + (principal[0] + principal[2]) * sin_friction -
-                       2.0 * cohesion * cos_friction;
+  const double shear = (principal[0] - principal[2]) +
+                       (principal[0] + principal[2]) * sin_friction - 2.0 * cohesion * cos_friction;
   return std::max(shear, principal[0] - tensile_strength);
 }
 
 bool MohrCoulombSurface::surely_inside(const Tensor& stress) const {
   const double p = stress.trace() / 3.0;
   const double q = std::sqrt(0.5 * (stress - p * Tensor::Identity()).squaredNorm());
-  const double shear_bound = 2.0 * q + (2.0 * p + q * inv_sqrt3) * sin_friction - 2.0 * cohesion * cos_friction;
+  const double shear_bound =
+      2.0 * q + (2.0 * p + q * inv_sqrt3) * sin_friction - 2.0 * cohesion * cos_friction;
   return shear_bound < 0.0 && p + 2.0 * q * inv_sqrt3 < tensile_strength;
 }
 
@@ -69,24 +72,30 @@ PrincipalReturn mohr_coulomb_return(const Vec3d& trial, const MohrCoulombSurface
   const double strength = 2.0 * surface.cohesion * surface.cos_friction;
   const double lambda = elastic.lame();
   const double two_g = 2.0 * elastic.shear;
-  const auto D = [&](const Vec3d& b) -> Vec3d { return lambda * b.sum() * Vec3d::Ones() + two_g * b; };
+  const auto D = [&](const Vec3d& b) -> Vec3d {
+    return lambda * b.sum() * Vec3d::Ones() + two_g * b;
+  };
 
   const bool cutoff = surface.has_tension_cutoff();
   const int count = cutoff ? 6 : 3;
   std::array<Plane, 6> planes;
-  planes[0] = {{1.0 + sin_phi, 0.0, -(1.0 - sin_phi)}, strength, D({1.0 + sin_psi, 0.0, -(1.0 - sin_psi)})};
-  planes[1] = {{0.0, 1.0 + sin_phi, -(1.0 - sin_phi)}, strength, D({0.0, 1.0 + sin_psi, -(1.0 - sin_psi)})};
-  planes[2] = {{1.0 + sin_phi, -(1.0 - sin_phi), 0.0}, strength, D({1.0 + sin_psi, -(1.0 - sin_psi), 0.0})};
+  planes[0] = {
+      {1.0 + sin_phi, 0.0, -(1.0 - sin_phi)}, strength, D({1.0 + sin_psi, 0.0, -(1.0 - sin_psi)})};
+  planes[1] = {
+      {0.0, 1.0 + sin_phi, -(1.0 - sin_phi)}, strength, D({0.0, 1.0 + sin_psi, -(1.0 - sin_psi)})};
+  planes[2] = {
+      {1.0 + sin_phi, -(1.0 - sin_phi), 0.0}, strength, D({1.0 + sin_psi, -(1.0 - sin_psi), 0.0})};
   for (int i = 0; i < 3; ++i) {
     const Vec3d e = Vec3d::Unit(i);
     planes[static_cast<std::size_t>(3 + i)] = {e, cutoff ? surface.tensile_strength : 0.0, D(e)};
   }
 
   // The trial is sorted, so planes 0 and 3 are the largest of their kinds.
-  if (value(planes[0], trial) <= 0.0 && (!cutoff || value(planes[3], trial) <= 0.0)) return {trial, 0};
+  if (value(planes[0], trial) <= 0.0 && (!cutoff || value(planes[3], trial) <= 0.0))
+    return {trial, 0};
 
-  const double scale = std::max({trial.cwiseAbs().maxCoeff(), strength, cutoff ? std::abs(surface.tensile_strength) : 0.0,
-                                 1e-300});
+  const double scale = std::max({trial.cwiseAbs().maxCoeff(), strength,
+                                 cutoff ? std::abs(surface.tensile_strength) : 0.0, 1e-300});
   const double tolerance = 1e-10 * scale;
 
   PrincipalReturn best{trial, 0};
@@ -128,7 +137,8 @@ PrincipalReturn mohr_coulomb_return(const Vec3d& trial, const MohrCoulombSurface
       violation = std::max(violation, -dlambda[k] * plane(k).return_direction.norm());
       active |= 1u << set[static_cast<std::size_t>(k)];
     }
-    for (int i = 0; i < count; ++i) violation = std::max(violation, value(planes[static_cast<std::size_t>(i)], sigma));
+    for (int i = 0; i < count; ++i)
+      violation = std::max(violation, value(planes[static_cast<std::size_t>(i)], sigma));
     if (violation < best_violation) {
       best_violation = violation;
       best = {sigma, active};

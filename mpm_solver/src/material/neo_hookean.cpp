@@ -8,10 +8,11 @@
 namespace mpm {
 
 cosim::config::Schema NeoHookean::schema() {
-  auto schema = material_parameters::base_schema(
-      std::string(name),
-      "Compressible neo-Hookean hyperelasticity (Tran et al., MPMICE, eq. 15); stress from F, no objective rate.",
-      false);
+  auto schema =
+      material_parameters::base_schema(std::string(name),
+                                       "Compressible neo-Hookean hyperelasticity (Tran et al., "
+                                       "MPMICE, eq. 15); stress from F, no objective rate.",
+                                       false);
   return material_parameters::add_elastic_keys(schema);
 }
 
@@ -26,7 +27,8 @@ Tensor NeoHookean::stress(const Tensor& F) const {
   if (!(J > 0.0)) return Tensor::Constant(std::numeric_limits<double>::quiet_NaN());
   const double lambda = elastic_.lame();
   const double mu = elastic_.shear;
-  return lambda * std::log(J) / J * Tensor::Identity() + mu / J * (F * F.transpose() - Tensor::Identity());
+  return lambda * std::log(J) / J * Tensor::Identity() +
+         mu / J * (F * F.transpose() - Tensor::Identity());
 }
 
 void NeoHookean::update(const Deformation& deformation, MaterialState& state) const {

@@ -3,7 +3,11 @@
 namespace mpm {
 
 Voigt to_voigt(const Tensor& t) {
-  return {t(0, 0), t(1, 1), t(2, 2), 0.5 * (t(0, 1) + t(1, 0)), 0.5 * (t(1, 2) + t(2, 1)),
+  return {t(0, 0),
+          t(1, 1),
+          t(2, 2),
+          0.5 * (t(0, 1) + t(1, 0)),
+          0.5 * (t(1, 2) + t(2, 1)),
           0.5 * (t(0, 2) + t(2, 0))};
 }
 
@@ -42,7 +46,8 @@ void Particles<Dim>::resize(std::size_t n) {
 template <int Dim>
 double Particles<Dim>::bytes_per_particle() const {
   const auto bytes = [](const auto& v) {
-    return static_cast<double>(v.capacity() * sizeof(typename std::decay_t<decltype(v)>::value_type));
+    return static_cast<double>(v.capacity() *
+                               sizeof(typename std::decay_t<decltype(v)>::value_type));
   };
   const double total = bytes(position) + bytes(velocity) + bytes(deformation_gradient) +
                        bytes(half_length) + bytes(mass) + bytes(initial_volume) + bytes(volume) +

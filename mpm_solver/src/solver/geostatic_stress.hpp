@@ -19,8 +19,9 @@ namespace mpm::detail {
 // z_s to the top of the body's particles above the point (their highest
 // upper domain edge in the same column of grid cells).
 template <int Dim>
-void initialise_geostatic_stress(const CaseDescription& description, const std::vector<BodyState<Dim>>& bodies,
-                                 const Vec<Dim>& gravity, Particles<Dim>& particles) {
+void initialise_geostatic_stress(const CaseDescription& description,
+                                 const std::vector<BodyState<Dim>>& bodies, const Vec<Dim>& gravity,
+                                 Particles<Dim>& particles) {
   const int up = Dim - 1;
   const double g = gravity.norm();
   for (std::size_t b = 0; b < bodies.size(); ++b) {
@@ -50,10 +51,12 @@ void initialise_geostatic_stress(const CaseDescription& description, const std::
     const double K = body.material->bulk_modulus();
     const double G = body.material->shear_modulus();
     const double nu = (3.0 * K - 2.0 * G) / (2.0 * (3.0 * K + G));
-    const double k0 = std::isfinite(geo.k0) ? geo.k0 : (phi > 0.0 ? 1.0 - std::sin(phi) : nu / (1.0 - nu));
+    const double k0 =
+        std::isfinite(geo.k0) ? geo.k0 : (phi > 0.0 ? 1.0 - std::sin(phi) : nu / (1.0 - nu));
     for (std::size_t p = body.first; p < body.first + body.count; ++p) {
-      const double gamma = std::isfinite(geo.unit_weight) ? geo.unit_weight
-                                                          : particles.mass[p] / particles.volume[p] * g;
+      const double gamma = std::isfinite(geo.unit_weight)
+                               ? geo.unit_weight
+                               : particles.mass[p] / particles.volume[p] * g;
       const double surface = geo.surface ? *geo.surface : top[column_of(p)];
       const double vertical = -gamma * std::max(0.0, surface - particles.position[p][up]);
       Voigt s{};

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <vector>
 #include <cstddef>
+#include <vector>
 
 #include "mpm/case/case_description.hpp"
 #include "mpm/grid/grid.hpp"
@@ -61,7 +61,8 @@ double apply_face_conditions(const FaceConditions& faces, const FaceValues& valu
               const Vec<Dim> before = vel;
               vel[d] = 0.0;
               const double tangential = vel.norm();
-              if (tangential > 0.0) vel *= std::max(0.0, 1.0 - face.friction * into_wall / tangential);
+              if (tangential > 0.0)
+                vel *= std::max(0.0, 1.0 - face.friction * into_wall / tangential);
               const Vec<Dim> tangent_before = before - before[d] * Vec<Dim>::Unit(d);
               dissipated += 0.5 * grid.mass[i] * (tangent_before.squaredNorm() - vel.squaredNorm());
               break;

@@ -9,7 +9,7 @@ namespace mpm::detail {
 
 // Velocity fields of the grid and how they meet.
 struct ContactFields {
-  std::vector<bool> rigid;                  // per field
+  std::vector<bool> rigid;                    // per field
   std::vector<std::vector<double>> friction;  // per field pair
 };
 
@@ -89,7 +89,8 @@ ContactResult apply_grid_contact(const ContactFields& fields, Grid<Dim>& grid,
       if (approach <= 0.0) continue;
       const Vec<Dim> tangential = relative - approach * normal;
       const double slip = tangential.norm();
-      const double mu = fields.friction[static_cast<std::size_t>(b)][static_cast<std::size_t>(partner)];
+      const double mu =
+          fields.friction[static_cast<std::size_t>(b)][static_cast<std::size_t>(partner)];
       Vec<Dim> corrected;
       if (slip <= mu * approach) {
         corrected = Vec<Dim>::Zero();  // sticks

@@ -13,7 +13,8 @@ namespace mpm::detail {
 // form with A = W dt / 2 = skew(a): R = I + 2 (A + A^2) / (1 + a . a).
 inline Tensor jaumann_rotation(const Tensor& spin_increment) {
   const Tensor half = 0.25 * (spin_increment - spin_increment.transpose());
-  const double a_squared = half(2, 1) * half(2, 1) + half(0, 2) * half(0, 2) + half(1, 0) * half(1, 0);
+  const double a_squared =
+      half(2, 1) * half(2, 1) + half(0, 2) * half(0, 2) + half(1, 0) * half(1, 0);
   return Tensor::Identity() + (2.0 / (1.0 + a_squared)) * (half + half * half);
 }
 

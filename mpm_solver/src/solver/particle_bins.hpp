@@ -55,7 +55,8 @@ class ParticleBins {
     for (int colour = 0; colour < 2; ++colour) {
 #pragma omp parallel for schedule(dynamic, 1) if (parallel_)
       for (int s = colour; s < n; s += 2) {
-        for (std::size_t k = begin_[s]; k < begin_[s + 1]; ++k) f(static_cast<std::size_t>(order_[k]));
+        for (std::size_t k = begin_[s]; k < begin_[s + 1]; ++k)
+          f(static_cast<std::size_t>(order_[k]));
       }
     }
   }
@@ -67,7 +68,8 @@ class ParticleBins {
     const int n = slabs();
 #pragma omp parallel for schedule(dynamic, 1) if (parallel_)
     for (int s = 0; s < n; ++s) {
-      for (std::size_t k = begin_[s]; k < begin_[s + 1]; ++k) f(static_cast<std::size_t>(order_[k]));
+      for (std::size_t k = begin_[s]; k < begin_[s + 1]; ++k)
+        f(static_cast<std::size_t>(order_[k]));
     }
   }
 

@@ -41,7 +41,7 @@ struct Solver<Dim>::Impl {
   // Cell sums for the volumetric locking mitigation (value, weight).
   std::vector<double> cell_sum;
   std::vector<double> cell_weight;
-  std::vector<double> volumetric_increment;  // per particle, scratch
+  std::vector<double> volumetric_increment;   // per particle, scratch
   std::vector<Vec<Dim>> initial_half_length;  // for GimpDomain::deformed
   double time = 0.0;
   std::size_t steps = 0;
@@ -108,7 +108,9 @@ namespace {
 // Below this many items a loop runs on one thread: thread start-up and
 // barriers cost more than the work, and far more on a loaded machine.
 constexpr std::size_t parallel_threshold = 8192;
-bool worth_threads(std::size_t items) { return items >= parallel_threshold; }
+bool worth_threads(std::size_t items) {
+  return items >= parallel_threshold;
+}
 
 template <int Dim>
 Vec<Dim> shrink(const Vec3d& v) {
@@ -122,7 +124,8 @@ Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
   threads = d.threads > 0 ? d.threads : omp_get_max_threads();
   if (d.threads > 0) omp_set_num_threads(d.threads);
   std::array<int, Dim> cells{};
-  for (int k = 0; k < Dim; ++k) cells[static_cast<std::size_t>(k)] = d.grid.cells[static_cast<std::size_t>(k)];
+  for (int k = 0; k < Dim; ++k)
+    cells[static_cast<std::size_t>(k)] = d.grid.cells[static_cast<std::size_t>(k)];
   grid = make_grid<Dim>(shrink<Dim>(d.grid.origin), shrink<Dim>(d.grid.spacing), cells, d.shape);
   geometry.origin = grid.origin;
   geometry.spacing = grid.spacing;
@@ -166,7 +169,8 @@ Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
       particles.velocity[p] = shrink<Dim>(spec.initial_velocity);
       particles.initial_volume[p] = spec.volumes[k];
       particles.volume[p] = spec.volumes[k];
-      particles.mass[p] = (std::isfinite(density) ? density : 0.0) * solid_fraction * spec.volumes[k];
+      particles.mass[p] =
+          (std::isfinite(density) ? density : 0.0) * solid_fraction * spec.volumes[k];
       particles.body[p] = static_cast<std::uint32_t>(b);
       particles.temperature[p] = spec.initial_temperature;
       if (thermal) particles.heat_capacity[p] = particles.mass[p] * thermal->specific_heat;
@@ -196,13 +200,15 @@ Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
   if (field_count == 0) field_count = 1;
   grid.allocate(field_count);
   contact.rigid.assign(static_cast<std::size_t>(field_count), false);
-  contact.friction.assign(static_cast<std::size_t>(field_count),
-                          std::vector<double>(static_cast<std::size_t>(field_count), d.contact.friction));
+  contact.friction.assign(
+      static_cast<std::size_t>(field_count),
+      std::vector<double>(static_cast<std::size_t>(field_count), d.contact.friction));
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     if (bodies[b].is_rigid()) contact.rigid[static_cast<std::size_t>(bodies[b].field)] = true;
     for (std::size_t c = 0; c < bodies.size(); ++c) {
       if (bodies[b].field == bodies[c].field) continue;
-      contact.friction[static_cast<std::size_t>(bodies[b].field)][static_cast<std::size_t>(bodies[c].field)] =
+      contact.friction[static_cast<std::size_t>(bodies[b].field)]
+                      [static_cast<std::size_t>(bodies[c].field)] =
           d.contact.friction_between(static_cast<int>(b), static_cast<int>(c));
     }
   }
@@ -214,10 +220,11 @@ Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
     heat.emplace(d.thermal, std::move(body_conductivity), faces, grid);
   }
   for (std::size_t p = 0; p < particles.size(); ++p)
-    if (bodies[particles.body[p]].is_rigid()) particles.velocity[p] = bodies[particles.body[p]].rigid_velocity;
+    if (bodies[particles.body[p]].is_rigid())
+      particles.velocity[p] = bodies[particles.body[p]].rigid_velocity;
 
-  detail::initialise_geostatic_stress(description, bodies, gravity_at(std::max(d.gravity_ramp_time, 0.0)),
-                                      particles);
+  detail::initialise_geostatic_stress(description, bodies,
+                                      gravity_at(std::max(d.gravity_ramp_time, 0.0)), particles);
   initial_strain_energy = totals().strain_energy;
   const Vec<Dim> upper = grid.upper();
   for (int k = 0; k < Dim; ++k) {
@@ -231,9 +238,8 @@ Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
 
 template <int Dim>
 Vec<Dim> Solver<Dim>::Impl::gravity_at(double t) const {
-  const double ramp = description.gravity_ramp_time > 0.0
-                          ? std::min(1.0, t / description.gravity_ramp_time)
-                          : 1.0;
+  const double ramp =
+      description.gravity_ramp_time > 0.0 ? std::min(1.0, t / description.gravity_ramp_time) : 1.0;
   return ramp * shrink<Dim>(description.gravity);
 }
 
@@ -291,7 +297,8 @@ void Solver<Dim>::Impl::apply_surface_loads(double /*dt*/) {
     const double outward = load.face % 2 == 0 ? -1.0 : 1.0;
     for (const std::size_t p : load.particles) {
       // Face area of the particle's initial domain normal to the face.
-      const Vec<Dim>& l0 = initial_half_length.empty() ? particles.half_length[p] : initial_half_length[p];
+      const Vec<Dim>& l0 =
+          initial_half_length.empty() ? particles.half_length[p] : initial_half_length[p];
       const double area = particles.initial_volume[p] / (2.0 * l0[axis]);
       Vec<Dim> force = Vec<Dim>::Zero();
       if (load.traction) force = shrink<Dim>(*load.traction) * area;
@@ -333,7 +340,8 @@ void Solver<Dim>::Impl::set_rigid_velocities(double dt) {
       case RigidMotion::Kind::free:
         break;  // set by move_rigid_bodies from the last step's forces
     }
-    for (std::size_t p = body.first; p < body.first + body.count; ++p) particles.velocity[p] = body.rigid_velocity;
+    for (std::size_t p = body.first; p < body.first + body.count; ++p)
+      particles.velocity[p] = body.rigid_velocity;
   }
 }
 
@@ -393,7 +401,10 @@ void Solver<Dim>::Impl::integrate_grid_momentum(double dt) {
     if (damping > 0.0) {
       for (int d = 0; d < Dim; ++d) {
         const double direction = v_old[d] + dt * force[d] / m;
-        force[d] -= damping * std::abs(force[d]) * (direction > 0 ? 1.0 : direction < 0 ? -1.0 : 0.0);
+        force[d] -= damping * std::abs(force[d]) *
+                    (direction > 0   ? 1.0
+                     : direction < 0 ? -1.0
+                                     : 0.0);
       }
     }
     grid.velocity[i] = v_old + dt * force / m;
@@ -412,9 +423,11 @@ void Solver<Dim>::Impl::apply_contact_and_boundaries(double /*dt*/) {
     const auto result = detail::apply_grid_contact(contact, grid, impulse_on_field);
     contact_dissipation += result.dissipated;
     for (auto& body : bodies)
-      if (body.is_rigid()) body.contact_impulse = impulse_on_field[static_cast<std::size_t>(body.field)];
+      if (body.is_rigid())
+        body.contact_impulse = impulse_on_field[static_cast<std::size_t>(body.field)];
   }
-  boundary_dissipation += detail::apply_face_conditions(description.boundaries, faces, contact.rigid, grid);
+  boundary_dissipation +=
+      detail::apply_face_conditions(description.boundaries, faces, contact.rigid, grid);
   const std::size_t total = grid.mass.size();
 #pragma omp parallel for schedule(static) if (worth_threads(total))
   for (std::size_t i = 0; i < total; ++i) {
@@ -516,8 +529,9 @@ void Solver<Dim>::Impl::interpolate_and_remap_velocities() {
     if (contact.rigid[static_cast<std::size_t>(field)]) {
       grid.remapped_velocity[i] = grid.velocity[i];
     } else {
-      grid.remapped_velocity[i] = grid.mass[i] > 1e-300 ? Vec<Dim>(grid.remapped_velocity[i] / grid.mass[i])
-                                                        : Vec<Dim>::Zero();
+      grid.remapped_velocity[i] = grid.mass[i] > 1e-300
+                                      ? Vec<Dim>(grid.remapped_velocity[i] / grid.mass[i])
+                                      : Vec<Dim>::Zero();
     }
   }
   // The re-mapped velocity obeys the same contact and face conditions.
@@ -545,7 +559,8 @@ template <class Kernel>
 void Solver<Dim>::Impl::update_kinematics_and_stress(double dt, bool use_remapped) {
   const double flip = description.flip_fraction;
   const std::size_t n = grid.size();
-  const std::vector<Vec<Dim>>& strain_velocity = use_remapped ? grid.remapped_velocity : grid.velocity;
+  const std::vector<Vec<Dim>>& strain_velocity =
+      use_remapped ? grid.remapped_velocity : grid.velocity;
   const LockingMitigation locking = description.locking;
   const bool averaged = locking != LockingMitigation::none;
   const auto count = static_cast<std::ptrdiff_t>(particles.size());
@@ -559,7 +574,8 @@ void Solver<Dim>::Impl::update_kinematics_and_stress(double dt, bool use_remappe
       if (body_of(p).is_rigid()) return;
       Stencil<Dim, Kernel> stencil;
       stencil.evaluate(particles.position[p], particles.half_length[p], geometry);
-      const Mat<Dim> L = velocity_gradient(stencil, strain_velocity, static_cast<std::size_t>(field_of(p)) * n);
+      const Mat<Dim> L =
+          velocity_gradient(stencil, strain_velocity, static_cast<std::size_t>(field_of(p)) * n);
       const double x = locking == LockingMitigation::fbar
                            ? (Mat<Dim>::Identity() + dt * L).determinant()
                            : dt * L.trace();
@@ -587,9 +603,11 @@ void Solver<Dim>::Impl::update_kinematics_and_stress(double dt, bool use_remappe
       if (!use_remapped) dv += w * grid.velocity_change[offset + v];
       L.noalias() += strain_velocity[offset + v] * grad.transpose();
     });
-    if (!use_remapped) particles.velocity[p] = flip * (particles.velocity[p] + dv) + (1.0 - flip) * v_pic;
+    if (!use_remapped)
+      particles.velocity[p] = flip * (particles.velocity[p] + dv) + (1.0 - flip) * v_pic;
     const std::size_t cell = averaged ? grid.cell_flat(grid.cell_of(particles.position[p])) : 0;
-    particles.position[p] = (particles.position[p] + dt * v_pic).cwiseMax(wall_lower).cwiseMin(wall_upper);
+    particles.position[p] =
+        (particles.position[p] + dt * v_pic).cwiseMax(wall_lower).cwiseMin(wall_upper);
 
     detail::VolumetricAverage average;
     if (averaged && cell_weight[cell] > 0.0) {
@@ -597,8 +615,8 @@ void Solver<Dim>::Impl::update_kinematics_and_stress(double dt, bool use_remappe
       average.own = volumetric_increment[p];
       average.cell = cell_sum[cell] / cell_weight[cell];
     }
-    work += detail::update_point(*body.material, L, dt, average, description.bodies[particles.body[p]].porous, p,
-                                 particles);
+    work += detail::update_point(*body.material, L, dt, average,
+                                 description.bodies[particles.body[p]].porous, p, particles);
   }
   internal_work += work;
 }
@@ -616,8 +634,8 @@ void Solver<Dim>::Impl::update_particle_domains() {
   for (std::ptrdiff_t q = 0; q < count; ++q) {
     const auto p = static_cast<std::size_t>(q);
     if (body_of(p).is_rigid()) continue;
-    particles.half_length[p] =
-        initial_half_length[p].cwiseProduct(particles.deformation_gradient[p].diagonal().cwiseAbs());
+    particles.half_length[p] = initial_half_length[p].cwiseProduct(
+        particles.deformation_gradient[p].diagonal().cwiseAbs());
   }
 }
 
@@ -640,7 +658,9 @@ double Solver<Dim>::Impl::stable_time_step() const {
   double wave = 0.0;
   double speed = 0.0;
   const auto count = static_cast<std::ptrdiff_t>(particles.size());
-#pragma omp parallel for schedule(static) reduction(max : wave, speed) if (worth_threads(particles.size()))
+#pragma omp parallel for schedule(static) \
+    reduction(max                         \
+              : wave, speed) if (worth_threads(particles.size()))
   for (std::ptrdiff_t q = 0; q < count; ++q) {
     const auto p = static_cast<std::size_t>(q);
     const auto& body = body_of(p);
@@ -675,8 +695,9 @@ Totals<Dim> Solver<Dim>::Impl::totals() const {
       const Tensor s = from_voigt(particles.stress[p]);
       const double mean = s.trace() / 3.0;
       const Tensor dev = s - mean * Tensor::Identity();
-      t.strain_energy += particles.volume[p] * (mean * mean / (2.0 * body.material->bulk_modulus()) +
-                                                dev.squaredNorm() / (4.0 * body.material->shear_modulus()));
+      t.strain_energy +=
+          particles.volume[p] * (mean * mean / (2.0 * body.material->bulk_modulus()) +
+                                 dev.squaredNorm() / (4.0 * body.material->shear_modulus()));
     }
   }
   t.contact_dissipation = contact_dissipation;
@@ -711,10 +732,11 @@ void Solver<Dim>::Impl::check_state() const {
           particles.temperature[p]));
     }
     if (!grid.contains(particles.position[p])) {
-      throw cosim::NumericalError(fmt::format(
-          "particle {} of body '{}' left the grid at t = {:.9g} s (position {}; grid from {} to {})", p,
-          body.name, time, fmt::join(particles.position[p], ", "), fmt::join(grid.origin, ", "),
-          fmt::join(grid.upper(), ", ")));
+      throw cosim::NumericalError(
+          fmt::format("particle {} of body '{}' left the grid at t = {:.9g} s (position {}; grid "
+                      "from {} to {})",
+                      p, body.name, time, fmt::join(particles.position[p], ", "),
+                      fmt::join(grid.origin, ", "), fmt::join(grid.upper(), ", ")));
     }
   }
 }
@@ -722,7 +744,8 @@ void Solver<Dim>::Impl::check_state() const {
 // Public interface.
 
 template <int Dim>
-Solver<Dim>::Solver(const CaseDescription& description) : impl_(std::make_unique<Impl>(description)) {}
+Solver<Dim>::Solver(const CaseDescription& description)
+    : impl_(std::make_unique<Impl>(description)) {}
 template <int Dim>
 Solver<Dim>::~Solver() = default;
 template <int Dim>

@@ -20,7 +20,8 @@ inline double permeability(const PorousSpec& porous, double n) {
       return porous.permeability;
     case PermeabilityModel::kozeny_carman_pan:  // Pan et al. 2021, eq. 76
       return d * d * n * n * n / (150.0 * (1.0 - n) * (1.0 - n));
-    case PermeabilityModel::kozeny_carman_tran: {  // Tran et al., MPMICE, eq. 32 with K = k rho g / mu (eq. 31)
+    case PermeabilityModel::kozeny_carman_tran: {  // Tran et al., MPMICE, eq. 32 with K = k rho g /
+                                                   // mu (eq. 31)
       const double phi_s = 1.0 - n;
       return d * d * n * n * n / (180.0 * phi_s * phi_s);
     }
@@ -40,8 +41,9 @@ struct VolumetricAverage {
 // Kinematics and stress of one deformable point for a step with velocity
 // gradient L. Returns the stress work of the step, V (sigma_n + sigma_n+1)/2 : d eps [J].
 template <int Dim>
-double update_point(const Material& material, const Mat<Dim>& L, double dt, const VolumetricAverage& average,
-                  const std::optional<PorousSpec>& porous, std::size_t p, Particles<Dim>& particles) {
+double update_point(const Material& material, const Mat<Dim>& L, double dt,
+                    const VolumetricAverage& average, const std::optional<PorousSpec>& porous,
+                    std::size_t p, Particles<Dim>& particles) {
   Mat<Dim> increment = Mat<Dim>::Identity() + dt * L;  // Tran et al., MPMICE, eq. 94
   if (average.kind == LockingMitigation::fbar && average.own > 0.0 && average.cell > 0.0)
     increment *= std::pow(average.cell / average.own, 1.0 / Dim);
@@ -55,7 +57,8 @@ double update_point(const Material& material, const Mat<Dim>& L, double dt, cons
   // stress sees; with the point's own, the volume drifts in the zero-energy
   // modes the averaging leaves free.
   Mat<Dim> kinematic_increment = increment;
-  if (average.kind == LockingMitigation::bbar && 1.0 + average.own > 0.0 && 1.0 + average.cell > 0.0)
+  if (average.kind == LockingMitigation::bbar && 1.0 + average.own > 0.0 &&
+      1.0 + average.cell > 0.0)
     kinematic_increment *= std::pow((1.0 + average.cell) / (1.0 + average.own), 1.0 / Dim);
   const Mat<Dim> F_old = particles.deformation_gradient[p];
   const Mat<Dim> F_new = kinematic_increment * F_old;
@@ -86,7 +89,8 @@ double update_point(const Material& material, const Mat<Dim>& L, double dt, cons
   const auto update_and_measure = [&] {
     const Tensor before = state.stress;
     material.update(deformation, state);
-    work = 0.5 * particles.volume[p] * (before + state.stress).cwiseProduct(deformation.strain_increment).sum();
+    work = 0.5 * particles.volume[p] *
+           (before + state.stress).cwiseProduct(deformation.strain_increment).sum();
   };
   if (material.is_hyperelastic()) {
     deformation.strain_increment = strain_increment;

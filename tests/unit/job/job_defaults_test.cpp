@@ -2,15 +2,14 @@
 // value its own key accepts, and a job that leaves a key out reads it.
 
 #include <gtest/gtest.h>
-#include <yaml-cpp/yaml.h>
 
 #include <filesystem>
 #include <string>
 
-#include "cosim/config/schema.hpp"
 #include "exchange/drag_law_registry.hpp"
 #include "job/job.hpp"
 #include "scratch_directory.hpp"
+#include "schema_default.hpp"
 
 namespace cosim::job {
 namespace {
@@ -19,9 +18,7 @@ namespace fs = std::filesystem;
 
 template <class T>
 T schema_default(const std::string& key_path) {
-  const std::string text = job_schema().default_of(key_path);
-  EXPECT_FALSE(text.empty()) << key_path << " has no default";
-  return YAML::Load(text).as<T>();
+  return cosim::testing::schema_default<T>(job_schema(), key_path);
 }
 
 TEST(JobSchemaDefaults, EveryDefaultIsAcceptedByItsKey) {

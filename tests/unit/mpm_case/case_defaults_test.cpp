@@ -2,22 +2,20 @@
 // value its own key accepts, and a case that leaves a key out reads it.
 
 #include <gtest/gtest.h>
-#include <yaml-cpp/yaml.h>
 
 #include <string>
 
 #include "mpm/case/case_schema.hpp"
 #include "mpm/case/load_case.hpp"
 #include "mpm/material/material_registry.hpp"
+#include "schema_default.hpp"
 
 namespace mpm {
 namespace {
 
 template <class T>
 T schema_default(const std::string& key_path) {
-  const std::string text = mpm_case_schema().default_of(key_path);
-  EXPECT_FALSE(text.empty()) << key_path << " has no default";
-  return YAML::Load(text).as<T>();
+  return cosim::testing::schema_default<T>(mpm_case_schema(), key_path);
 }
 
 const char* const bare_case = R"(kind: mpm_case

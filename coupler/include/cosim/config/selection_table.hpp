@@ -55,7 +55,8 @@ class SelectionTable {
     throw InputError(unknown(type));
   }
 
-  // `node` is the model's mapping including its selector key. Unknown types
+  // `node` is the model's mapping including its selector key; the model's
+  // schema fills its defaults in before the maker reads it. Unknown types
   // are refused with a did-you-mean suggestion.
   std::unique_ptr<Product> make(const Node& node) const {
     if (!node.is_map()) {
@@ -67,6 +68,7 @@ class SelectionTable {
     const Entry* entry = find(type);
     if (entry == nullptr) type_node.fail(unknown(type));
     entry->schema.validate(node);
+    entry->schema.add_defaults(node);
     return entry->maker(node);
   }
 

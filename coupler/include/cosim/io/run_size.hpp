@@ -27,8 +27,8 @@ struct SizeCount {
 
 struct RunSize {
   std::vector<SizeCount> counts;
-  double fixed_bytes = 0.0;  // what does not grow with the counts
-  std::string not_included;  // what the estimate cannot know (said in summary.json)
+  double fixed_bytes = 0.0;       // what does not grow with the counts
+  std::string not_included;       // what the estimate cannot know (said in summary.json)
   double memory_limit_gib = 0.0;  // the case's limits.memory_gib (set by check_run_size)
 
   RunSize& add(SizeCount count);

@@ -14,7 +14,9 @@ void install_stop_handlers();
 
 // The signal that asked this process to stop, or 0.
 int stop_signal();
-inline bool stop_requested() { return stop_signal() != 0; }
+inline bool stop_requested() {
+  return stop_signal() != 0;
+}
 
 // True once a stop was requested; for APIs that watch an atomic flag.
 const std::atomic<bool>& stop_flag();

@@ -74,7 +74,7 @@ Schema initial_schema() {
                 "Pressure at the top of a hydrostatic column.")
       .optional("temperature", Schema::number().positive().unit("K").default_value("293.15"),
                 "Temperature.")
-      .optional("velocity", vector_schema("m/s").default_value("0"), "Velocity.")
+      .optional("velocity", vector_schema("m/s").default_note("zero"), "Velocity.")
       .optional("regions", Schema::sequence(region_schema()), "Regions overriding the fill.")
       .optional("minimum_volume_fraction",
                 Schema::number().range(1e-12, 1e-2).default_value("1e-6"),
@@ -104,7 +104,7 @@ Schema boundaries_schema() {
 }
 
 Schema numerics_schema() {
-  Schema pressure = Schema::object("The implicit pressure solve (eq. 125).");
+  Schema pressure = Schema::object("The implicit pressure solve (eq. 125).").default_value("{}");
   pressure
       .optional("tolerance", Schema::number().range(1e-14, 1e-2).default_value("1e-10"),
                 "Relative residual of conjugate gradients.")
@@ -114,7 +114,8 @@ Schema numerics_schema() {
           "preconditioner",
           Schema::one_of({"multigrid", "jacobi", "incomplete_cholesky"}).default_value("multigrid"),
           "Preconditioner of conjugate gradients.");
-  Schema equilibration = Schema::object("The per-cell pressure equilibration (eqs. 42-43).");
+  Schema equilibration =
+      Schema::object("The per-cell pressure equilibration (eqs. 42-43).").default_value("{}");
   equilibration
       .optional("tolerance", Schema::number().range(1e-15, 1e-3).default_value("1e-12"),
                 "Relative tolerance on the filled pore volume.")
@@ -123,10 +124,13 @@ Schema numerics_schema() {
   Schema turbulence = Schema::object("Smagorinsky LES (eqs. 17-19).");
   turbulence.required("model", Schema::one_of({"smagorinsky"}), "The model.")
       .optional("constant", Schema::number().range(0.0, 1.0).default_value("0.17"), "C_s.");
-  Schema numerics = Schema::object(
-      "Time stepping and schemes. The step is dt = min(cfl / max_c sum_d (|U_d| [+ c]) / dx_d, "
-      "max_step_growth * previous dt, max_time_step, time to the next output); a step whose face "
-      "Courant number exceeds 1 is repeated with half the step.");
+  Schema numerics =
+      Schema::object(
+          "Time stepping and schemes. The step is dt = min(cfl / max_c sum_d (|U_d| [+ c]) / dx_d, "
+          "max_step_growth * previous dt, max_time_step, time to the next output); a step whose "
+          "face "
+          "Courant number exceeds 1 is repeated with half the step.")
+          .default_value("{}");
   numerics
       .optional("cfl", Schema::number().range(1e-3, 1.0).default_value("0.4"), "Courant number.")
       .optional("acoustic", Schema::boolean().default_value("false"),
@@ -136,9 +140,8 @@ Schema numerics_schema() {
                 "First step.")
       .optional("min_time_step", Schema::number().positive().unit("s").default_value("1e-10"),
                 "A step below this ends the run as a numerical failure (exit 4).")
-      .optional("max_time_step",
-                Schema::number().non_negative().unit("s").default_value("0 (none)"),
-                "Largest step.")
+      .optional("max_time_step", Schema::number().non_negative().unit("s").default_value("0"),
+                "Largest step; 0: none.")
       .optional("max_step_growth", Schema::number().range(1.0, 10.0).default_value("1.2"),
                 "Largest ratio of one step to the previous.")
       .optional("limiter", Schema::one_of(limiter_names()).default_value("van_leer"),
@@ -154,7 +157,7 @@ Schema output_schema() {
   Schema gauge = Schema::object("A gauge: pressure, velocity and volume fractions at a point.");
   gauge.required("name", Schema::string().non_empty(), "Column suffix in gauges.csv.")
       .required("point", vector_schema("m"), "Position.");
-  Schema output = Schema::object("What the run writes.");
+  Schema output = Schema::object("What the run writes.").default_value("{}");
   output
       .optional("every", Schema::number().non_negative().unit("s").default_value("0"),
                 "Snapshot interval; 0: start and end only.")
@@ -166,9 +169,11 @@ Schema output_schema() {
 }
 
 Schema coupling_schema() {
-  Schema coupling = Schema::object(
-      "How ice_fluid takes part in a coupled run with a porous solid on its mesh 'ice_cells' "
-      "(ignored standalone).");
+  Schema coupling =
+      Schema::object(
+          "How ice_fluid takes part in a coupled run with a porous solid on its mesh 'ice_cells' "
+          "(ignored standalone).")
+          .default_value("{}");
   coupling
       .optional("drag", Schema::one_of({"coupler", "ice"}).default_value("coupler"),
                 "coupler: read the momentum the coupler's exchange gives the fluid "
@@ -196,7 +201,7 @@ Schema ice_case_schema() {
   file.required("name", Schema::string().non_empty(), "Name of the case.")
       .required("dimension", Schema::integer().range(1, 3), "1, 2 or 3.")
       .required("grid", grid, "The cells.")
-      .optional("gravity", vector_schema("m/s^2").default_value("0"), "Gravity vector.")
+      .optional("gravity", vector_schema("m/s^2").default_note("zero"), "Gravity vector.")
       .required("end_time", Schema::number().positive().unit("s"), "Simulated end time.")
       .required("materials", Schema::map_of(material_schema()),
                 "The fluid materials by name, in this order (at most 8).")

@@ -29,9 +29,8 @@ cosim::RunSize run_size(int dimension, double cells, int materials,
   const auto d = static_cast<std::size_t>(dimension);
   cosim::RunSize size;
   size.fixed_bytes = program_bytes;
-  size.add({"cells", cells,
-            shared_bytes_per_cell[d] + materials * bytes_per_cell_and_material[d], most_cells,
-            case_root["grid"]["cells"]});
+  size.add({"cells", cells, shared_bytes_per_cell[d] + materials * bytes_per_cell_and_material[d],
+            most_cells, case_root["grid"]["cells"]});
   return size;
 }
 

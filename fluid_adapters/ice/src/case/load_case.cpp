@@ -32,6 +32,7 @@ class CaseReader {
   CaseDescription read() {
     cosim::config::expect_kind(root_, "ice_case");
     ice_case_schema().validate(root_);
+    ice_case_schema().add_defaults(root_);
     CaseDescription c;
     c.file = document_.path();
     c.config_hash = cosim::hash_bytes(document_.text());
@@ -49,12 +50,11 @@ class CaseReader {
     read_boundaries(c);
     read_numerics(c);
     read_output(c);
-    c.threads = root_.get<int>("threads", 0);
-    if (auto coupling = root_.find("coupling")) {
-      c.coupling.drag_in_solver = coupling->get<std::string>("drag", "coupler") == "ice";
-      c.coupling.minimum_porosity = coupling->get<double>("minimum_porosity", 0.05);
-      c.coupling.heat_exchange = coupling->get<bool>("heat_exchange", false);
-    }
+    c.threads = root_.get<int>("threads");
+    const Node coupling = root_["coupling"];
+    c.coupling.drag_in_solver = coupling.get<std::string>("drag") == "ice";
+    c.coupling.minimum_porosity = coupling.get<double>("minimum_porosity");
+    c.coupling.heat_exchange = coupling.get<bool>("heat_exchange");
     return c;
   }
 
@@ -97,10 +97,10 @@ class CaseReader {
       const double faces = cell_count(c) / c.cells[static_cast<std::size_t>(d)] *
                            (c.cells[static_cast<std::size_t>(d)] + 1.0);
       if (faces > std::numeric_limits<int>::max()) {
-        cells.fail(fmt::format("the grid has {} faces normal to {}, more than the solver's indices "
-                               "hold ({})",
-                               cosim::grouped(faces), axis_names[d],
-                               std::numeric_limits<int>::max()));
+        cells.fail(
+            fmt::format("the grid has {} faces normal to {}, more than the solver's indices "
+                        "hold ({})",
+                        cosim::grouped(faces), axis_names[d], std::numeric_limits<int>::max()));
       }
     }
   }
@@ -121,8 +121,8 @@ class CaseReader {
       FluidMaterial m;
       m.name = name;
       m.eos = make_equation_of_state(node["eos"]);
-      m.viscosity = node.get<double>("viscosity", 0.0);
-      m.thermal_conductivity = node.get<double>("thermal_conductivity", 0.0);
+      m.viscosity = node.get<double>("viscosity");
+      m.thermal_conductivity = node.get<double>("thermal_conductivity");
       c.materials.push_back(std::move(m));
     }
     c.exchange = ExchangeCoefficients::none(static_cast<int>(c.materials.size()));
@@ -151,7 +151,7 @@ class CaseReader {
       const auto ab = static_cast<std::size_t>(a) * n + static_cast<std::size_t>(b);
       if (seen[ab]) pair["materials"].fail("this pair is already listed");
       seen[ab] = seen[static_cast<std::size_t>(b) * n + static_cast<std::size_t>(a)] = true;
-      c.exchange.set(a, b, pair.get<double>("momentum", 0.0), pair.get<double>("heat", 0.0));
+      c.exchange.set(a, b, pair.get<double>("momentum"), pair.get<double>("heat"));
     }
   }
 
@@ -162,10 +162,10 @@ class CaseReader {
     if (auto p = initial.find("pressure"); p && p->as<std::string>() != "hydrostatic") {
       i.pressure = p->as<double>();
     }
-    i.reference_pressure = initial.get<double>("reference_pressure", 101325.0);
-    i.temperature = initial.get<double>("temperature", 293.15);
+    i.reference_pressure = initial.get<double>("reference_pressure");
+    i.temperature = initial.get<double>("temperature");
     if (auto v = initial.find("velocity")) i.velocity = vector_of(*v);
-    i.minimum_volume_fraction = initial.get<double>("minimum_volume_fraction", 1e-6);
+    i.minimum_volume_fraction = initial.get<double>("minimum_volume_fraction");
     if (i.minimum_volume_fraction * static_cast<double>(c.materials.size()) >= 0.5) {
       initial["minimum_volume_fraction"].fail("too large for this many materials");
     }
@@ -254,46 +254,40 @@ class CaseReader {
   }
 
   void read_numerics(CaseDescription& c) {
-    const auto node = root_.find("numerics");
-    if (!node) return;
+    const Node node = root_["numerics"];
     NumericsDescription& n = c.numerics;
-    n.cfl = node->get<double>("cfl", n.cfl);
-    n.acoustic = node->get<bool>("acoustic", n.acoustic);
-    n.initial_time_step = node->get<double>("initial_time_step", n.initial_time_step);
-    n.min_time_step = node->get<double>("min_time_step", n.min_time_step);
-    n.max_time_step = node->get<double>("max_time_step", n.max_time_step);
-    n.max_step_growth = node->get<double>("max_step_growth", n.max_step_growth);
+    n.cfl = node.get<double>("cfl");
+    n.acoustic = node.get<bool>("acoustic");
+    n.initial_time_step = node.get<double>("initial_time_step");
+    n.min_time_step = node.get<double>("min_time_step");
+    n.max_time_step = node.get<double>("max_time_step");
+    n.max_step_growth = node.get<double>("max_step_growth");
     if (n.min_time_step > n.initial_time_step) {
-      (*node)["min_time_step"].fail(
+      node["min_time_step"].fail(
           fmt::format("is above initial_time_step = {}", n.initial_time_step));
     }
-    if (auto l = node->find("limiter")) n.limiter = limiter_from_name(l->as<std::string>());
-    if (auto p = node->find("pressure")) {
-      n.pressure.tolerance = p->get<double>("tolerance", n.pressure.tolerance);
-      n.pressure.max_iterations = p->get<int>("max_iterations", n.pressure.max_iterations);
-      if (auto pc = p->find("preconditioner")) {
-        n.pressure.preconditioner = pressure_preconditioner_from_name(pc->as<std::string>());
-      }
-    }
-    if (auto e = node->find("equilibration")) {
-      n.equilibration.tolerance = e->get<double>("tolerance", n.equilibration.tolerance);
-      n.equilibration.max_iterations =
-          e->get<int>("max_iterations", n.equilibration.max_iterations);
-    }
-    if (auto t = node->find("turbulence"); t && !t->is_scalar()) {
-      n.smagorinsky_constant = t->get<double>("constant", 0.17);
+    n.limiter = limiter_from_name(node.get<std::string>("limiter"));
+    const Node pressure = node["pressure"];
+    n.pressure.tolerance = pressure.get<double>("tolerance");
+    n.pressure.max_iterations = pressure.get<int>("max_iterations");
+    n.pressure.preconditioner =
+        pressure_preconditioner_from_name(pressure.get<std::string>("preconditioner"));
+    const Node equilibration = node["equilibration"];
+    n.equilibration.tolerance = equilibration.get<double>("tolerance");
+    n.equilibration.max_iterations = equilibration.get<int>("max_iterations");
+    if (auto t = node.find("turbulence"); t && !t->is_scalar()) {
+      n.smagorinsky_constant = t->get<double>("constant");
     }
   }
 
   void read_output(CaseDescription& c) {
-    const auto node = root_.find("output");
-    if (!node) return;
-    c.output_every = node->get<double>("every", 0.0);
-    c.snapshots = node->get<bool>("snapshots", true);
-    c.gauge_every = node->get<double>("gauge_every", 0.0);
+    const Node node = root_["output"];
+    c.output_every = node.get<double>("every");
+    c.snapshots = node.get<bool>("snapshots");
+    c.gauge_every = node.get<double>("gauge_every");
     for (const char* key : {"every", "gauge_every"})
-      if (auto interval = node->find(key)) cosim::check_output_interval(*interval, c.end_time);
-    if (auto gauges = node->find("gauges")) {
+      cosim::check_output_interval(node[key], c.end_time);
+    if (auto gauges = node.find("gauges")) {
       for (const Node& g : gauges->items()) {
         GaugePoint p{g["name"].as<std::string>(), vector_of(g["point"])};
         for (int d = 0; d < dimension_; ++d) {

@@ -14,10 +14,12 @@ using cosim::config::Schema;
 IdealGas::IdealGas(double gas_constant, double specific_heat)
     : EquationOfState(specific_heat), gas_constant_(gas_constant) {
   if (!(gas_constant > 0.0 && std::isfinite(gas_constant))) {
-    throw std::invalid_argument(fmt::format("ideal gas: gas constant must be > 0 (got {})", gas_constant));
+    throw std::invalid_argument(
+        fmt::format("ideal gas: gas constant must be > 0 (got {})", gas_constant));
   }
   if (!(specific_heat > 0.0 && std::isfinite(specific_heat))) {
-    throw std::invalid_argument(fmt::format("ideal gas: specific heat must be > 0 (got {})", specific_heat));
+    throw std::invalid_argument(
+        fmt::format("ideal gas: specific heat must be > 0 (got {})", specific_heat));
   }
 }
 

@@ -25,10 +25,12 @@ LinearWater::LinearWater(const LinearWaterParameters& p)
       parameters_(p),
       stiffness_(p.bulk_modulus / p.reference_density),
       thermal_density_slope_(p.reference_density * p.thermal_expansion) {
-  require(p.bulk_modulus > 0.0 && std::isfinite(p.bulk_modulus), "bulk modulus must be > 0", p.bulk_modulus);
-  require(p.reference_density > 0.0 && std::isfinite(p.reference_density), "reference density must be > 0",
-          p.reference_density);
-  require(std::isfinite(p.reference_pressure), "reference pressure must be finite", p.reference_pressure);
+  require(p.bulk_modulus > 0.0 && std::isfinite(p.bulk_modulus), "bulk modulus must be > 0",
+          p.bulk_modulus);
+  require(p.reference_density > 0.0 && std::isfinite(p.reference_density),
+          "reference density must be > 0", p.reference_density);
+  require(std::isfinite(p.reference_pressure), "reference pressure must be finite",
+          p.reference_pressure);
   require(p.reference_temperature > 0.0 && std::isfinite(p.reference_temperature),
           "reference temperature must be > 0 K", p.reference_temperature);
   require(p.thermal_expansion >= 0.0 && std::isfinite(p.thermal_expansion),
@@ -47,9 +49,10 @@ Schema LinearWater::schema() {
                 "Bulk modulus K = rho dP/drho (2.0e9 to 2.2e9 for water).")
       .required("reference_density", Schema::number().positive().unit("kg/m3"),
                 "Density rho_ref at P_ref and T_ref (999.8 for fresh water at 10 degC).")
-      .optional("reference_pressure",
-                Schema::number().unit("Pa").default_value(fmt::format("{}", defaults.reference_pressure)),
-                "Reference pressure P_ref.")
+      .optional(
+          "reference_pressure",
+          Schema::number().unit("Pa").default_value(fmt::format("{}", defaults.reference_pressure)),
+          "Reference pressure P_ref.")
       .optional("reference_temperature",
                 Schema::number().positive().unit("K").default_value(
                     fmt::format("{}", defaults.reference_temperature)),
@@ -60,8 +63,10 @@ Schema LinearWater::schema() {
                 "Volumetric thermal expansion beta = -(1/rho) drho/dT (water at 20 degC); "
                 "eq. 35's alpha is rho_ref beta.")
       .optional("specific_heat",
-                Schema::number().positive().unit("J/(kg K)").default_value(
-                    fmt::format("{}", defaults.specific_heat)),
+                Schema::number()
+                    .positive()
+                    .unit("J/(kg K)")
+                    .default_value(fmt::format("{}", defaults.specific_heat)),
                 "Specific heat at constant volume c_v.");
   return schema;
 }

@@ -212,8 +212,7 @@ void IceSolver<Dim>::exchange_two_fluid_faces(double dt) {
     double* u_1 = face_velocity_[1][at(d)].data();
     double* y_0 = face_correction_[0][at(d)].data();
     double* y_1 = face_correction_[1][at(d)].data();
-    const auto exchange = [&](int f, double w_0, double w_1, double fraction_0,
-                              double fraction_1) {
+    const auto exchange = [&](int f, double w_0, double w_1, double fraction_0, double fraction_1) {
       const double dt_c = dt * (k * fraction_0 * fraction_1);
       if (!(w_0 > 0.0 && w_1 > 0.0 && dt_c > 0.0)) return;
       const double resistance = 1.0 / dt_c + 1.0 / w_0 + 1.0 / w_1;

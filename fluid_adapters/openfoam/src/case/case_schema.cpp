@@ -36,8 +36,9 @@ Schema generate_schema() {
   Schema pressure_side = Schema::object("A side held at a fixed pressure.");
   pressure_side.required("pressure", Schema::number().unit("Pa"),
                          "p_rgh on the side (p - rho g.x); water flows in, anything out.");
+  // A note, not a value: a 2D case may not name its z sides at all.
   Schema side = Schema::any_of({Schema::one_of({"wall", "slip", "atmosphere"}), pressure_side})
-                    .default_value("wall");
+                    .default_note("wall");
   Schema boundaries = Schema::object(
       "What each side is: wall (no slip), slip (free slip), atmosphere (open, total pressure "
       "0, air flows in, anything flows out) or {pressure: p} (fixed p_rgh, water flows in); "
@@ -49,7 +50,7 @@ Schema generate_schema() {
       "the solver (VOF water and air, laminar).");
   generate.required("dimension", Schema::integer().range(2, 3), "2 or 3.")
       .required("grid", grid, "The cells; in 2D one cell of the smallest spacing thick along z.")
-      .optional("gravity", vector_schema("m/s^2").default_value("0"), "Gravity vector.")
+      .optional("gravity", vector_schema("m/s^2").default_note("zero"), "Gravity vector.")
       .required("fluids", fluids, "Water and air.")
       .optional("surface_tension",
                 Schema::number().non_negative().unit("N/m").default_value("0.07"),
@@ -72,7 +73,7 @@ Schema openfoam_case_schema() {
   wave_gauge.required("name", Schema::string().non_empty(), "Column prefix in gauges.csv.")
       .required("x", Schema::number().unit("m"), "Where along x.")
       .optional("z", Schema::number().unit("m").default_value("0"), "Where along z (3D).");
-  Schema output = Schema::object("What the run writes.");
+  Schema output = Schema::object("What the run writes.").default_value("{}");
   output
       .optional("every", Schema::number().non_negative().unit("s").default_value("0"),
                 "Snapshot interval (HDF5 + XDMF); 0: start and end only.")
@@ -85,7 +86,7 @@ Schema openfoam_case_schema() {
       "Run OpenFOAM on several processes: the case is decomposed once at the start "
       "(decomposePar, method simple) and never reconstructed.");
   parallel.required("processes", Schema::integer().range(1, 1024), "How many MPI processes.")
-      .optional("split", Schema::vector(2, 3).default_value("[processes, 1, 1]"),
+      .optional("split", Schema::vector(2, 3).default_note("[processes, 1, 1]"),
                 "Blocks per direction (x, y, z); their product is `processes`.");
   Schema soil = Schema::object("How the MPM soil enters OpenFOAM in a coupled run.");
   soil.optional("model", Schema::one_of({"parcels", "porosity_zones"}).default_value("parcels"),
@@ -131,7 +132,8 @@ Schema openfoam_case_schema() {
       .required("time_step", Schema::number().positive().unit("s"),
                 "OpenFOAM's fixed deltaT; every window and snapshot interval is a whole number "
                 "of steps.")
-      .optional("window", Schema::number().positive().unit("s").default_value("output.every"),
+      .optional("window",
+                Schema::number().positive().unit("s").default_note("output.every, else end_time"),
                 "Standalone: OpenFOAM runs this long per start (the adapter reads its fields "
                 "between starts). Coupled, the job's window applies.")
       .optional("window_timeout", Schema::number().positive().unit("s").default_value("600"),

@@ -33,11 +33,10 @@ constexpr double most_cells = std::numeric_limits<int>::max();
 
 cosim::RunSize run_size(const CaseDescription& c, const cosim::config::Node& case_root) {
   cosim::RunSize size;
-  size.fixed_bytes =
-      adapter_bytes +
-      c.processes * (c.has_cloud() ? cloud_solver_process_bytes : solver_process_bytes);
-  const double per_cell =
-      adapter_bytes_per_cell + (c.has_cloud() ? cloud_solver_bytes_per_cell : solver_bytes_per_cell);
+  size.fixed_bytes = adapter_bytes + c.processes * (c.has_cloud() ? cloud_solver_process_bytes
+                                                                  : solver_process_bytes);
+  const double per_cell = adapter_bytes_per_cell +
+                          (c.has_cloud() ? cloud_solver_bytes_per_cell : solver_bytes_per_cell);
   if (c.generate) {
     double cells = 1.0;
     for (int n : c.generate->cells) cells *= n;

@@ -1,12 +1,11 @@
 #include "openfoam/case/existing_case.hpp"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <fstream>
 #include <sstream>
 #include <string>
-
-#include <spdlog/spdlog.h>
 
 #include "cosim/error.hpp"
 #include "cosim/io/files.hpp"
@@ -123,8 +122,9 @@ bool has_binary_files(const fs::path& directory) {
 void prepare_cloud_in_copy(const DictionaryQuery& query, const SoilSettings& soil) {
   const fs::path properties = query.case_dir / "constant" / "kinematicCloudProperties";
   if (fs::exists(properties)) {
-    spdlog::info("the case's constant/kinematicCloudProperties is replaced by the soil's parcels' "
-                 "(one per cell, Ergun-Wen-Yu drag, no injection)");
+    spdlog::info(
+        "the case's constant/kinematicCloudProperties is replaced by the soil's parcels' "
+        "(one per cell, Ergun-Wen-Yu drag, no injection)");
   }
   cosim::write_file_atomically(properties, soil_cloud_properties(soil));
   const std::string stress = "div((((alphac*rho)*nuEff)*dev2(T(grad(U)))))";
@@ -134,17 +134,19 @@ void prepare_cloud_in_copy(const DictionaryQuery& query, const SoilSettings& soi
     const std::string scheme =
         dictionary_value(query, schemes, "divSchemes/div(((rho*nuEff)*dev2(T(grad(U)))))");
     set_dictionary_entry(query, schemes, "divSchemes/" + stress, scheme);
-    spdlog::info("MPPICInterFoam's stress scheme {} is added to the case's system/fvSchemes as "
-                 "interFoam's: {}",
-                 stress, scheme);
+    spdlog::info(
+        "MPPICInterFoam's stress scheme {} is added to the case's system/fvSchemes as "
+        "interFoam's: {}",
+        stress, scheme);
   }
 }
 
 void convert_copy_to_ascii(const DictionaryQuery& query) {
   const fs::path& c = query.case_dir;
   if (!has_binary_files(c / "constant" / "polyMesh") && !has_binary_files(c / "0")) return;
-  spdlog::info("the case's mesh or initial fields are binary or compressed: converted to ASCII "
-               "(foamFormatConvert) in the run's copy");
+  spdlog::info(
+      "the case's mesh or initial fields are binary or compressed: converted to ASCII "
+      "(foamFormatConvert) in the run's copy");
   run_application(query.installation, "foamFormatConvert", {"-constant"}, c,
                   query.log_file.parent_path() / "foamFormatConvert.log");
   for (const fs::path& dir : {c / "constant" / "polyMesh", c / "0"}) {

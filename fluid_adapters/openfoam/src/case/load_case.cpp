@@ -37,11 +37,12 @@ class CaseReader {
   CaseDescription read() {
     cosim::config::expect_kind(root_, "openfoam_case");
     openfoam_case_schema().validate(root_);
+    openfoam_case_schema().add_defaults(root_);
     CaseDescription c;
     c.file = document_.path();
     c.config_hash = cosim::hash_bytes(document_.text());
     c.name = root_["name"].as<std::string>();
-    c.solver = root_.get<std::string>("solver", "interFoam");
+    c.solver = root_.get<std::string>("solver");
     const auto generate = root_.find("generate");
     const auto directory = root_.find("directory");
     if (generate && directory) directory->fail("give either `generate` or `directory`, not both");
@@ -56,10 +57,11 @@ class CaseReader {
       root_["time_step"].fail(
           fmt::format("time step {} s is longer than the end time {} s", c.time_step, c.end_time));
     }
-    if (auto output = root_.find("output")) {
-      c.output_every = output->get<double>("every", 0.0);
-      if (auto every = output->find("every")) cosim::check_output_interval(*every, c.end_time);
-      if (auto gauges = output->find("gauges")) {
+    {
+      const Node output = root_["output"];
+      c.output_every = output.get<double>("every");
+      cosim::check_output_interval(output["every"], c.end_time);
+      if (auto gauges = output.find("gauges")) {
         for (const Node& g : gauges->items()) {
           Gauge gauge{g["name"].as<std::string>(), {}};
           const auto point = g["point"].as<std::vector<double>>();
@@ -67,11 +69,10 @@ class CaseReader {
           c.gauges.push_back(gauge);
         }
       }
-      if (auto waves = output->find("wave_gauges")) {
+      if (auto waves = output.find("wave_gauges")) {
         if (!c.generate) waves->fail("wave gauges need a generated case (its columns of cells)");
         for (const Node& g : waves->items()) {
-          WaveGauge gauge{g["name"].as<std::string>(), g["x"].as<double>(),
-                          g.get<double>("z", 0.0)};
+          WaveGauge gauge{g["name"].as<std::string>(), g["x"].as<double>(), g.get<double>("z")};
           const GeneratedCase& box = *c.generate;
           if (gauge.x < box.origin[0] || gauge.x > box.upper[0]) {
             g["x"].fail(fmt::format("x = {} m is outside the grid [{}, {}] m", gauge.x,
@@ -95,18 +96,18 @@ class CaseReader {
     // Every window starts OpenFOAM afresh (about a second each).
     if (auto window = root_.find("window");
         window && c.end_time / c.window > cosim::max_output_count) {
-      window->fail(fmt::format("the window {} s starts OpenFOAM {:.3g} times over the run's {} s, "
-                               "more than {:g}; give a longer window",
-                               c.window, c.end_time / c.window, c.end_time,
-                               cosim::max_output_count));
+      window->fail(
+          fmt::format("the window {} s starts OpenFOAM {:.3g} times over the run's {} s, "
+                      "more than {:g}; give a longer window",
+                      c.window, c.end_time / c.window, c.end_time, cosim::max_output_count));
     }
     if (!is_whole_number_of_steps(c.end_time, c.time_step)) {
       root_["end_time"].fail(
           fmt::format("the end time {} s is not a whole number of time steps of {} s", c.end_time,
                       c.time_step));
     }
-    c.keep_time_directories = root_.get<bool>("keep_time_directories", false);
-    c.window_timeout = root_.get<double>("window_timeout", c.window_timeout);
+    c.keep_time_directories = root_.get<bool>("keep_time_directories");
+    c.window_timeout = root_.get<double>("window_timeout");
     if (auto parallel = root_.find("parallel")) {
       c.processes = (*parallel)["processes"].as<int>();
       c.split = {c.processes, 1, 1};
@@ -128,7 +129,7 @@ class CaseReader {
       }
     }
     if (auto soil = root_.find("soil")) {
-      if (soil->get<std::string>("model", "parcels") == "porosity_zones") {
+      if (soil->get<std::string>("model") == "porosity_zones") {
         c.soil.model = SoilModel::porosity_zones;
         if (c.has_cloud()) {
           (*soil)["model"].fail("porosity_zones run interFoam (`solver: interFoam`), not " +
@@ -137,13 +138,11 @@ class CaseReader {
       } else if (!c.has_cloud()) {
         soil->fail("`soil` with parcels needs `solver: MPPICInterFoam` (the soil's parcels)");
       }
-      c.soil.zones = soil->get<int>("zones", c.soil.zones);
-      c.soil.parcel_density = soil->get<double>("parcel_density", c.soil.parcel_density);
-      c.soil.max_solid_fraction =
-          soil->get<double>("max_solid_fraction", c.soil.max_solid_fraction);
-      c.soil.minimum_solid_fraction =
-          soil->get<double>("minimum_solid_fraction", c.soil.minimum_solid_fraction);
-      c.soil.displaced_water = soil->get<bool>("displaced_water", c.soil.displaced_water);
+      c.soil.zones = soil->get<int>("zones");
+      c.soil.parcel_density = soil->get<double>("parcel_density");
+      c.soil.max_solid_fraction = soil->get<double>("max_solid_fraction");
+      c.soil.minimum_solid_fraction = soil->get<double>("minimum_solid_fraction");
+      c.soil.displaced_water = soil->get<bool>("displaced_water");
     }
     c.size = run_size(c, root_);
     cosim::check_run_size(c.size, root_);
@@ -199,8 +198,8 @@ class CaseReader {
     const Node fluids = g["fluids"];
     c.water = {fluids["water"]["density"].as<double>(), fluids["water"]["viscosity"].as<double>()};
     c.air = {fluids["air"]["density"].as<double>(), fluids["air"]["viscosity"].as<double>()};
-    c.surface_tension = g.get<double>("surface_tension", 0.07);
-    c.initial_pressure = g.get<double>("initial_pressure", 0.0);
+    c.surface_tension = g.get<double>("surface_tension");
+    c.initial_pressure = g.get<double>("initial_pressure");
     if (auto regions = g.find("water")) {
       for (const Node& region : regions->items()) {
         const Node box = region["box"];

@@ -27,7 +27,8 @@ std::string function_objects(const ControlSettings& s) {
   if (!s.write_density_at && !s.write_steps_between) return {};
   std::string text = "\nfunctions\n{\n";
   if (s.write_density_at)
-    text += object_writer("densityBeforeWindowEnd", "rho", *s.write_density_at, *s.write_density_at);
+    text +=
+        object_writer("densityBeforeWindowEnd", "rho", *s.write_density_at, *s.write_density_at);
   if (s.write_steps_between) {
     text += object_writer("exchangeWithinWindow", "p \"kinematicCloud:UTrans\"",
                           s.write_steps_between->first, s.write_steps_between->second);

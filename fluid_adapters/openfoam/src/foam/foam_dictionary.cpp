@@ -27,10 +27,12 @@ std::vector<double> trailing_numbers(std::string_view text) {
   std::vector<std::string_view> tokens;
   std::size_t i = 0;
   while (i < text.size()) {
-    while (i < text.size() && std::string_view(" \t\n\r();").find(text[i]) != std::string_view::npos)
+    while (i < text.size() &&
+           std::string_view(" \t\n\r();").find(text[i]) != std::string_view::npos)
       ++i;
     std::size_t j = i;
-    while (j < text.size() && std::string_view(" \t\n\r();").find(text[j]) == std::string_view::npos)
+    while (j < text.size() &&
+           std::string_view(" \t\n\r();").find(text[j]) == std::string_view::npos)
       ++j;
     if (j > i) tokens.push_back(text.substr(i, j - i));
     i = j;
@@ -56,17 +58,18 @@ std::string dictionary_value(const DictionaryQuery& query, const fs::path& file,
   }
   std::string output;
   try {
-    output = application_output(query.installation, "foamDictionary",
-                                {"-precision", "17", (query.case_dir / file).string(), "-entry",
-                                 entry, "-value"},
-                                query.case_dir, query.log_file);
+    output = application_output(
+        query.installation, "foamDictionary",
+        {"-precision", "17", (query.case_dir / file).string(), "-entry", entry, "-value"},
+        query.case_dir, query.log_file);
   } catch (const cosim::Error&) {
     bad_entry(query.case_dir / file, entry,
               fmt::format("OpenFOAM's foamDictionary finds no such entry (see {})",
                           query.log_file.string()));
   }
   // The value is the output's last line (OpenFOAM may warn before it).
-  while (!output.empty() && std::isspace(static_cast<unsigned char>(output.back()))) output.pop_back();
+  while (!output.empty() && std::isspace(static_cast<unsigned char>(output.back())))
+    output.pop_back();
   const std::size_t line = output.rfind('\n');
   return line == std::string::npos ? output : output.substr(line + 1);
 }
@@ -74,8 +77,8 @@ std::string dictionary_value(const DictionaryQuery& query, const fs::path& file,
 void set_dictionary_entry(const DictionaryQuery& query, const fs::path& file,
                           const std::string& entry, const std::string& value) {
   run_application(query.installation, "foamDictionary",
-                  {(query.case_dir / file).string(), "-entry", entry, "-set", value}, query.case_dir,
-                  query.log_file);
+                  {(query.case_dir / file).string(), "-entry", entry, "-set", value},
+                  query.case_dir, query.log_file);
 }
 
 double scalar_value(std::string_view value, const fs::path& file, const std::string& entry) {

@@ -113,8 +113,7 @@ std::vector<double> CaseLayout::read_gathered(const std::string& name, const std
   for (int p = 0; p < processes_; ++p) {
     const auto& addressing = addressing_[static_cast<std::size_t>(p)];
     gather(whole,
-           read_internal_field(processor_dir(case_dir_, p) / name / field, type,
-                               addressing.size()),
+           read_internal_field(processor_dir(case_dir_, p) / name / field, type, addressing.size()),
            addressing, k);
   }
   return whole;
@@ -159,7 +158,8 @@ void CaseLayout::write_scalar_field(const std::string& name, const std::string& 
       "    \".*\"\n    {\n        type zeroGradient;\n    }\n"
       "    #includeEtc \"caseDicts/setConstraintTypes\"\n"
       "    processor\n    {\n        type processor;\n        value uniform 0;\n    }\n"
-      "    processorCyclic\n    {\n        type processorCyclic;\n        value uniform 0;\n    }\n";
+      "    processorCyclic\n    {\n        type processorCyclic;\n        value uniform 0;\n    "
+      "}\n";
   if (processes_ <= 1) {
     write_vol_field(case_dir_ / name / field, name,
                     {FieldType::scalar, dimensions, values, boundary});

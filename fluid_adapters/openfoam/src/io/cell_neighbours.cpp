@@ -32,10 +32,10 @@ CellNeighbours CellNeighbours::of_mesh(const std::filesystem::path& poly_mesh, s
   const std::vector<std::int64_t> owner = read_label_list(poly_mesh / "owner");
   const std::vector<std::int64_t> neighbour = read_label_list(poly_mesh / "neighbour");
   if (neighbour.size() > owner.size()) {
-    throw cosim::Error(cosim::ExitCode::participant_failed,
-                       fmt::format("{}: {} internal faces but only {} faces in owner",
-                                   (poly_mesh / "neighbour").string(), neighbour.size(),
-                                   owner.size()));
+    throw cosim::Error(
+        cosim::ExitCode::participant_failed,
+        fmt::format("{}: {} internal faces but only {} faces in owner",
+                    (poly_mesh / "neighbour").string(), neighbour.size(), owner.size()));
   }
   std::vector<std::size_t> count(cells + 1, 0);
   const auto cell_of = [&](std::int64_t label, const char* file) {
@@ -52,7 +52,8 @@ CellNeighbours CellNeighbours::of_mesh(const std::filesystem::path& poly_mesh, s
   }
   CellNeighbours result;
   result.offsets_.assign(cells + 1, 0);
-  for (std::size_t c = 0; c < cells; ++c) result.offsets_[c + 1] = result.offsets_[c] + count[c + 1];
+  for (std::size_t c = 0; c < cells; ++c)
+    result.offsets_[c + 1] = result.offsets_[c] + count[c + 1];
   result.cells_.resize(result.offsets_.back());
   std::vector<std::size_t> fill(result.offsets_.begin(), result.offsets_.end() - 1);
   for (std::size_t f = 0; f < neighbour.size(); ++f) {

@@ -60,8 +60,8 @@ void complete_pressure(FoamFields& f, const std::vector<double>& centres,
       std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) * properties.reference_height;
   f.p.resize(f.p_rgh.size());
   for (std::size_t c = 0; c < f.p.size(); ++c) {
-    const double gh =
-        g[0] * centres[3 * c] + g[1] * centres[3 * c + 1] + g[2] * centres[3 * c + 2] + gh_reference;
+    const double gh = g[0] * centres[3 * c] + g[1] * centres[3 * c + 1] +
+                      g[2] * centres[3 * c + 2] + gh_reference;
     f.p[c] = f.p_rgh[c] + mixture_density(f, c, properties.water, properties.air) * gh;
   }
 }

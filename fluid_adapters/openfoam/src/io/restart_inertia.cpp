@@ -25,11 +25,11 @@ std::vector<double> restart_fluid_fraction(std::span<const double> fluid_fractio
                                            std::span<const double> density_end) {
   if (density_before.size() != fluid_fraction.size() ||
       density_end.size() != fluid_fraction.size()) {
-    throw cosim::Error(cosim::ExitCode::participant_failed,
-                       fmt::format("MPPICInterFoam's alphac and rho differ in length ({}, {} and "
-                                   "{} cells)",
-                                   fluid_fraction.size(), density_before.size(),
-                                   density_end.size()));
+    throw cosim::Error(
+        cosim::ExitCode::participant_failed,
+        fmt::format("MPPICInterFoam's alphac and rho differ in length ({}, {} and "
+                    "{} cells)",
+                    fluid_fraction.size(), density_before.size(), density_end.size()));
   }
   std::vector<double> lagged(fluid_fraction.size());
   for (std::size_t c = 0; c < lagged.size(); ++c)

@@ -27,8 +27,8 @@
 #include "openfoam/cloud/soil_cloud.hpp"
 #include "openfoam/foam/control_dict.hpp"
 #include "openfoam/foam/field_file.hpp"
-#include "openfoam/foam/foam_dictionary.hpp"
 #include "openfoam/foam/foam_application.hpp"
+#include "openfoam/foam/foam_dictionary.hpp"
 #include "openfoam/foam/time_directories.hpp"
 #include "openfoam/io/case_layout.hpp"
 #include "openfoam/io/case_mesh.hpp"
@@ -324,7 +324,8 @@ class CaseRun {
                              .end_time = end,
                              .time_step = c_.time_step,
                              .write_every = steps,
-                             .write_density_at = {}, .write_steps_between = {}};
+                             .write_density_at = {},
+                             .write_steps_between = {}};
     if (c_.has_cloud() && steps > 1) {
       settings.write_density_at = end - c_.time_step;
       if (coupled_) settings.write_steps_between = {start + c_.time_step, end - c_.time_step};
@@ -512,10 +513,10 @@ void check_overwrite_spares_the_case(const cosim::SolverCommandLine& options) {
     return;
   }
   if (!directory.empty() && cosim::is_inside(directory, options.output))
-    throw cosim::InputError(fmt::format("--overwrite would clear '{}', which holds the OpenFOAM "
-                                        "case '{}' of {}",
-                                        options.output.string(), directory.string(),
-                                        options.config.string()));
+    throw cosim::InputError(
+        fmt::format("--overwrite would clear '{}', which holds the OpenFOAM "
+                    "case '{}' of {}",
+                    options.output.string(), directory.string(), options.config.string()));
 }
 
 }  // namespace

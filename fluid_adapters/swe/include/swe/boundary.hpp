@@ -11,7 +11,8 @@ namespace swe {
 enum class BoundaryKind : std::uint8_t {
   wall,              // reflective: ghost mirrors the interior, normal velocity negated
   transmissive,      // zero gradient: ghost copies the interior
-  inflow_discharge,  // prescribed normal discharge q [m^2/s] into the domain; depth from the interior
+  inflow_discharge,  // prescribed normal discharge q [m^2/s] into the domain; depth from the
+                     // interior
   fixed_depth,       // prescribed depth [m]; velocity from the outgoing Riemann invariant
 };
 

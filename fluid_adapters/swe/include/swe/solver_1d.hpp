@@ -61,7 +61,8 @@ class Solver1d final : public Solver {
   double cell_size(std::size_t cell) const override;
   std::size_t cell_at(double x, double y = 0.0) const override;
 
-  void set_state(std::span<const double> h, std::span<const double> hu, std::span<const double> hv) override;
+  void set_state(std::span<const double> h, std::span<const double> hu,
+                 std::span<const double> hv) override;
   void set_bed(std::span<const double> bed) override;
   double stable_time_step() const override;
   void step(double dt) override;

@@ -46,7 +46,8 @@ class Solver2d final : public Solver {
   double cell_size(std::size_t cell) const override;
   std::size_t cell_at(double x, double y = 0.0) const override;
 
-  void set_state(std::span<const double> h, std::span<const double> hu, std::span<const double> hv) override;
+  void set_state(std::span<const double> h, std::span<const double> hu,
+                 std::span<const double> hv) override;
   void set_bed(std::span<const double> bed) override;
   // dt = C_r / max over cells of ((|u| + k c) / dx + (|v| + k c) / dy),
   // c = sqrt(g h), k = 2 for a cell with a dry neighbour (the dry-front

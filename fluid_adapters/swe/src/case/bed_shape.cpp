@@ -14,8 +14,9 @@ double BedShape::at(double x, double y) const {
     } else if (x >= profile.back()[0]) {
       b += profile.back()[1];
     } else {
-      const auto upper = std::upper_bound(profile.begin(), profile.end(), x,
-                                          [](double v, const std::array<double, 2>& p) { return v < p[0]; });
+      const auto upper =
+          std::upper_bound(profile.begin(), profile.end(), x,
+                           [](double v, const std::array<double, 2>& p) { return v < p[0]; });
       const auto& p1 = *upper;
       const auto& p0 = *(upper - 1);
       const double s = (x - p0[0]) / (p1[0] - p0[0]);

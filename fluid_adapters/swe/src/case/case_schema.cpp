@@ -34,8 +34,9 @@ Schema mesh_schema() {
 
 Schema boundary_schema() {
   Schema values = Schema::object("A boundary with a value.");
-  values.optional("inflow_discharge", Schema::number().unit("m^2/s"),
-                  "Discharge per unit width entering the domain; depth from the interior.")
+  values
+      .optional("inflow_discharge", Schema::number().unit("m^2/s"),
+                "Discharge per unit width entering the domain; depth from the interior.")
       .optional("fixed_depth", Schema::number().positive().unit("m"),
                 "Depth held at the face; velocity from the outgoing Riemann invariant.");
   return Schema::any_of({Schema::one_of({"wall", "transmissive"}), values});
@@ -55,8 +56,10 @@ Schema bed_schema() {
   bump.required("centre", Schema::vector(1, 2).unit("m"), "Centre (x or x, y).")
       .required("radius", Schema::number().positive().unit("m"), "Radius of the bump.")
       .required("height", Schema::number().unit("m"), "Height at the centre.");
-  Schema bed = Schema::object("Initial bed elevation B = base + profile(x) + bumps. A coupled run "
-                              "replaces it by the bed it receives.");
+  Schema bed = Schema::object(
+                   "Initial bed elevation B = base + profile(x) + bumps. A coupled run "
+                   "replaces it by the bed it receives.")
+                   .default_value("{}");
   bed.optional("base", Schema::number().unit("m").default_value("0"), "Constant elevation.")
       .optional("profile", Schema::sequence(Schema::vector(2, 2)).length(2, unlimited),
                 "Points [x, B] with increasing x, joined linearly; must cover the domain in x.")
@@ -74,18 +77,25 @@ Schema region_schema() {
   Schema region = Schema::object("Water set inside a shape; give `free_surface` or `depth`.");
   region.optional("box", box, "The region is a box.")
       .optional("circle", circle, "The region is a disc.")
-      .optional("free_surface", Schema::number().unit("m"), "Free-surface elevation eta; h = max(0, eta - B).")
+      .optional("free_surface", Schema::number().unit("m"),
+                "Free-surface elevation eta; h = max(0, eta - B).")
       .optional("depth", Schema::number().non_negative().unit("m"), "Depth h.")
-      .optional("velocity", Schema::vector(1, 2).unit("m/s").default_value("0"), "Depth-averaged velocity.");
+      .optional("velocity", Schema::vector(1, 2).unit("m/s").default_note("zero"),
+                "Depth-averaged velocity.");
   return region;
 }
 
 Schema initial_schema() {
-  Schema initial = Schema::object("Initial water: everywhere, then regions in order. Give `free_surface` or `depth`.");
-  initial.optional("free_surface", Schema::number().unit("m"), "Free-surface elevation eta; h = max(0, eta - B).")
+  Schema initial = Schema::object(
+      "Initial water: everywhere, then regions in order. Give `free_surface` or `depth`.");
+  initial
+      .optional("free_surface", Schema::number().unit("m"),
+                "Free-surface elevation eta; h = max(0, eta - B).")
       .optional("depth", Schema::number().non_negative().unit("m"), "Depth h.")
-      .optional("velocity", Schema::vector(1, 2).unit("m/s").default_value("0"), "Depth-averaged velocity.")
-      .optional("regions", Schema::sequence(region_schema()), "Regions overriding the water inside them.");
+      .optional("velocity", Schema::vector(1, 2).unit("m/s").default_note("zero"),
+                "Depth-averaged velocity.")
+      .optional("regions", Schema::sequence(region_schema()),
+                "Regions overriding the water inside them.");
   return initial;
 }
 
@@ -99,52 +109,64 @@ Schema gauge_schema() {
 
 Schema coupling_schema() {
   Schema coupling = Schema::object(
-      "Exchange with a soil solver on the mesh `swe_cells` (used only when run by `cosim run`).");
+                        "Exchange with a soil solver on the mesh `swe_cells` (used only when run "
+                        "by `cosim run`).")
+                        .default_value("{}");
   coupling
-      .optional("reads", Schema::sequence(Schema::one_of({"bed_elevation"})).default_value("[bed_elevation]"),
-                "bed_elevation [m] per cell: replaces the bed every step, keeping depths.")
-      .optional("writes", Schema::sequence(Schema::one_of({"bed_traction"})).default_value("[bed_traction]"),
+      .optional(
+          "reads",
+          Schema::sequence(Schema::one_of({"bed_elevation"})).default_value("[bed_elevation]"),
+          "bed_elevation [m] per cell: replaces the bed every step, keeping depths.")
+      .optional("writes",
+                Schema::sequence(Schema::one_of({"bed_traction"})).default_value("[bed_traction]"),
                 "bed_traction [Pa] per cell: horizontal component(s), then vertical.")
-      .optional("bed_pressure", Schema::one_of({"hydrostatic", "excess"}).default_value("hydrostatic"),
-                "hydrostatic: p = rho g h normal to the bed (the soil then feels its buoyancy); "
-                "excess: the waves' push p = rho g max(0, eta - eta_0) on wet cells, eta_0 the initial "
-                "free surface above each cell, vertical only (Zheng et al., eq. 10 as used in their "
-                "Secs. 4.3-4.4, where the soil's weight is total and never carried the water).");
+      .optional(
+          "bed_pressure", Schema::one_of({"hydrostatic", "excess"}).default_value("hydrostatic"),
+          "hydrostatic: p = rho g h normal to the bed (the soil then feels its buoyancy); "
+          "excess: the waves' push p = rho g max(0, eta - eta_0) on wet cells, eta_0 the initial "
+          "free surface above each cell, vertical only (Zheng et al., eq. 10 as used in their "
+          "Secs. 4.3-4.4, where the soil's weight is total and never carried the water).");
   return coupling;
 }
 
 }  // namespace
 
 Schema swe_case_schema() {
-  Schema physics = Schema::object("Physical constants.");
+  Schema physics = Schema::object("Physical constants.").default_value("{}");
   physics.optional("gravity", Schema::number().positive().unit("m/s^2").default_value("9.81"), "g.")
-      .optional("density", Schema::number().positive().unit("kg/m^3").default_value("1000"), "Water density.")
+      .optional("density", Schema::number().positive().unit("kg/m^3").default_value("1000"),
+                "Water density.")
       .optional("manning", Schema::number().non_negative().unit("s/m^(1/3)").default_value("0"),
                 "Manning coefficient M_b (Zheng et al., eq. 8).")
       .optional("dry_depth", Schema::number().positive().unit("m").default_value("1e-6"),
                 "Depth below which a cell is dry (no velocity, no momentum).");
-  Schema scheme = Schema::object("Numerical scheme.");
-  scheme.optional("flux", Schema::one_of(flux_names()).default_value("hllc"),
-                  "Face flux: roe (Zheng et al., eqs. 30-32), hll or hllc.")
+  Schema scheme = Schema::object("Numerical scheme.").default_value("{}");
+  scheme
+      .optional("flux", Schema::one_of(flux_names()).default_value("hllc"),
+                "Face flux: roe (Zheng et al., eqs. 30-32), hll or hllc.")
       .optional("limiter", Schema::one_of(limiter_names()).default_value("van_leer"),
                 "MUSCL slope limiter; none gives first order.")
       .optional("courant", Schema::number().range(1e-3, 1.0).default_value("0.5"),
                 "Courant number C_r (Zheng et al., eq. 37); <= 0.5 keeps depths non-negative.");
   Schema time = Schema::object("Time stepping.");
-  time.required("end_time", Schema::number().positive().unit("s"), "Simulated end time (standalone).")
+  time.required("end_time", Schema::number().positive().unit("s"),
+                "Simulated end time (standalone).")
       .optional("min_time_step", Schema::number().positive().unit("s").default_value("1e-9"),
                 "A stable step below this ends the run as a numerical failure (exit 4).")
-      .optional("max_time_step", Schema::number().positive().unit("s").default_value("none"),
-                "Upper bound of the step.");
-  Schema output = Schema::object("What the run writes.");
-  output.optional("every", Schema::number().non_negative().unit("s").default_value("0"),
-                  "Snapshot interval; 0: start and end only.")
-      .optional("snapshots", Schema::boolean().default_value("true"), "HDF5 + XDMF snapshots of the cells.")
+      .optional("max_time_step", Schema::number().non_negative().unit("s").default_value("0"),
+                "Upper bound of the step; 0: none beyond stability.");
+  Schema output = Schema::object("What the run writes.").default_value("{}");
+  output
+      .optional("every", Schema::number().non_negative().unit("s").default_value("0"),
+                "Snapshot interval; 0: start and end only.")
+      .optional("snapshots", Schema::boolean().default_value("true"),
+                "HDF5 + XDMF snapshots of the cells.")
       .optional("gauge_every", Schema::number().non_negative().unit("s").default_value("0"),
                 "Gauge interval; 0: every step.")
       .optional("gauges", Schema::sequence(gauge_schema()), "Free-surface gauges (gauges.csv).");
 
-  Schema file = Schema::file("swe_case", "A shallow-water case for swe_fluid (1D non-uniform or 2D uniform cells).");
+  Schema file = Schema::file(
+      "swe_case", "A shallow-water case for swe_fluid (1D non-uniform or 2D uniform cells).");
   file.required("name", Schema::string().non_empty(), "Name of the case.")
       .required("dimension", Schema::integer().range(1, 2), "1 (line) or 2 (plan view).")
       .required("mesh", mesh_schema(), "The cells.")
@@ -162,6 +184,8 @@ Schema swe_case_schema() {
   return file;
 }
 
-std::string swe_case_help() { return swe_case_schema().help("swe_case (swe_fluid --config)"); }
+std::string swe_case_help() {
+  return swe_case_schema().help("swe_case (swe_fluid --config)");
+}
 
 }  // namespace swe

@@ -21,8 +21,9 @@ bool InitialRegion::contains(const cosim::Vec3& x, int dimension) const {
   return false;
 }
 
-void InitialCondition::lay(const cosim::Mesh& cells, std::span<const double> bed, std::vector<double>& h,
-                           std::vector<double>& hu, std::vector<double>& hv) const {
+void InitialCondition::lay(const cosim::Mesh& cells, std::span<const double> bed,
+                           std::vector<double>& h, std::vector<double>& hu,
+                           std::vector<double>& hv) const {
   const std::size_t n = cells.size();
   const int dim = cells.dimension();
   h.assign(n, 0.0);

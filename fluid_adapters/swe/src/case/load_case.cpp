@@ -25,17 +25,20 @@ namespace {
 std::array<double, 2> pair_of(const Node& node, int dimension) {
   const auto v = node.as<std::vector<double>>();
   if (static_cast<int>(v.size()) != dimension)
-    node.fail(fmt::format("expected {} value(s) for a {}D case, got {}", dimension, dimension, v.size()));
+    node.fail(
+        fmt::format("expected {} value(s) for a {}D case, got {}", dimension, dimension, v.size()));
   return {v[0], v.size() > 1 ? v[1] : 0.0};
 }
 
 class CaseReader {
  public:
-  explicit CaseReader(const cosim::config::Document& document) : document_(document), root_(document.root()) {}
+  explicit CaseReader(const cosim::config::Document& document)
+      : document_(document), root_(document.root()) {}
 
   CaseDescription read() {
     cosim::config::expect_kind(root_, "swe_case");
     swe_case_schema().validate(root_);
+    swe_case_schema().add_defaults(root_);
     CaseDescription c;
     c.file = document_.path();
     c.config_hash = cosim::hash_bytes(document_.text());
@@ -49,7 +52,7 @@ class CaseReader {
     read_initial(c);
     read_time(c);
     read_output(c);
-    c.threads = root_.get<int>("threads", 0);
+    c.threads = root_.get<int>("threads");
     read_coupling(c);
     return c;
   }
@@ -59,26 +62,33 @@ class CaseReader {
     const Node mesh = root_["mesh"];
     if (c.dimension == 1) {
       for (const char* key : {"origin", "upper"})
-        if (auto n = mesh.find(key)) n->fail_at_key(fmt::format("'{}' is a 2D key; a 1D mesh takes from/to/cells, segments or edges", key));
-      const bool uniform = mesh.has("cells"), stretched = mesh.has("segments"), listed = mesh.has("edges");
+        if (auto n = mesh.find(key))
+          n->fail_at_key(fmt::format(
+              "'{}' is a 2D key; a 1D mesh takes from/to/cells, segments or edges", key));
+      const bool uniform = mesh.has("cells"), stretched = mesh.has("segments"),
+                 listed = mesh.has("edges");
       if (int(uniform) + int(stretched) + int(listed) != 1)
         mesh.fail("give exactly one of: `cells` (with from/to), `segments` (with from) or `edges`");
       if (listed) {
         c.edges = mesh["edges"].as<std::vector<double>>();
         for (std::size_t i = 1; i < c.edges.size(); ++i)
           if (!(c.edges[i] > c.edges[i - 1]))
-            mesh["edges"].fail(fmt::format("cell {} has zero or negative width: edges {:.9g} -> {:.9g}", i - 1,
-                                           c.edges[i - 1], c.edges[i]));
+            mesh["edges"].fail(
+                fmt::format("cell {} has zero or negative width: edges {:.9g} -> {:.9g}", i - 1,
+                            c.edges[i - 1], c.edges[i]));
         c.size = checked_size(1, static_cast<double>(c.edges.size()) - 1.0);
       } else if (uniform) {
         const Node cells = mesh["cells"];
         const int n = cells.as<int>();
         if (n < 1) cells.fail(fmt::format("the number of cells must be >= 1, got {}", n));
         const double from = mesh["from"].as<double>(), to = mesh["to"].as<double>();
-        if (!(to > from)) mesh["to"].fail(fmt::format("the line has zero or negative length: from {:.9g} to {:.9g}", from, to));
+        if (!(to > from))
+          mesh["to"].fail(
+              fmt::format("the line has zero or negative length: from {:.9g} to {:.9g}", from, to));
         c.size = checked_size(1, n);
         c.edges.resize(static_cast<std::size_t>(n) + 1);
-        for (int i = 0; i <= n; ++i) c.edges[static_cast<std::size_t>(i)] = from + (to - from) * i / n;
+        for (int i = 0; i <= n; ++i)
+          c.edges[static_cast<std::size_t>(i)] = from + (to - from) * i / n;
       } else {
         // Every stretch's cell count first: the size is checked before an edge is made.
         struct Stretch {
@@ -89,7 +99,8 @@ class CaseReader {
         for (const Node& segment : mesh["segments"].items()) {
           const double to = segment["to"].as<double>(), width = segment["width"].as<double>();
           if (!(to > from))
-            segment["to"].fail(fmt::format("segment ends at {:.9g}, not beyond its start {:.9g}", to, from));
+            segment["to"].fail(
+                fmt::format("segment ends at {:.9g}, not beyond its start {:.9g}", to, from));
           stretches.push_back({from, to, std::max(1.0, std::round((to - from) / width))});
           cells += stretches.back().cells;
           from = to;
@@ -100,14 +111,18 @@ class CaseReader {
         for (const Stretch& s : stretches) {
           const auto n = static_cast<std::int64_t>(s.cells);
           for (std::int64_t i = 1; i <= n; ++i)
-            c.edges.push_back(i == n ? s.to : s.from + (s.to - s.from) * static_cast<double>(i) / static_cast<double>(n));
+            c.edges.push_back(i == n ? s.to
+                                     : s.from + (s.to - s.from) * static_cast<double>(i) /
+                                                    static_cast<double>(n));
         }
       }
       lower_ = {c.edges.front(), 0.0};
       upper_ = {c.edges.back(), 0.0};
     } else {
       for (const char* key : {"from", "to", "segments", "edges"})
-        if (auto n = mesh.find(key)) n->fail_at_key(fmt::format("'{}' is a 1D key; a 2D mesh takes origin, upper and cells", key));
+        if (auto n = mesh.find(key))
+          n->fail_at_key(
+              fmt::format("'{}' is a 1D key; a 2D mesh takes origin, upper and cells", key));
       const Node cells = mesh["cells"];
       const auto counts = cells.as<std::vector<int>>();
       if (counts.size() != 2 || counts[0] < 1 || counts[1] < 1)
@@ -115,8 +130,9 @@ class CaseReader {
       const auto origin = pair_of(mesh["origin"], 2), upper = pair_of(mesh["upper"], 2);
       for (std::size_t d = 0; d < 2; ++d) {
         if (!(upper[d] > origin[d]))
-          mesh["upper"].fail(fmt::format("upper corner {:.9g} is not above the origin {:.9g} in direction {}",
-                                         upper[d], origin[d], d == 0 ? "x" : "y"));
+          mesh["upper"].fail(
+              fmt::format("upper corner {:.9g} is not above the origin {:.9g} in direction {}",
+                          upper[d], origin[d], d == 0 ? "x" : "y"));
         c.grid.origin[d] = origin[d];
         c.grid.cells[d] = counts[d];
         c.grid.spacing[d] = (upper[d] - origin[d]) / counts[d];
@@ -128,39 +144,40 @@ class CaseReader {
   }
 
   void read_physics(CaseDescription& c) {
-    if (auto p = root_.find("physics")) {
-      c.physics.gravity = p->get<double>("gravity", c.physics.gravity);
-      c.physics.density = p->get<double>("density", c.physics.density);
-      c.physics.manning = p->get<double>("manning", c.physics.manning);
-      c.physics.dry_depth = p->get<double>("dry_depth", c.physics.dry_depth);
-    }
+    const Node physics = root_["physics"];
+    c.physics.gravity = physics.get<double>("gravity");
+    c.physics.density = physics.get<double>("density");
+    c.physics.manning = physics.get<double>("manning");
+    c.physics.dry_depth = physics.get<double>("dry_depth");
   }
 
   void read_scheme(CaseDescription& c) {
-    if (auto s = root_.find("scheme")) {
-      c.scheme.flux = flux_from_string(s->get("flux", to_string(c.scheme.flux)));
-      c.scheme.limiter = limiter_from_string(s->get("limiter", to_string(c.scheme.limiter)));
-      c.scheme.courant = s->get<double>("courant", c.scheme.courant);
-    }
+    const Node scheme = root_["scheme"];
+    c.scheme.flux = flux_from_string(scheme.get<std::string>("flux"));
+    c.scheme.limiter = limiter_from_string(scheme.get<std::string>("limiter"));
+    c.scheme.courant = scheme.get<double>("courant");
   }
 
   static Boundary boundary_of(const Node& node) {
     if (node.is_scalar())
-      return {node.as<std::string>() == "wall" ? BoundaryKind::wall : BoundaryKind::transmissive, 0.0};
+      return {node.as<std::string>() == "wall" ? BoundaryKind::wall : BoundaryKind::transmissive,
+              0.0};
     if (node.size() != 1) node.fail("give one of: inflow_discharge: <q> or fixed_depth: <h>");
-    if (auto q = node.find("inflow_discharge")) return {BoundaryKind::inflow_discharge, q->as<double>()};
+    if (auto q = node.find("inflow_discharge"))
+      return {BoundaryKind::inflow_discharge, q->as<double>()};
     return {BoundaryKind::fixed_depth, node["fixed_depth"].as<double>()};
   }
 
   void read_boundaries(CaseDescription& c) {
     const auto b = root_.find("boundaries");
     if (!b) return;
-    const std::vector<std::string> own = c.dimension == 1 ? std::vector<std::string>{"left", "right"}
-                                                          : std::vector<std::string>{"x_min", "x_max", "y_min", "y_max"};
+    const std::vector<std::string> own =
+        c.dimension == 1 ? std::vector<std::string>{"left", "right"}
+                         : std::vector<std::string>{"x_min", "x_max", "y_min", "y_max"};
     for (const auto& [key, node] : b->entries()) {
       if (std::find(own.begin(), own.end(), key) == own.end())
-        node.fail_at_key(fmt::format("'{}' is not a face of a {}D case (faces: {})", key, c.dimension,
-                                     fmt::join(own, ", ")));
+        node.fail_at_key(fmt::format("'{}' is not a face of a {}D case (faces: {})", key,
+                                     c.dimension, fmt::join(own, ", ")));
       const Boundary boundary = boundary_of(node);
       if (key == "left") c.boundaries_1d.left = boundary;
       if (key == "right") c.boundaries_1d.right = boundary;
@@ -172,22 +189,23 @@ class CaseReader {
   }
 
   void read_bed(CaseDescription& c) {
-    const auto bed = root_.find("bed");
-    if (!bed) return;
-    c.bed.base = bed->get<double>("base", 0.0);
-    if (auto profile = bed->find("profile")) {
+    const Node bed = root_["bed"];
+    c.bed.base = bed.get<double>("base");
+    if (auto profile = bed.find("profile")) {
       for (const Node& point : profile->items()) {
         const auto p = point.as<std::vector<double>>();
         if (!c.bed.profile.empty() && !(p[0] > c.bed.profile.back()[0]))
-          point.fail(fmt::format("profile x must increase: {:.9g} follows {:.9g}", p[0], c.bed.profile.back()[0]));
+          point.fail(fmt::format("profile x must increase: {:.9g} follows {:.9g}", p[0],
+                                 c.bed.profile.back()[0]));
         c.bed.profile.push_back({p[0], p[1]});
       }
       if (c.bed.profile.front()[0] > lower_[0] || c.bed.profile.back()[0] < upper_[0])
-        profile->fail(fmt::format("the profile spans x = {:.9g} .. {:.9g} but the domain spans {:.9g} .. {:.9g}; "
-                                  "it must cover the domain",
-                                  c.bed.profile.front()[0], c.bed.profile.back()[0], lower_[0], upper_[0]));
+        profile->fail(fmt::format(
+            "the profile spans x = {:.9g} .. {:.9g} but the domain spans {:.9g} .. {:.9g}; "
+            "it must cover the domain",
+            c.bed.profile.front()[0], c.bed.profile.back()[0], lower_[0], upper_[0]));
     }
-    if (auto bumps = bed->find("bumps")) {
+    if (auto bumps = bed.find("bumps")) {
       for (const Node& b : bumps->items()) {
         BedBump bump;
         bump.centre = pair_of(b["centre"], c.dimension);
@@ -241,24 +259,24 @@ class CaseReader {
   void read_time(CaseDescription& c) {
     const Node time = root_["time"];
     c.end_time = time["end_time"].as<double>();
-    c.min_time_step = time.get<double>("min_time_step", c.min_time_step);
-    c.max_time_step = time.get<double>("max_time_step", 0.0);
+    c.min_time_step = time.get<double>("min_time_step");
+    c.max_time_step = time.get<double>("max_time_step");
   }
 
   void read_output(CaseDescription& c) {
-    const auto output = root_.find("output");
-    if (!output) return;
-    c.output_every = output->get<double>("every", 0.0);
-    c.snapshots = output->get<bool>("snapshots", true);
-    c.gauge_every = output->get<double>("gauge_every", 0.0);
+    const Node output = root_["output"];
+    c.output_every = output.get<double>("every");
+    c.snapshots = output.get<bool>("snapshots");
+    c.gauge_every = output.get<double>("gauge_every");
     for (const char* key : {"every", "gauge_every"})
-      if (auto interval = output->find(key)) cosim::check_output_interval(*interval, c.end_time);
-    if (auto gauges = output->find("gauges")) {
+      cosim::check_output_interval(output[key], c.end_time);
+    if (auto gauges = output.find("gauges")) {
       for (const Node& node : gauges->items()) {
         Gauge g;
         g.name = node["name"].as<std::string>();
         for (const Gauge& other : c.gauges)
-          if (other.name == g.name) node["name"].fail(fmt::format("a gauge named '{}' already exists", g.name));
+          if (other.name == g.name)
+            node["name"].fail(fmt::format("a gauge named '{}' already exists", g.name));
         std::array<double, 2> at{};
         if (c.dimension == 1) {
           if (node.has("position")) node["position"].fail_at_key("a 1D gauge takes `x`");
@@ -268,11 +286,12 @@ class CaseReader {
           at = pair_of(node["position"], 2);
         }
         if (!inside(at, c.dimension, 0.0))
-          node.fail(fmt::format("gauge '{}' at {} lies outside the domain [{:.9g}, {:.9g}]{}", g.name,
-                                c.dimension == 1 ? fmt::format("x = {:.9g}", at[0])
-                                                 : fmt::format("({:.9g}, {:.9g})", at[0], at[1]),
-                                lower_[0], upper_[0],
-                                c.dimension == 1 ? "" : fmt::format(" x [{:.9g}, {:.9g}]", lower_[1], upper_[1])));
+          node.fail(fmt::format(
+              "gauge '{}' at {} lies outside the domain [{:.9g}, {:.9g}]{}", g.name,
+              c.dimension == 1 ? fmt::format("x = {:.9g}", at[0])
+                               : fmt::format("({:.9g}, {:.9g})", at[0], at[1]),
+              lower_[0], upper_[0],
+              c.dimension == 1 ? "" : fmt::format(" x [{:.9g}, {:.9g}]", lower_[1], upper_[1])));
         g.x = at[0];
         g.y = at[1];
         c.gauges.push_back(g);
@@ -281,17 +300,15 @@ class CaseReader {
   }
 
   void read_coupling(CaseDescription& c) {
-    const auto coupling = root_.find("coupling");
-    if (!coupling) return;
+    const Node coupling = root_["coupling"];
     auto listed = [&](const char* key, const char* field) {
-      const auto node = coupling->find(key);
-      if (!node) return true;
-      const auto names = node->as<std::vector<std::string>>();
+      const auto names = coupling.get<std::vector<std::string>>(key);
       return std::find(names.begin(), names.end(), field) != names.end();
     };
     c.coupling.reads_bed = listed("reads", "bed_elevation");
     c.coupling.writes_traction = listed("writes", "bed_traction");
-    if (coupling->get("bed_pressure", "hydrostatic") == "excess") c.coupling.pressure = BedPressure::excess;
+    if (coupling.get<std::string>("bed_pressure") == "excess")
+      c.coupling.pressure = BedPressure::excess;
   }
 
   // The run's size with `cells` cells, refused above what the case's limits allow.

@@ -1,13 +1,12 @@
 #include "swe/coupling/bed_traction.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <variant>
 
-#include <fmt/format.h>
-
 #include "cosim/error.hpp"
-
 #include "swe/numerics/hydrostatic_reconstruction.hpp"
 #include "swe/numerics/manning_friction.hpp"
 
@@ -17,8 +16,8 @@ namespace {
 
 // Horizontal force of the water on the bed at the face between cells l and r
 // [N per m of face], positive along +x (or +y).
-double bed_face_force(std::span<const double> h, std::span<const double> bed, std::size_t l, std::size_t r,
-                      double g, double density) {
+double bed_face_force(std::span<const double> h, std::span<const double> bed, std::size_t l,
+                      std::size_t r, double g, double density) {
   const HydrostaticFace f = hydrostatic_face(h[l], bed[l], h[r], bed[r], g);
   return density * (f.left_correction - f.right_correction);
 }
@@ -59,17 +58,20 @@ std::vector<double> bed_traction(const Solver& solver, const CouplingSpec& spec)
   }
   if (spec.pressure != BedPressure::hydrostatic) return traction;
 
-  auto add_face = [&](std::size_t l, std::size_t r, std::size_t axis, double width_l, double width_r) {
+  auto add_face = [&](std::size_t l, std::size_t r, std::size_t axis, double width_l,
+                      double width_r) {
     const double f = bed_face_force(h, bed, l, r, g, rho);
     traction[l * components + axis] += 0.5 * f / width_l;
     traction[r * components + axis] += 0.5 * f / width_r;
   };
   const cosim::MeshGeometry cells = solver.cells();
   if (const auto* line = std::get_if<cosim::NonUniformLine>(&cells)) {
-    for (std::size_t i = 0; i + 1 < n; ++i) add_face(i, i + 1, 0, line->width(i), line->width(i + 1));
+    for (std::size_t i = 0; i + 1 < n; ++i)
+      add_face(i, i + 1, 0, line->width(i), line->width(i + 1));
   } else {
     const auto& grid = std::get<cosim::UniformGrid>(cells);
-    const auto nx = static_cast<std::size_t>(grid.cells[0]), ny = static_cast<std::size_t>(grid.cells[1]);
+    const auto nx = static_cast<std::size_t>(grid.cells[0]),
+               ny = static_cast<std::size_t>(grid.cells[1]);
     const double dx = grid.spacing[0], dy = grid.spacing[1];
     for (std::size_t j = 0; j < ny; ++j)
       for (std::size_t i = 0; i + 1 < nx; ++i) add_face(j * nx + i, j * nx + i + 1, 0, dx, dx);

@@ -24,7 +24,8 @@ namespace {
 // the block is one branch-free loop (selects instead of early returns), so
 // it vectorises.
 template <FluxKind flux, LimiterKind limiter>
-__attribute__((flatten)) void advance_block(const StageContext& c, std::size_t first, std::size_t last, double* work) {
+__attribute__((flatten)) void advance_block(const StageContext& c, std::size_t first,
+                                            std::size_t last, double* work) {
   const std::size_t m = last - first + 2 * ghost_layers;
   const double g = c.g, dry_depth = c.dry_depth, sqrt_g = std::sqrt(c.g);
   const double* __restrict h = c.a.h_in + first;
@@ -44,11 +45,11 @@ __attribute__((flatten)) void advance_block(const StageContext& c, std::size_t f
   double* __restrict u_plus = u_minus + m;
   double* __restrict bed_source = u_plus + m;
   double* __restrict mass = bed_source + m;
-  double* __restrict momentum_left = mass + m;   // face j | j+1: the flux cell j sees
+  double* __restrict momentum_left = mass + m;            // face j | j+1: the flux cell j sees
   double* __restrict momentum_right = momentum_left + m;  // ... the flux cell j+1 sees
   double* __restrict face_h_left = momentum_right + m;    // face j | j+1: hydrostatic depths
   double* __restrict face_h_right = face_h_left + m;
-  double* __restrict roe_plain = face_h_right + m;        // 1 where Roe's plain formula holds
+  double* __restrict roe_plain = face_h_right + m;  // 1 where Roe's plain formula holds
 
 #pragma omp simd
   for (std::size_t j = 0; j < m; ++j) {
@@ -76,8 +77,8 @@ __attribute__((flatten)) void advance_block(const StageContext& c, std::size_t f
   }
 
   // Faces j | j+1: the hydrostatic reconstruction (Audusse et al., SIAM J.
-  // Sci. Comput. 25, 2004) measures both depths from the higher face bed; the pressure it removes comes back as each side's
-  // correction. With the in-cell bed_source this is our form of the
+  // Sci. Comput. 25, 2004) measures both depths from the higher face bed; the pressure it removes
+  // comes back as each side's correction. With the in-cell bed_source this is our form of the
   // well-balanced source split of Zheng et al., eqs. 33-34: a lake at rest,
   // dry emerged cells included, stays at rest and depths stay >= 0. (Two
   // loops: with the depths' max(0, .) in sight GCC 12 folds the flux's dry
@@ -104,8 +105,10 @@ __attribute__((flatten)) void advance_block(const StageContext& c, std::size_t f
     // The few faces with a dry side or a transonic rarefaction.
     for (std::size_t j = 1; j < m - 2; ++j) {
       if (roe_plain[j] != 0.0) continue;
-      const HydrostaticFace face = hydrostatic_face(h_plus[j], bed_plus[j], h_minus[j + 1], bed_minus[j + 1], g);
-      const FaceFlux f = roe_flux(FaceState{face.h_left, u_plus[j], 0.0}, FaceState{face.h_right, u_minus[j + 1], 0.0}, g);
+      const HydrostaticFace face =
+          hydrostatic_face(h_plus[j], bed_plus[j], h_minus[j + 1], bed_minus[j + 1], g);
+      const FaceFlux f = roe_flux(FaceState{face.h_left, u_plus[j], 0.0},
+                                  FaceState{face.h_right, u_minus[j + 1], 0.0}, g);
       mass[j] = f.mass;
       momentum_left[j] = f.normal_momentum + face.left_correction;
       momentum_right[j] = f.normal_momentum + face.right_correction;
@@ -133,7 +136,8 @@ __attribute__((flatten)) void advance_block(const StageContext& c, std::size_t f
 #pragma omp simd
   for (std::size_t j = ghost_layers; j < m - ghost_layers; ++j) {
     const double dh_dt = -(mass[j] - mass[j - 1]) * inv_width[j];
-    const double dq_dt = (bed_source[j] - (momentum_left[j] - momentum_right[j - 1])) * inv_width[j];
+    const double dq_dt =
+        (bed_source[j] - (momentum_left[j] - momentum_right[j - 1])) * inv_width[j];
     const double h_new = std::max(0.0, wb * h_base[j] + wi * (h[j] + dt * dh_dt));
     const double q_new = wb * q_base[j] + wi * (q[j] + dt * dq_dt);
     h_out[j] = h_new;

@@ -21,7 +21,8 @@ struct StageContext {
 
 // Advances the interior cells [first, last) of one block; `work` holds
 // scratch_arrays * (block_cells + 2 ghost_layers) values.
-using BlockKernel = void (*)(const StageContext& c, std::size_t first, std::size_t last, double* work);
+using BlockKernel = void (*)(const StageContext& c, std::size_t first, std::size_t last,
+                             double* work);
 
 // The kernel for a flux and limiter, for any x86-64 (SSE2) ...
 BlockKernel block_kernel_baseline(FluxKind flux, LimiterKind limiter);

@@ -2,6 +2,8 @@
 
 namespace swe::solver_1d {
 
-BlockKernel block_kernel_avx2(FluxKind flux, LimiterKind limiter) { return select_block_kernel(flux, limiter); }
+BlockKernel block_kernel_avx2(FluxKind flux, LimiterKind limiter) {
+  return select_block_kernel(flux, limiter);
+}
 
 }  // namespace swe::solver_1d

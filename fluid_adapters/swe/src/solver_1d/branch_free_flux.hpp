@@ -21,8 +21,8 @@ struct FaceFlux1d {
 
 // HLL with Einfeldt's speeds and Toro's dry-bed speeds (as swe::hll_flux).
 // sqrt_g = sqrt(g); sql, sqr = sqrt(hl), sqrt(hr).
-inline FaceFlux1d hll_flux_1d(double hl, double ul, double hr, double ur, double sql, double sqr, double g,
-                              double sqrt_g) {
+inline FaceFlux1d hll_flux_1d(double hl, double ul, double hr, double ur, double sql, double sqr,
+                              double g, double sqrt_g) {
   const double cl = sqrt_g * sql, cr = sqrt_g * sqr;
   const double u_roe = (sql * ul + sqr * ur) / (sql + sqr);
   const double c_roe = std::sqrt(0.5 * g * (hl + hr));
@@ -45,8 +45,8 @@ inline FaceFlux1d hll_flux_1d(double hl, double ul, double hr, double ur, double
 
 // Roe with the Harten-Hyman entropy fix, HLL at a face with a dry side (as
 // swe::roe_flux; Zheng et al., eqs. 30-32).
-inline FaceFlux1d roe_flux_1d(double hl, double ul, double hr, double ur, double sql, double sqr, double g,
-                              double sqrt_g) {
+inline FaceFlux1d roe_flux_1d(double hl, double ul, double hr, double ur, double sql, double sqr,
+                              double g, double sqrt_g) {
   const double u = (sql * ul + sqr * ur) / (sql + sqr);
   const double c = std::sqrt(0.5 * g * (hl + hr));
   const double lambda1 = u - c, lambda2 = u + c;
@@ -67,8 +67,12 @@ inline FaceFlux1d roe_flux_1d(double hl, double ul, double hr, double ur, double
   const double momentum = 0.5 * (pl + pr - a1 * alpha1 * lambda1 - a2 * alpha2 * lambda2);
 
   const FaceFlux1d hll = hll_flux_1d(hl, ul, hr, ur, sql, sqr, g, sqrt_g);
-  return {hl <= 0.0 ? hll.mass : hr <= 0.0 ? hll.mass : mass,
-          hl <= 0.0 ? hll.momentum : hr <= 0.0 ? hll.momentum : momentum};
+  return {hl <= 0.0   ? hll.mass
+          : hr <= 0.0 ? hll.mass
+                      : mass,
+          hl <= 0.0   ? hll.momentum
+          : hr <= 0.0 ? hll.momentum
+                      : momentum};
 }
 
 // Roe's plain formula, without the entropy fix and the dry-side fallback,
@@ -82,7 +86,8 @@ struct PlainRoeFlux1d {
   double plain;
 };
 
-inline PlainRoeFlux1d plain_roe_flux_1d(double hl, double ul, double hr, double ur, double g, double sqrt_g) {
+inline PlainRoeFlux1d plain_roe_flux_1d(double hl, double ul, double hr, double ur, double g,
+                                        double sqrt_g) {
   const double sql = std::sqrt(hl), sqr = std::sqrt(hr);
   const double u = (sql * ul + sqr * ur) / (sql + sqr);
   const double c = std::sqrt(0.5 * g * (hl + hr));
@@ -90,19 +95,26 @@ inline PlainRoeFlux1d plain_roe_flux_1d(double hl, double ul, double hr, double 
   const double dh = hr - hl, dq = hr * ur - hl * ul;
   const double alpha1 = (lambda2 * dh - dq) / (2.0 * c);
   const double alpha2 = (dq - lambda1 * dh) / (2.0 * c);
-  const double delta1 = std::max(std::max(0.0, lambda1 - (ul - sqrt_g * sql)), (ur - sqrt_g * sqr) - lambda1);
-  const double delta2 = std::max(std::max(0.0, lambda2 - (ul + sqrt_g * sql)), (ur + sqrt_g * sqr) - lambda2);
+  const double delta1 =
+      std::max(std::max(0.0, lambda1 - (ul - sqrt_g * sql)), (ur - sqrt_g * sqr) - lambda1);
+  const double delta2 =
+      std::max(std::max(0.0, lambda2 - (ul + sqrt_g * sql)), (ur + sqrt_g * sqr) - lambda2);
   const double a1 = std::abs(lambda1), a2 = std::abs(lambda2);
   const double ql = hl * ul, qr = hr * ur;
   const double pl = ql * ul + 0.5 * g * hl * hl, pr = qr * ur + 0.5 * g * hr * hr;
   // Nested selects of doubles, not || of bools: GCC 12 vectorises only those.
-  const double plain = hl <= 0.0 ? 0.0 : hr <= 0.0 ? 0.0 : a1 < delta1 ? 0.0 : a2 < delta2 ? 0.0 : 1.0;
+  const double plain = hl <= 0.0     ? 0.0
+                       : hr <= 0.0   ? 0.0
+                       : a1 < delta1 ? 0.0
+                       : a2 < delta2 ? 0.0
+                                     : 1.0;
   return {0.5 * (ql + qr - a1 * alpha1 - a2 * alpha2),
           0.5 * (pl + pr - a1 * alpha1 * lambda1 - a2 * alpha2 * lambda2), plain};
 }
 
 template <FluxKind flux>
-inline FaceFlux1d face_flux_1d(double hl, double ul, double hr, double ur, double g, double sqrt_g) {
+inline FaceFlux1d face_flux_1d(double hl, double ul, double hr, double ur, double g,
+                               double sqrt_g) {
   const double sql = std::sqrt(hl), sqr = std::sqrt(hr);
   if constexpr (flux == FluxKind::roe) {
     return roe_flux_1d(hl, ul, hr, ur, sql, sqr, g, sqrt_g);

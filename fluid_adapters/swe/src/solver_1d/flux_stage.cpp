@@ -1,9 +1,9 @@
 #include "solver_1d/flux_stage.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <omp.h>
 
 #include "solver_1d/block_kernel.hpp"
 #include "solver_1d/ghost_cells.hpp"
@@ -26,19 +26,27 @@ BlockKernel block_kernel(FluxKind flux, LimiterKind limiter) {
 }  // namespace
 
 void advance_step(const LineCells& cells, const Physics& physics, const Scheme& scheme,
-                  const Boundaries1d& boundaries, const StepArrays& a, const ImposedMassFlux& imposed, double dt,
-                  std::vector<StageScratch>& scratch) {
+                  const Boundaries1d& boundaries, const StepArrays& a,
+                  const ImposedMassFlux& imposed, double dt, std::vector<StageScratch>& scratch) {
   const std::size_t n = cells.count;
   const auto threads = static_cast<std::size_t>(omp_get_max_threads());
   if (scratch.size() < threads) scratch.resize(threads);
   // SSP-RK2 (Gottlieb & Shu, 1998). Stage 1: (h, q) -> stage; stage 2:
   // stage -> (h, q) with base (h, q).
-  const StageContext first_stage{
-      &cells, {a.h, a.q, a.bed, a.h, a.q, a.h_stage, a.q_stage}, imposed, physics.gravity, physics.dry_depth, 0.0,
-      dt};
-  const StageContext second_stage{
-      &cells, {a.h_stage, a.q_stage, a.bed, a.h, a.q, a.h, a.q}, imposed, physics.gravity, physics.dry_depth, 0.5,
-      dt};
+  const StageContext first_stage{&cells,
+                                 {a.h, a.q, a.bed, a.h, a.q, a.h_stage, a.q_stage},
+                                 imposed,
+                                 physics.gravity,
+                                 physics.dry_depth,
+                                 0.0,
+                                 dt};
+  const StageContext second_stage{&cells,
+                                  {a.h_stage, a.q_stage, a.bed, a.h, a.q, a.h, a.q},
+                                  imposed,
+                                  physics.gravity,
+                                  physics.dry_depth,
+                                  0.5,
+                                  dt};
   const BlockKernel kernel = block_kernel(scheme.flux, scheme.limiter);
   const std::size_t blocks = (n + block_cells - 1) / block_cells;
   auto run = [&](const StageContext& stage, std::size_t block, double* work) {

@@ -58,7 +58,7 @@ struct StepArrays {
 // blocks once, stage 2 one block behind stage 1, so the stage values are
 // read back from cache.
 void advance_step(const LineCells& cells, const Physics& physics, const Scheme& scheme,
-                  const Boundaries1d& boundaries, const StepArrays& a, const ImposedMassFlux& imposed, double dt,
-                  std::vector<StageScratch>& scratch);
+                  const Boundaries1d& boundaries, const StepArrays& a,
+                  const ImposedMassFlux& imposed, double dt, std::vector<StageScratch>& scratch);
 
 }  // namespace swe::solver_1d

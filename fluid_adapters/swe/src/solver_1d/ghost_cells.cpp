@@ -1,9 +1,9 @@
 #include "solver_1d/ghost_cells.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "cosim/error.hpp"
 #include "solver_1d/line_cells.hpp"
@@ -50,7 +50,8 @@ void fill_side(const Boundary& boundary, const Physics& physics, const Side& s) 
       const double u_i = h_i >= physics.dry_depth ? q[s.inner0] / h_i : 0.0;
       const double h_b = boundary.value;
       const double u_b =
-          u_i - s.inward * 2.0 * (std::sqrt(physics.gravity * h_i) - std::sqrt(physics.gravity * h_b));
+          u_i -
+          s.inward * 2.0 * (std::sqrt(physics.gravity * h_i) - std::sqrt(physics.gravity * h_b));
       h[s.outer0] = h[s.outer1] = h_b;
       q[s.outer0] = q[s.outer1] = h_b >= physics.dry_depth ? h_b * u_b : 0.0;
       return;
@@ -59,20 +60,23 @@ void fill_side(const Boundary& boundary, const Physics& physics, const Side& s) 
 }
 
 void check_boundary(const Boundary& boundary, const char* side) {
-  if (boundary.kind != BoundaryKind::inflow_discharge && boundary.kind != BoundaryKind::fixed_depth) return;
+  if (boundary.kind != BoundaryKind::inflow_discharge && boundary.kind != BoundaryKind::fixed_depth)
+    return;
   if (!std::isfinite(boundary.value) || boundary.value < 0.0) {
-    throw cosim::InputError(fmt::format("Solver1d: {} boundary ({}) needs a finite value >= 0, got {}", side,
-                                        to_string(boundary.kind), boundary.value));
+    throw cosim::InputError(
+        fmt::format("Solver1d: {} boundary ({}) needs a finite value >= 0, got {}", side,
+                    to_string(boundary.kind), boundary.value));
   }
 }
 
 }  // namespace
 
-void fill_ghost_cells(const Boundaries1d& boundaries, const Physics& physics, std::size_t n, double* h,
-                      double* q) {
+void fill_ghost_cells(const Boundaries1d& boundaries, const Physics& physics, std::size_t n,
+                      double* h, double* q) {
   const auto last = static_cast<std::ptrdiff_t>(n + 1);  // index of the last interior cell
   fill_side(boundaries.left, physics, {h, q, 2, n >= 2 ? 3 : 2, 1, 0, +1.0});
-  fill_side(boundaries.right, physics, {h, q, last, n >= 2 ? last - 1 : last, last + 1, last + 2, -1.0});
+  fill_side(boundaries.right, physics,
+            {h, q, last, n >= 2 ? last - 1 : last, last + 1, last + 2, -1.0});
 }
 
 void fill_ghost_bed(std::size_t n, double* bed) {

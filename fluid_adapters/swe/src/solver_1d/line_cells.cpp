@@ -1,9 +1,9 @@
 #include "solver_1d/line_cells.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "cosim/error.hpp"
 
@@ -20,8 +20,8 @@ LineCells make_line_cells(const std::vector<double>& edges) {
     }
     if (i > 0 && !(edges[i] > edges[i - 1])) {
       throw cosim::InputError(fmt::format(
-          "Solver1d: edges must increase, but edges[{}] = {} is not above edges[{}] = {}", i, edges[i],
-          i - 1, edges[i - 1]));
+          "Solver1d: edges must increase, but edges[{}] = {} is not above edges[{}] = {}", i,
+          edges[i], i - 1, edges[i - 1]));
     }
   }
   LineCells cells;

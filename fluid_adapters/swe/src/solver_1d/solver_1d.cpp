@@ -1,10 +1,10 @@
 #include "swe/solver_1d.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <fmt/format.h>
 
 #include "cosim/error.hpp"
 #include "solver_1d/flux_stage.hpp"
@@ -25,7 +25,8 @@ void check_physics(const Physics& p) {
     throw cosim::InputError(fmt::format("Solver1d: gravity must be positive, got {}", p.gravity));
   }
   if (!(p.manning >= 0.0) || !std::isfinite(p.manning)) {
-    throw cosim::InputError(fmt::format("Solver1d: Manning coefficient must be >= 0, got {}", p.manning));
+    throw cosim::InputError(
+        fmt::format("Solver1d: Manning coefficient must be >= 0, got {}", p.manning));
   }
   if (!(p.dry_depth >= 0.0) || !std::isfinite(p.dry_depth)) {
     throw cosim::InputError(fmt::format("Solver1d: dry_depth must be >= 0, got {}", p.dry_depth));
@@ -34,13 +35,15 @@ void check_physics(const Physics& p) {
 
 void check_scheme(const Scheme& s) {
   if (!(s.courant > 0.0 && s.courant <= 1.0)) {
-    throw cosim::InputError(fmt::format("Solver1d: Courant number must lie in (0, 1], got {}", s.courant));
+    throw cosim::InputError(
+        fmt::format("Solver1d: Courant number must lie in (0, 1], got {}", s.courant));
   }
 }
 
 void check_size(std::span<const double> values, std::size_t n, const char* what) {
   if (values.size() != n) {
-    throw cosim::InputError(fmt::format("Solver1d: {} has {} values for {} cells", what, values.size(), n));
+    throw cosim::InputError(
+        fmt::format("Solver1d: {} has {} values for {} cells", what, values.size(), n));
   }
 }
 
@@ -66,7 +69,8 @@ struct Solver1d::Impl {
   void apply_friction(double dt);
 };
 
-Solver1d::Solver1d(std::vector<double> edges, Physics physics, Scheme scheme, Boundaries1d boundaries)
+Solver1d::Solver1d(std::vector<double> edges, Physics physics, Scheme scheme,
+                   Boundaries1d boundaries)
     : impl_(std::make_unique<Impl>()) {
   check_physics(physics);
   check_scheme(scheme);
@@ -92,11 +96,17 @@ Solver1d::Solver1d(std::vector<double> edges, Physics physics, Scheme scheme, Bo
 
 Solver1d::~Solver1d() = default;
 
-std::size_t Solver1d::cell_count() const { return impl_->n(); }
+std::size_t Solver1d::cell_count() const {
+  return impl_->n();
+}
 
-cosim::MeshGeometry Solver1d::cells() const { return cosim::NonUniformLine{impl_->edges}; }
+cosim::MeshGeometry Solver1d::cells() const {
+  return cosim::NonUniformLine{impl_->edges};
+}
 
-double Solver1d::cell_size(std::size_t cell) const { return impl_->edges.at(cell + 1) - impl_->edges.at(cell); }
+double Solver1d::cell_size(std::size_t cell) const {
+  return impl_->edges.at(cell + 1) - impl_->edges.at(cell);
+}
 
 std::size_t Solver1d::cell_at(double x, double /*y*/) const {
   const std::vector<double>& e = impl_->edges;
@@ -106,17 +116,20 @@ std::size_t Solver1d::cell_at(double x, double /*y*/) const {
   return std::min(cell, impl_->n() - 1);
 }
 
-void Solver1d::set_state(std::span<const double> h, std::span<const double> hu, std::span<const double> /*hv*/) {
+void Solver1d::set_state(std::span<const double> h, std::span<const double> hu,
+                         std::span<const double> /*hv*/) {
   Impl& s = *impl_;
   const std::size_t n = s.n();
   check_size(h, n, "depth");
   check_size(hu, n, "discharge");
   for (std::size_t i = 0; i < n; ++i) {
     if (!(h[i] >= 0.0) || !std::isfinite(h[i])) {
-      throw cosim::InputError(fmt::format("Solver1d: depth of cell {} must be finite and >= 0, got {}", i, h[i]));
+      throw cosim::InputError(
+          fmt::format("Solver1d: depth of cell {} must be finite and >= 0, got {}", i, h[i]));
     }
     if (!std::isfinite(hu[i])) {
-      throw cosim::InputError(fmt::format("Solver1d: discharge of cell {} is not finite ({})", i, hu[i]));
+      throw cosim::InputError(
+          fmt::format("Solver1d: discharge of cell {} is not finite ({})", i, hu[i]));
     }
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -131,7 +144,8 @@ void Solver1d::set_bed(std::span<const double> bed) {
   check_size(bed, s.n(), "bed");
   for (std::size_t i = 0; i < bed.size(); ++i) {
     if (!std::isfinite(bed[i])) {
-      throw cosim::InputError(fmt::format("Solver1d: bed of cell {} is not finite ({})", i, bed[i]));
+      throw cosim::InputError(
+          fmt::format("Solver1d: bed of cell {} is not finite ({})", i, bed[i]));
     }
   }
   std::copy(bed.begin(), bed.end(), s.bed.begin() + ghost_layers);
@@ -149,7 +163,8 @@ double Solver1d::stable_time_step() const {
   double max_rate = 0.0;  // max over faces of speed / width
   // Branch-free (selects of doubles) so that the loop vectorises; a face
   // without water on either side adds rate 0.
-#pragma omp parallel for simd schedule(static) reduction(max : max_rate) if (s.n() >= parallel_cells)
+#pragma omp parallel for simd schedule(static) reduction(max \
+                                                         : max_rate) if (s.n() >= parallel_cells)
   for (std::ptrdiff_t f = 0; f < faces; ++f) {
     const auto l = static_cast<std::size_t>(f) + 1, r = l + 1;
     const double hl = h[l], hr = h[r];
@@ -186,12 +201,14 @@ void Solver1d::Impl::apply_friction(double dt) {
 
 void Solver1d::step(double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt)) {
-    throw cosim::InputError(fmt::format("Solver1d::step: dt must be positive and finite, got {}", dt));
+    throw cosim::InputError(
+        fmt::format("Solver1d::step: dt must be positive and finite, got {}", dt));
   }
   Impl& s = *impl_;
-  solver_1d::advance_step(s.cells, s.physics, s.scheme, s.boundaries,
-                          {s.h.data(), s.q.data(), s.bed.data(), s.h_stage.data(), s.q_stage.data()}, s.imposed,
-                          dt, s.scratch);
+  solver_1d::advance_step(
+      s.cells, s.physics, s.scheme, s.boundaries,
+      {s.h.data(), s.q.data(), s.bed.data(), s.h_stage.data(), s.q_stage.data()}, s.imposed, dt,
+      s.scratch);
   if (s.physics.manning > 0.0) s.apply_friction(dt);
   s.fill_ghosts(s.h, s.q);
 }
@@ -219,8 +236,14 @@ Totals Solver1d::totals() const {
   return t;
 }
 
-const Physics& Solver1d::physics() const { return impl_->physics; }
-const Scheme& Solver1d::scheme() const { return impl_->scheme; }
-const std::vector<double>& Solver1d::edges() const { return impl_->edges; }
+const Physics& Solver1d::physics() const {
+  return impl_->physics;
+}
+const Scheme& Solver1d::scheme() const {
+  return impl_->scheme;
+}
+const std::vector<double>& Solver1d::edges() const {
+  return impl_->edges;
+}
 
 }  // namespace swe

@@ -29,7 +29,8 @@ struct ReconstructedCells {
   std::vector<double> un_lower, un_upper, ut_lower, ut_upper;
 
   void resize(std::ptrdiff_t n) {
-    for (auto* v : {&h_lower, &h_upper, &bed_lower, &bed_upper, &un_lower, &un_upper, &ut_lower, &ut_upper})
+    for (auto* v :
+         {&h_lower, &h_upper, &bed_lower, &bed_upper, &un_lower, &un_upper, &ut_lower, &ut_upper})
       v->resize(n);
   }
 };
@@ -61,8 +62,9 @@ struct PrimitiveView {
 // of h, eta = h + B and the two velocity components; the face bed follows
 // from eta and h so a flat surface stays flat.
 template <LimiterKind limiter>
-SWE_2D_ROW_LOOP void reconstruct_cells(PrimitiveView p, const double* un, const double* ut, std::ptrdiff_t first,
-                              std::ptrdiff_t count, std::ptrdiff_t stride, ReconstructedCells& out) {
+SWE_2D_ROW_LOOP void reconstruct_cells(PrimitiveView p, const double* un, const double* ut,
+                                       std::ptrdiff_t first, std::ptrdiff_t count,
+                                       std::ptrdiff_t stride, ReconstructedCells& out) {
   const double* h = p.h + first;
   const double* eta = p.eta + first;
   un += first;
@@ -96,24 +98,32 @@ SWE_2D_ROW_LOOP void reconstruct_cells(PrimitiveView p, const double* un, const 
 // The faces of a run of reconstructed cells, as raw pointers (so the face
 // loop reads them without reloading the vectors).
 struct FaceSides {
-  const double *h_lower, *h_upper, *bed_lower, *bed_upper, *un_lower, *un_upper, *ut_lower, *ut_upper;
+  const double *h_lower, *h_upper, *bed_lower, *bed_upper, *un_lower, *un_upper, *ut_lower,
+      *ut_upper;
 
   explicit FaceSides(const ReconstructedCells& c, std::ptrdiff_t first)
-      : h_lower(c.h_lower.data() + first), h_upper(c.h_upper.data() + first),
-        bed_lower(c.bed_lower.data() + first), bed_upper(c.bed_upper.data() + first),
-        un_lower(c.un_lower.data() + first), un_upper(c.un_upper.data() + first),
-        ut_lower(c.ut_lower.data() + first), ut_upper(c.ut_upper.data() + first) {}
+      : h_lower(c.h_lower.data() + first),
+        h_upper(c.h_upper.data() + first),
+        bed_lower(c.bed_lower.data() + first),
+        bed_upper(c.bed_upper.data() + first),
+        un_lower(c.un_lower.data() + first),
+        un_upper(c.un_upper.data() + first),
+        ut_lower(c.ut_lower.data() + first),
+        ut_upper(c.ut_upper.data() + first) {}
 };
 
 // Flux through the face between cell k of `lower` (its upper face) and cell
 // k of `upper` (its lower face): hydrostatic reconstruction, then the
 // Riemann solver.
 template <FluxKind flux>
-inline FaceFluxes face_fluxes(const FaceSides& lower, const FaceSides& upper, std::ptrdiff_t k, double g) {
-  const HydrostaticFace hr = hydrostatic_face(lower.h_upper[k], lower.bed_upper[k], upper.h_lower[k], upper.bed_lower[k], g);
+inline FaceFluxes face_fluxes(const FaceSides& lower, const FaceSides& upper, std::ptrdiff_t k,
+                              double g) {
+  const HydrostaticFace hr = hydrostatic_face(lower.h_upper[k], lower.bed_upper[k],
+                                              upper.h_lower[k], upper.bed_lower[k], g);
   const FaceState left{hr.h_left, lower.un_upper[k], lower.ut_upper[k]};
   const FaceState right{hr.h_right, upper.un_lower[k], upper.ut_lower[k]};
-  const FaceFlux f = flux == FluxKind::hllc ? hllc_flux_selects(left, right, g) : numerical_flux(flux, left, right, g);
+  const FaceFlux f = flux == FluxKind::hllc ? hllc_flux_selects(left, right, g)
+                                            : numerical_flux(flux, left, right, g);
   return {f.mass, f.normal_momentum + hr.left_correction, f.normal_momentum + hr.right_correction,
           f.tangential_momentum};
 }
@@ -121,9 +131,11 @@ inline FaceFluxes face_fluxes(const FaceSides& lower, const FaceSides& upper, st
 // Fluxes of `count` faces, face k between cells lower_first + k of `lower`
 // and upper_first + k of `upper`.
 template <FluxKind flux>
-SWE_2D_ROW_LOOP [[gnu::flatten]] void face_fluxes(const ReconstructedCells& lower, std::ptrdiff_t lower_first,
-                                         const ReconstructedCells& upper, std::ptrdiff_t upper_first,
-                                         std::ptrdiff_t count, double g, FaceFluxes* out) {
+SWE_2D_ROW_LOOP [[gnu::flatten]] void face_fluxes(const ReconstructedCells& lower,
+                                                  std::ptrdiff_t lower_first,
+                                                  const ReconstructedCells& upper,
+                                                  std::ptrdiff_t upper_first, std::ptrdiff_t count,
+                                                  double g, FaceFluxes* out) {
   const FaceSides l(lower, lower_first), u(upper, upper_first);
 #pragma omp simd
   for (std::ptrdiff_t k = 0; k < count; ++k) out[k] = face_fluxes<flux>(l, u, k, g);
@@ -131,11 +143,14 @@ SWE_2D_ROW_LOOP [[gnu::flatten]] void face_fluxes(const ReconstructedCells& lowe
 
 // Flux difference across a cell minus its in-cell bed source, per unit
 // length of the direction (inv_spacing = 1 / dx or 1 / dy).
-inline DirectionalResidual residual(const FaceFluxes& lower_face, const FaceFluxes& upper_face, const FaceSides& cells,
-                                    std::ptrdiff_t k, double inv_spacing, double g) {
-  const double bed_source = cell_bed_source(cells.h_lower[k], cells.bed_lower[k], cells.h_upper[k], cells.bed_upper[k], g);
+inline DirectionalResidual residual(const FaceFluxes& lower_face, const FaceFluxes& upper_face,
+                                    const FaceSides& cells, std::ptrdiff_t k, double inv_spacing,
+                                    double g) {
+  const double bed_source = cell_bed_source(cells.h_lower[k], cells.bed_lower[k], cells.h_upper[k],
+                                            cells.bed_upper[k], g);
   return {(upper_face.mass - lower_face.mass) * inv_spacing,
-          (upper_face.normal_momentum_to_lower - lower_face.normal_momentum_to_upper - bed_source) * inv_spacing,
+          (upper_face.normal_momentum_to_lower - lower_face.normal_momentum_to_upper - bed_source) *
+              inv_spacing,
           (upper_face.tangential_momentum - lower_face.tangential_momentum) * inv_spacing};
 }
 

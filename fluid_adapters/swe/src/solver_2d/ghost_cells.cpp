@@ -29,8 +29,9 @@ void fill_side(const Side& side, const Boundary& boundary, const Physics& physic
     const std::ptrdiff_t edge = side.first + n * side.along;
     for (std::ptrdiff_t layer = 1; layer <= PaddedLayout::ghosts; ++layer) {
       const std::ptrdiff_t ghost = edge - layer * side.inward;
-      const std::ptrdiff_t source =
-          kind == BoundaryKind::wall ? edge + std::min(layer - 1, side.depth - 1) * side.inward : edge;
+      const std::ptrdiff_t source = kind == BoundaryKind::wall
+                                        ? edge + std::min(layer - 1, side.depth - 1) * side.inward
+                                        : edge;
       bed[ghost] = bed[source];
       if constexpr (kind == BoundaryKind::wall) {
         f.h[ghost] = f.h[source];
@@ -78,15 +79,19 @@ void fill_side(const Side& side, const Boundary& boundary, const Physics& physic
 
 }  // namespace
 
-void fill_ghost_cells(const PaddedLayout& layout, const Boundaries2d& boundaries, const Physics& physics,
-                      PaddedFields& fields, std::vector<double>& bed) {
+void fill_ghost_cells(const PaddedLayout& layout, const Boundaries2d& boundaries,
+                      const Physics& physics, PaddedFields& fields, std::vector<double>& bed) {
   const std::ptrdiff_t nx = layout.nx, ny = layout.ny, sx = layout.stride();
   std::vector<double>* hu = &fields.hu;
   std::vector<double>* hv = &fields.hv;
-  fill_side({layout.index(0, 0), ny, sx, 1, nx, -1.0, hu, hv}, boundaries.x_min, physics, fields, bed);
-  fill_side({layout.index(nx - 1, 0), ny, sx, -1, nx, 1.0, hu, hv}, boundaries.x_max, physics, fields, bed);
-  fill_side({layout.index(0, 0), nx, 1, sx, ny, -1.0, hv, hu}, boundaries.y_min, physics, fields, bed);
-  fill_side({layout.index(0, ny - 1), nx, 1, -sx, ny, 1.0, hv, hu}, boundaries.y_max, physics, fields, bed);
+  fill_side({layout.index(0, 0), ny, sx, 1, nx, -1.0, hu, hv}, boundaries.x_min, physics, fields,
+            bed);
+  fill_side({layout.index(nx - 1, 0), ny, sx, -1, nx, 1.0, hu, hv}, boundaries.x_max, physics,
+            fields, bed);
+  fill_side({layout.index(0, 0), nx, 1, sx, ny, -1.0, hv, hu}, boundaries.y_min, physics, fields,
+            bed);
+  fill_side({layout.index(0, ny - 1), nx, 1, -sx, ny, 1.0, hv, hu}, boundaries.y_max, physics,
+            fields, bed);
 }
 
 }  // namespace swe::solver_2d

@@ -18,24 +18,31 @@ inline FaceFlux hllc_flux_selects(const FaceState& l, const FaceState& r, double
   const double u_roe = (sql * l.un + sqr * r.un) / (sql + sqr);
   const double c_roe = std::sqrt(0.5 * g * (l.h + r.h));
   const bool left_dry = l.h <= 0.0, right_dry = r.h <= 0.0;
-  const double sl = left_dry ? r.un - 2.0 * cr : right_dry ? l.un - cl : std::min(l.un - cl, u_roe - c_roe);
-  const double sr = left_dry ? r.un + cr : right_dry ? l.un + 2.0 * cl : std::max(r.un + cr, u_roe + c_roe);
+  const double sl = left_dry    ? r.un - 2.0 * cr
+                    : right_dry ? l.un - cl
+                                : std::min(l.un - cl, u_roe - c_roe);
+  const double sr = left_dry    ? r.un + cr
+                    : right_dry ? l.un + 2.0 * cl
+                                : std::max(r.un + cr, u_roe + c_roe);
 
   const FaceFlux fl = physical_flux(l, g), fr = physical_flux(r, g);
   const double inv = 1.0 / (sr - sl);
   const double mass = (sr * fl.mass - sl * fr.mass + sl * sr * (r.h - l.h)) * inv;
   const double normal_momentum =
-      (sr * fl.normal_momentum - sl * fr.normal_momentum + sl * sr * (r.h * r.un - l.h * l.un)) * inv;
+      (sr * fl.normal_momentum - sl * fr.normal_momentum + sl * sr * (r.h * r.un - l.h * l.un)) *
+      inv;
   const double denominator = r.h * (r.un - sr) - l.h * (l.un - sl);
-  const double s_star = denominator != 0.0 ? (sl * r.h * (r.un - sr) - sr * l.h * (l.un - sl)) / denominator
-                                           : 0.5 * (sl + sr);
+  const double s_star = denominator != 0.0
+                            ? (sl * r.h * (r.un - sr) - sr * l.h * (l.un - sl)) / denominator
+                            : 0.5 * (sl + sr);
   const double tangential_momentum = mass * (s_star >= 0.0 ? l.ut : r.ut);
 
   const bool both_dry = std::max(l.h, r.h) <= 0.0;
   auto pick = [&](double left, double right, double star) {
     return both_dry ? 0.0 : sl >= 0.0 ? left : sr <= 0.0 ? right : star;
   };
-  return {pick(fl.mass, fr.mass, mass), pick(fl.normal_momentum, fr.normal_momentum, normal_momentum),
+  return {pick(fl.mass, fr.mass, mass),
+          pick(fl.normal_momentum, fr.normal_momentum, normal_momentum),
           pick(fl.tangential_momentum, fr.tangential_momentum, tangential_momentum)};
 }
 

@@ -14,7 +14,9 @@ struct PaddedLayout {
 
   std::ptrdiff_t stride() const { return nx + 2 * ghosts; }
   std::ptrdiff_t size() const { return stride() * (ny + 2 * ghosts); }
-  std::ptrdiff_t index(std::ptrdiff_t i, std::ptrdiff_t j) const { return (i + ghosts) + (j + ghosts) * stride(); }
+  std::ptrdiff_t index(std::ptrdiff_t i, std::ptrdiff_t j) const {
+    return (i + ghosts) + (j + ghosts) * stride();
+  }
 };
 
 // One shallow-water state on the padded cells (SoA): the conserved
@@ -29,7 +31,8 @@ struct PaddedFields {
 };
 
 // Sets the primitives of cell c from its conserved variables and bed.
-inline void update_primitives(PaddedFields& f, const double* bed, std::ptrdiff_t c, double dry_depth) {
+inline void update_primitives(PaddedFields& f, const double* bed, std::ptrdiff_t c,
+                              double dry_depth) {
   const double h = f.h[c];
   f.eta[c] = h + bed[c];
   if (h >= dry_depth) {

@@ -32,17 +32,23 @@ struct UpdateConstants {
 // first and last vectorise.
 template <bool with_friction>
 SWE_2D_ROW_LOOP void update_row(const RowUpdate& r, std::ptrdiff_t nx, const UpdateConstants& k) {
-  const double g = k.gravity, dt = k.dt, base_weight = k.base_weight, stage_weight = 1.0 - k.base_weight;
+  const double g = k.gravity, dt = k.dt, base_weight = k.base_weight,
+               stage_weight = 1.0 - k.base_weight;
   const double dry_depth = k.dry_depth;
 #pragma omp simd
   for (std::ptrdiff_t i = 0; i < nx; ++i) {
-    const DirectionalResidual rx = residual(r.x_faces[i], r.x_faces[i + 1], r.x_cells, i, k.inv_dx, g);
-    const DirectionalResidual ry = residual(r.y_faces_below[i], r.y_faces_above[i], r.y_cells, i, k.inv_dy, g);
-    const double h = std::max(base_weight * r.base_h[i] + stage_weight * (r.in_h[i] - dt * (rx.mass + ry.mass)), 0.0);
-    const double hu = base_weight * r.base_hu[i] +
-                      stage_weight * (r.in_hu[i] - dt * (rx.normal_momentum + ry.tangential_momentum));
-    const double hv = base_weight * r.base_hv[i] +
-                      stage_weight * (r.in_hv[i] - dt * (rx.tangential_momentum + ry.normal_momentum));
+    const DirectionalResidual rx =
+        residual(r.x_faces[i], r.x_faces[i + 1], r.x_cells, i, k.inv_dx, g);
+    const DirectionalResidual ry =
+        residual(r.y_faces_below[i], r.y_faces_above[i], r.y_cells, i, k.inv_dy, g);
+    const double h = std::max(
+        base_weight * r.base_h[i] + stage_weight * (r.in_h[i] - dt * (rx.mass + ry.mass)), 0.0);
+    const double hu =
+        base_weight * r.base_hu[i] +
+        stage_weight * (r.in_hu[i] - dt * (rx.normal_momentum + ry.tangential_momentum));
+    const double hv =
+        base_weight * r.base_hv[i] +
+        stage_weight * (r.in_hv[i] - dt * (rx.tangential_momentum + ry.normal_momentum));
     const bool wet = h >= dry_depth;  // dry cells carry no momentum
     r.out_h[i] = h;
     r.out_hu[i] = wet ? hu : 0.0;

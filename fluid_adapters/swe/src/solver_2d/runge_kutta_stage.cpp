@@ -27,12 +27,14 @@ namespace {
 // each (the lowest one per block of rows twice), row by row, so the working
 // set stays a few rows.
 template <FluxKind flux, LimiterKind limiter, bool with_friction>
-void advance_rows(const StageArguments& a, const PaddedFields& in, const PaddedFields& base, PaddedFields& out,
-                  std::ptrdiff_t first_row, std::ptrdiff_t end_row, StageWorkspace& ws) {
+void advance_rows(const StageArguments& a, const PaddedFields& in, const PaddedFields& base,
+                  PaddedFields& out, std::ptrdiff_t first_row, std::ptrdiff_t end_row,
+                  StageWorkspace& ws) {
   const PaddedLayout& layout = a.layout;
   const std::ptrdiff_t nx = layout.nx, sx = layout.stride();
   const double g = a.physics->gravity;
-  const UpdateConstants constants{a.dt, a.inv_dx, a.inv_dy, a.base_weight, g, a.physics->dry_depth, a.physics->manning};
+  const UpdateConstants constants{
+      a.dt, a.inv_dx, a.inv_dy, a.base_weight, g, a.physics->dry_depth, a.physics->manning};
   const PrimitiveView p{in.h.data(), in.eta.data()};
   const double* u = in.u.data();
   const double* v = in.v.data();
@@ -79,8 +81,8 @@ void advance_rows(const StageArguments& a, const PaddedFields& in, const PaddedF
 }
 
 template <FluxKind flux, LimiterKind limiter, bool with_friction>
-void advance(const StageArguments& a, const PaddedFields& in, const PaddedFields& base, PaddedFields& out,
-             std::vector<StageWorkspace>& workspaces) {
+void advance(const StageArguments& a, const PaddedFields& in, const PaddedFields& base,
+             PaddedFields& out, std::vector<StageWorkspace>& workspaces) {
   const std::ptrdiff_t ny = a.layout.ny;
   const bool parallel = a.layout.nx * ny > parallel_cell_count;
   const std::ptrdiff_t blocks = parallel ? std::min<std::ptrdiff_t>(omp_get_max_threads(), ny) : 1;
@@ -88,14 +90,14 @@ void advance(const StageArguments& a, const PaddedFields& in, const PaddedFields
   for (std::ptrdiff_t b = 0; b < blocks; ++b) workspaces[b].resize(a.layout.nx);
 #pragma omp parallel for schedule(static) if (parallel)
   for (std::ptrdiff_t b = 0; b < blocks; ++b) {
-    advance_rows<flux, limiter, with_friction>(a, in, base, out, ny * b / blocks, ny * (b + 1) / blocks,
-                                               workspaces[b]);
+    advance_rows<flux, limiter, with_friction>(a, in, base, out, ny * b / blocks,
+                                               ny * (b + 1) / blocks, workspaces[b]);
   }
 }
 
 template <FluxKind flux, LimiterKind limiter>
-void advance(const StageArguments& a, const PaddedFields& in, const PaddedFields& base, PaddedFields& out,
-             std::vector<StageWorkspace>& workspaces) {
+void advance(const StageArguments& a, const PaddedFields& in, const PaddedFields& base,
+             PaddedFields& out, std::vector<StageWorkspace>& workspaces) {
   if (a.with_friction && a.physics->manning > 0.0) {
     advance<flux, limiter, true>(a, in, base, out, workspaces);
   } else {
@@ -104,8 +106,8 @@ void advance(const StageArguments& a, const PaddedFields& in, const PaddedFields
 }
 
 template <FluxKind flux>
-void advance(const StageArguments& a, const PaddedFields& in, const PaddedFields& base, PaddedFields& out,
-             std::vector<StageWorkspace>& workspaces) {
+void advance(const StageArguments& a, const PaddedFields& in, const PaddedFields& base,
+             PaddedFields& out, std::vector<StageWorkspace>& workspaces) {
   switch (a.scheme->limiter) {
     case LimiterKind::none:
       return advance<flux, LimiterKind::none>(a, in, base, out, workspaces);

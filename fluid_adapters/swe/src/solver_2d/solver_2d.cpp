@@ -36,40 +36,47 @@ std::string number(double value) {
 // max over the row's cells of (|u| + k c) / dx + (|v| + k c) / dy (see
 // stable_time_step); h, u, v address the row's first cell, `stride` is the
 // row stride.
-SWE_2D_ROW_LOOP double max_wave_rate(const double* h, const double* u, const double* v, std::ptrdiff_t nx,
-                                     std::ptrdiff_t stride, double inv_dx, double inv_dy, double g,
-                                     double dry_depth) {
+SWE_2D_ROW_LOOP double max_wave_rate(const double* h, const double* u, const double* v,
+                                     std::ptrdiff_t nx, std::ptrdiff_t stride, double inv_dx,
+                                     double inv_dy, double g, double dry_depth) {
   double rate = 0.0;
 #pragma omp simd reduction(max : rate)
   for (std::ptrdiff_t i = 0; i < nx; ++i) {
-    const double neighbour = std::min(std::min(h[i - 1], h[i + 1]), std::min(h[i - stride], h[i + stride]));
+    const double neighbour =
+        std::min(std::min(h[i - 1], h[i + 1]), std::min(h[i - stride], h[i + stride]));
     const double c = (neighbour < dry_depth ? 2.0 : 1.0) * std::sqrt(g * h[i]);
     rate = std::max(rate, (std::abs(u[i]) + c) * inv_dx + (std::abs(v[i]) + c) * inv_dy);
   }
   return rate;
 }
 
-void validate(const Grid2d& grid, const Physics& physics, const Scheme& scheme, const Boundaries2d& boundaries) {
+void validate(const Grid2d& grid, const Physics& physics, const Scheme& scheme,
+              const Boundaries2d& boundaries) {
   const char* axis[2] = {"x", "y"};
   for (int d = 0; d < 2; ++d) {
     require(grid.spacing[d] > 0.0 && std::isfinite(grid.spacing[d]),
-            std::string("grid spacing in ") + axis[d] + " must be positive, got " + number(grid.spacing[d]));
-    require(grid.cells[d] > 0,
-            std::string("cell count in ") + axis[d] + " must be positive, got " + std::to_string(grid.cells[d]));
-    require(std::isfinite(grid.origin[d]), std::string("grid origin in ") + axis[d] + " must be finite");
+            std::string("grid spacing in ") + axis[d] + " must be positive, got " +
+                number(grid.spacing[d]));
+    require(grid.cells[d] > 0, std::string("cell count in ") + axis[d] + " must be positive, got " +
+                                   std::to_string(grid.cells[d]));
+    require(std::isfinite(grid.origin[d]),
+            std::string("grid origin in ") + axis[d] + " must be finite");
   }
   require(physics.gravity > 0.0, "gravity must be positive, got " + number(physics.gravity));
   require(physics.manning >= 0.0, "manning must be non-negative, got " + number(physics.manning));
-  require(physics.dry_depth >= 0.0, "dry_depth must be non-negative, got " + number(physics.dry_depth));
+  require(physics.dry_depth >= 0.0,
+          "dry_depth must be non-negative, got " + number(physics.dry_depth));
   require(scheme.courant > 0.0 && scheme.courant <= 1.0,
           "courant must lie in (0, 1], got " + number(scheme.courant));
-  const std::pair<const char*, const Boundary*> sides[4] = {
-      {"x_min", &boundaries.x_min}, {"x_max", &boundaries.x_max},
-      {"y_min", &boundaries.y_min}, {"y_max", &boundaries.y_max}};
+  const std::pair<const char*, const Boundary*> sides[4] = {{"x_min", &boundaries.x_min},
+                                                            {"x_max", &boundaries.x_max},
+                                                            {"y_min", &boundaries.y_min},
+                                                            {"y_max", &boundaries.y_max}};
   for (const auto& [name, b] : sides) {
     require(std::isfinite(b->value), std::string("boundary ") + name + " value must be finite");
     require(b->kind != BoundaryKind::fixed_depth || b->value >= 0.0,
-            std::string("boundary ") + name + " fixed_depth must be non-negative, got " + number(b->value));
+            std::string("boundary ") + name + " fixed_depth must be non-negative, got " +
+                number(b->value));
   }
 }
 
@@ -91,8 +98,14 @@ struct Solver2d::Impl {
   mutable bool cells_current = false;
 
   Impl(Grid2d g, Physics p, Scheme s, Boundaries2d b)
-      : grid(g), physics(p), scheme(s), boundaries(b), layout{g.cells[0], g.cells[1]},
-        bed(layout.size()), state(layout.size()), stage(layout.size()),
+      : grid(g),
+        physics(p),
+        scheme(s),
+        boundaries(b),
+        layout{g.cells[0], g.cells[1]},
+        bed(layout.size()),
+        state(layout.size()),
+        stage(layout.size()),
         bed_cells(static_cast<std::size_t>(layout.nx * layout.ny)) {
     fill_ghosts(state);
   }
@@ -100,7 +113,9 @@ struct Solver2d::Impl {
   std::size_t cell_count() const { return static_cast<std::size_t>(layout.nx * layout.ny); }
   bool parallel() const { return layout.nx * layout.ny > solver_2d::parallel_cell_count; }
 
-  void fill_ghosts(PaddedFields& f) { solver_2d::fill_ghost_cells(layout, boundaries, physics, f, bed); }
+  void fill_ghosts(PaddedFields& f) {
+    solver_2d::fill_ghost_cells(layout, boundaries, physics, f, bed);
+  }
 
   // Interior primitives of the state (after set_state / set_bed) and its ghosts.
   void refresh_state() {
@@ -129,9 +144,17 @@ struct Solver2d::Impl {
     cells_current = true;
   }
 
-  solver_2d::StageArguments stage_arguments(double dt, double base_weight, bool with_friction) const {
-    return {layout, &physics, &scheme, bed.data(), dt, 1.0 / grid.spacing[0], 1.0 / grid.spacing[1],
-            base_weight, with_friction};
+  solver_2d::StageArguments stage_arguments(double dt, double base_weight,
+                                            bool with_friction) const {
+    return {layout,
+            &physics,
+            &scheme,
+            bed.data(),
+            dt,
+            1.0 / grid.spacing[0],
+            1.0 / grid.spacing[1],
+            base_weight,
+            with_friction};
   }
 };
 
@@ -142,7 +165,9 @@ Solver2d::Solver2d(Grid2d grid, Physics physics, Scheme scheme, Boundaries2d bou
 
 Solver2d::~Solver2d() = default;
 
-std::size_t Solver2d::cell_count() const { return impl_->cell_count(); }
+std::size_t Solver2d::cell_count() const {
+  return impl_->cell_count();
+}
 
 cosim::MeshGeometry Solver2d::cells() const {
   const Grid2d& g = impl_->grid;
@@ -155,7 +180,9 @@ cosim::MeshGeometry Solver2d::cells() const {
   return mesh;
 }
 
-double Solver2d::cell_size(std::size_t) const { return impl_->grid.spacing[0] * impl_->grid.spacing[1]; }
+double Solver2d::cell_size(std::size_t) const {
+  return impl_->grid.spacing[0] * impl_->grid.spacing[1];
+}
 
 std::size_t Solver2d::cell_at(double x, double y) const {
   const Grid2d& g = impl_->grid;
@@ -170,26 +197,29 @@ std::size_t Solver2d::cell_at(double x, double y) const {
   return index[0] + static_cast<std::size_t>(g.cells[0]) * index[1];
 }
 
-void Solver2d::set_state(std::span<const double> h, std::span<const double> hu, std::span<const double> hv) {
+void Solver2d::set_state(std::span<const double> h, std::span<const double> hu,
+                         std::span<const double> hv) {
   Impl& m = *impl_;
   const std::size_t n = m.cell_count();
   auto check_size = [n](std::span<const double> values, const char* name, bool may_be_empty) {
     require(values.size() == n || (may_be_empty && values.empty()),
-            std::string(name) + " has " + std::to_string(values.size()) + " values for " + std::to_string(n) +
-                " cells");
+            std::string(name) + " has " + std::to_string(values.size()) + " values for " +
+                std::to_string(n) + " cells");
   };
   check_size(h, "depth", false);
   check_size(hu, "discharge_x", true);
   check_size(hv, "discharge_y", true);
   for (std::size_t c = 0; c < n; ++c) {
-    require(h[c] >= 0.0 && std::isfinite(h[c]),
-            "depth of cell " + std::to_string(c) + " must be finite and non-negative, got " + number(h[c]));
+    require(h[c] >= 0.0 && std::isfinite(h[c]), "depth of cell " + std::to_string(c) +
+                                                    " must be finite and non-negative, got " +
+                                                    number(h[c]));
     require((hu.empty() || std::isfinite(hu[c])) && (hv.empty() || std::isfinite(hv[c])),
             "discharge of cell " + std::to_string(c) + " must be finite");
   }
   const std::ptrdiff_t nx = m.layout.nx;
   for (std::size_t c = 0; c < n; ++c) {
-    const std::ptrdiff_t k = m.layout.index(static_cast<std::ptrdiff_t>(c) % nx, static_cast<std::ptrdiff_t>(c) / nx);
+    const std::ptrdiff_t k =
+        m.layout.index(static_cast<std::ptrdiff_t>(c) % nx, static_cast<std::ptrdiff_t>(c) / nx);
     const bool wet = h[c] >= m.physics.dry_depth;  // dry cells carry no momentum
     m.state.h[k] = h[c];
     m.state.hu[k] = wet && !hu.empty() ? hu[c] : 0.0;
@@ -201,12 +231,14 @@ void Solver2d::set_state(std::span<const double> h, std::span<const double> hu, 
 void Solver2d::set_bed(std::span<const double> bed) {
   Impl& m = *impl_;
   const std::size_t n = m.cell_count();
-  require(bed.size() == n, "bed has " + std::to_string(bed.size()) + " values for " + std::to_string(n) + " cells");
+  require(bed.size() == n,
+          "bed has " + std::to_string(bed.size()) + " values for " + std::to_string(n) + " cells");
   for (std::size_t c = 0; c < n; ++c)
     require(std::isfinite(bed[c]), "bed of cell " + std::to_string(c) + " must be finite");
   const std::ptrdiff_t nx = m.layout.nx;
   for (std::size_t c = 0; c < n; ++c)
-    m.bed[m.layout.index(static_cast<std::ptrdiff_t>(c) % nx, static_cast<std::ptrdiff_t>(c) / nx)] = bed[c];
+    m.bed[m.layout.index(static_cast<std::ptrdiff_t>(c) % nx,
+                         static_cast<std::ptrdiff_t>(c) / nx)] = bed[c];
   m.bed_cells.assign(bed.begin(), bed.end());
   m.refresh_state();
 }
@@ -224,19 +256,23 @@ double Solver2d::stable_time_step() const {
 #pragma omp parallel for schedule(static) reduction(max : rate) if (m.parallel())
   for (std::ptrdiff_t j = 0; j < ny; ++j) {
     const std::ptrdiff_t row = layout.index(0, j);
-    rate = std::max(rate, max_wave_rate(h + row, u + row, v + row, nx, sx, inv_dx, inv_dy, g, dry_depth));
+    rate = std::max(rate,
+                    max_wave_rate(h + row, u + row, v + row, nx, sx, inv_dx, inv_dy, g, dry_depth));
   }
   return rate > 0.0 ? m.scheme.courant / rate : std::numeric_limits<double>::infinity();
 }
 
 void Solver2d::step(double dt) {
   Impl& m = *impl_;
-  require(dt >= 0.0 && std::isfinite(dt), "time step must be finite and non-negative, got " + number(dt));
+  require(dt >= 0.0 && std::isfinite(dt),
+          "time step must be finite and non-negative, got " + number(dt));
   // SSP-RK2 (Gottlieb & Shu, Math. Comp. 67, 1998). Stage 1: U1 = U^n - dt R(U^n).
-  solver_2d::runge_kutta_stage(m.stage_arguments(dt, 0.0, false), m.state, m.state, m.stage, m.workspaces);
+  solver_2d::runge_kutta_stage(m.stage_arguments(dt, 0.0, false), m.state, m.state, m.stage,
+                               m.workspaces);
   m.fill_ghosts(m.stage);
   // Stage 2: U^(n+1) = (U^n + U1 - dt R(U1)) / 2, then Manning friction.
-  solver_2d::runge_kutta_stage(m.stage_arguments(dt, 0.5, true), m.stage, m.state, m.state, m.workspaces);
+  solver_2d::runge_kutta_stage(m.stage_arguments(dt, 0.5, true), m.stage, m.state, m.state,
+                               m.workspaces);
   m.fill_ghosts(m.state);
   m.cells_current = false;
 }
@@ -256,7 +292,9 @@ std::span<const double> Solver2d::discharge_y() const {
   return impl_->hv_cells;
 }
 
-std::span<const double> Solver2d::bed() const { return impl_->bed_cells; }
+std::span<const double> Solver2d::bed() const {
+  return impl_->bed_cells;
+}
 
 Totals Solver2d::totals() const {
   const Impl& m = *impl_;
@@ -286,8 +324,14 @@ Totals Solver2d::totals() const {
   return t;
 }
 
-const Physics& Solver2d::physics() const { return impl_->physics; }
-const Scheme& Solver2d::scheme() const { return impl_->scheme; }
-const Grid2d& Solver2d::grid() const { return impl_->grid; }
+const Physics& Solver2d::physics() const {
+  return impl_->physics;
+}
+const Scheme& Solver2d::scheme() const {
+  return impl_->scheme;
+}
+const Grid2d& Solver2d::grid() const {
+  return impl_->grid;
+}
 
 }  // namespace swe

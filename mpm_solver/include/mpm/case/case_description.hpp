@@ -68,19 +68,21 @@ enum class PermeabilityModel {
 };
 
 struct PorousSpec {
-  double porosity = 0.0;  // initial n0 [-]
+  double porosity = 0.0;    // initial n0 [-]
   double grain_size = 0.0;  // D50 [m]
   PermeabilityModel permeability_model = PermeabilityModel::kozeny_carman_pan;
-  double permeability = 0.0;  // [m^2], for `constant`
+  double permeability = 0.0;   // [m^2], for `constant`
   double max_porosity = 0.99;  // cap of Pan et al. 2021, text after eq. 76
 };
 
 // Geostatic initial effective stress: sigma'_v = -gamma' (surface - z),
 // sigma'_h = K0 sigma'_v (tension positive).
 struct GeostaticStress {
-  double k0 = std::numeric_limits<double>::quiet_NaN();  // NaN: Jaky 1 - sin(phi), or nu/(1-nu) when frictionless
+  double k0 = std::numeric_limits<double>::quiet_NaN();  // NaN: Jaky 1 - sin(phi), or nu/(1-nu)
+                                                         // when frictionless
   double unit_weight = std::numeric_limits<double>::quiet_NaN();  // NaN: rho |g|
-  std::optional<double> surface;  // elevation of the free surface; default: top of the body above each point
+  std::optional<double>
+      surface;  // elevation of the free surface; default: top of the body above each point
 };
 
 // How a body moves: deformable (its material decides), or rigid with a
@@ -106,13 +108,14 @@ struct BodySpec {
   Vec3d initial_velocity = Vec3d::Zero();
   std::optional<PorousSpec> porous;
   std::optional<GeostaticStress> geostatic;
-  double density_override = std::numeric_limits<double>::quiet_NaN();  // rigid bodies: their density
+  double density_override =
+      std::numeric_limits<double>::quiet_NaN();       // rigid bodies: their density
   std::optional<ThermalProperties> thermal_override;  // rigid bodies: their thermal properties
   double initial_temperature = 293.15;                // [K]
 };
 
 struct ContactSpec {
-  bool enabled = false;  // false: one velocity field for all bodies (no-slip)
+  bool enabled = false;   // false: one velocity field for all bodies (no-slip)
   double friction = 0.0;  // default coefficient for every pair
   std::map<std::pair<int, int>, double> pair_friction;  // (body a < body b) -> coefficient
   double friction_between(int a, int b) const;
@@ -162,14 +165,14 @@ struct ThermalSpec {
 
 struct TimeSpec {
   double end_time = 1.0;
-  double safety_factor = 0.5;  // alpha of Zheng et al., eq. 23
+  double safety_factor = 0.5;    // alpha of Zheng et al., eq. 23
   double min_time_step = 1e-12;  // a step below this ends the run (exit 4)
   double max_time_step = std::numeric_limits<double>::infinity();
 };
 
 struct OutputSpec {
-  double every = 0.0;  // snapshot interval [s]; 0: only first and last
-  bool grid = false;   // also grid snapshots
+  double every = 0.0;        // snapshot interval [s]; 0: only first and last
+  bool grid = false;         // also grid snapshots
   double probe_every = 0.0;  // probe interval [s]; 0: every snapshot
 };
 
@@ -196,7 +199,7 @@ struct CaseDescription {
   std::vector<LoadSpec> loads;
   std::vector<ProbeSpec> probes;
   OutputSpec output;
-  int threads = 0;  // 0: OpenMP default
+  int threads = 0;      // 0: OpenMP default
   cosim::RunSize size;  // the particles seeded, the grid and their memory (set by the loader)
 };
 

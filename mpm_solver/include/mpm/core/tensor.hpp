@@ -29,7 +29,11 @@ Tensor embed(const Mat<Dim>& m, double diagonal) {
 }
 
 // Symmetric part and skew part of a tensor.
-inline Tensor sym(const Tensor& t) { return 0.5 * (t + t.transpose()); }
-inline Tensor skew(const Tensor& t) { return 0.5 * (t - t.transpose()); }
+inline Tensor sym(const Tensor& t) {
+  return 0.5 * (t + t.transpose());
+}
+inline Tensor skew(const Tensor& t) {
+  return 0.5 * (t - t.transpose());
+}
 
 }  // namespace mpm

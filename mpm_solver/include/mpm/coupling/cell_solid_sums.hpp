@@ -11,14 +11,14 @@ namespace mpm::coupling {
 // as sums over the particles with their conservative weights w_pc, before
 // any division by the cell volume.
 struct CellSolidSums {
-  std::vector<double> domain;            // sum w V_p: the cell volume the points' domains cover
-  std::vector<double> solid_volume;      // sum w (1 - n_p) V_p
-  std::vector<double> mass;              // sum w m_p
-  std::vector<double> momentum;          // sum w m_p v_p, Dim per cell
-  std::vector<double> volume_momentum;   // sum w (1 - n_p) V_p v_p, Dim per cell
-  std::vector<double> porous_mass;       // sum w m_p over porous points
-  std::vector<double> permeability_mass; // sum w m_p kappa_p over porous points
-  std::vector<double> grain_size_mass;   // sum w m_p D50_p over porous points
+  std::vector<double> domain;             // sum w V_p: the cell volume the points' domains cover
+  std::vector<double> solid_volume;       // sum w (1 - n_p) V_p
+  std::vector<double> mass;               // sum w m_p
+  std::vector<double> momentum;           // sum w m_p v_p, Dim per cell
+  std::vector<double> volume_momentum;    // sum w (1 - n_p) V_p v_p, Dim per cell
+  std::vector<double> porous_mass;        // sum w m_p over porous points
+  std::vector<double> permeability_mass;  // sum w m_p kappa_p over porous points
+  std::vector<double> grain_size_mass;    // sum w m_p D50_p over porous points
 
   CellSolidSums(std::size_t cells, int dim);
   // Moves `fraction` of cell `from`'s sums to cell `to`.

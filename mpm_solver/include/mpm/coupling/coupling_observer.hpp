@@ -45,7 +45,8 @@ class CouplingObserver final : public StepObserver<Dim> {
 // The observers mpm_solver passes to run_case for a coupled run: each reads
 // the `coupling` block of the case file (description.file; absent: nothing
 // is declared) and joins the job as endpoint.name_or(default_name).
-StepObservers coupling_observers(const cosim::CouplingEndpoint& endpoint, const std::string& default_name = "mpm");
+StepObservers coupling_observers(const cosim::CouplingEndpoint& endpoint,
+                                 const std::string& default_name = "mpm");
 
 extern template class CouplingObserver<2>;
 extern template class CouplingObserver<3>;

@@ -38,7 +38,8 @@ struct ExchangeGrid {
     g.origin = grid.origin;
     for (int d = 0; d < Dim; ++d) {
       g.spacing[d] = grid.spacing[d] * factor;
-      g.cells[static_cast<std::size_t>(d)] = (grid.cells[static_cast<std::size_t>(d)] + factor - 1) / factor;
+      g.cells[static_cast<std::size_t>(d)] =
+          (grid.cells[static_cast<std::size_t>(d)] + factor - 1) / factor;
     }
     return g;
   }
@@ -59,7 +60,8 @@ struct ExchangeGrid {
   }
   Vec<Dim> centre(const std::array<int, Dim>& index) const {
     Vec<Dim> x;
-    for (int d = 0; d < Dim; ++d) x[d] = origin[d] + (index[static_cast<std::size_t>(d)] + 0.5) * spacing[d];
+    for (int d = 0; d < Dim; ++d)
+      x[d] = origin[d] + (index[static_cast<std::size_t>(d)] + 0.5) * spacing[d];
     return x;
   }
 
@@ -215,7 +217,8 @@ struct ExchangeGrid {
       for (int d = 0; d < Dim; ++d) {
         const int bit = (corner >> d) & 1;
         index[static_cast<std::size_t>(d)] = first[static_cast<std::size_t>(d)] + bit;
-        if (index[static_cast<std::size_t>(d)] >= cells[static_cast<std::size_t>(d)]) inside = false;
+        if (index[static_cast<std::size_t>(d)] >= cells[static_cast<std::size_t>(d)])
+          inside = false;
         weight *= w[d][bit];
       }
       if (!inside) continue;  // a zero weight past a single-cell direction

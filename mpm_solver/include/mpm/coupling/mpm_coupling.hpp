@@ -107,7 +107,8 @@ class MpmCoupling {
 // The production glue: a coupling over a cosim::Participant (coupled or
 // standalone). The participant must outlive the coupling.
 template <int Dim>
-std::unique_ptr<MpmCoupling<Dim>> attach_coupling(Solver<Dim>& solver, cosim::Participant& participant,
+std::unique_ptr<MpmCoupling<Dim>> attach_coupling(Solver<Dim>& solver,
+                                                  cosim::Participant& participant,
                                                   const CouplingSpec& spec);
 
 extern template class MpmCoupling<2>;

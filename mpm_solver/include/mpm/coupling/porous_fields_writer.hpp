@@ -34,7 +34,7 @@ namespace mpm::coupling {
 // the bed only takes pore space.
 struct PorousFields {
   std::vector<double> solid_fraction;
-  std::vector<double> solid_velocity;  // Dim per cell, cell-major
+  std::vector<double> solid_velocity;     // Dim per cell, cell-major
   std::vector<double> solid_volume_flux;  // sum_i phi_i U_i [m/s], Dim per cell
   std::vector<double> solid_bulk_density;
   std::vector<double> permeability;
@@ -46,7 +46,7 @@ struct PorousFields {
 
 template <int Dim>
 PorousFields porous_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& particles,
-                           const std::vector<BodyRole>& roles, const std::vector<std::uint8_t>& held,
-                           double held_density_factor);
+                           const std::vector<BodyRole>& roles,
+                           const std::vector<std::uint8_t>& held, double held_density_factor);
 
 }  // namespace mpm::coupling

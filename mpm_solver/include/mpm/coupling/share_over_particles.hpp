@@ -47,10 +47,11 @@ ShareTotals<N> share_over_particles(const ExchangeGrid<Dim>& grid,
   for (std::size_t p = 0; p < particles.size(); ++p) {
     const double W = share_weight[p], H = holding_weight.empty() ? 0.0 : holding_weight[p];
     if (W <= 0.0 && H <= 0.0) continue;
-    grid.for_each_conservative(particles.position[p], particles.half_length[p], [&](std::size_t c, double w) {
-      weight[c] += w * W;
-      holding[c] += w * H;
-    });
+    grid.for_each_conservative(particles.position[p], particles.half_length[p],
+                               [&](std::size_t c, double w) {
+                                 weight[c] += w * W;
+                                 holding[c] += w * H;
+                               });
   }
   std::vector<Amount> amount(n);
   ShareTotals<N> totals;

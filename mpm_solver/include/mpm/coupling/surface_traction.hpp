@@ -12,9 +12,9 @@ namespace mpm::coupling {
 // Totals of one distribution [N] (per unit depth in 2D).
 template <int Dim>
 struct TractionTotals {
-  Vec<Dim> received = Vec<Dim>::Zero();    // sum over cells of traction x cell area
-  Vec<Dim> applied = Vec<Dim>::Zero();     // sum over the particles
-  Vec<Dim> unapplied = Vec<Dim>::Zero();   // columns without deformable bed particles
+  Vec<Dim> received = Vec<Dim>::Zero();   // sum over cells of traction x cell area
+  Vec<Dim> applied = Vec<Dim>::Zero();    // sum over the particles
+  Vec<Dim> unapplied = Vec<Dim>::Zero();  // columns without deformable bed particles
   std::size_t surface_particles = 0;
 };
 
@@ -32,8 +32,10 @@ struct TractionTotals {
 // `traction` holds Dim components per surface cell (horizontal, then
 // vertical) [Pa].
 template <int Dim>
-TractionTotals<Dim> surface_traction(const SurfaceGrid<Dim>& surface, std::span<const double> traction,
-                                     const Particles<Dim>& particles, const std::vector<BodyRole>& roles,
+TractionTotals<Dim> surface_traction(const SurfaceGrid<Dim>& surface,
+                                     std::span<const double> traction,
+                                     const Particles<Dim>& particles,
+                                     const std::vector<BodyRole>& roles,
                                      std::vector<Vec<Dim>>& force);
 
 }  // namespace mpm::coupling

@@ -45,16 +45,17 @@ double r_sequence_root(int d);
 // points per cell; half-length per direction: spacing / (2 n^(1/Dim)) with n
 // the points per cell (spacing / (2 per_direction) for regular seeding).
 template <int Dim>
-SeededParticles<Dim> seed_cells(const std::function<bool(const Vec<Dim>&)>& inside, const Box<Dim>& bounds,
-                                const GridGeometry<Dim>& grid, const SeedingPattern& pattern);
+SeededParticles<Dim> seed_cells(const std::function<bool(const Vec<Dim>&)>& inside,
+                                const Box<Dim>& bounds, const GridGeometry<Dim>& grid,
+                                const SeedingPattern& pattern);
 
 // The same for any region with contains(x) and bounding_box() (Box,
 // Polygon, Polyhedron).
 template <int Dim, class Region>
 SeededParticles<Dim> seed_region(const Region& region, const GridGeometry<Dim>& grid,
                                  const SeedingPattern& pattern) {
-  return seed_cells<Dim>([&region](const Vec<Dim>& x) { return region.contains(x); }, region.bounding_box(),
-                         grid, pattern);
+  return seed_cells<Dim>([&region](const Vec<Dim>& x) { return region.contains(x); },
+                         region.bounding_box(), grid, pattern);
 }
 
 }  // namespace mpm

@@ -10,10 +10,10 @@
 namespace mpm {
 
 struct RunOptions {
-  std::filesystem::path config;  // the case file (kind: mpm_case)
-  std::filesystem::path output;  // run directory
-  int threads = -1;              // OpenMP threads; < 0: the case's `threads`
-  int check_every = 100;         // check_state() interval in steps (and at every output)
+  std::filesystem::path config;      // the case file (kind: mpm_case)
+  std::filesystem::path output;      // run directory
+  int threads = -1;                  // OpenMP threads; < 0: the case's `threads`
+  int check_every = 100;             // check_state() interval in steps (and at every output)
   double progress_interval_s = 5.0;  // wall time between progress lines in the log
   cosim::Verbosity verbosity = cosim::Verbosity::normal;  // console; log.txt keeps info
   cosim::OutputReuse reuse = cosim::OutputReuse::refuse;  // a non-empty `output`

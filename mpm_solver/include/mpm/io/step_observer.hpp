@@ -3,9 +3,8 @@
 #include <functional>
 #include <limits>
 #include <memory>
-#include <string_view>
-
 #include <nlohmann/json.hpp>
+#include <string_view>
 
 #include "mpm/solver/solver.hpp"
 

@@ -33,7 +33,8 @@ class CohesionDegradation {
   // Damage after a plastic step with volumetric strain increment tr(d eps).
   double damage_after(double damage, double volumetric_strain_increment) const {
     if (!enabled()) return damage;
-    return std::min(1.0, damage + 0.5 * std::abs(volumetric_strain_increment) / critical_volumetric_strain_);
+    return std::min(
+        1.0, damage + 0.5 * std::abs(volumetric_strain_increment) / critical_volumetric_strain_);
   }
 
  private:

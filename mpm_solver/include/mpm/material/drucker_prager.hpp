@@ -23,16 +23,16 @@ enum class DruckerPragerMatch {
 // positive I1) with plastic potential g = alpha_psi I1 + sqrt(J2), cut off in
 // tension at the mean stress p <= sigma_t.
 struct DruckerPragerCone {
-  double alpha_friction = 0.0;  // alpha_phi
-  double alpha_dilation = 0.0;  // alpha_psi
-  double strength = 0.0;        // k_c [Pa]
+  double alpha_friction = 0.0;                                        // alpha_phi
+  double alpha_dilation = 0.0;                                        // alpha_psi
+  double strength = 0.0;                                              // k_c [Pa]
   double tensile_strength = std::numeric_limits<double>::infinity();  // on p [Pa]
 
   // alpha and k of a Mohr-Coulomb angle and cohesion, e.g. in plane strain
   // alpha = tan phi / sqrt(9 + 12 tan^2 phi), k = 3 c / sqrt(9 + 12 tan^2 phi)
   // (van den Bout et al., eq. 20); the same rule with psi gives alpha_psi.
-  static DruckerPragerCone matched(DruckerPragerMatch match, double friction_angle, double dilation_angle,
-                                   double cohesion, double tensile_strength);
+  static DruckerPragerCone matched(DruckerPragerMatch match, double friction_angle,
+                                   double dilation_angle, double cohesion, double tensile_strength);
 
   // Mean stress of the apex, k / (3 alpha), infinite for alpha = 0.
   double apex() const;
@@ -42,14 +42,16 @@ struct DruckerPragerCone {
   double yield(const Tensor& stress) const;
 };
 
-// Exact return for perfect plasticity within the step (Zheng et al., eq. 4 integrated in closed form):
-// cone:    dlambda = f_trial / (9 K alpha_phi alpha_psi + G),
-//          I1 = I1_trial - 9 K alpha_psi dlambda, sqrt(J2) = sqrt(J2_trial) - G dlambda, s along s_trial;
+// Exact return for perfect plasticity within the step (Zheng et al., eq. 4 integrated in closed
+// form): cone:    dlambda = f_trial / (9 K alpha_phi alpha_psi + G),
+//          I1 = I1_trial - 9 K alpha_psi dlambda, sqrt(J2) = sqrt(J2_trial) - G dlambda, s along
+//          s_trial;
 // tension: p = sigma_t with s_trial kept, when that is inside the cone;
 // corner:  p = min(sigma_t, apex), sqrt(J2) = k - 3 alpha p (the apex when no cut-off is set),
 // as Huang et al. and Bui et al. treat stresses beyond the apex.
 // Returns the stress after the step.
-Tensor drucker_prager_return(const Tensor& trial, const DruckerPragerCone& cone, const ElasticConstants& elastic);
+Tensor drucker_prager_return(const Tensor& trial, const DruckerPragerCone& cone,
+                             const ElasticConstants& elastic);
 
 // Non-associated Drucker-Prager elastoplasticity matched to Mohr-Coulomb,
 // with the same friction softening, dilatancy, cohesion degradation and

@@ -19,15 +19,16 @@ class FrictionSoftening {
  public:
   enum class Dilatancy { constant, rowe };
 
-  FrictionSoftening(double peak, double residual, double rate, Dilatancy dilatancy, double dilation_angle);
+  FrictionSoftening(double peak, double residual, double rate, Dilatancy dilatancy,
+                    double dilation_angle);
 
   // YAML keys friction_angle, residual_friction_angle, softening_rate,
   // dilatancy, dilation_angle (angles in degrees).
   static cosim::config::Schema& add_keys(cosim::config::Schema& schema);
   static FrictionSoftening read(const cosim::config::Node& node);
 
-  double friction_angle(double plastic_strain) const;     // phi_m [rad]
-  double dilation_angle(double friction_angle) const;     // psi_m at mobilised phi_m [rad]
+  double friction_angle(double plastic_strain) const;  // phi_m [rad]
+  double dilation_angle(double friction_angle) const;  // psi_m at mobilised phi_m [rad]
 
   double peak_friction_angle() const { return peak_; }
   double residual_friction_angle() const { return residual_; }

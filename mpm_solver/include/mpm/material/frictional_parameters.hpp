@@ -22,8 +22,9 @@ namespace mpm {
 struct FrictionalParameters {
   ElasticConstants elastic;
   FrictionSoftening friction;
-  double cohesion = 0.0;                                          // c0 [Pa]
-  double tensile_strength = std::numeric_limits<double>::infinity();  // sigma_t [Pa]; infinite: none
+  double cohesion = 0.0;  // c0 [Pa]
+  double tensile_strength =
+      std::numeric_limits<double>::infinity();  // sigma_t [Pa]; infinite: none
   CohesionDegradation degradation;
 
   // The elastic keys, the friction keys, cohesion, tensile_strength and cohesion_degradation.
@@ -32,13 +33,16 @@ struct FrictionalParameters {
 
   double cohesion_at(const MaterialState& state) const { return cohesion * (1.0 - state.damage); }
   double tensile_strength_at(const MaterialState& state) const {
-    return tensile_strength < std::numeric_limits<double>::infinity() ? tensile_strength * (1.0 - state.damage)
-                                                                     : tensile_strength;
+    return tensile_strength < std::numeric_limits<double>::infinity()
+               ? tensile_strength * (1.0 - state.damage)
+               : tensile_strength;
   }
 
   // Records a plastic step whose return took `correction` = sigma_trial - sigma
-  // off the trial stress (so d eps^p = C^-1 correction), with total strain increment trace `volumetric_strain_increment`.
-  void record_plastic_step(const Tensor& correction, double volumetric_strain_increment, MaterialState& state) const;
+  // off the trial stress (so d eps^p = C^-1 correction), with total strain increment trace
+  // `volumetric_strain_increment`.
+  void record_plastic_step(const Tensor& correction, double volumetric_strain_increment,
+                           MaterialState& state) const;
 };
 
 }  // namespace mpm

@@ -15,8 +15,8 @@ namespace mpm {
 // tension positive as in MPMICE; 3 x 3 and symmetric in 2D too.
 struct MaterialState {
   Tensor stress = Tensor::Zero();
-  double plastic_strain = 0.0;  // accumulated equivalent plastic shear strain [-]
-  double damage = 0.0;          // cohesion degradation, 0 intact .. 1 fully degraded [-]
+  double plastic_strain = 0.0;       // accumulated equivalent plastic shear strain [-]
+  double damage = 0.0;               // cohesion degradation, 0 intact .. 1 fully degraded [-]
   std::array<double, 2> internal{};  // model-specific (documented by each model)
 };
 
@@ -33,8 +33,8 @@ struct Deformation {
 // How a hypoelastic model's stress is kept objective under rotation; chosen
 // per material, applied by the solver around Material::update.
 enum class ObjectiveRate {
-  jaumann,          // Zheng et al., eq. 5
-  polar_rotation,   // Tran et al., MPMICE, eqs. 11-14
+  jaumann,         // Zheng et al., eq. 5
+  polar_rotation,  // Tran et al., MPMICE, eqs. 11-14
 };
 
 // What a material needs to store and conduct heat (Tran et al., MPMICE,

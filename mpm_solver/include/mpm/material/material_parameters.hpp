@@ -16,7 +16,8 @@ namespace mpm::material_parameters {
 
 // A mapping with `type: <type>`, `density` and the thermal keys; with
 // `objective_rate` too unless the model is hyperelastic.
-cosim::config::Schema base_schema(const std::string& type, std::string doc, bool hypoelastic = true);
+cosim::config::Schema base_schema(const std::string& type, std::string doc,
+                                  bool hypoelastic = true);
 
 // Adds `youngs_modulus` and `poisson_ratio`.
 cosim::config::Schema& add_elastic_keys(cosim::config::Schema& schema);

@@ -16,22 +16,23 @@ namespace mpm {
 // (the cohesion term taken with the sign that makes f(0) = -2 c cos phi < 0),
 // and the Rankine cut-off sigma_1 <= sigma_t, associated.
 struct MohrCoulombSurface {
-  double sin_friction = 0.0;  // sin phi
-  double cos_friction = 1.0;  // cos phi
-  double sin_dilation = 0.0;  // sin psi, psi <= phi
-  double cohesion = 0.0;      // c [Pa]
+  double sin_friction = 0.0;                                          // sin phi
+  double cos_friction = 1.0;                                          // cos phi
+  double sin_dilation = 0.0;                                          // sin psi, psi <= phi
+  double cohesion = 0.0;                                              // c [Pa]
   double tensile_strength = std::numeric_limits<double>::infinity();  // sigma_t [Pa]
 
   // From the angles phi and psi [rad].
-  static MohrCoulombSurface from_angles(double friction_angle, double dilation_angle, double cohesion,
-                                        double tensile_strength) {
+  static MohrCoulombSurface from_angles(double friction_angle, double dilation_angle,
+                                        double cohesion, double tensile_strength) {
     return {std::sin(friction_angle), std::cos(friction_angle), std::sin(dilation_angle), cohesion,
             tensile_strength};
   }
 
   // Hydrostatic stress of the apex, c cot phi (infinite for phi = 0).
   double apex() const {
-    return sin_friction > 0.0 ? cohesion * cos_friction / sin_friction : std::numeric_limits<double>::infinity();
+    return sin_friction > 0.0 ? cohesion * cos_friction / sin_friction
+                              : std::numeric_limits<double>::infinity();
   }
   // The cut-off acts only where it is below the apex.
   bool has_tension_cutoff() const { return tensile_strength < apex(); }

@@ -23,7 +23,8 @@ struct Particles {
   std::vector<Vec<Dim>> position;
   std::vector<Vec<Dim>> velocity;
   std::vector<Mat<Dim>> deformation_gradient;
-  std::vector<Vec<Dim>> half_length;  // GIMP domain half-length, initial or deformed (GimpDomain) [m]
+  std::vector<Vec<Dim>>
+      half_length;  // GIMP domain half-length, initial or deformed (GimpDomain) [m]
   // Mass and volume.
   std::vector<double> mass;
   std::vector<double> initial_volume;
@@ -36,8 +37,8 @@ struct Particles {
   // Porous medium (Pan et al. 2021, eqs. 74-76; Tran et al., MPMICE, eq. 3).
   std::vector<double> porosity;
   std::vector<double> initial_porosity;
-  std::vector<double> permeability;  // intrinsic [m^2]
-  std::vector<double> grain_size;    // D50 [m]
+  std::vector<double> permeability;   // intrinsic [m^2]
+  std::vector<double> grain_size;     // D50 [m]
   std::vector<double> pore_pressure;  // received from the fluid [Pa]
   // Heat (Tran et al., MPMICE, eq. 9): temperature and heat capacity m c,
   // 0 for the points of bodies that are not thermal.

@@ -41,7 +41,8 @@ struct GimpKernel {
     xi = std::clamp(xi, 0.0, last);
     const int nearest = static_cast<int>(xi + 0.5);
     const double lp = std::min(half_length, 0.5);
-    if (lp > 0.0 && xi - lp >= 0.0 && xi + lp <= last && nearest >= 1 && nearest < cells) [[likely]] {
+    if (lp > 0.0 && xi - lp >= 0.0 && xi + lp <= last && nearest >= 1 && nearest < cells)
+        [[likely]] {
       interior(xi - nearest, lp, N, dN);
       return nearest - 1;
     }
@@ -79,7 +80,8 @@ struct GimpKernel {
   }
 
   // The average over the clipped domain [a, b], by the kink correction.
-  [[gnu::noinline]] static void clipped(double xi, double lp, int first, double last, double* N, double* dN) {
+  [[gnu::noinline]] static void clipped(double xi, double lp, int first, double last, double* N,
+                                        double* dN) {
     const double a_free = xi - lp, b_free = xi + lp;
     const double a = std::max(a_free, 0.0), b = std::min(b_free, last);
     // d a / d xi and d b / d xi; a domain that ends exactly on the face is

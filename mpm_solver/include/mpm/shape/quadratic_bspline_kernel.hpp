@@ -38,9 +38,9 @@ struct QuadraticBsplineKernel {
     xi = std::clamp(xi, 0.0, static_cast<double>(cells));
     const int c = std::min(static_cast<int>(xi), cells - 1);
     const double u = xi - c;
-    const double alpha = c == 0 ? 1.0 : 0.5;          // 1 / (1 - a)
+    const double alpha = c == 0 ? 1.0 : 0.5;  // 1 / (1 - a)
     const double a = c == 0 ? 0.0 : -1.0;
-    const double beta = c == cells - 1 ? 1.0 : 0.5;   // 1 / b
+    const double beta = c == cells - 1 ? 1.0 : 0.5;  // 1 / b
     const double b = c == cells - 1 ? 1.0 : 2.0;
     const double v = 1.0 - u;
     N[0] = alpha * v * v;

@@ -8,7 +8,8 @@
 //
 //   static constexpr int support;         // grid values a point touches per direction
 //   static int dofs(int cells);           // grid values per direction for `cells` cells
-//   static double dof_coordinate(int i, int cells);  // position of value i, in cells from the origin
+//   static double dof_coordinate(int i, int cells);  // position of value i, in cells from the
+//   origin
 //   // Weights N[0..support) and derivatives dN (per unit of the grid
 //   // coordinate; divide by the spacing for d/dx) of the values
 //   // first, first+1, ... at grid coordinate xi = (x - origin) / h, for a

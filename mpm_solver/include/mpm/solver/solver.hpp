@@ -20,7 +20,8 @@ struct Totals {
   double kinetic_energy = 0.0;
   double strain_energy = 0.0;  // elastic estimate sum V sigma':sigma'/(2 M)-type, see solver.cpp
   double gravitational_energy = 0.0;  // sum m (-g . x)
-  double contact_dissipation = 0.0;   // work of the contact friction forces (Tran et al., MPMICE, eq. 22)
+  double contact_dissipation =
+      0.0;  // work of the contact friction forces (Tran et al., MPMICE, eq. 22)
   double boundary_dissipation = 0.0;  // work removed by frictional grid faces
   double external_work = 0.0;         // work of surface loads and coupling forces
   double internal_work = 0.0;         // stress work sum V sigma : d eps since the start

@@ -177,7 +177,7 @@ class IceSolver {
   void compute_face_velocities(double dt);  // eqs. 44-45
   void porous_face_velocity(std::size_t material, int direction, int face, int lower, int upper,
                             double dt);
-  void exchange_face_momentum(double dt);                                  // eq. 48
+  void exchange_face_momentum(double dt);    // eq. 48
   void exchange_two_fluid_faces(double dt);  // eq. 48 for two fluids, no drag: eq. 131
   void assemble_divergence(const std::vector<FaceField<Dim>>& direction);  // eq. 75
   PressureSolution solve_pressure_increment(double dt);                    // eqs. 52-53, 125

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <cmath>
-
 #include <vector>
 
 #include "cosim/participant.hpp"

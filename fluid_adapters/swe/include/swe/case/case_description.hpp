@@ -39,8 +39,8 @@ enum class BedPressure {
 };
 
 struct CouplingSpec {
-  bool reads_bed = true;          // bed_elevation, per cell [m]
-  bool writes_traction = true;    // bed_traction, dimension + 1 components [Pa]
+  bool reads_bed = true;        // bed_elevation, per cell [m]
+  bool writes_traction = true;  // bed_traction, dimension + 1 components [Pa]
   BedPressure pressure = BedPressure::hydrostatic;
   std::vector<double> initial_surface;  // eta_0 per cell for `excess`, set when the run starts [m]
 };
@@ -66,9 +66,9 @@ struct CaseDescription {
 
   double output_every = 0.0;  // snapshots; 0: start and end only
   bool snapshots = true;
-  double gauge_every = 0.0;   // 0: every step
+  double gauge_every = 0.0;  // 0: every step
   std::vector<Gauge> gauges;
-  int threads = 0;            // 0: OpenMP's default
+  int threads = 0;  // 0: OpenMP's default
 
   CouplingSpec coupling;
   cosim::RunSize size;  // its cells and their memory (set by the loader)

@@ -13,7 +13,7 @@ struct InitialRegion {
   enum class Shape { everywhere, box, circle };
   Shape shape = Shape::everywhere;
   std::array<double, 2> min{0.0, 0.0}, max{0.0, 0.0};  // box
-  std::array<double, 2> centre{0.0, 0.0};               // circle
+  std::array<double, 2> centre{0.0, 0.0};              // circle
   double radius = 0.0;
   bool free_surface = true;  // level is a free-surface elevation eta; else a depth
   double level = 0.0;        // [m]

@@ -14,7 +14,8 @@ namespace swe {
 // carry).
 class GaugeRecorder {
  public:
-  GaugeRecorder(const std::filesystem::path& file, const std::vector<Gauge>& gauges, const Solver& solver);
+  GaugeRecorder(const std::filesystem::path& file, const std::vector<Gauge>& gauges,
+                const Solver& solver);
   void record(double time, const Solver& solver);
   std::size_t rows() const { return writer_.rows_written(); }
 

@@ -22,7 +22,8 @@ struct HydrostaticFace {
   double right_correction = 0.0;  // g/2 (h_r^2 - h*_r^2): added to the flux the right cell sees
 };
 
-inline HydrostaticFace hydrostatic_face(double h_l, double bed_l, double h_r, double bed_r, double g) {
+inline HydrostaticFace hydrostatic_face(double h_l, double bed_l, double h_r, double bed_r,
+                                        double g) {
   const double bed = std::max(bed_l, bed_r);
   HydrostaticFace f;
   f.h_left = std::max(0.0, h_l + bed_l - bed);
@@ -36,7 +37,8 @@ inline HydrostaticFace hydrostatic_face(double h_l, double bed_l, double h_r, do
 // face-normal direction, times the cell width]: -g (h_minus + h_plus)/2 (B_plus - B_minus),
 // where minus/plus are the reconstructed values at the cell's lower and upper
 // faces. Zero for a first-order (flat) reconstruction.
-inline double cell_bed_source(double h_minus, double bed_minus, double h_plus, double bed_plus, double g) {
+inline double cell_bed_source(double h_minus, double bed_minus, double h_plus, double bed_plus,
+                              double g) {
   return -0.5 * g * (h_minus + h_plus) * (bed_plus - bed_minus);
 }
 

@@ -18,7 +18,8 @@ inline double manning_factor(double h, double speed, double g, double manning, d
 // The bed shear stress the water exerts on the bed [Pa] along one velocity
 // component u_i (Zheng et al., eq. 10, with the sign of the force on the bed):
 //   tau_i = rho g M_b^2 u_i |u| / h^{1/3}.
-inline double manning_bed_shear(double h, double u_i, double speed, double g, double manning, double density) {
+inline double manning_bed_shear(double h, double u_i, double speed, double g, double manning,
+                                double density) {
   if (manning <= 0.0 || h <= 0.0) return 0.0;
   return density * g * manning * manning * u_i * speed / std::cbrt(h);
 }

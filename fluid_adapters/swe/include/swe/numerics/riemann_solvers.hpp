@@ -43,13 +43,15 @@ namespace detail {
 
 // The HLL flux of depth and normal momentum for wave speeds sl < 0 < sr;
 // the tangential momentum is left to the caller.
-inline FaceFlux hll_between(const FaceState& l, const FaceState& r, double g, double sl, double sr) {
+inline FaceFlux hll_between(const FaceState& l, const FaceState& r, double g, double sl,
+                            double sr) {
   const FaceFlux fl = physical_flux(l, g), fr = physical_flux(r, g);
   const double inv = 1.0 / (sr - sl);
   FaceFlux f;
   f.mass = (sr * fl.mass - sl * fr.mass + sl * sr * (r.h - l.h)) * inv;
-  f.normal_momentum = (sr * fl.normal_momentum - sl * fr.normal_momentum +
-                       sl * sr * (r.h * r.un - l.h * l.un)) * inv;
+  f.normal_momentum =
+      (sr * fl.normal_momentum - sl * fr.normal_momentum + sl * sr * (r.h * r.un - l.h * l.un)) *
+      inv;
   return f;
 }
 
@@ -89,9 +91,8 @@ inline FaceFlux hllc_flux(const FaceState& l, const FaceState& r, double g) {
 // Roe-averaged velocity
 //   u^ = (sqrt(h_l) u_l + sqrt(h_r) u_r) / (sqrt(h_l) + sqrt(h_r)),  h^ = (h_l + h_r) / 2
 // (the denominator printed in eq. 31 is a typo for this one), and the
-// Harten-Hyman entropy fix (J. Comput. Phys. 50, 1983) in transonic rarefactions. At a face with a dry
-// side it returns the HLL flux: Roe's linearisation is not
-// positivity-preserving there.
+// Harten-Hyman entropy fix (J. Comput. Phys. 50, 1983) in transonic rarefactions. At a face with a
+// dry side it returns the HLL flux: Roe's linearisation is not positivity-preserving there.
 inline FaceFlux roe_flux(const FaceState& l, const FaceState& r, double g) {
   if (l.h <= 0.0 || r.h <= 0.0) return hll_flux(l, r, g);
   const double sql = std::sqrt(l.h), sqr = std::sqrt(r.h);
@@ -114,8 +115,8 @@ inline FaceFlux roe_flux(const FaceState& l, const FaceState& r, double g) {
   const FaceFlux fl = physical_flux(l, g), fr = physical_flux(r, g);
   FaceFlux f;
   f.mass = 0.5 * (fl.mass + fr.mass - a1 * alpha1 - a2 * alpha2);
-  f.normal_momentum =
-      0.5 * (fl.normal_momentum + fr.normal_momentum - a1 * alpha1 * lambda1 - a2 * alpha2 * lambda2);
+  f.normal_momentum = 0.5 * (fl.normal_momentum + fr.normal_momentum - a1 * alpha1 * lambda1 -
+                             a2 * alpha2 * lambda2);
   f.tangential_momentum = detail::upwind_tangential(f.mass, u, l, r);
   return f;
 }

@@ -23,7 +23,8 @@ inline double limited_slope(double a, double b) {
   } else if constexpr (kind == LimiterKind::van_leer) {
     slope = 2.0 * a * b / (a + b);
   } else if constexpr (kind == LimiterKind::monotonized_central) {
-    slope = std::copysign(std::min(std::min(2.0 * std::abs(a), 2.0 * std::abs(b)), 0.5 * std::abs(a + b)), a);
+    slope = std::copysign(
+        std::min(std::min(2.0 * std::abs(a), 2.0 * std::abs(b)), 0.5 * std::abs(a + b)), a);
   }
   return a * b <= 0.0 ? 0.0 : slope;
 }
