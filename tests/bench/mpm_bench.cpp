@@ -84,7 +84,8 @@ CaseDescription column_case(const Setup& setup) {
   const int nup = high * ppc;
   const int nz = dim == 3 ? nup : 1;
   const int ny = dim == 3 ? n : nup;
-  const auto count = static_cast<std::size_t>(n) * static_cast<std::size_t>(ny) * static_cast<std::size_t>(nz);
+  const auto count =
+      static_cast<std::size_t>(n) * static_cast<std::size_t>(ny) * static_cast<std::size_t>(nz);
   body.positions.reserve(count);
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
@@ -100,10 +101,11 @@ CaseDescription column_case(const Setup& setup) {
 template <int Dim>
 double grid_bytes(const mpm::Grid<Dim>& g) {
   const auto bytes = [](const auto& v) {
-    return static_cast<double>(v.capacity() * sizeof(typename std::decay_t<decltype(v)>::value_type));
+    return static_cast<double>(v.capacity() *
+                               sizeof(typename std::decay_t<decltype(v)>::value_type));
   };
-  return bytes(g.mass) + bytes(g.momentum) + bytes(g.force) + bytes(g.velocity) + bytes(g.velocity_change) +
-         bytes(g.mass_gradient) + bytes(g.remapped_velocity);
+  return bytes(g.mass) + bytes(g.momentum) + bytes(g.force) + bytes(g.velocity) +
+         bytes(g.velocity_change) + bytes(g.mass_gradient) + bytes(g.remapped_velocity);
 }
 
 // One solver alive at a time (a 3D case holds several hundred MB); the
@@ -143,7 +145,9 @@ void run_steps(benchmark::State& state, const Setup& setup) {
   state.counters["yielded"] = static_cast<double>(yielded) / n;
 }
 
-std::string shape_name(ShapeKind shape) { return std::string(mpm::to_string(shape)); }
+std::string shape_name(ShapeKind shape) {
+  return std::string(mpm::to_string(shape));
+}
 
 std::string case_name(const Setup& s) {
   const double w = s.column_cells;
@@ -156,14 +160,16 @@ void register_all() {
   // 2D: 8 w^2 points (w = 112: 100352, w = 354: 1002528); 3D: 8 w^3 (w = 50: 1e6).
   const std::vector<std::pair<int, int>> sizes{{2, 112}, {2, 354}, {3, 50}};
   for (const auto& [dim, wide] : sizes) {
-    for (const ShapeKind shape : {ShapeKind::linear, ShapeKind::gimp, ShapeKind::quadratic_bspline}) {
+    for (const ShapeKind shape :
+         {ShapeKind::linear, ShapeKind::gimp, ShapeKind::quadratic_bspline}) {
       for (const int threads : {1, 2}) {
         const Setup setup{dim, wide, shape, threads};
         const std::string name = case_name(setup) + "/omp:" + std::to_string(threads);
-        auto* b = dim == 2 ? benchmark::RegisterBenchmark(
-                                 name.c_str(), [setup](benchmark::State& s) { run_steps<2>(s, setup); })
-                           : benchmark::RegisterBenchmark(
-                                 name.c_str(), [setup](benchmark::State& s) { run_steps<3>(s, setup); });
+        auto* b = dim == 2
+                      ? benchmark::RegisterBenchmark(
+                            name.c_str(), [setup](benchmark::State& s) { run_steps<2>(s, setup); })
+                      : benchmark::RegisterBenchmark(
+                            name.c_str(), [setup](benchmark::State& s) { run_steps<3>(s, setup); });
         b->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
       }
     }
@@ -206,9 +212,9 @@ class SummaryReporter : public benchmark::ConsoleReporter {
                 "particle B", "grid B", "yielded");
     for (const auto& [name, row] : rows_) {
       std::printf("%-32s %8.3f [%7.3f] %8.3f [%7.3f] %9.2f %10.0f %7.1f %8.3f\n", name.c_str(),
-                  row.rate[0] / 1e6, row.cpu_rate[0] / 1e6, row.rate[1] / 1e6, row.cpu_rate[1] / 1e6,
-                  row.rate[0] > 0.0 ? row.rate[1] / row.rate[0] : 0.0, row.particle_bytes, row.grid_bytes,
-                  row.yielded);
+                  row.rate[0] / 1e6, row.cpu_rate[0] / 1e6, row.rate[1] / 1e6,
+                  row.cpu_rate[1] / 1e6, row.rate[0] > 0.0 ? row.rate[1] / row.rate[0] : 0.0,
+                  row.particle_bytes, row.grid_bytes, row.yielded);
     }
     std::fflush(stdout);
   }

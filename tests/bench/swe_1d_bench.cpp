@@ -49,8 +49,9 @@ void BM_Solver1dStep(benchmark::State& state) {
     benchmark::DoNotOptimize(solver->depth().data());
   }
   state.SetLabel(swe::to_string(flux));
-  state.counters["cell_updates_per_s"] = benchmark::Counter(
-      static_cast<double>(n) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["cell_updates_per_s"] =
+      benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
   omp_set_num_threads(omp_get_num_procs());
 }
 
@@ -62,8 +63,9 @@ void BM_Solver1dStableTimeStep(benchmark::State& state) {
   const std::unique_ptr<swe::Solver1d> solver = make_dam_break(n, swe::FluxKind::hllc);
   solver->step(solver->stable_time_step());  // some velocity
   for (auto _ : state) benchmark::DoNotOptimize(solver->stable_time_step());
-  state.counters["cells_per_s"] = benchmark::Counter(
-      static_cast<double>(n) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["cells_per_s"] =
+      benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
   omp_set_num_threads(omp_get_num_procs());
 }
 
@@ -77,9 +79,15 @@ void arguments(benchmark::internal::Benchmark* b) {
 
 }  // namespace
 
-BENCHMARK(BM_Solver1dStep)->Apply(arguments)->ArgNames({"cells", "threads", "flux"})->UseRealTime()
+BENCHMARK(BM_Solver1dStep)
+    ->Apply(arguments)
+    ->ArgNames({"cells", "threads", "flux"})
+    ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Solver1dStableTimeStep)->ArgsProduct({{100'000, 1'000'000}, {1, 2}})->ArgNames({"cells", "threads"})
-    ->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Solver1dStableTimeStep)
+    ->ArgsProduct({{100'000, 1'000'000}, {1, 2}})
+    ->ArgNames({"cells", "threads"})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

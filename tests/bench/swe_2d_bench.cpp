@@ -29,8 +29,10 @@ DamBreak dam_break(int n) {
   d.grid = {{-1.0, -1.0}, {2.0 / n, 2.0 / n}, {n, n}};
   for (int j = 0; j < n; ++j) {
     for (int i = 0; i < n; ++i) {
-      const double x = -1.0 + (i + 0.5) * d.grid.spacing[0], y = -1.0 + (j + 0.5) * d.grid.spacing[1];
-      const double bed = 0.1 * std::sin(4.0 * x) * std::cos(3.0 * y) + (x + y > 1.2 ? 0.8 * (x + y - 1.2) : 0.0);
+      const double x = -1.0 + (i + 0.5) * d.grid.spacing[0],
+                   y = -1.0 + (j + 0.5) * d.grid.spacing[1];
+      const double bed =
+          0.1 * std::sin(4.0 * x) * std::cos(3.0 * y) + (x + y > 1.2 ? 0.8 * (x + y - 1.2) : 0.0);
       const double surface = x * x + y * y < 0.09 ? 1.0 : 0.5;
       d.bed.push_back(bed);
       d.depth.push_back(std::max(0.0, surface - bed));
@@ -62,7 +64,8 @@ void BM_Solver2dStep(benchmark::State& state) {
   }
   benchmark::DoNotOptimize(solver.totals());
   state.counters["cell_updates_per_s"] = benchmark::Counter(
-      static_cast<double>(state.iterations()) * static_cast<double>(solver.cell_count()), benchmark::Counter::kIsRate);
+      static_cast<double>(state.iterations()) * static_cast<double>(solver.cell_count()),
+      benchmark::Counter::kIsRate);
   state.counters["threads"] = threads;
   omp_set_num_threads(previous_threads);
 }

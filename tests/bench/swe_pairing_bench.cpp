@@ -49,8 +49,8 @@ int main(int argc, char** argv) {
   std::vector<double> total, mpm, swe, coupling, windows;
   for (int r = 0; r < runs; ++r) {
     const fs::path out = ct::fresh_directory(fmt::format("swe_pairing_bench_{}", r));
-    const auto result = ct::run({ct::binary("cosim").string(), "run", job.string(), "--output", out.string(),
-                                 "--verbosity", "quiet"},
+    const auto result = ct::run({ct::binary("cosim").string(), "run", job.string(), "--output",
+                                 out.string(), "--verbosity", "quiet"},
                                 std::chrono::seconds(1800));
     if (result.exit_code != 0) {
       fmt::print(stderr, "cosim run failed ({}):\n{}\n", result.exit_code, result.output);
@@ -60,10 +60,12 @@ int main(int argc, char** argv) {
     const auto soil = nlohmann::json::parse(ct::read_text(out / "soil" / "summary.json"));
     const auto water = nlohmann::json::parse(ct::read_text(out / "water" / "summary.json"));
     const double wall = job_summary["wall_time_s"]["total"].get<double>();
-    const double soil_compute = soil["wall_time_s"]["total"].get<double>() - soil["coupling"]["transport_s"].get<double>() -
+    const double soil_compute = soil["wall_time_s"]["total"].get<double>() -
+                                soil["coupling"]["transport_s"].get<double>() -
                                 soil["coupling"]["waiting_s"].get<double>();
-    const double water_compute = phase(water, "advance") + phase(water, "bed_update") + phase(water, "traction") +
-                                 phase(water, "output") + phase(water, "setup") + phase(water, "read_case");
+    const double water_compute = phase(water, "advance") + phase(water, "bed_update") +
+                                 phase(water, "traction") + phase(water, "output") +
+                                 phase(water, "setup") + phase(water, "read_case");
     total.push_back(wall);
     mpm.push_back(soil_compute);
     swe.push_back(water_compute);
@@ -72,8 +74,10 @@ int main(int argc, char** argv) {
   }
   fmt::print("clay column pairing ({}), median of {} runs:\n", job.filename().string(), runs);
   fmt::print("  wall time         {:8.2f} s  ({} windows)\n", median(total), median(windows));
-  fmt::print("  MPM compute       {:8.2f} s  ({:4.1f} %)\n", median(mpm), 100.0 * median(mpm) / median(total));
-  fmt::print("  SWE compute       {:8.2f} s  ({:4.1f} %)\n", median(swe), 100.0 * median(swe) / median(total));
+  fmt::print("  MPM compute       {:8.2f} s  ({:4.1f} %)\n", median(mpm),
+             100.0 * median(mpm) / median(total));
+  fmt::print("  SWE compute       {:8.2f} s  ({:4.1f} %)\n", median(swe),
+             100.0 * median(swe) / median(total));
   fmt::print("  coupling          {:8.2f} s  ({:4.1f} %), {:.0f} us per window\n", median(coupling),
              100.0 * median(coupling) / median(total), 1e6 * median(coupling) / median(windows));
   return 0;

@@ -9,11 +9,11 @@
 #include <thread>
 
 #include "com/zmq_transport.hpp"
-#include "cplscheme/coupler.hpp"
 #include "cosim/error.hpp"
 #include "cosim/io/run_summary.hpp"
-#include "job/job.hpp"
 #include "cosim/participant.hpp"
+#include "cplscheme/coupler.hpp"
+#include "job/job.hpp"
 
 namespace {
 

@@ -18,9 +18,9 @@
 #include <string>
 #include <tuple>
 
-#include "cosim/io/csv_table.hpp"
 #include "bench/suite.hpp"
 #include "cosim/error.hpp"
+#include "cosim/io/csv_table.hpp"
 #include "openfoam/foam/installation.hpp"
 #include "run_process.hpp"
 
@@ -59,7 +59,8 @@ std::set<Row> expected_rows(const bench::Suite& suite) {
 }
 
 TEST(BenchSmoke, TheSuitesReportHasEveryRowWithinTolerance) {
-  const fs::path suite_file = fs::path(COSIM_SOURCE_DIR) / "configs" / "bench" / (suite_name + ".yaml");
+  const fs::path suite_file =
+      fs::path(COSIM_SOURCE_DIR) / "configs" / "bench" / (suite_name + ".yaml");
   const bench::Suite suite = bench::load_suite(suite_file);
   const fs::path out = fresh_directory("bench_smoke_" + suite_name);
   const ProcessResult r = run({binary("cosim").string(), "bench", suite_file.string(), "--output",
@@ -75,13 +76,15 @@ TEST(BenchSmoke, TheSuitesReportHasEveryRowWithinTolerance) {
   fmt::print("{:<28} {:<9} {:<11} {:<22} {:>12} {:>12}  {}\n", "scenario", "backend", "level",
              "metric", "error", "tolerance", "verdict");
   for (std::size_t i = 0; i < table.rows(); ++i) {
-    rows.insert({column(i, "scenario"), column(i, "backend"), column(i, "level"), column(i, "metric")});
+    rows.insert(
+        {column(i, "scenario"), column(i, "backend"), column(i, "level"), column(i, "metric")});
     const std::string verdict = column(i, "verdict");
     fmt::print("{:<28} {:<9} {:<11} {:<22} {:>12} {:>12}  {}\n", column(i, "scenario"),
                column(i, "backend"), column(i, "level"), column(i, "metric"), column(i, "error"),
                column(i, "tolerance"), verdict);
-    const std::string what = fmt::format("{} / {} {} / {}", column(i, "scenario"),
-                                         column(i, "backend"), column(i, "level"), column(i, "metric"));
+    const std::string what =
+        fmt::format("{} / {} {} / {}", column(i, "scenario"), column(i, "backend"),
+                    column(i, "level"), column(i, "metric"));
     EXPECT_EQ(column(i, "run_state"), "completed") << what;
     if (!column(i, "tolerance").empty()) {
       EXPECT_EQ(verdict, "pass") << what << ": " << column(i, "note");
@@ -122,10 +125,12 @@ int main(int argc, char** argv) {
   }
   cosim::testing::suite_name = argv[1];
   try {
-    const auto suite = cosim::bench::load_suite(std::filesystem::path(COSIM_SOURCE_DIR) / "configs" /
-                                                "bench" / (cosim::testing::suite_name + ".yaml"));
+    const auto suite =
+        cosim::bench::load_suite(std::filesystem::path(COSIM_SOURCE_DIR) / "configs" / "bench" /
+                                 (cosim::testing::suite_name + ".yaml"));
     if (cosim::testing::needs_openfoam(suite))
-      openfoam::find_installation({"interFoam", "MPPICInterFoam", "blockMesh", "setFields", "postProcess"});
+      openfoam::find_installation(
+          {"interFoam", "MPPICInterFoam", "blockMesh", "setFields", "postProcess"});
   } catch (const cosim::Error& e) {
     fmt::print("suite '{}' needs OpenFOAM, which is not installed, so this test does not run: {}\n",
                cosim::testing::suite_name, e.what());

@@ -6,11 +6,10 @@
 // the demo jobs run in cosim_run_test. Bench suites load, and every run
 // they plan (at both resolutions) has a job and cases that load: the jobs
 // the bench builds from its pairings and the cases its overrides change.
-#include <gtest/gtest.h>
 #include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
-
+#include <gtest/gtest.h>
 #include <unistd.h>
+#include <yaml-cpp/yaml.h>
 
 #include <filesystem>
 #include <map>
@@ -18,8 +17,8 @@
 
 #include "bench/run_plan.hpp"
 #include "bench/suite.hpp"
-#include "job/job.hpp"
 #include "ice/case/load_case.hpp"
+#include "job/job.hpp"
 #include "mpm/case/load_case.hpp"
 #include "openfoam/case/load_case.hpp"
 #include "swe/case/load_case.hpp"
@@ -51,7 +50,8 @@ std::string load_by_kind(const fs::path& file) {
 
 TEST(ShippedConfigs, EveryJobAndCaseLoads) {
   std::map<std::string, int> loaded;
-  for (const auto& entry : fs::recursive_directory_iterator(fs::path(COSIM_SOURCE_DIR) / "configs")) {
+  for (const auto& entry :
+       fs::recursive_directory_iterator(fs::path(COSIM_SOURCE_DIR) / "configs")) {
     if (!entry.is_regular_file() || entry.path().extension() != ".yaml") continue;
     const fs::path& file = entry.path();
     SCOPED_TRACE(file.string());
@@ -71,9 +71,11 @@ TEST(ShippedConfigs, EveryJobAndCaseLoads) {
 }
 
 TEST(ShippedConfigs, EveryRunOfTheBenchSuitesHasInputsThatLoad) {
-  const fs::path out = fs::temp_directory_path() / ("cosim_configs_load_bench_" + std::to_string(::getpid()));
+  const fs::path out =
+      fs::temp_directory_path() / ("cosim_configs_load_bench_" + std::to_string(::getpid()));
   int runs = 0;
-  for (const auto& entry : fs::directory_iterator(fs::path(COSIM_SOURCE_DIR) / "configs" / "bench")) {
+  for (const auto& entry :
+       fs::directory_iterator(fs::path(COSIM_SOURCE_DIR) / "configs" / "bench")) {
     if (entry.path().extension() != ".yaml") continue;
     const auto suite = cosim::bench::load_suite(entry.path());
     for (auto resolution : {cosim::bench::Resolution::coarse, cosim::bench::Resolution::full}) {

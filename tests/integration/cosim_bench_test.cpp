@@ -72,8 +72,9 @@ TEST(CosimBench, AFailedRunIsARowThatSaysWhyAndTheRestAreMeasured) {
   const std::string report = read_text(dir / "report" / "report.md");
   EXPECT_NE(report.find("**swe** did not finish (failed)"), std::string::npos) << report;
   // The failing run's own console names the key.
-  EXPECT_NE(read_text(dir / "report" / "runs" / "broken" / "swe" / "console.log").find("scheme.flux"),
-            std::string::npos);
+  EXPECT_NE(
+      read_text(dir / "report" / "runs" / "broken" / "swe" / "console.log").find("scheme.flux"),
+      std::string::npos);
   const auto summary = nlohmann::json::parse(read_text(dir / "report" / "summary.json"));
   EXPECT_EQ(summary["status"]["exit_code"], 3);
   EXPECT_EQ(summary["metrics"]["runs_not_finished"]["value"], 1);
@@ -102,13 +103,15 @@ TEST(CosimBench, BadArgumentsExitTwoBeforeAnythingRuns) {
                          "--output", (dir / "out").string(), "--only", "stokerr"},
                         std::chrono::seconds(60));
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("no such scenario; it has: stoker, broken"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("no such scenario; it has: stoker, broken"), std::string::npos)
+      << r.output;
   r = run({binary("cosim").string(), "bench", (dir / "suite.yaml").string(), "--output",
            (dir / "out").string(), "--resolution", "fine"},
           std::chrono::seconds(60));
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  write_text(dir / "typo.yaml", replaced(suite_text(fs::path(COSIM_SOURCE_DIR) / "configs"),
-                                         "    backends:\n      swe:\n", "    backend:\n      swe:\n"));
+  write_text(dir / "typo.yaml",
+             replaced(suite_text(fs::path(COSIM_SOURCE_DIR) / "configs"),
+                      "    backends:\n      swe:\n", "    backend:\n      swe:\n"));
   r = run({binary("cosim").string(), "bench", (dir / "typo.yaml").string(), "--output",
            (dir / "out").string()},
           std::chrono::seconds(60));

@@ -177,8 +177,8 @@ TEST_P(CouplerSignals, StopTheRunWithExit3AndAFinishedRecord) {
   ASSERT_EQ(::kill(cosim, c.signal), 0);
   const auto r = wait_for(cosim, log, std::chrono::seconds(60));
   const double seconds = seconds_since(start);
-  std::printf("%s: exit %d %.2f s after the signal\n", name_of_signal({c, 0}).c_str(),
-              r.exit_code, seconds);
+  std::printf("%s: exit %d %.2f s after the signal\n", name_of_signal({c, 0}).c_str(), r.exit_code,
+              seconds);
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_THAT(r.output, HasSubstr("signal"));
   EXPECT_LT(seconds, detection_slack_s);

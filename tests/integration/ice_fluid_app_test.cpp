@@ -57,7 +57,8 @@ TEST(IceFluidApp, LeavesSnapshotsGaugesAndASummary) {
   EXPECT_TRUE(fs::exists(out / "ice.xdmf"));
   EXPECT_TRUE(fs::exists(out / "ice_000005.h5"));
   EXPECT_TRUE(fs::exists(out / "log.txt"));
-  const auto gauges = read_csv(out / "gauges.csv");  // time, p, ux, uy, water_fraction, air_fraction
+  const auto gauges =
+      read_csv(out / "gauges.csv");  // time, p, ux, uy, water_fraction, air_fraction
   ASSERT_GT(gauges.size(), 10u);
   ASSERT_EQ(gauges.back().size(), 6u);
   EXPECT_NEAR(gauges.back()[0], 0.05, 1e-12);

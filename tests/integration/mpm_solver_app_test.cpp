@@ -53,16 +53,16 @@ struct SolverRun {
 
 // Writes `text` as <dir>/case.yaml (plus extra files) and runs the solver on it.
 SolverRun run_case(const std::string& name, const std::string& text,
-             const std::vector<std::pair<std::string, std::string>>& files = {}) {
+                   const std::vector<std::pair<std::string, std::string>>& files = {}) {
   const fs::path dir = fresh_directory("mpm_solver_app/" + name);
   write_text(dir / "case.yaml", text);
   for (const auto& [file, contents] : files) write_text(dir / file, contents);
   SolverRun run;
   run.output = dir / "out";
-  run.result = cosim::testing::run({binary("mpm_solver").string(), "--config",
-                                    (dir / "case.yaml").string(), "--output", run.output.string(),
-                                    "--threads", "1"},
-                                   std::chrono::seconds(120));
+  run.result =
+      cosim::testing::run({binary("mpm_solver").string(), "--config", (dir / "case.yaml").string(),
+                           "--output", run.output.string(), "--threads", "1"},
+                          std::chrono::seconds(120));
   if (fs::exists(run.output / "summary.json"))
     run.summary = nlohmann::json::parse(read_text(run.output / "summary.json"));
   return run;
@@ -123,8 +123,9 @@ TEST(MpmSolverApp, IncompressibleMaterialIsBadInput) {
 }
 
 TEST(MpmSolverApp, NonPositiveModulusIsBadInput) {
-  expect_bad_input(run_case("E", replaced(drop_case, "youngs_modulus: 1.0e6", "youngs_modulus: -1")),
-                   "case.yaml:8:", "key 'materials.rubber.youngs_modulus'");
+  expect_bad_input(
+      run_case("E", replaced(drop_case, "youngs_modulus: 1.0e6", "youngs_modulus: -1")),
+      "case.yaml:8:", "key 'materials.rubber.youngs_modulus'");
 }
 
 TEST(MpmSolverApp, NonPositiveDensityIsBadInput) {
@@ -172,8 +173,9 @@ TEST(MpmSolverApp, ParticlesLeavingTheGridAreANumericalFailureThatKeepsSnapshots
 }
 
 TEST(MpmSolverApp, TimeStepBelowTheMinimumIsANumericalFailure) {
-  const SolverRun run = run_case(
-      "min_time_step", replaced(drop_case, "safety_factor: 0.4", "safety_factor: 0.4, min_time_step: 1.0"));
+  const SolverRun run =
+      run_case("min_time_step",
+               replaced(drop_case, "safety_factor: 0.4", "safety_factor: 0.4, min_time_step: 1.0"));
   EXPECT_EQ(run.result.exit_code, 4) << run.result.output;
   EXPECT_THAT(run.result.output, HasSubstr("fell below time.min_time_step = 1 s at t = 0 s"));
   EXPECT_EQ(run.summary["status"]["exit_code"], 4);
@@ -200,7 +202,8 @@ TEST(MpmSolverApp, ExampleCasesRun) {
     const fs::path output = fresh_directory(std::string("mpm_solver_app/example_") + example);
     const auto result = cosim::testing::run(
         {binary("mpm_solver").string(), "--config",
-         (fs::path(COSIM_SOURCE_DIR) / "configs" / "mpm" / (std::string(example) + ".yaml")).string(),
+         (fs::path(COSIM_SOURCE_DIR) / "configs" / "mpm" / (std::string(example) + ".yaml"))
+             .string(),
          "--output", output.string()},
         std::chrono::seconds(300));
     EXPECT_EQ(result.exit_code, 0) << example << "\n" << result.output;

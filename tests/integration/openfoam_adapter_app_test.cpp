@@ -163,10 +163,11 @@ TEST_F(OpenFoamAdapterRun, MppicInterFoamRestartedEveryStepMovesAsInOneStart) {
     difference = std::max(difference, std::abs(every_step[i] - one_start[i]));
     parallel = std::max(parallel, std::abs(two_processes[i] - every_step[i]));
   }
-  fmt::print("MPPICInterFoam, 20 starts against 1: largest |dU| {:.3g} m/s of |U| {:.3g} m/s; "
-             "on two processes against one: {:.3g} m/s\n",
-             difference, largest, parallel);
-  EXPECT_GT(largest, 0.1);  // the water is moving
+  fmt::print(
+      "MPPICInterFoam, 20 starts against 1: largest |dU| {:.3g} m/s of |U| {:.3g} m/s; "
+      "on two processes against one: {:.3g} m/s\n",
+      difference, largest, parallel);
+  EXPECT_GT(largest, 0.1);                // the water is moving
   EXPECT_LE(difference, 2e-5 * largest);  // 4e-6 measured; 15 times |U| without the fix
   EXPECT_LE(parallel, 1e-3 * largest);
 }

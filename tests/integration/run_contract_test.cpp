@@ -39,8 +39,8 @@ TEST(RunContract, ConnectTimeoutIsPassedToParticipantsAndKeptInRange) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_THAT(read_text(dir / "run" / "log.txt"), HasSubstr("--cosim-connect-timeout 7"));
   for (const char* absurd : {"1e10", "0", "-1", "nan"}) {
-    const auto bad = cosim_run(job, dir / ("run_" + std::string(absurd)), 30,
-                               {"--connect-timeout", absurd});
+    const auto bad =
+        cosim_run(job, dir / ("run_" + std::string(absurd)), 30, {"--connect-timeout", absurd});
     EXPECT_EQ(bad.exit_code, 2) << absurd << ": " << bad.output;
     EXPECT_THAT(bad.output, HasSubstr("--connect-timeout"));
   }
@@ -66,7 +66,8 @@ TEST(RunContract, LoopbackByNameOrIpv6Binds) {
   EXPECT_EQ(by_name.exit_code, 0) << by_name.output;
   o.host = "::1";
   const auto ipv6 = cosim_run(write_job(dir, o), dir / "run_ipv6");
-  const bool has_ipv6_loopback = read_text("/proc/net/if_inet6").find("00000000000000000000000000000001") != std::string::npos;
+  const bool has_ipv6_loopback =
+      read_text("/proc/net/if_inet6").find("00000000000000000000000000000001") != std::string::npos;
   if (has_ipv6_loopback) {
     EXPECT_EQ(ipv6.exit_code, 0) << ipv6.output;
     EXPECT_THAT(read_text(dir / "run_ipv6" / "log.txt"), HasSubstr("tcp://[::1]:"));
@@ -132,13 +133,15 @@ TEST(RunContract, ANonEmptyOutputDirectoryIsRefusedUnlessOverwritten) {
 TEST(RunContract, ValidateChecksEveryParticipantConfig) {
   const fs::path dir = fresh_directory("contract_validate");
   const fs::path job = write_job(dir, {});
-  const auto good = run({binary("cosim").string(), "validate", job.string()}, std::chrono::seconds(30));
+  const auto good =
+      run({binary("cosim").string(), "validate", job.string()}, std::chrono::seconds(30));
   EXPECT_EQ(good.exit_code, 0) << good.output;
   EXPECT_THAT(good.output, HasSubstr("left"));
   EXPECT_THAT(good.output, HasSubstr("is valid"));
 
   write_text(dir / "right.yaml", read_text(dir / "right.yaml") + "surprise_key: 1\n");
-  const auto bad = run({binary("cosim").string(), "validate", job.string()}, std::chrono::seconds(30));
+  const auto bad =
+      run({binary("cosim").string(), "validate", job.string()}, std::chrono::seconds(30));
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_THAT(bad.output, HasSubstr("right.yaml:"));
   EXPECT_THAT(bad.output, HasSubstr("surprise_key"));
@@ -150,8 +153,8 @@ TEST(RunContract, ValidateChecksEveryParticipantConfig) {
 TEST(RunContract, ValidateStopsOnASignal) {
   const fs::path dir = fresh_directory("contract_validate_signal");
   const fs::path job = write_job(dir, {});
-  write_text(dir / "sleeper.sh", "#!/bin/sh\necho $$ > " + (dir / "sleeper.pid").string() +
-                                     "\nexec sleep 600\n");
+  write_text(dir / "sleeper.sh",
+             "#!/bin/sh\necho $$ > " + (dir / "sleeper.pid").string() + "\nexec sleep 600\n");
   fs::permissions(dir / "sleeper.sh", fs::perms::owner_all);
   write_text(job, replaced(read_text(job), "executable: cosim_test_participant",
                            "executable: ./sleeper.sh"));
@@ -175,9 +178,9 @@ TEST(RunContract, AKilledCouplersIpcDirectoryIsCleanedAtTheNextStart) {
   JobOptions o;
   o.end_time = 1000.0;
   const fs::path job = write_job(dir, o);
-  const pid_t cosim = spawn({binary("cosim").string(), "run", job.string(), "--output",
-                             (dir / "killed").string()},
-                            dir / "killed.log");
+  const pid_t cosim =
+      spawn({binary("cosim").string(), "run", job.string(), "--output", (dir / "killed").string()},
+            dir / "killed.log");
   wait_for_pid_file(dir / "killed" / "right" / "pid", std::chrono::seconds(30));
   const std::string log = read_text(dir / "killed" / "log.txt");
   const auto at = log.find("ipc://");
@@ -212,7 +215,9 @@ struct LongCase {
   const char* end_time_to;
 };
 
-void PrintTo(const LongCase& c, std::ostream* out) { *out << c.solver << " on " << c.config; }
+void PrintTo(const LongCase& c, std::ostream* out) {
+  *out << c.solver << " on " << c.config;
+}
 
 class SolverStops : public ::testing::TestWithParam<LongCase> {};
 
@@ -220,8 +225,7 @@ TEST_P(SolverStops, OnASignalBetweenStepsWithItsRecord) {
   const LongCase& c = GetParam();
   const fs::path dir = fresh_directory(std::string("solver_stop_") + c.solver);
   const fs::path shipped = fs::path(COSIM_SOURCE_DIR) / "configs" / c.config;
-  write_text(dir / "case.yaml",
-             replaced(read_text(shipped), c.end_time_from, c.end_time_to));
+  write_text(dir / "case.yaml", replaced(read_text(shipped), c.end_time_from, c.end_time_to));
   for (const auto& entry : fs::directory_iterator(shipped.parent_path()))
     if (entry.path().extension() != ".yaml" && entry.is_regular_file())
       fs::copy_file(entry.path(), dir / entry.path().filename(),
@@ -246,15 +250,16 @@ TEST_P(SolverStops, OnASignalBetweenStepsWithItsRecord) {
   EXPECT_THAT(summary["status"]["message"].get<std::string>(), HasSubstr("stopped by signal 15"));
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Reliability, SolverStops,
-    ::testing::Values(
-        LongCase{"swe_fluid", "swe/stoker_dam_break.yaml", "end_time: 0.1", "end_time: 1.0e4"},
-        LongCase{"mpm_solver", "mpm/elastic_block_drop.yaml", "end_time: 0.5", "end_time: 100.0"},
-        LongCase{"ice_fluid", "ice/martin_moyce.yaml", "end_time: 0.19", "end_time: 1.0e4"}),
-    [](const ::testing::TestParamInfo<LongCase>& param_info) {
-      return std::string(param_info.param.solver);
-    });
+INSTANTIATE_TEST_SUITE_P(Reliability, SolverStops,
+                         ::testing::Values(LongCase{"swe_fluid", "swe/stoker_dam_break.yaml",
+                                                    "end_time: 0.1", "end_time: 1.0e4"},
+                                           LongCase{"mpm_solver", "mpm/elastic_block_drop.yaml",
+                                                    "end_time: 0.5", "end_time: 100.0"},
+                                           LongCase{"ice_fluid", "ice/martin_moyce.yaml",
+                                                    "end_time: 0.19", "end_time: 1.0e4"}),
+                         [](const ::testing::TestParamInfo<LongCase>& param_info) {
+                           return std::string(param_info.param.solver);
+                         });
 
 }  // namespace
 }  // namespace cosim::testing

@@ -87,9 +87,10 @@ TEST(Soak, MemoryStaysFlatOverManyWindows) {
     ASSERT_TRUE(warm.count(name)) << name << " was never sampled warm";
     const double growth =
         static_cast<double>(largest[name] - warm[name]) / static_cast<double>(warm[name]);
-    std::printf("soak: %-6s resident %ld kB warm, %ld kB at most after: growth %+.3f %% "
-                "(limit %.0f %%)\n",
-                name.c_str(), warm[name], largest[name], 100.0 * growth, 100.0 * allowed_growth);
+    std::printf(
+        "soak: %-6s resident %ld kB warm, %ld kB at most after: growth %+.3f %% "
+        "(limit %.0f %%)\n",
+        name.c_str(), warm[name], largest[name], 100.0 * growth, 100.0 * allowed_growth);
     EXPECT_LE(growth, allowed_growth) << name;
   }
 }

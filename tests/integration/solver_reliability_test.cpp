@@ -33,13 +33,16 @@ struct Solver {
   const char* program;
   const char* kind;
   const char* name;
-  std::string text;       // a small case that runs in a few seconds
-  const char* big_from;   // a replacement that makes it far too large
+  std::string text;      // a small case that runs in a few seconds
+  const char* big_from;  // a replacement that makes it far too large
   const char* big_to;
-  const char* snapshot;   // a snapshot file every run writes
+  const char* snapshot;  // a snapshot file every run writes
 };
 
-const Solver mpm{"mpm_solver", "mpm_case", "drop", R"(kind: mpm_case
+const Solver mpm{"mpm_solver",
+                 "mpm_case",
+                 "drop",
+                 R"(kind: mpm_case
 name: drop
 dimension: 2
 grid: {origin: [0, 0], upper: [1, 1], cells: [20, 20]}
@@ -54,9 +57,11 @@ bodies:
     particles_per_cell: 2
 output: {every: 0.005}
 )",
-                 "particles_per_cell: 2", "particles_per_cell: 1000", "particles_000001.h5"};
+                 "particles_per_cell: 2",
+                 "particles_per_cell: 1000",
+                 "particles_000001.h5"};
 
-const Solver swe{"swe_fluid", "swe_case", "dam", R"(kind: swe_case
+const Solver swe{"swe_fluid", "swe_case",          "dam",          R"(kind: swe_case
 name: dam
 dimension: 1
 mesh: {from: 0.0, to: 4.0, cells: 80}
@@ -69,7 +74,8 @@ output: {every: 0.01}
 )",
                  "cells: 80", "cells: 2000000000", "swe_000001.h5"};
 
-const Solver ice{"ice_fluid", "ice_case", "column", R"(kind: ice_case
+const Solver ice{"ice_fluid",       "ice_case",        "column",
+                 R"(kind: ice_case
 name: column
 dimension: 2
 grid: {origin: [0.0, 0.0], upper: [0.2, 0.1], cells: [20, 10]}
@@ -87,10 +93,11 @@ initial:
   regions:
     - {box: {lower: [0.0, 0.0], upper: [0.05, 0.08]}, fill: water}
 output: {every: 0.0025}
-)",
-                 "cells: [20, 10]", "cells: [20000, 20000]", "ice_000001.h5"};
+)", "cells: [20, 10]", "cells: [20000, 20000]",
+                 "ice_000001.h5"};
 
-const Solver openfoam{"openfoam_adapter", "openfoam_case", "tank", R"(kind: openfoam_case
+const Solver openfoam{"openfoam_adapter",     "openfoam_case",  "tank",
+                      R"(kind: openfoam_case
 name: tank
 generate:
   dimension: 2
@@ -106,10 +113,12 @@ end_time: 0.004
 time_step: 1.0e-3
 window: 0.002
 output: {every: 0.002}
-)",
-                      "cells: [10, 5]", "cells: [50000, 20000]", "openfoam_000001.h5"};
+)", "cells: [10, 5]", "cells: [50000, 20000]",
+                      "openfoam_000001.h5"};
 
-std::string test_name(const ::testing::TestParamInfo<Solver>& info) { return info.param.program; }
+std::string test_name(const ::testing::TestParamInfo<Solver>& info) {
+  return info.param.program;
+}
 
 class SolverPromises : public ::testing::TestWithParam<Solver> {
  protected:
@@ -124,8 +133,8 @@ class SolverPromises : public ::testing::TestWithParam<Solver> {
 
   ProcessResult solver(std::vector<std::string> args, const std::string& text) {
     write_text(dir_ / "case.yaml", text);
-    args.insert(args.begin(), {binary(GetParam().program).string(), "--config",
-                               (dir_ / "case.yaml").string()});
+    args.insert(args.begin(),
+                {binary(GetParam().program).string(), "--config", (dir_ / "case.yaml").string()});
     return run(args, std::chrono::seconds(120));
   }
 
@@ -138,7 +147,8 @@ TEST_P(SolverPromises, ValidatePrintsOneLineAndTouchesNothing) {
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_THAT(r.output, StartsWith(fmt::format("{}: valid {} '{}': ", (dir_ / "case.yaml").string(),
                                                s.kind, s.name)));
-  EXPECT_THAT(r.output, ::testing::AnyOf(HasSubstr(" cells, about "), HasSubstr(" grid nodes, about ")));
+  EXPECT_THAT(r.output,
+              ::testing::AnyOf(HasSubstr(" cells, about "), HasSubstr(" grid nodes, about ")));
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
@@ -214,9 +224,10 @@ TEST_P(SolverPromises, OverwriteClearsTheEarlierRunAndTheSummaryStatesTheSize) {
   EXPECT_GT(summary["size"]["memory_bytes_estimate"].get<double>(), 1e6);
   EXPECT_DOUBLE_EQ(summary["size"]["memory_limit_bytes"].get<double>(), 8.0 * (1 << 30));
   // --overwrite never clears the directory that holds the case file.
-  const ProcessResult self = run({binary(s.program).string(), "--config", (dir_ / "case.yaml").string(),
-                                  "--output", dir_.string(), "--overwrite"},
-                                 std::chrono::seconds(60));
+  const ProcessResult self =
+      run({binary(s.program).string(), "--config", (dir_ / "case.yaml").string(), "--output",
+           dir_.string(), "--overwrite"},
+          std::chrono::seconds(60));
   EXPECT_EQ(self.exit_code, 2) << self.output;
   EXPECT_THAT(self.output, HasSubstr("which holds the case file"));
   EXPECT_TRUE(fs::exists(dir_ / "case.yaml"));

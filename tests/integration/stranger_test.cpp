@@ -59,8 +59,8 @@ TEST_P(Strangers, CannotJoinStallOrReadARun) {
       {binary("cosim").string(), "run", job.string(), "--output", run.string()}, dir / "cosim.log");
   const std::string endpoint = endpoint_of(run / "log.txt");
   ASSERT_FALSE(endpoint.empty());
-  ASSERT_FALSE(
-      log_once_it_says(run / "log.txt", "participants connected", std::chrono::seconds(30)).empty());
+  ASSERT_FALSE(log_once_it_says(run / "log.txt", "participants connected", std::chrono::seconds(30))
+                   .empty());
   const auto summary = nlohmann::json::parse(read_text(run / "summary.json"));
   const std::string job_id = summary["job"]["id"];
   const std::string config_hash = summary["config"]["hash"];
@@ -92,7 +92,8 @@ TEST_P(Strangers, CannotJoinStallOrReadARun) {
   raw.send(zmq::str_buffer("a"), zmq::send_flags::sndmore);
   raw.send(zmq::str_buffer("b"), zmq::send_flags::sndmore);
   raw.send(zmq::str_buffer("c"), zmq::send_flags::none);
-  com::Message foreign = com::make_text_message(com::MessageType::hello, job_id, "left", 0, 0.0, "{}");
+  com::Message foreign =
+      com::make_text_message(com::MessageType::hello, job_id, "left", 0, 0.0, "{}");
   foreign.header.version = com::protocol_version + 7;
   const auto header = com::encode_header(foreign.header);
   raw.send(zmq::buffer(header.data(), header.size()), zmq::send_flags::sndmore);

@@ -58,7 +58,7 @@ TEST(SweFluidApp, LeavesSnapshotsGaugesAndASummary) {
   EXPECT_NEAR(gauges.back()[0], 0.5, 1e-9);
   EXPECT_GT(gauges.back()[2], 0.0) << "the water reached the bump";
   const auto water = read_csv(out / "water.csv");
-  ASSERT_EQ(water.size(), 6u);  // t = 0, 0.1, ..., 0.5
+  ASSERT_EQ(water.size(), 6u);                                    // t = 0, 0.1, ..., 0.5
   for (const auto& row : water) EXPECT_NEAR(row[1], 0.5, 1e-13);  // volume, walls all round
   const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
   EXPECT_EQ(summary["status"]["exit_code"], 0);
@@ -69,7 +69,8 @@ TEST(SweFluidApp, LeavesSnapshotsGaugesAndASummary) {
 }
 
 TEST(SweFluidApp, ListsItsKeys) {
-  const ProcessResult r = run({binary("swe_fluid").string(), "--help-config"}, std::chrono::seconds(30));
+  const ProcessResult r =
+      run({binary("swe_fluid").string(), "--help-config"}, std::chrono::seconds(30));
   ASSERT_EQ(r.exit_code, 0);
   EXPECT_THAT(r.output, HasSubstr("bed_pressure"));
   EXPECT_THAT(r.output, HasSubstr("mesh.segments"));
@@ -98,12 +99,13 @@ INSTANTIATE_TEST_SUITE_P(
     Cases, SweFluidBadInput,
     ::testing::Values(
         BadInput{"negative_depth", "depth: 0.5}", "depth: -0.5}", "case.yaml:9:"},
-        BadInput{"zero_width", "mesh: {from: 0.0, to: 4.0, cells: 80}", "mesh: {from: 4.0, to: 4.0, cells: 80}",
+        BadInput{"zero_width", "mesh: {from: 0.0, to: 4.0, cells: 80}",
+                 "mesh: {from: 4.0, to: 4.0, cells: 80}",
                  "key 'mesh.to': the line has zero or negative length"},
         BadInput{"no_cells", "cells: 80}", "cells: 0}", "key 'mesh.cells'"},
         BadInput{"gauge_outside", "x: 2.5}", "x: 4.5}", "case.yaml:15:"},
-        BadInput{"bed_profile_short", "bed: {bumps", "bed: {profile: [[1.0, 0.0], [4.0, 0.0]], bumps",
-                 "key 'bed.profile'"},
+        BadInput{"bed_profile_short", "bed: {bumps",
+                 "bed: {profile: [[1.0, 0.0], [4.0, 0.0]], bumps", "key 'bed.profile'"},
         BadInput{"unknown_key", "time: {end_time: 0.5}", "time: {end_tme: 0.5}", "end_tme"}),
     [](const auto& p) { return std::string(p.param.name); });
 

@@ -10,8 +10,8 @@
 #include <iostream>
 
 #include "cosim/config/document.hpp"
-#include "job/job.hpp"
 #include "fuzz_run.hpp"
+#include "job/job.hpp"
 #include "text_files.hpp"
 
 namespace cosim::testing {

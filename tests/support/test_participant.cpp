@@ -10,12 +10,11 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include <csignal>
-
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <fstream>
 #include <iostream>
 #include <numeric>
@@ -189,9 +188,12 @@ struct RaisedSignal {
 };
 
 int signal_number(const std::string& name) {
-  for (const auto& [n, number] : std::initializer_list<std::pair<const char*, int>>{
-           {"SIGKILL", SIGKILL}, {"SIGSTOP", SIGSTOP}, {"SIGSEGV", SIGSEGV},
-           {"SIGTERM", SIGTERM}, {"SIGABRT", SIGABRT}})
+  for (const auto& [n, number] :
+       std::initializer_list<std::pair<const char*, int>>{{"SIGKILL", SIGKILL},
+                                                          {"SIGSTOP", SIGSTOP},
+                                                          {"SIGSEGV", SIGSEGV},
+                                                          {"SIGTERM", SIGTERM},
+                                                          {"SIGABRT", SIGABRT}})
     if (name == n) return number;
   throw cosim::InputError("--raise: unknown signal '" + name + "'");
 }
@@ -398,9 +400,8 @@ int main(int argc, char** argv) {
     cosim::create_output_directory(output);
     cosim::RunSummary summary(output, "cosim_test_participant");
     summary.write();
-    return cosim::run_and_finish(summary, [&] {
-      run(config, endpoint, output, crash_at_window, hang_at_window, raised);
-    });
+    return cosim::run_and_finish(
+        summary, [&] { run(config, endpoint, output, crash_at_window, hang_at_window, raised); });
   } catch (const cosim::Error& e) {
     std::cerr << "cosim_test_participant: error: " << e.what() << "\n";
     return cosim::to_int(e.code());

@@ -23,8 +23,8 @@
 #include <vector>
 
 #include "mpm/case/load_case.hpp"
-#include "mpm_case_resolution.hpp"
 #include "mpm/solver/solver.hpp"
+#include "mpm_case_resolution.hpp"
 
 namespace mpm {
 namespace {
@@ -51,7 +51,8 @@ struct BarResult {
 BarResult vibrate(ShapeKind shape) {
   const auto start = std::chrono::steady_clock::now();
   CaseDescription description = validation::load_case_scaled(case_file, 1.0 / coarsening);
-  description.threads = 1;  // OpenMP teams spin-wait: on a shared, loaded CI machine one thread is faster
+  description.threads =
+      1;  // OpenMP teams spin-wait: on a shared, loaded CI machine one thread is faster
   description.shape = shape;
   const double wave_speed = std::sqrt(youngs_modulus / density);
   const double period = 4.0 * length / wave_speed;
@@ -62,7 +63,8 @@ BarResult vibrate(ShapeKind shape) {
   const double v0 = 1e-3 * wave_speed;
   auto& particles = solver.particles();
   for (std::size_t p = 0; p < particles.size(); ++p)
-    particles.velocity[p] = Vec<2>(v0 * std::sin(std::numbers::pi * particles.position[p].x() / (2.0 * length)), 0.0);
+    particles.velocity[p] =
+        Vec<2>(v0 * std::sin(std::numbers::pi * particles.position[p].x() / (2.0 * length)), 0.0);
 
   const auto energy = [&] {
     const Totals<2> t = solver.totals();
@@ -78,7 +80,8 @@ BarResult vibrate(ShapeKind shape) {
   double last_time = 0.0;
   double last_velocity = centre_velocity();
   while (solver.time() < description.time.end_time) {
-    const double dt = std::min(solver.stable_time_step(), description.time.end_time - solver.time());
+    const double dt =
+        std::min(solver.stable_time_step(), description.time.end_time - solver.time());
     solver.step(dt);
     const double v = centre_velocity();
     if ((last_velocity > 0.0) != (v > 0.0))
@@ -90,9 +93,11 @@ BarResult vibrate(ShapeKind shape) {
   solver.check_state();
   BarResult result;
   if (crossings.size() >= 2)
-    result.period = 2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+    result.period =
+        2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
   result.energy_drift = drift;
-  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
@@ -100,20 +105,28 @@ void check_bar(ShapeKind shape, bool assert_tolerances) {
   const double period = 4.0 * length / std::sqrt(youngs_modulus / density);
   const BarResult r = vibrate(shape);
   const double period_error = std::abs(r.period - period) / period;
-  fmt::print("mpm-bar {} ({} m cells): period {:.5f} s vs T = 4L/c = {:.5f} s, error {:.3f} % (tolerance 1 %); "
-             "energy drift {:.3f} % (tolerance 1 %); wall {:.1f} s\n",
-             to_string(shape), 0.25 * coarsening, r.period, period, 100.0 * period_error, 100.0 * r.energy_drift,
-             r.wall_seconds);
+  fmt::print(
+      "mpm-bar {} ({} m cells): period {:.5f} s vs T = 4L/c = {:.5f} s, error {:.3f} % (tolerance "
+      "1 %); "
+      "energy drift {:.3f} % (tolerance 1 %); wall {:.1f} s\n",
+      to_string(shape), 0.25 * coarsening, r.period, period, 100.0 * period_error,
+      100.0 * r.energy_drift, r.wall_seconds);
   if (!assert_tolerances) return;
   EXPECT_LT(period_error, 0.01);
   EXPECT_LT(r.energy_drift, 0.01);
 }
 
-TEST(MpmBarValidation, GimpPeriodAndEnergy) { check_bar(ShapeKind::gimp, true); }
+TEST(MpmBarValidation, GimpPeriodAndEnergy) {
+  check_bar(ShapeKind::gimp, true);
+}
 
-TEST(MpmBarValidation, QuadraticBsplinePeriodAndEnergy) { check_bar(ShapeKind::quadratic_bspline, true); }
+TEST(MpmBarValidation, QuadraticBsplinePeriodAndEnergy) {
+  check_bar(ShapeKind::quadratic_bspline, true);
+}
 
-TEST(MpmBarValidation, LinearPeriodAndEnergy) { check_bar(ShapeKind::linear, true); }
+TEST(MpmBarValidation, LinearPeriodAndEnergy) {
+  check_bar(ShapeKind::linear, true);
+}
 
 }  // namespace
 }  // namespace mpm

@@ -24,9 +24,11 @@ inline CaseDescription load_case_scaled(const std::string& path, double scale) {
   std::string yaml = text.str();
   const std::regex cells(R"(cells: \[(\d+), (\d+)\])");
   std::smatch m;
-  if (!std::regex_search(yaml, m, cells)) throw std::runtime_error("no `cells: [nx, ny]` in " + path);
+  if (!std::regex_search(yaml, m, cells))
+    throw std::runtime_error("no `cells: [nx, ny]` in " + path);
   const auto scaled = [&](const std::string& n) { return std::lround(std::stod(n) * scale); };
-  const std::string replacement = fmt::format("cells: [{}, {}]", scaled(m[1].str()), scaled(m[2].str()));
+  const std::string replacement =
+      fmt::format("cells: [{}, {}]", scaled(m[1].str()), scaled(m[2].str()));
   yaml = std::regex_replace(yaml, cells, replacement, std::regex_constants::format_first_only);
   return load_case_text(yaml, path);
 }

@@ -32,8 +32,8 @@
 #include <vector>
 
 #include "mpm/case/load_case.hpp"
-#include "mpm_case_resolution.hpp"
 #include "mpm/solver/solver.hpp"
+#include "mpm_case_resolution.hpp"
 
 namespace mpm {
 namespace {
@@ -48,7 +48,9 @@ constexpr int coarsening = 2;
 #endif
 
 // Lube et al. 2005: normalised runout (L_inf - L0) / L0 of a 2D column.
-double lube_runout(double a) { return a < 2.8 ? 1.2 * a : 1.9 * std::pow(a, 2.0 / 3.0); }
+double lube_runout(double a) {
+  return a < 2.8 ? 1.2 * a : 1.9 * std::pow(a, 2.0 / 3.0);
+}
 
 // Front of the deposit: the end of the run of one-particle-wide bins, from
 // the wall, whose height (top of the highest particle domain) is at least
@@ -75,14 +77,16 @@ void check_column(const std::string& name, double aspect_ratio) {
   const auto start = std::chrono::steady_clock::now();
   const std::string file = COSIM_SOURCE_DIR "/configs/mpm/validation/" + name;
   CaseDescription description = validation::load_case_scaled(file, 1.0 / coarsening);
-  description.threads = 1;  // OpenMP teams spin-wait: on a shared, loaded CI machine one thread is faster
+  description.threads =
+      1;  // OpenMP teams spin-wait: on a shared, loaded CI machine one thread is faster
   Solver<2> solver(description);
   // At rest: the kinetic energy stays below 1e-4 of its peak for 0.1 s.
   double peak = 0.0;
   double kinetic = 0.0;
   double quiet_since = -1.0;
   while (solver.time() < description.time.end_time) {
-    const double dt = std::min(solver.stable_time_step(), description.time.end_time - solver.time());
+    const double dt =
+        std::min(solver.stable_time_step(), description.time.end_time - solver.time());
     solver.step(dt);
     if (solver.step_count() % 20 != 0) continue;
     kinetic = solver.totals().kinetic_energy;
@@ -100,12 +104,14 @@ void check_column(const std::string& name, double aspect_ratio) {
   const double runout = (front - initial_length) / initial_length;
   const double reference = lube_runout(aspect_ratio);
   const double error = std::abs(runout - reference) / reference;
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  fmt::print("mpm-column a = {} ({} cells across L0): stopped at t = {:.3f} s with KE/peak = {:.2e}; "
-             "front {:.4f} m, (L_inf - L0)/L0 = {:.3f} vs Lube et al. 2005 {:.3f}, error {:.1f} % "
-             "(tolerance {:.0f} %); wall {:.1f} s\n",
-             aspect_ratio, 20 / coarsening, solver.time(), peak > 0.0 ? kinetic / peak : 0.0, front, runout,
-             reference, 100.0 * error, 100.0 * tolerance, wall);
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  fmt::print(
+      "mpm-column a = {} ({} cells across L0): stopped at t = {:.3f} s with KE/peak = {:.2e}; "
+      "front {:.4f} m, (L_inf - L0)/L0 = {:.3f} vs Lube et al. 2005 {:.3f}, error {:.1f} % "
+      "(tolerance {:.0f} %); wall {:.1f} s\n",
+      aspect_ratio, 20 / coarsening, solver.time(), peak > 0.0 ? kinetic / peak : 0.0, front,
+      runout, reference, 100.0 * error, 100.0 * tolerance, wall);
   if (aspect_ratio < 1.0) {
     // Known discrepancy, reported in the closing note: a short column
     // of a rate-independent Mohr-Coulomb material stops at its static failure
@@ -115,20 +121,27 @@ void check_column(const std::string& name, double aspect_ratio) {
     // must still match the static wedge within the tolerance.
     const double wedge = aspect_ratio / (2.0 * std::tan(30.0 * M_PI / 180.0));
     const double wedge_error = std::abs(runout - wedge) / wedge;
-    fmt::print("mpm-column a = {}: static Mohr-Coulomb wedge {:.3f}, error {:.1f} % (tolerance {:.0f} %); "
-               "the Lube et al. comparison is not asserted for a < 1 (see the comment)\n",
-               aspect_ratio, wedge, 100.0 * wedge_error, 100.0 * tolerance);
+    fmt::print(
+        "mpm-column a = {}: static Mohr-Coulomb wedge {:.3f}, error {:.1f} % (tolerance {:.0f} %); "
+        "the Lube et al. comparison is not asserted for a < 1 (see the comment)\n",
+        aspect_ratio, wedge, 100.0 * wedge_error, 100.0 * tolerance);
     EXPECT_LT(wedge_error, tolerance);
     return;
   }
   EXPECT_LT(error, tolerance);
 }
 
-TEST(MpmColumnValidation, AspectRatioHalf) { check_column("granular_column_a0.5.yaml", 0.5); }
+TEST(MpmColumnValidation, AspectRatioHalf) {
+  check_column("granular_column_a0.5.yaml", 0.5);
+}
 
-TEST(MpmColumnValidation, AspectRatioTwo) { check_column("granular_column_a2.yaml", 2.0); }
+TEST(MpmColumnValidation, AspectRatioTwo) {
+  check_column("granular_column_a2.yaml", 2.0);
+}
 
-TEST(MpmColumnValidation, AspectRatioFour) { check_column("granular_column_a4.yaml", 4.0); }
+TEST(MpmColumnValidation, AspectRatioFour) {
+  check_column("granular_column_a4.yaml", 4.0);
+}
 
 }  // namespace
 }  // namespace mpm

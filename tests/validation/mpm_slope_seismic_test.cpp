@@ -51,12 +51,15 @@ fs::path write_scaled_case(const fs::path& dir, double scale) {
   std::string yaml = read_text(case_dir / "hiraoka_slope_seismic.yaml");
   const std::regex cells(R"(cells: \[(\d+), (\d+)\])");
   std::smatch m;
-  if (!std::regex_search(yaml, m, cells)) throw std::runtime_error("no `cells: [nx, ny]` in the case file");
+  if (!std::regex_search(yaml, m, cells))
+    throw std::runtime_error("no `cells: [nx, ny]` in the case file");
   const auto scaled = [&](const std::string& n) { return std::lround(std::stod(n) * scale); };
-  yaml = std::regex_replace(yaml, cells, fmt::format("cells: [{}, {}]", scaled(m[1].str()), scaled(m[2].str())),
+  yaml = std::regex_replace(yaml, cells,
+                            fmt::format("cells: [{}, {}]", scaled(m[1].str()), scaled(m[2].str())),
                             std::regex_constants::format_first_only);
-  yaml = std::regex_replace(yaml, std::regex("velocity_history: shaking_table_velocity.csv"),
-                            "velocity_history: " + (case_dir / "shaking_table_velocity.csv").string());
+  yaml =
+      std::regex_replace(yaml, std::regex("velocity_history: shaking_table_velocity.csv"),
+                         "velocity_history: " + (case_dir / "shaking_table_velocity.csv").string());
   fs::create_directories(dir);
   const fs::path file = dir / "hiraoka_slope_seismic.yaml";
   std::ofstream(file) << yaml;
@@ -88,10 +91,12 @@ TEST(MpmSlopeSeismicValidation, ToeMovesCrestSettlesNoInstability) {
   RunOptions options;
   options.config = write_scaled_case(dir / "case", resolution);
   options.output = dir / "run";
-  options.threads = 1;  // OpenMP teams spin-wait: on a shared, loaded CI machine one thread is faster
+  options.threads =
+      1;  // OpenMP teams spin-wait: on a shared, loaded CI machine one thread is faster
   options.verbosity = cosim::Verbosity::quiet;
   const int exit_code = run_case(options);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ASSERT_EQ(exit_code, 0) << read_text(options.output / "log.txt");
 
   const auto summary = nlohmann::json::parse(read_text(options.output / "summary.json"));
@@ -103,7 +108,8 @@ TEST(MpmSlopeSeismicValidation, ToeMovesCrestSettlesNoInstability) {
 
   ASSERT_TRUE(fs::exists(options.output / "probes.csv"));
   const auto probes = read_probes(options.output / "probes.csv");
-  ASSERT_TRUE(probes.contains("toe_displacement_x [m]") && probes.contains("crest_displacement_y [m]"));
+  ASSERT_TRUE(probes.contains("toe_displacement_x [m]") &&
+              probes.contains("crest_displacement_y [m]"));
   const auto& time = probes.at("time [s]");
   const auto& toe = probes.at("toe_displacement_x [m]");
   const auto& crest = probes.at("crest_displacement_y [m]");
@@ -112,10 +118,13 @@ TEST(MpmSlopeSeismicValidation, ToeMovesCrestSettlesNoInstability) {
     ASSERT_TRUE(std::isfinite(toe[k]) && std::isfinite(crest[k])) << "at t = " << time[k];
   const double toe_final = toe.back();
   const double settlement = -crest.back();
-  fmt::print("mpm-slope-seismic ({:.1f} cm cells): {} probe rows to t = {:.2f} s; toe displacement {:.1f} mm "
-             "(must exceed {:.1f} mm, outwards), crest settlement {:.1f} mm (must exceed {:.1f} mm); wall {:.1f} s\n",
-             1.0 / resolution, time.size(), time.back(), 1e3 * toe_final, 1e3 * toe_threshold, 1e3 * settlement,
-             1e3 * crest_threshold, wall);
+  fmt::print(
+      "mpm-slope-seismic ({:.1f} cm cells): {} probe rows to t = {:.2f} s; toe displacement {:.1f} "
+      "mm "
+      "(must exceed {:.1f} mm, outwards), crest settlement {:.1f} mm (must exceed {:.1f} mm); wall "
+      "{:.1f} s\n",
+      1.0 / resolution, time.size(), time.back(), 1e3 * toe_final, 1e3 * toe_threshold,
+      1e3 * settlement, 1e3 * crest_threshold, wall);
   fmt::print("  toe displacement x [mm] every 0.1 s:");
   for (std::size_t k = 0; k < time.size(); k += 10) fmt::print(" {:.1f}", 1e3 * toe[k]);
   fmt::print("\n");

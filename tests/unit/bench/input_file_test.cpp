@@ -1,6 +1,7 @@
+#include "bench/input_file.hpp"
+
 #include <gtest/gtest.h>
 
-#include "bench/input_file.hpp"
 #include "cosim/error.hpp"
 #include "scratch_directory.hpp"
 
@@ -16,7 +17,8 @@ Override set(const std::string& key_path, const std::string& yaml) {
 TEST(InputFile, OverridesNestedKeysListItemsAndNewKeys) {
   ScratchDirectory dir;
   InputFile f = InputFile::read(dir.write(
-      "case.yaml", "kind: mpm_case\ngrid: {cells: [10, 5]}\nbodies:\n  - {name: a, porous: {porosity: 0.4}}\n"));
+      "case.yaml",
+      "kind: mpm_case\ngrid: {cells: [10, 5]}\nbodies:\n  - {name: a, porous: {porosity: 0.4}}\n"));
   f.apply(set("grid.cells", "[20, 10]"));
   f.apply(set("bodies.0.porous.porosity", "0.3"));
   f.apply(set("output.every", "0.5"));

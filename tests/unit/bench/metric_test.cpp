@@ -1,10 +1,11 @@
+#include "bench/metric.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "bench/analytic_solution.hpp"
 #include "bench/darcy_column.hpp"
-#include "bench/metric.hpp"
 #include "scratch_directory.hpp"
 
 namespace cosim::bench {
@@ -17,7 +18,8 @@ MetricSpec metric(const std::string& reference_yaml, const std::string& norm = "
   m.name = "m";
   const YAML::Node r = YAML::Load(reference_yaml);
   m.reference.params = r;
-  m.reference.kind = r["value"] ? "value" : (r["analytic"] ? "analytic" : (r["csv"] ? "csv" : "none"));
+  m.reference.kind =
+      r["value"] ? "value" : (r["analytic"] ? "analytic" : (r["csv"] ? "csv" : "none"));
   m.error.norm = norm;
   return m;
 }
@@ -69,8 +71,8 @@ TEST(Metric, AnAnalyticNumberIsTheSolutionsValue) {
 
 TEST(Metric, ACurveAgainstAnAnalyticCurveAtItsSnapshotsTime) {
   // Still water 1 m deep: p = rho g (1 - y).
-  const MetricSpec m0 =
-      metric("{analytic: hydrostatic_pressure, parameters: {surface: 1.0, density: 1000}}", "max_abs");
+  const MetricSpec m0 = metric(
+      "{analytic: hydrostatic_pressure, parameters: {surface: 1.0, density: 1000}}", "max_abs");
   MetricSpec m = m0;
   m.error.scale = 9810.0;
   Measurement c = curve({0.0, 0.5, 1.0}, {9810.0, 4905.0 + 98.1, 0.0}, "y [m]");
@@ -91,9 +93,10 @@ TEST(Metric, ACurveAgainstAnAnalyticCurveAtItsSnapshotsTime) {
 
 TEST(Metric, ACurveAgainstAFileSelectsRowsByText) {
   ScratchDirectory dir;
-  const auto file = dir.write("front.csv", "# comment\nkind,T,Z\nfront,1,2\nfront,2,3\nheight,1,9\n");
-  MetricSpec m = metric("{csv: " + file.string() + ", x: T, y: Z, where: {kind: front}}",
-                        "max_relative");
+  const auto file =
+      dir.write("front.csv", "# comment\nkind,T,Z\nfront,1,2\nfront,2,3\nheight,1,9\n");
+  MetricSpec m =
+      metric("{csv: " + file.string() + ", x: T, y: Z, where: {kind: front}}", "max_relative");
   m.reference.csv = file;
   // The simulated front runs 10 % ahead at T = 1 and on time at T = 2.
   const MetricResult r = evaluate(m, "ice", curve({0.0, 1.0, 2.0}, {1.0, 2.2, 3.0}));
@@ -136,22 +139,25 @@ TEST(Metric, InterpolationHoldsTheEnds) {
 TEST(AnalyticSolutions, AreTheReferencesTheyName) {
   const AnalyticSolution* stoker = find_analytic_solution("dam_break_depth");
   ASSERT_NE(stoker, nullptr);
-  const Parameters p = stoker->with_defaults({{"left_depth", 1.0}, {"right_depth", 0.5}, {"dam_position", 0.5}});
-  EXPECT_DOUBLE_EQ(stoker->value(p, 0.0, 0.1), 1.0);   // upstream of the rarefaction
-  EXPECT_DOUBLE_EQ(stoker->value(p, 1.0, 0.1), 0.5);   // ahead of the bore
+  const Parameters p =
+      stoker->with_defaults({{"left_depth", 1.0}, {"right_depth", 0.5}, {"dam_position", 0.5}});
+  EXPECT_DOUBLE_EQ(stoker->value(p, 0.0, 0.1), 1.0);      // upstream of the rarefaction
+  EXPECT_DOUBLE_EQ(stoker->value(p, 1.0, 0.1), 0.5);      // ahead of the bore
   EXPECT_NEAR(stoker->value(p, 0.6, 0.1), 0.7275, 1e-3);  // Stoker's middle state
   const AnalyticSolution* sod = find_analytic_solution("shock_tube_density");
   ASSERT_NE(sod, nullptr);
-  const Parameters q = sod->with_defaults({{"left_density", 1.0}, {"left_pressure", 1.0},
-                                           {"right_density", 0.125}, {"right_pressure", 0.1},
+  const Parameters q = sod->with_defaults({{"left_density", 1.0},
+                                           {"left_pressure", 1.0},
+                                           {"right_density", 0.125},
+                                           {"right_pressure", 0.1},
                                            {"diaphragm", 0.5}});
   EXPECT_DOUBLE_EQ(sod->value(q, 0.1, 0.2), 1.0);
   EXPECT_DOUBLE_EQ(sod->value(q, 0.95, 0.2), 0.125);
   EXPECT_NEAR(sod->value(q, 0.8, 0.2), 0.2656, 1e-3);  // Toro's shocked state
   const AnalyticSolution* terzaghi = find_analytic_solution("terzaghi_excess_pressure");
   ASSERT_NE(terzaghi, nullptr);
-  const Parameters t = terzaghi->with_defaults({{"height", 1.0}, {"load", 1.0e4},
-                                                {"consolidation_coefficient", 1.0}});
+  const Parameters t = terzaghi->with_defaults(
+      {{"height", 1.0}, {"load", 1.0e4}, {"consolidation_coefficient", 1.0}});
   EXPECT_NEAR(terzaghi->value(t, 0.0, 1e-6), 1.0e4, 1.0);  // undrained at the bottom at first
   EXPECT_NEAR(terzaghi->value(t, 1.0, 0.5), 0.0, 1e-9);    // drained at the top
   EXPECT_EQ(find_analytic_solution("nothing"), nullptr);

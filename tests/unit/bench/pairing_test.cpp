@@ -1,8 +1,9 @@
+#include "bench/pairing.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "bench/pairing.hpp"
 #include "cosim/error.hpp"
 #include "registered_backend.hpp"
 #include "scratch_directory.hpp"
@@ -10,8 +11,8 @@
 namespace cosim::bench {
 namespace {
 
-using testing::backend;
 using cosim::testing::ScratchDirectory;
+using testing::backend;
 
 std::vector<std::string> exchanged(const YAML::Node& job) {
   std::vector<std::string> fields;
@@ -36,14 +37,17 @@ Scenario porous_scenario(const std::string& drag) {
 }
 
 const char* const soil_text =
-    "kind: mpm_case\ndimension: 2\ncoupling:\n  exchange_grid: {factor: 2}\n  surface: {cells: [10]}\n";
+    "kind: mpm_case\ndimension: 2\ncoupling:\n  exchange_grid: {factor: 2}\n  surface: {cells: "
+    "[10]}\n";
 
 TEST(Pairing, IceSendsThePressureForceAndSolvesTheDrag) {
   ScratchDirectory dir;
-  const Scenario s = porous_scenario("{law: kozeny_carman, permeability: field, fluid_viscosity: 1e-3}");
-  const PairedJob p = make_paired_job(backend("ice"), s, InputFile::read(dir.write("soil.yaml", soil_text)),
-                                      InputFile::read(dir.write("water.yaml", "kind: ice_case\n")),
-                                      "column_ice", "/in/soil.yaml", "/in/water.yaml");
+  const Scenario s =
+      porous_scenario("{law: kozeny_carman, permeability: field, fluid_viscosity: 1e-3}");
+  const PairedJob p =
+      make_paired_job(backend("ice"), s, InputFile::read(dir.write("soil.yaml", soil_text)),
+                      InputFile::read(dir.write("water.yaml", "kind: ice_case\n")), "column_ice",
+                      "/in/soil.yaml", "/in/water.yaml");
   const YAML::Node job = p.job.root();
   EXPECT_EQ(job["participants"]["water"]["executable"].as<std::string>(), "ice_fluid");
   EXPECT_EQ(job["participants"]["water"]["config"].as<std::string>(), "/in/water.yaml");
@@ -63,10 +67,12 @@ TEST(Pairing, IceSendsThePressureForceAndSolvesTheDrag) {
 
 TEST(Pairing, OpenFoamReadsTheOptionalVolumeFluxAndNoPressureForce) {
   ScratchDirectory dir;
-  const Scenario s = porous_scenario("{law: kozeny_carman, grain_size: 1e-3, fluid_viscosity: 1e-3}");
+  const Scenario s =
+      porous_scenario("{law: kozeny_carman, grain_size: 1e-3, fluid_viscosity: 1e-3}");
   const PairedJob p = make_paired_job(
       backend("openfoam"), s, InputFile::read(dir.write("soil.yaml", soil_text)),
-      InputFile::read(dir.write("water.yaml", "kind: openfoam_case\ndirectory: .\n")), "c", "s", "w");
+      InputFile::read(dir.write("water.yaml", "kind: openfoam_case\ndirectory: .\n")), "c", "s",
+      "w");
   const YAML::Node job = p.job.root();
   EXPECT_EQ(job["participants"]["water"]["executable"].as<std::string>(), "openfoam_adapter");
   EXPECT_EQ(job["participants"]["water"]["meshes"]["openfoam_cells"]["kind"].as<std::string>(),
@@ -79,9 +85,9 @@ TEST(Pairing, OpenFoamReadsTheOptionalVolumeFluxAndNoPressureForce) {
 TEST(Pairing, ShallowWaterExchangesTheBedAndItsTraction) {
   ScratchDirectory dir;
   Scenario s = porous_scenario("");
-  const PairedJob p = make_paired_job(backend("swe"), s, InputFile::read(dir.write("soil.yaml", soil_text)),
-                                      InputFile::read(dir.write("water.yaml", "kind: swe_case\n")),
-                                      "c", "s", "w");
+  const PairedJob p =
+      make_paired_job(backend("swe"), s, InputFile::read(dir.write("soil.yaml", soil_text)),
+                      InputFile::read(dir.write("water.yaml", "kind: swe_case\n")), "c", "s", "w");
   const YAML::Node job = p.job.root();
   EXPECT_EQ(job["participants"]["soil"]["meshes"]["mpm_surface"]["dim"].as<int>(), 1);
   EXPECT_EQ(job["participants"]["water"]["meshes"]["swe_cells"]["kind"].as<std::string>(),
@@ -94,16 +100,16 @@ TEST(Pairing, ShallowWaterExchangesTheBedAndItsTraction) {
 
 TEST(Pairing, RefusesAPorousPairingWithoutADragLaw) {
   ScratchDirectory dir;
-  EXPECT_THROW(make_paired_job(backend("ice"), porous_scenario(""),
-                               InputFile::read(dir.write("soil.yaml", soil_text)),
-                               InputFile::read(dir.write("water.yaml", "kind: ice_case\n")), "c",
-                               "s", "w"),
-               InputError);
-  EXPECT_THROW(make_paired_job(backend("swe"), porous_scenario(""),
-                               InputFile::read(dir.write("bare.yaml", "kind: mpm_case\n")),
-                               InputFile::read(dir.write("water.yaml", "kind: swe_case\n")), "c",
-                               "s", "w"),
-               InputError);  // no surface grid for the bed
+  EXPECT_THROW(
+      make_paired_job(backend("ice"), porous_scenario(""),
+                      InputFile::read(dir.write("soil.yaml", soil_text)),
+                      InputFile::read(dir.write("water.yaml", "kind: ice_case\n")), "c", "s", "w"),
+      InputError);
+  EXPECT_THROW(
+      make_paired_job(backend("swe"), porous_scenario(""),
+                      InputFile::read(dir.write("bare.yaml", "kind: mpm_case\n")),
+                      InputFile::read(dir.write("water.yaml", "kind: swe_case\n")), "c", "s", "w"),
+      InputError);  // no surface grid for the bed
 }
 
 }  // namespace

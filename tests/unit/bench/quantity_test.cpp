@@ -1,8 +1,9 @@
+#include "bench/quantity.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "bench/quantity.hpp"
 #include "cosim/io/snapshot_reader.hpp"
 #include "cosim/io/snapshot_writer.hpp"
 #include "registered_backend.hpp"
@@ -41,7 +42,7 @@ TEST(SnapshotReader, ReadsTimesFieldsAndTheGrid) {
   ASSERT_TRUE(r.grid().has_value());
   EXPECT_EQ(r.grid()->cells[0], 4);
   EXPECT_DOUBLE_EQ(r.grid()->spacing[1], 0.5);
-  EXPECT_EQ(r.element_at(1, {1.2, 0.7, 0.0}), 6u);  // i = 2, j = 1
+  EXPECT_EQ(r.element_at(1, {1.2, 0.7, 0.0}), 6u);   // i = 2, j = 1
   EXPECT_EQ(r.element_at(1, {9.0, -3.0, 0.0}), 3u);  // clamped
   EXPECT_DOUBLE_EQ(r.field(1, "alpha_water").at(4), 0.5);
   EXPECT_FALSE(r.has_field(0, "velocity"));
@@ -53,16 +54,18 @@ TEST(Quantity, AProfileSamplesTheSnapshotNearestItsTime) {
   ScratchDirectory dir;
   write_vof_snapshots(dir.path() / "out");
   const RunLayout run{&backend("openfoam"), false, dir.path() / "input", dir.path() / "out"};
-  const Measurement m = measure(
-      quantity("profile", "{field: pressure, from: [0.25, 0.25], to: [1.75, 0.25], points: 4, "
-                          "time: 0.98, offset: {openfoam: 10, ice: 0}}"),
-      run);
+  const Measurement m =
+      measure(quantity("profile",
+                       "{field: pressure, from: [0.25, 0.25], to: [1.75, 0.25], points: 4, "
+                       "time: 0.98, offset: {openfoam: 10, ice: 0}}"),
+              run);
   EXPECT_DOUBLE_EQ(m.time, 1.0);
   EXPECT_EQ(m.y, (std::vector<double>{0, 1, 2, 3}));
   EXPECT_EQ(m.abscissa, "x [m]");
   // A time no snapshot is near is refused, not measured elsewhere.
-  EXPECT_THROW(measure(quantity("profile", "{field: pressure, from: [0, 0], to: [1, 0], time: 5}"), run),
-               Error);
+  EXPECT_THROW(
+      measure(quantity("profile", "{field: pressure, from: [0, 0], to: [1, 0], time: 5}"), run),
+      Error);
   const Measurement surface = measure(
       quantity("profile", "{field: free_surface, from: [0.25, 0], to: [1.75, 0], points: 4}"), run);
   EXPECT_EQ(surface.y, (std::vector<double>{0.75, 0.75, 0.5, 0.5}));
@@ -84,16 +87,20 @@ TEST(Quantity, AGaugeColumnInTheBackendsNamingReducedAsAsked) {
             "time [s],p_probe [Pa],ux_probe [m/s]\n0,5,0\n0.5,7,1\n1.0,6,2\n");
   const RunLayout ice{&backend("ice"), true, dir.path() / "input", dir.path() / "out"};
   EXPECT_DOUBLE_EQ(*measure(quantity("gauge", "{name: probe, variable: pressure}"), ice).value, 6);
-  EXPECT_DOUBLE_EQ(*measure(quantity("gauge", "{name: probe, variable: pressure, at: max}"), ice).value, 7);
   EXPECT_DOUBLE_EQ(
-      *measure(quantity("gauge", "{name: probe, variable: pressure, at: 0.4, offset: 5}"), ice).value, 2);
-  EXPECT_DOUBLE_EQ(*measure(quantity("gauge", "{name: probe, variable: velocity_x, at: first_above, "
-                                              "threshold: 1.5}"),
+      *measure(quantity("gauge", "{name: probe, variable: pressure, at: max}"), ice).value, 7);
+  EXPECT_DOUBLE_EQ(
+      *measure(quantity("gauge", "{name: probe, variable: pressure, at: 0.4, offset: 5}"), ice)
+           .value,
+      2);
+  EXPECT_DOUBLE_EQ(*measure(quantity("gauge",
+                                     "{name: probe, variable: velocity_x, at: first_above, "
+                                     "threshold: 1.5}"),
                             ice)
                         .value,
                    1.0);
-  const Measurement series =
-      measure(quantity("gauge", "{name: probe, variable: velocity_x, at: series, divide_by: 2}"), ice);
+  const Measurement series = measure(
+      quantity("gauge", "{name: probe, variable: velocity_x, at: series, divide_by: 2}"), ice);
   EXPECT_EQ(series.y, (std::vector<double>{0, 0.5, 1}));
   EXPECT_THROW(measure(quantity("gauge", "{name: probe, variable: depth}"), ice), Error);
   EXPECT_THROW(measure(quantity("gauge", "{name: other, variable: pressure}"), ice), Error);
@@ -101,10 +108,12 @@ TEST(Quantity, AGaugeColumnInTheBackendsNamingReducedAsAsked) {
 
 TEST(Quantity, ANumberOfASummary) {
   ScratchDirectory dir;
-  dir.write("out/summary.json", R"({"metrics": {"max_conservative_mapping_error": {"value": 3e-16}}})");
+  dir.write("out/summary.json",
+            R"({"metrics": {"max_conservative_mapping_error": {"value": 3e-16}}})");
   const RunLayout run{&backend("coupler"), true, dir.path() / "input", dir.path() / "out"};
   EXPECT_DOUBLE_EQ(
-      *measure(quantity("summary", "{value: /metrics/max_conservative_mapping_error/value}"), run).value,
+      *measure(quantity("summary", "{value: /metrics/max_conservative_mapping_error/value}"), run)
+           .value,
       3e-16);
   EXPECT_THROW(measure(quantity("summary", "{value: /metrics/none/value}"), run), Error);
 }

@@ -1,8 +1,9 @@
+#include "bench/report.hpp"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
 
-#include "bench/report.hpp"
 #include "cosim/io/csv_table.hpp"
 #include "registered_backend.hpp"
 #include "scratch_directory.hpp"
@@ -86,7 +87,8 @@ TEST(Report, SaysWhichPairingWasClosestAndWhichCheapest) {
 TEST(Report, TheMarkdownTableKeepsItsColumns) {
   ScratchDirectory dir;
   TwoBackends b;
-  write_report(dir.path() / "report.md", b.suite, b.results, {"test machine", "now", Resolution::coarse, false, "none"});
+  write_report(dir.path() / "report.md", b.suite, b.results,
+               {"test machine", "now", Resolution::coarse, false, "none"});
   std::ifstream in(dir.path() / "report.md");
   std::string line, row;
   while (std::getline(in, line))

@@ -1,8 +1,9 @@
+#include "bench/runner.hpp"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
 
-#include "bench/runner.hpp"
 #include "registered_backend.hpp"
 #include "scratch_directory.hpp"
 

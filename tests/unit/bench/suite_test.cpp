@@ -1,8 +1,9 @@
+#include "bench/suite.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "bench/suite.hpp"
 #include "cosim/error.hpp"
 #include "scratch_directory.hpp"
 
@@ -51,7 +52,8 @@ TEST(Suite, ReadsScenariosBackendsOverridesAndMetrics) {
   ASSERT_EQ(suite.scenarios.size(), 1u);
   const Scenario& s = suite.scenarios[0];
   ASSERT_TRUE(s.coupling.has_value());
-  EXPECT_EQ(s.coupling->soil, std::filesystem::absolute(dir.path() / "soil.yaml").lexically_normal());
+  EXPECT_EQ(s.coupling->soil,
+            std::filesystem::absolute(dir.path() / "soil.yaml").lexically_normal());
   EXPECT_DOUBLE_EQ(s.coupling->window, 0.1);
   ASSERT_EQ(s.backends.size(), 2u);
   EXPECT_EQ(s.backends[0].backend->name, "ice");
@@ -101,25 +103,27 @@ TEST_P(SuiteRefuses, WithTheFileLineAndKey) {
 INSTANTIATE_TEST_SUITE_P(
     Mistakes, SuiteRefuses,
     ::testing::Values(
-        BadSuite{"an unknown backend", "      ice: {fluid: ice.yaml}", "      icee: {fluid: ice.yaml}",
-                 "unknown backend 'icee'"},
+        BadSuite{"an unknown backend", "      ice: {fluid: ice.yaml}",
+                 "      icee: {fluid: ice.yaml}", "unknown backend 'icee'"},
         BadSuite{"two input forms", "      ice: {fluid: ice.yaml}",
-                 "      ice: {fluid: ice.yaml, case: ice.yaml}", "exactly one of case, fluid and job"},
-        BadSuite{"a missing fluid file", "{fluid: ice.yaml}", "{fluid: nowhere.yaml}", "nowhere.yaml"},
+                 "      ice: {fluid: ice.yaml, case: ice.yaml}",
+                 "exactly one of case, fluid and job"},
+        BadSuite{"a missing fluid file", "{fluid: ice.yaml}", "{fluid: nowhere.yaml}",
+                 "nowhere.yaml"},
         BadSuite{"a coupled fluid without soil", "    soil: soil.yaml\n", "",
                  "a coupled scenario gives both `soil` and `coupling`"},
-        BadSuite{"an override of a role the run lacks", "set: {soil:", "set: {case:",
-                 "'case' is not an input of this run"},
-        BadSuite{"an unknown analytic solution", "analytic: darcy_pore_velocity",
-                 "analytic: darcy", "no analytic solution 'darcy'"},
+        BadSuite{"an override of a role the run lacks",
+                 "set: {soil:", "set: {case:", "'case' is not an input of this run"},
+        BadSuite{"an unknown analytic solution", "analytic: darcy_pore_velocity", "analytic: darcy",
+                 "no analytic solution 'darcy'"},
         BadSuite{"a missing parameter", "pressure_drop: 1.0, ", "",
                  "needs the parameter 'pressure_drop'"},
         BadSuite{"an unknown parameter", "length: 1.0}", "length: 1.0, lenght: 2}",
                  "'lenght' is not a parameter"},
-        BadSuite{"a tolerance without reference",
-                 "        reference: {csv: ref.csv, x: t, y: v}\n", "        tolerance: 0.1\n",
-                 "a tolerance needs a reference"},
-        BadSuite{"two quantity kinds", "quantity: {gauge: {name: g, variable: pressure, at: series}}",
+        BadSuite{"a tolerance without reference", "        reference: {csv: ref.csv, x: t, y: v}\n",
+                 "        tolerance: 0.1\n", "a tolerance needs a reference"},
+        BadSuite{"two quantity kinds",
+                 "quantity: {gauge: {name: g, variable: pressure, at: series}}",
                  "quantity: {gauge: {name: g, variable: pressure}, soil: {measure: front}}",
                  "exactly one kind"},
         BadSuite{"a csv reference without its columns", "{csv: ref.csv, x: t, y: v}",

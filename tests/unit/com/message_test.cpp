@@ -3,10 +3,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <tuple>
-
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "com/handshake.hpp"
 #include "cosim/error.hpp"
@@ -164,9 +163,14 @@ TEST(Handshake, AHelloWithNumbersOutOfRangeIsMalformed) {
   EXPECT_NO_THROW(parse_hello(hello("12", "2", "1"), "s"));
   for (const auto& [pid, dim, components] :
        std::vector<std::tuple<std::string, std::string, std::string>>{
-           {"1e300", "2", "1"}, {"-5", "2", "1"}, {"18446744073709551615", "2", "1"},
-           {"12", "1e300", "1"}, {"12", "2.5", "1"}, {"12", "4", "1"},
-           {"12", "2", "4294967297"}, {"12", "2", "-1e300"}})
+           {"1e300", "2", "1"},
+           {"-5", "2", "1"},
+           {"18446744073709551615", "2", "1"},
+           {"12", "1e300", "1"},
+           {"12", "2.5", "1"},
+           {"12", "4", "1"},
+           {"12", "2", "4294967297"},
+           {"12", "2", "-1e300"}})
     EXPECT_THROW(parse_hello(hello(pid, dim, components), "s"), ProtocolError)
         << pid << " " << dim << " " << components;
 }

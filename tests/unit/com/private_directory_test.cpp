@@ -21,8 +21,8 @@ pid_t a_dead_pid() {
 }
 
 fs::path scratch(const std::string& name) {
-  const fs::path root = fs::temp_directory_path() / ("private_directory_test_" + name + "_" +
-                                                     std::to_string(::getpid()));
+  const fs::path root = fs::temp_directory_path() /
+                        ("private_directory_test_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(root);
   fs::create_directories(root);
   return root;

@@ -29,11 +29,14 @@ SelectionTable<Shape> shapes() {
   Schema square = Schema::object("A square.");
   square.required("type", Schema::string(), "Model name.")
       .required("side", Schema::number().positive().unit("m"), "Side length.");
-  table.add("square", square, [](const Node& n) { return std::make_unique<Square>(n["side"].as<double>()); });
+  table.add("square", square,
+            [](const Node& n) { return std::make_unique<Square>(n["side"].as<double>()); });
   return table;
 }
 
-Node root_of(const std::string& text) { return Document::load_string(text, "shapes.yaml").root(); }
+Node root_of(const std::string& text) {
+  return Document::load_string(text, "shapes.yaml").root();
+}
 
 TEST(SelectionTable, MakesTheModelNamedByType) {
   const auto shape = shapes().make(root_of("{type: square, side: 2.0}"));
@@ -41,12 +44,14 @@ TEST(SelectionTable, MakesTheModelNamedByType) {
 }
 
 TEST(SelectionTable, ValidatesAgainstTheModelsSchemaBeforeMaking) {
-  const InputError error = input_error_from([] { (void)shapes().make(root_of("{type: square, side: -1}")); });
+  const InputError error =
+      input_error_from([] { (void)shapes().make(root_of("{type: square, side: -1}")); });
   EXPECT_NE(std::string(error.what()).find("side"), std::string::npos);
 }
 
 TEST(SelectionTable, RefusesAnUnknownTypeWithASuggestionAtItsKey) {
-  const InputError error = input_error_from([] { (void)shapes().make(root_of("{type: sqare, side: 1}")); });
+  const InputError error =
+      input_error_from([] { (void)shapes().make(root_of("{type: sqare, side: 1}")); });
   const std::string text = error.what();
   EXPECT_NE(text.find("shapes.yaml:1:"), std::string::npos) << text;
   EXPECT_NE(text.find("unknown shape 'sqare'"), std::string::npos) << text;

@@ -1,9 +1,9 @@
-#include "cplscheme/explicit_stability.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
+
+#include "cplscheme/explicit_stability.hpp"
 
 namespace cosim::cplscheme {
 namespace {

@@ -29,8 +29,8 @@ TEST(OperatorCache, OneOperatorPerMeshPairConstraintAndKernel) {
   quadratic.kernel = mapping::Kernel::quadratic_bspline;
   cache.get(quadratic, fine, 1, coarse, 1);
   EXPECT_EQ(cache.builds(), 3u);
-  cache.get({{"fluid", "cells"}, {"solid", "grid"}, consistent.constraint, consistent.kernel},
-            fine, 1, coarse, 1);
+  cache.get({{"fluid", "cells"}, {"solid", "grid"}, consistent.constraint, consistent.kernel}, fine,
+            1, coarse, 1);
   EXPECT_EQ(cache.builds(), 4u);
 }
 

@@ -10,10 +10,9 @@
 #include <vector>
 
 #include "cosim/error.hpp"
+#include "cosim/exchange/implicit_exchange.hpp"
 #include "exchange/constant_drag.hpp"
 #include "exchange/drag_law_registry.hpp"
-#include "exchange/drag_law_registry.hpp"
-#include "cosim/exchange/implicit_exchange.hpp"
 #include "exchange/kozeny_carman.hpp"
 
 namespace cosim::exchange {

@@ -60,8 +60,9 @@ TEST(IceCaseSchemaDefaults, ACaseWithoutTheOptionalKeysReadsTheSchemaDefaults) {
   EXPECT_EQ(n.limiter, limiter_from_name(schema_default<std::string>("numerics.limiter")));
   EXPECT_EQ(n.pressure.tolerance, schema_default<double>("numerics.pressure.tolerance"));
   EXPECT_EQ(n.pressure.max_iterations, schema_default<int>("numerics.pressure.max_iterations"));
-  EXPECT_EQ(n.pressure.preconditioner, pressure_preconditioner_from_name(schema_default<std::string>(
-                                           "numerics.pressure.preconditioner")));
+  EXPECT_EQ(n.pressure.preconditioner,
+            pressure_preconditioner_from_name(
+                schema_default<std::string>("numerics.pressure.preconditioner")));
   EXPECT_EQ(n.equilibration.tolerance, schema_default<double>("numerics.equilibration.tolerance"));
   EXPECT_EQ(n.equilibration.max_iterations,
             schema_default<int>("numerics.equilibration.max_iterations"));

@@ -49,25 +49,30 @@ TEST(IceCaseLimits, StatesItsCellsAndMemory) {
   EXPECT_THAT(c.size.describe(), HasSubstr("6 000 cells, about "));
   // A second material costs memory in every cell.
   const CaseDescription water_only =
-      load_case_text(replaced(replaced(tank, "  air:\n    eos: {type: ideal_gas, gas_constant: 287.0, "
-                                              "heat_capacity_ratio: 1.4}\n", ""),
+      load_case_text(replaced(replaced(tank,
+                                       "  air:\n    eos: {type: ideal_gas, gas_constant: 287.0, "
+                                       "heat_capacity_ratio: 1.4}\n",
+                                       ""),
                               "fill: air", "fill: water"),
                      "case.yaml");
   EXPECT_LT(water_only.size.memory_bytes(), c.size.memory_bytes());
 }
 
 TEST(IceCaseLimits, TooManyCellsAreRefusedWithTheEstimate) {
-  const std::string e = error_of(replaced(tank, "cells: [10, 20, 30]", "cells: [1000, 1000, 1000]"));
+  const std::string e =
+      error_of(replaced(tank, "cells: [10, 20, 30]", "cells: [1000, 1000, 1000]"));
   EXPECT_THAT(e, HasSubstr("case.yaml:1:1: key 'limits.memory_gib': the run would need about"));
   EXPECT_THAT(e, HasSubstr("(1 000 000 000 cells)"));
-  EXPECT_THAT(error_of(replaced(tank, "cells: [10, 20, 30]", "cells: [10, 20, 30]}\nlimits: {memory_gib: 0.001")),
+  EXPECT_THAT(error_of(replaced(tank, "cells: [10, 20, 30]",
+                                "cells: [10, 20, 30]}\nlimits: {memory_gib: 0.001")),
               HasSubstr("case.yaml:5:22: key 'limits.memory_gib'"));
 }
 
 TEST(IceCaseLimits, CellsOrFacesBeyondIntIndicesAreRefusedWhateverTheLimit) {
   const std::string huge = replaced(tank, "cells: [10, 20, 30]", "cells: [2000, 2000, 1000]") +
                            "limits: {memory_gib: 1.0e+9}\n";
-  EXPECT_THAT(error_of(huge), HasSubstr("key 'grid.cells': the grid has 4 002 000 000 faces normal to x"));
+  EXPECT_THAT(error_of(huge),
+              HasSubstr("key 'grid.cells': the grid has 4 002 000 000 faces normal to x"));
 }
 
 TEST(IceCaseLimits, OutputIntervalsGivingMoreThanAMillionOutputsAreRefused) {

@@ -84,8 +84,8 @@ TEST(IceCase, ReadsEveryKeyAndTheDefaults) {
   EXPECT_TRUE(c.coupling.drag_in_solver);
   EXPECT_DOUBLE_EQ(c.coupling.minimum_porosity, 0.1);
   EXPECT_TRUE(c.coupling.heat_exchange);
-  EXPECT_FALSE(load_case_text(replaced(dam_break, "drag: ice, ", ""), "case.yaml")
-                   .coupling.drag_in_solver);
+  EXPECT_FALSE(
+      load_case_text(replaced(dam_break, "drag: ice, ", ""), "case.yaml").coupling.drag_in_solver);
   const auto solver = make_solver<2>(c);
   EXPECT_GT(solver->state().materials[0].volume_fraction[0], 0.99);  // water in the corner
   EXPECT_LT(solver->state().materials[0].volume_fraction[7], 1e-5);

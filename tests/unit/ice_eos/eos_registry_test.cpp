@@ -1,3 +1,5 @@
+#include "ice/eos/eos_registry.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,7 +9,6 @@
 
 #include "cosim/config/document.hpp"
 #include "cosim/error.hpp"
-#include "ice/eos/eos_registry.hpp"
 #include "ice/eos/ideal_gas.hpp"
 #include "ice/eos/linear_water.hpp"
 #include "input_error.hpp"
@@ -42,7 +43,8 @@ TEST(EosRegistry, ListsTheBuiltInModels) {
 }
 
 TEST(EosRegistry, BuildsAnIdealGasFromEitherHeatParameter) {
-  const auto by_ratio = eos_from_yaml("type: ideal_gas\ngas_constant: 287.05\nheat_capacity_ratio: 1.4\n");
+  const auto by_ratio =
+      eos_from_yaml("type: ideal_gas\ngas_constant: 287.05\nheat_capacity_ratio: 1.4\n");
   ASSERT_EQ(by_ratio->type(), "ideal_gas");
   EXPECT_DOUBLE_EQ(by_ratio->specific_heat(), 287.05 / 0.4);
   EXPECT_DOUBLE_EQ(by_ratio->pressure(1.2, 300.0), 1.2 * 287.05 * 300.0);
@@ -51,7 +53,8 @@ TEST(EosRegistry, BuildsAnIdealGasFromEitherHeatParameter) {
 }
 
 TEST(EosRegistry, BuildsLinearWaterWithDefaultsAndOverrides) {
-  const auto w = eos_from_yaml("type: linear_water\nbulk_modulus: 2.0e9\nreference_density: 999.8\n");
+  const auto w =
+      eos_from_yaml("type: linear_water\nbulk_modulus: 2.0e9\nreference_density: 999.8\n");
   ASSERT_EQ(w->type(), "linear_water");
   const auto& water = dynamic_cast<const LinearWater&>(*w);
   EXPECT_DOUBLE_EQ(water.stiffness(), 2.0e9 / 999.8);
@@ -93,17 +96,22 @@ TEST(EosRegistry, NonPhysicalParametersAreRefusedAtTheirKeys) {
   error = eos_error("type: ideal_gas\ngas_constant: 287\nheat_capacity_ratio: 1.0\n");
   EXPECT_EQ(error.where().line, 3);
   EXPECT_TRUE(mentions(error, "heat_capacity_ratio must be > 1 (got 1)"));
-  error = eos_error("type: ideal_gas\ngas_constant: 287\nspecific_heat: 718\nheat_capacity_ratio: 1.4\n");
+  error = eos_error(
+      "type: ideal_gas\ngas_constant: 287\nspecific_heat: 718\nheat_capacity_ratio: 1.4\n");
   EXPECT_TRUE(mentions(error, "not both"));
   error = eos_error("type: linear_water\nbulk_modulus: -2e9\nreference_density: 999.8\n");
   EXPECT_EQ(error.key_path(), "bulk_modulus");
   error = eos_error("type: linear_water\nbulk_modulus: 2e9\nreference_density: 0\n");
   EXPECT_EQ(error.key_path(), "reference_density");
-  error = eos_error("type: linear_water\nbulk_modulus: 2e9\nreference_density: 999.8\nreference_temperature: 0\n");
+  error = eos_error(
+      "type: linear_water\nbulk_modulus: 2e9\nreference_density: 999.8\nreference_temperature: "
+      "0\n");
   EXPECT_EQ(error.key_path(), "reference_temperature");
-  error = eos_error("type: linear_water\nbulk_modulus: 2e9\nreference_density: 999.8\nthermal_expansion: -1\n");
+  error = eos_error(
+      "type: linear_water\nbulk_modulus: 2e9\nreference_density: 999.8\nthermal_expansion: -1\n");
   EXPECT_EQ(error.key_path(), "thermal_expansion");
-  error = eos_error("type: linear_water\nbulk_modulus: 2e9\nreference_density: 999.8\nthermal_expnsion: 2e-4\n");
+  error = eos_error(
+      "type: linear_water\nbulk_modulus: 2e9\nreference_density: 999.8\nthermal_expnsion: 2e-4\n");
   EXPECT_TRUE(mentions(error, "thermal_expansion"));
 }
 

@@ -57,8 +57,8 @@ void expect_derivatives_match_differences(const EquationOfState& eos, const Stat
   EXPECT_LE(alpha_error, 1e-6) << eos.type();
   std::cout << "    " << eos.type() << ": dP/drho " << eos.dpressure_ddensity(rho, T)
             << " rel. err " << dp_error << " (tol 1e-8); kappa " << eos.compressibility(rho, T)
-            << " rel. err " << kappa_error << " (tol 1e-8); alpha " << eos.thermal_expansivity(rho, T)
-            << " rel. err " << alpha_error << " (tol 1e-6)\n";
+            << " rel. err " << kappa_error << " (tol 1e-8); alpha "
+            << eos.thermal_expansivity(rho, T) << " rel. err " << alpha_error << " (tol 1e-6)\n";
 }
 
 TEST(IdealGas, PressureAndDensityRoundTrip) {
@@ -82,7 +82,8 @@ TEST(IdealGas, IsThePerfectGasLaw) {
 }
 
 TEST(LinearWater, PressureAndDensityRoundTrip) {
-  expect_round_trips(water(), {{999.8, 283.15}, {1000.5, 278.15}, {998.0, 293.15}, {1010.0, 350.0}});
+  expect_round_trips(water(),
+                     {{999.8, 283.15}, {1000.5, 278.15}, {998.0, 293.15}, {1010.0, 350.0}});
 }
 
 TEST(LinearWater, DerivativesMatchFiniteDifferences) {

@@ -1,3 +1,5 @@
+#include "ice/eos/pressure_equilibration.hpp"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -10,7 +12,6 @@
 #include <vector>
 
 #include "eos_test_support.hpp"
-#include "ice/eos/pressure_equilibration.hpp"
 
 namespace ice::testing {
 namespace {
@@ -19,7 +20,9 @@ const IdealGas kAir = air();
 const LinearWater kWater = water();
 const std::array<const EquationOfState*, 2> kAirWater{&kAir, &kWater};
 
-double sum(const std::vector<double>& values) { return std::accumulate(values.begin(), values.end(), 0.0); }
+double sum(const std::vector<double>& values) {
+  return std::accumulate(values.begin(), values.end(), 0.0);
+}
 
 // The error a call throws, printed as a user reads it.
 template <class Call>
@@ -46,7 +49,8 @@ void expect_common_pressure(std::span<const EquationOfState* const> materials,
     const EquationOfState& eos = *materials[f];
     const double rho = cell.density[f];
     const double own = eos.pressure(rho, temperature[f]);
-    const double tolerance = 4 * eps * (std::abs(cell.pressure) + rho * eos.dpressure_ddensity(rho, temperature[f]));
+    const double tolerance =
+        4 * eps * (std::abs(cell.pressure) + rho * eos.dpressure_ddensity(rho, temperature[f]));
     EXPECT_NEAR(own, cell.pressure, tolerance) << eos.type();
     std::cout << "    " << eos.type() << ": P_f(rho_f, T_f) - P = " << own - cell.pressure
               << " Pa (tolerance " << tolerance << ")\n";
@@ -63,8 +67,9 @@ TEST(PressureEquilibration, IdealGasAloneGivesRhobarRT) {
     EXPECT_NEAR(cell.volume_fraction[0], 1.0, 2 * eps);
     EXPECT_DOUBLE_EQ(cell.density[0], rhobar);
     EXPECT_DOUBLE_EQ(cell.compressibility[0], 1.0 / cell.pressure);
-    std::cout << "    rhobar " << rhobar << ": P / (rhobar R T) - 1 = " << cell.pressure / expected - 1.0
-              << " (tolerance " << 2 * eps << ") in " << cell.iterations << " iterations (bound 4)\n";
+    std::cout << "    rhobar " << rhobar
+              << ": P / (rhobar R T) - 1 = " << cell.pressure / expected - 1.0 << " (tolerance "
+              << 2 * eps << ") in " << cell.iterations << " iterations (bound 4)\n";
     EXPECT_LE(cell.iterations, 4);
   }
 }
@@ -79,7 +84,8 @@ TEST(PressureEquilibration, AirAndWaterFillThePoresAtOneCommonPressure) {
   EXPECT_GT(cell.pressure, 0.0);
   for (std::size_t f = 0; f < 2; ++f) {
     EXPECT_DOUBLE_EQ(cell.volume_fraction[f], bulk[f] / cell.density[f]);
-    EXPECT_DOUBLE_EQ(cell.compressibility[f], kAirWater[f]->compressibility(cell.density[f], temperature[f]));
+    EXPECT_DOUBLE_EQ(cell.compressibility[f],
+                     kAirWater[f]->compressibility(cell.density[f], temperature[f]));
   }
   expect_common_pressure(kAirWater, temperature, cell);
   std::cout << "    P = " << cell.pressure << " Pa, phi = (" << cell.volume_fraction[0] << ", "
@@ -105,8 +111,8 @@ TEST(PressureEquilibration, AirAndWaterMatchTheQuadraticSolvedByHand) {
   const double error = std::abs(cell.pressure / expected - 1.0);
   EXPECT_LE(error, 1e-12);
   EXPECT_NEAR(cell.volume_fraction[0], rhobar_a * RT / expected, 1e-14);
-  std::cout << "    P = " << cell.pressure << " Pa, by hand " << expected << " Pa, rel. error " << error
-            << " (tolerance 1e-12)\n";
+  std::cout << "    P = " << cell.pressure << " Pa, by hand " << expected << " Pa, rel. error "
+            << error << " (tolerance 1e-12)\n";
 }
 
 TEST(PressureEquilibration, ConvergesInFewIterations) {
@@ -136,7 +142,8 @@ TEST(PressureEquilibration, IdealGasKeepsAPositivePressureFromAFarGuess) {
   const double expected = 1e-3 * 287.05 * 250.0 / 0.2;
   EXPECT_NEAR(cell.pressure, expected, 4 * eps * expected);
   EXPECT_LE(cell.iterations, 3);
-  std::cout << "    from 1e9 Pa to " << cell.pressure << " Pa in " << cell.iterations << " iterations\n";
+  std::cout << "    from 1e9 Pa to " << cell.pressure << " Pa in " << cell.iterations
+            << " iterations\n";
 }
 
 TEST(PressureEquilibration, WaterAloneMayBeInTension) {
@@ -163,7 +170,8 @@ TEST(PressureEquilibration, MixtureCompressibilityWeighsByVolumeFraction) {
   const CellEquilibrium cell = equilibrate_pressure(kAirWater, bulk, temperature, 0.4);
   const double kappa = mixture_compressibility(cell.volume_fraction, cell.compressibility);
   const double expected = (cell.volume_fraction[0] / cell.pressure +
-                           cell.volume_fraction[1] / (cell.density[1] * kWater.stiffness())) / 0.4;
+                           cell.volume_fraction[1] / (cell.density[1] * kWater.stiffness())) /
+                          0.4;
   EXPECT_NEAR(kappa, expected, 1e-14 * expected);
   // The air dominates: kappa ~ phi_a / (n P).
   EXPECT_NEAR(kappa * 0.4 * cell.pressure / cell.volume_fraction[0], 1.0, 1e-3);
@@ -172,7 +180,8 @@ TEST(PressureEquilibration, MixtureCompressibilityWeighsByVolumeFraction) {
 TEST(PressureEquilibration, NonConvergenceReportsTheIterations) {
   const std::vector<double> bulk{0.1 * 2.4, 0.3 * 1000.0}, temperature{293.15, 288.15};
   const auto error = equilibration_error([&] {
-    equilibrate_pressure(kAirWater, bulk, temperature, 0.4, 1e10, {.tolerance = 1e-12, .max_iterations = 1});
+    equilibrate_pressure(kAirWater, bulk, temperature, 0.4, 1e10,
+                         {.tolerance = 1e-12, .max_iterations = 1});
   });
   EXPECT_EQ(error.iterations(), 1);
   EXPECT_TRUE(mentions(error, "did not converge in 1 iteration:"));
@@ -185,7 +194,8 @@ TEST(PressureEquilibration, PoresThatCannotBeFilledAreRefused) {
   // Water stretched to half its density with the air absent: only a tension
   // fills the pores, and the air has no state below P = 0.
   const std::vector<double> bulk{0.0, 0.5 * 999.8}, temperature{283.15, 283.15};
-  const auto error = equilibration_error([&] { equilibrate_pressure(kAirWater, bulk, temperature, 1.0); });
+  const auto error =
+      equilibration_error([&] { equilibrate_pressure(kAirWater, bulk, temperature, 1.0); });
   EXPECT_EQ(error.iterations(), 0);
   EXPECT_EQ(error.pressure(), 0.0);
   EXPECT_NEAR(error.residual(), -0.5, 1e-3);
@@ -195,23 +205,28 @@ TEST(PressureEquilibration, PoresThatCannotBeFilledAreRefused) {
 TEST(PressureEquilibration, BadInputIsRefused) {
   const std::vector<double> bulk{0.1, 300.0}, temperature{293.15, 288.15};
   for (const double n : {0.0, -0.1, 1.0 + 1e-12, std::nan("")}) {
-    const auto error = equilibration_error([&] { equilibrate_pressure(kAirWater, bulk, temperature, n); });
+    const auto error =
+        equilibration_error([&] { equilibrate_pressure(kAirWater, bulk, temperature, n); });
     EXPECT_TRUE(mentions(error, "porosity")) << n;
     EXPECT_EQ(error.iterations(), 0);
   }
-  auto error = equilibration_error(
-      [&] { equilibrate_pressure(kAirWater, std::vector<double>{0.1, -1.0}, temperature, 0.4); });
+  auto error = equilibration_error([&] {
+    equilibrate_pressure(kAirWater, std::vector<double>{0.1, -1.0}, temperature, 0.4);
+  });
   EXPECT_TRUE(mentions(error, "material 1 (linear_water): bulk density -1"));
-  error = equilibration_error(
-      [&] { equilibrate_pressure(kAirWater, std::vector<double>{0.0, 0.0}, temperature, 0.4); });
+  error = equilibration_error([&] {
+    equilibrate_pressure(kAirWater, std::vector<double>{0.0, 0.0}, temperature, 0.4);
+  });
   EXPECT_TRUE(mentions(error, "no fluid material has a positive bulk density"));
-  error = equilibration_error(
-      [&] { equilibrate_pressure(kAirWater, bulk, std::vector<double>{0.0, 288.0}, 0.4); });
+  error = equilibration_error([&] {
+    equilibrate_pressure(kAirWater, bulk, std::vector<double>{0.0, 288.0}, 0.4);
+  });
   EXPECT_TRUE(mentions(error, "material 0 (ideal_gas): temperature 0 K"));
   EXPECT_THROW(equilibrate_pressure(kAirWater, std::vector<double>{1.0}, temperature, 0.4),
                std::invalid_argument);
-  EXPECT_THROW(equilibrate_pressure(kAirWater, bulk, temperature, 0.4, one_atmosphere, {.tolerance = 0.0}),
-               std::invalid_argument);
+  EXPECT_THROW(
+      equilibrate_pressure(kAirWater, bulk, temperature, 0.4, one_atmosphere, {.tolerance = 0.0}),
+      std::invalid_argument);
 }
 
 TEST(PressureEquilibration, BatchedMatchesCellByCell) {
@@ -220,7 +235,8 @@ TEST(PressureEquilibration, BatchedMatchesCellByCell) {
   const std::vector<double> water_bulk{0.0, 300.0, 0.55 * 1000.5, 0.299 * 1000.0};
   const std::vector<double> air_T{300.0, 293.15, 280.0, 285.0};
   const std::vector<double> water_T{300.0, 288.15, 280.0, 285.0};
-  const std::vector<MaterialCells> materials{{&kAir, air_bulk, air_T}, {&kWater, water_bulk, water_T}};
+  const std::vector<MaterialCells> materials{{&kAir, air_bulk, air_T},
+                                             {&kWater, water_bulk, water_T}};
   const EquilibratedCells cells = equilibrate_pressure(materials, n, std::vector<double>{});
   ASSERT_EQ(cells.pressure.size(), 4u);
   int most = 0;
@@ -236,7 +252,8 @@ TEST(PressureEquilibration, BatchedMatchesCellByCell) {
     const double filled = cells.volume_fraction[0][c] + cells.volume_fraction[1][c] - n[c];
     EXPECT_LE(std::abs(filled), 1e-12 * n[c]);
     most = std::max(most, one.iterations);
-    std::cout << "    cell " << c << ": P " << cells.pressure[c] << " Pa, sum phi - n " << filled << '\n';
+    std::cout << "    cell " << c << ": P " << cells.pressure[c] << " Pa, sum phi - n " << filled
+              << '\n';
   }
   EXPECT_EQ(cells.most_iterations, most);
 
@@ -291,11 +308,14 @@ TEST(PressureEquilibration, BatchedErrorNamesTheCell) {
   const std::vector<double> n{0.4, 0.4, 0.4};
   const std::vector<double> air_bulk{0.24, 0.24, 0.24}, water_bulk{300.0, 300.0, 300.0};
   const std::vector<double> air_T{293.0, 293.0, -5.0}, water_T{288.0, 288.0, 288.0};
-  const std::vector<MaterialCells> materials{{&kAir, air_bulk, air_T}, {&kWater, water_bulk, water_T}};
-  const auto error = equilibration_error([&] { equilibrate_pressure(materials, n, std::vector<double>{}); });
+  const std::vector<MaterialCells> materials{{&kAir, air_bulk, air_T},
+                                             {&kWater, water_bulk, water_T}};
+  const auto error =
+      equilibration_error([&] { equilibrate_pressure(materials, n, std::vector<double>{}); });
   ASSERT_TRUE(error.cell().has_value());
   EXPECT_EQ(*error.cell(), 2u);
-  EXPECT_TRUE(mentions(error, "cell 2: pressure equilibration: material 0 (ideal_gas): temperature -5 K"));
+  EXPECT_TRUE(
+      mentions(error, "cell 2: pressure equilibration: material 0 (ideal_gas): temperature -5 K"));
 
   const auto slow = equilibration_error([&] {
     const std::vector<double> warm{293.0, 293.0, 293.0};

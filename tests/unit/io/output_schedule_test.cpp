@@ -81,8 +81,8 @@ TEST(OutputSchedule, RefusesAnIntervalGivingMoreThanAMillionOutputs) {
 }
 
 TEST(OutputSchedule, CaseFilesAreRefusedAtTheIntervalsKeyAndLine) {
-  const auto document = config::Document::load_string("kind: x_case\noutput:\n  every: 1.0e-300\n",
-                                                       "case.yaml");
+  const auto document =
+      config::Document::load_string("kind: x_case\noutput:\n  every: 1.0e-300\n", "case.yaml");
   const config::Node every = document.root()["output"]["every"];
   try {
     check_output_interval(every, 10.0);

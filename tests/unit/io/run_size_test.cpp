@@ -18,13 +18,15 @@ using ::testing::HasSubstr;
 constexpr double gib = 1024.0 * 1024.0 * 1024.0;
 
 config::Document case_file(const std::string& text) {
-  return config::Document::load_string("kind: x_case\ngrid: {cells: [10, 10]}\n" + text, "case.yaml");
+  return config::Document::load_string("kind: x_case\ngrid: {cells: [10, 10]}\n" + text,
+                                       "case.yaml");
 }
 
 RunSize two_counts(const config::Node& root, double particles) {
   RunSize size;
   size.fixed_bytes = 0.1 * gib;
-  size.add({"particles", particles, 500.0, std::numeric_limits<std::uint32_t>::max(), root["grid"]});
+  size.add(
+      {"particles", particles, 500.0, std::numeric_limits<std::uint32_t>::max(), root["grid"]});
   size.add({"grid nodes", 20000.0, 1000.0, 1e18, root["grid"]["cells"]});
   return size;
 }
@@ -85,8 +87,9 @@ TEST(RunSize, TheCasesLimitRaisesOrLowersIt) {
   EXPECT_NO_THROW(run_limits_schema().validate(lowered.root()["limits"]));
   EXPECT_THROW(run_limits_schema().validate(case_file("limits: {memory: 4}\n").root()["limits"]),
                InputError);
-  EXPECT_THROW(run_limits_schema().validate(case_file("limits: {memory_gib: 0}\n").root()["limits"]),
-               InputError);
+  EXPECT_THROW(
+      run_limits_schema().validate(case_file("limits: {memory_gib: 0}\n").root()["limits"]),
+      InputError);
 }
 
 TEST(RunSize, ACountBeyondTheIndicesIsRefusedAtItsKeyWhateverTheLimit) {

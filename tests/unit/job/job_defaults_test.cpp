@@ -8,8 +8,8 @@
 
 #include "exchange/drag_law_registry.hpp"
 #include "job/job.hpp"
-#include "scratch_directory.hpp"
 #include "schema_default.hpp"
+#include "scratch_directory.hpp"
 
 namespace cosim::job {
 namespace {

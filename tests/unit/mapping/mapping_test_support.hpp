@@ -5,8 +5,8 @@
 #include <span>
 #include <vector>
 
-#include "mapping/operator.hpp"
 #include "cosim/mesh.hpp"
+#include "mapping/operator.hpp"
 
 // Random geometries and the measures the mapping property tests share.
 namespace cosim::mapping::testing {

@@ -1,7 +1,8 @@
+#include "cosim/mesh.hpp"
+
 #include <gtest/gtest.h>
 
 #include "cosim/error.hpp"
-#include "cosim/mesh.hpp"
 
 namespace cosim {
 namespace {

@@ -75,13 +75,15 @@ TEST(MpmCaseLimits, StatesTheParticlesSeededAndTheGrid) {
 // Before: 10^10 particles per cell were seeded until memory ran out.
 TEST(MpmCaseLimits, AHundredThousandParticlesPerCellAreRefusedBeforeSeeding) {
   // Beyond the particles' 32-bit indices, whatever the limit.
-  const std::string e = error_of(replaced(drop, "particles_per_cell: 2", "particles_per_cell: 100000"));
+  const std::string e =
+      error_of(replaced(drop, "particles_per_cell: 2", "particles_per_cell: 100000"));
   EXPECT_THAT(e, HasSubstr("case.yaml:9:3: key 'bodies': the case makes 160 000 000 000 particles, "
                            "more than the solver's indices hold (4 294 967 295)"));
   EXPECT_THAT(e, HasSubstr("the run would need about"));
   EXPECT_THAT(e, HasSubstr("(160 000 000 000 particles, 441 grid nodes)"));
   // Within the indices, above the memory limit.
-  const std::string m = error_of(replaced(drop, "particles_per_cell: 2", "particles_per_cell: 1000"));
+  const std::string m =
+      error_of(replaced(drop, "particles_per_cell: 2", "particles_per_cell: 1000"));
   EXPECT_THAT(m, HasSubstr("case.yaml:1:1: key 'limits.memory_gib': the run would need about"));
   EXPECT_THAT(m, HasSubstr("(16 000 000 particles, 441 grid nodes)"));
   EXPECT_THAT(m, HasSubstr("raise limits.memory_gib"));
@@ -89,7 +91,8 @@ TEST(MpmCaseLimits, AHundredThousandParticlesPerCellAreRefusedBeforeSeeding) {
 
 TEST(MpmCaseLimits, A3DBodyIsEstimatedFromItsVolume) {
   // 1000 cells of 10^6 particles each.
-  const std::string e = error_of(replaced(cube, "particles_per_cell: 2", "particles_per_cell: 100"));
+  const std::string e =
+      error_of(replaced(cube, "particles_per_cell: 2", "particles_per_cell: 100"));
   EXPECT_THAT(e, HasSubstr("(1 000 000 000 particles, 9 261 grid nodes)"));
   // A grid of 10^12 nodes is refused before any body is looked at.
   EXPECT_THAT(error_of(replaced(cube, "cells: [20, 20, 20]", "cells: [10000, 10000, 10000]")),
@@ -105,14 +108,16 @@ TEST(MpmCaseLimits, TheLimitIsTheCasesToLowerOrRaise) {
 
 TEST(MpmCaseLimits, ParticlesPerCellBeyondTheSeedingsCountersAreRefused) {
   // A sliver of a cell: few particles, but 2.5e9 points per cell to place.
-  const std::string sliver =
-      replaced(drop, "{box: {min: [0.4, 0.5], max: [0.6, 0.7]}}", "{box: {min: [0.4, 0.5], max: [0.401, 0.501]}}");
-  EXPECT_THAT(error_of(replaced(sliver, "particles_per_cell: 2", "particles_per_cell: 50000")),
-              HasSubstr("key 'bodies[0].particles_per_cell': 2 500 000 000 particles per cell, more "
-                        "than the seeding's counters hold (2 147 483 647)"));
+  const std::string sliver = replaced(drop, "{box: {min: [0.4, 0.5], max: [0.6, 0.7]}}",
+                                      "{box: {min: [0.4, 0.5], max: [0.401, 0.501]}}");
+  EXPECT_THAT(
+      error_of(replaced(sliver, "particles_per_cell: 2", "particles_per_cell: 50000")),
+      HasSubstr("key 'bodies[0].particles_per_cell': 2 500 000 000 particles per cell, more "
+                "than the seeding's counters hold (2 147 483 647)"));
   const std::string fine_grid = replaced(sliver, "cells: [20, 20]", "cells: [1000000, 1]");
-  EXPECT_THAT(error_of(replaced(fine_grid, "particles_per_cell: 2", "particles_per_cell: [3000, 1]")),
-              HasSubstr("3000 particles per cell along 1000000 grid cells"));
+  EXPECT_THAT(
+      error_of(replaced(fine_grid, "particles_per_cell: 2", "particles_per_cell: [3000, 1]")),
+      HasSubstr("3000 particles per cell along 1000000 grid cells"));
 }
 
 // Before: an interval of 1e-300 s made the run spin forever in its first step.

@@ -191,10 +191,11 @@ TEST(MpmCaseLoad, UnknownMaterialIsRefusedWithASuggestion) {
 }
 
 TEST(MpmCaseLoad, ParticlesOutsideTheGridNameBodyAndPosition) {
-  const std::string message =
-      error_of(replaced(valid_case, "max: [0.6, 0.7]", "max: [0.6, 1.2]"));
+  const std::string message = error_of(replaced(valid_case, "max: [0.6, 0.7]", "max: [0.6, 1.2]"));
   EXPECT_THAT(message, HasSubstr("case.yaml:13:15: key 'bodies[0].geometry'"));
-  EXPECT_THAT(message, HasSubstr("body 'block' has particles outside the grid, the first at (0.4125, 1.0125)"));
+  EXPECT_THAT(
+      message,
+      HasSubstr("body 'block' has particles outside the grid, the first at (0.4125, 1.0125)"));
 }
 
 TEST(MpmCaseLoad, BodyWithoutParticlesIsRefused) {
@@ -210,8 +211,9 @@ TEST(MpmCaseLoad, CountsBelowOneAreRefused) {
               HasSubstr("key 'bodies[0].particles_per_cell'"));
   EXPECT_THAT(error_of(replaced(valid_case, "particles_per_cell: 2", "particles_per_cell: [2, 0]")),
               HasSubstr("particles_per_cell must be whole numbers >= 1"));
-  EXPECT_THAT(error_of(replaced(valid_case, "cells: [20, 20]", "cells: [20, 0]")),
-              HasSubstr("case.yaml:4:46: key 'grid.cells': grid cells must be whole numbers >= 1, got 0"));
+  EXPECT_THAT(
+      error_of(replaced(valid_case, "cells: [20, 20]", "cells: [20, 0]")),
+      HasSubstr("case.yaml:4:46: key 'grid.cells': grid cells must be whole numbers >= 1, got 0"));
 }
 
 TEST(MpmCaseLoad, VectorsNeedOneValuePerDimension) {
@@ -220,7 +222,8 @@ TEST(MpmCaseLoad, VectorsNeedOneValuePerDimension) {
 }
 
 TEST(MpmCaseLoad, ProbeOutsideItsBodyIsRefused) {
-  const std::string message = error_of(replaced(valid_case, "position: [0.5, 0.6]", "position: [0.9, 0.9]"));
+  const std::string message =
+      error_of(replaced(valid_case, "position: [0.5, 0.6]", "position: [0.9, 0.9]"));
   EXPECT_THAT(message, HasSubstr("key 'probes[0].position'"));
   EXPECT_THAT(message, HasSubstr("probe 'centre' at (0.9, 0.9) is outside body 'block'"));
 }
@@ -231,10 +234,11 @@ TEST(MpmCaseLoad, UnknownBodyInAContactPairIsRefused) {
 }
 
 TEST(MpmCaseLoad, GridNeedsUpperOrSpacing) {
-  EXPECT_THAT(error_of(replaced(valid_case, "upper: [1, 1]", "upper: [1, 1], spacing: [0.05, 0.05]")),
-              HasSubstr("give exactly one of `upper` and `spacing`"));
-  const auto c = load_case_text(replaced(valid_case, "upper: [1, 1]", "spacing: [0.05, 0.05]"),
-                                "case.yaml");
+  EXPECT_THAT(
+      error_of(replaced(valid_case, "upper: [1, 1]", "upper: [1, 1], spacing: [0.05, 0.05]")),
+      HasSubstr("give exactly one of `upper` and `spacing`"));
+  const auto c =
+      load_case_text(replaced(valid_case, "upper: [1, 1]", "spacing: [0.05, 0.05]"), "case.yaml");
   EXPECT_DOUBLE_EQ(c.grid.spacing.y(), 0.05);
 }
 
@@ -274,13 +278,14 @@ TEST(MpmCaseLoad, VelocityHistoryHeaderAndOrderAreChecked) {
 }
 
 TEST(MpmCaseLoad, PrescribedMotionNeedsAHistory) {
-  EXPECT_THAT(error_of(replaced(valid_case, "rigid: {motion: fixed}", "rigid: {motion: prescribed}")),
-              HasSubstr("motion: prescribed needs a `velocity_history`"));
+  EXPECT_THAT(
+      error_of(replaced(valid_case, "rigid: {motion: fixed}", "rigid: {motion: prescribed}")),
+      HasSubstr("motion: prescribed needs a `velocity_history`"));
 }
 
 TEST(MpmCaseLoad, PorousBodyNeedsAGrainSizeForKozenyCarman) {
-  const std::string porous = replaced(valid_case, "initial_velocity: [0, -1]",
-                                      "porous: {porosity: 0.4}");
+  const std::string porous =
+      replaced(valid_case, "initial_velocity: [0, -1]", "porous: {porosity: 0.4}");
   EXPECT_THAT(error_of(porous), HasSubstr("needs `grain_size`"));
   const auto c = load_case_text(replaced(valid_case, "initial_velocity: [0, -1]",
                                          "porous: {porosity: 0.4, grain_size: 1.0e-3}"),
@@ -306,8 +311,9 @@ TEST(MpmCaseLoad, MissingFileIsABadInput) {
 
 TEST(MpmCaseLoad, SeedsPolygonsR2AndPerDirectionCounts) {
   // Right triangle with legs 0.2 m: half of the 0.2 x 0.2 box.
-  const std::string polygon = replaced(with_load_from(0.55), "{box: {min: [0.4, 0.5], max: [0.6, 0.7]}}",
-                                       "{polygon: [[0.4, 0.5], [0.6, 0.5], [0.4, 0.7]]}");
+  const std::string polygon =
+      replaced(with_load_from(0.55), "{box: {min: [0.4, 0.5], max: [0.6, 0.7]}}",
+               "{polygon: [[0.4, 0.5], [0.6, 0.5], [0.4, 0.7]]}");
   const auto triangle = load_case_text(polygon, "case.yaml").bodies[0];
   const double area = std::accumulate(triangle.volumes.begin(), triangle.volumes.end(), 0.0);
   EXPECT_NEAR(area, 0.02, 0.04 / 64 * 8 + 1e-12) << "triangle area from particle volumes";
@@ -318,10 +324,10 @@ TEST(MpmCaseLoad, SeedsPolygonsR2AndPerDirectionCounts) {
                       .bodies[0];
   EXPECT_EQ(r2.positions.size(), 16u * 9u);  // 4 x 4 cells, 3^2 per cell
 
-  const auto uneven = load_case_text(replaced(valid_case, "particles_per_cell: 2",
-                                              "particles_per_cell: [1, 3]"),
-                                     "case.yaml")
-                          .bodies[0];
+  const auto uneven =
+      load_case_text(replaced(valid_case, "particles_per_cell: 2", "particles_per_cell: [1, 3]"),
+                     "case.yaml")
+          .bodies[0];
   EXPECT_EQ(uneven.positions.size(), 16u * 3u);
   EXPECT_DOUBLE_EQ(uneven.half_lengths[0].x(), 0.025);
   EXPECT_NEAR(uneven.half_lengths[0].y(), 0.05 / 6, 1e-15);
@@ -329,25 +335,28 @@ TEST(MpmCaseLoad, SeedsPolygonsR2AndPerDirectionCounts) {
 }
 
 TEST(MpmCaseLoad, DegeneratePolygonIsLocatedAtItsKey) {
-  const std::string message = error_of(replaced(valid_case, "{box: {min: [0.4, 0.5], max: [0.6, 0.7]}}",
-                                                "{polygon: [[0.4, 0.5], [0.5, 0.5], [0.6, 0.5]]}"));
+  const std::string message =
+      error_of(replaced(valid_case, "{box: {min: [0.4, 0.5], max: [0.6, 0.7]}}",
+                        "{polygon: [[0.4, 0.5], [0.5, 0.5], [0.6, 0.5]]}"));
   EXPECT_THAT(message, HasSubstr("case.yaml:13:25: key 'bodies[0].geometry.polygon'"));
 }
 
 TEST(MpmCaseLoad, ReadsParticlesFromAPointsFile) {
   const cosim::testing::ScratchDirectory dir;
   std::ofstream(dir / "block.csv") << "x,y,volume\n0.5,0.5,0.01\n0.5,0.6,0.01\n";
-  const auto c = load_case_text(replaced(with_load_from(0.55), "{box: {min: [0.4, 0.5], max: [0.6, 0.7]}}",
-                                         "{points: block.csv}"),
-                                dir / "case.yaml");
+  const auto c =
+      load_case_text(replaced(with_load_from(0.55), "{box: {min: [0.4, 0.5], max: [0.6, 0.7]}}",
+                              "{points: block.csv}"),
+                     dir / "case.yaml");
   ASSERT_EQ(c.bodies[0].positions.size(), 2u);
   EXPECT_DOUBLE_EQ(c.bodies[0].positions[1].y(), 0.6);
   EXPECT_DOUBLE_EQ(c.bodies[0].volumes[0], 0.01);
 
   std::ofstream(dir / "block.csv") << "x,y,volume\n0.5,0.5,0.01\n0.5,0.6,-1\n";
-  const std::string message = error_of(replaced(with_load_from(0.55), "{box: {min: [0.4, 0.5], max: [0.6, 0.7]}}",
-                                                "{points: block.csv}"),
-                                       dir / "case.yaml");
+  const std::string message =
+      error_of(replaced(with_load_from(0.55), "{box: {min: [0.4, 0.5], max: [0.6, 0.7]}}",
+                        "{points: block.csv}"),
+               dir / "case.yaml");
   EXPECT_THAT(message, HasSubstr("block.csv:3:"));
   EXPECT_THAT(message, HasSubstr("key 'bodies[0].geometry.points'"));
 }
@@ -373,7 +382,8 @@ bodies:
 )";
   const auto c = load_case_text(text, "case3d.yaml");
   EXPECT_EQ(c.bodies[0].positions.size(), 64u);  // 2^3 cells x 2^3
-  const double volume = std::accumulate(c.bodies[1].volumes.begin(), c.bodies[1].volumes.end(), 0.0);
+  const double volume =
+      std::accumulate(c.bodies[1].volumes.begin(), c.bodies[1].volumes.end(), 0.0);
   EXPECT_NEAR(volume, 0.4 * 0.4 * 0.4 / 6, 0.15 * 0.4 * 0.4 * 0.4 / 6)
       << "tetrahedron volume from particles";
 }

@@ -69,9 +69,9 @@ TEST(MpmParticleSnapshots, WriteDisplacementFromTheStartAndEveryField) {
   EXPECT_EQ(writer.snapshots_written(), 2u);
   EXPECT_TRUE(fs::exists(dir / "particles_000001.h5"));
   const std::string xdmf = read_text(writer.index_path());
-  for (const char* field : {"velocity", "displacement", "stress", "effective_stress", "strain",
-                            "plastic_strain", "porosity", "pore_pressure", "damage", "body", "mass",
-                            "volume"})
+  for (const char* field :
+       {"velocity", "displacement", "stress", "effective_stress", "strain", "plastic_strain",
+        "porosity", "pore_pressure", "damage", "body", "mass", "volume"})
     EXPECT_THAT(xdmf, HasSubstr(std::string("Name=\"") + field + "\"")) << field;
 }
 
@@ -101,7 +101,8 @@ struct Calls {
 
 class RecordingObserver final : public StepObserver<2> {
  public:
-  RecordingObserver(Calls& calls, double window, double end) : calls_(calls), window_(window), end_(end) {}
+  RecordingObserver(Calls& calls, double window, double end)
+      : calls_(calls), window_(window), end_(end) {}
   void initialize(Solver<2>&) override { ++calls_.initialize; }
   double max_time_step() const override {
     const double window_end = window_ * (std::floor(calls_.time / window_ + 1e-9) + 1.0);

@@ -1,5 +1,7 @@
 // The bed the shallow-water solver sees: the cell average of the particles'
 // top envelope (Zheng et al., Algorithm 1, line 15).
+#include "mpm/coupling/bed_elevation.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,7 +9,6 @@
 #include <random>
 #include <vector>
 
-#include "mpm/coupling/bed_elevation.hpp"
 #include "particle_fixtures.hpp"
 
 namespace mpm::coupling {
@@ -30,7 +31,8 @@ TEST(MpmCouplingBedElevation, FlatToppedBlockGivesItsTop3D) {
   const Grid<3> g = make_grid<3>(Vec<3>::Zero(), Vec<3>::Constant(0.1), {8, 6, 5}, ShapeKind::gimp);
   const auto surface = SurfaceGrid<3>::covering(g, {4, 3});
   Particles<3> particles;
-  testing::add_block<3>(particles, Vec<3>(0.2, 0.0, 0.0), Vec<3>(0.8, 0.6, 0.3), 0.05, 0.4, 2650.0, 0);
+  testing::add_block<3>(particles, Vec<3>(0.2, 0.0, 0.0), Vec<3>(0.8, 0.6, 0.3), 0.05, 0.4, 2650.0,
+                        0);
   const auto bed = bed_elevation(surface, particles, testing::porous_roles(), 4);
   ASSERT_EQ(bed.size(), 12u);
   for (int j = 0; j < 3; ++j)
@@ -67,15 +69,17 @@ TEST(MpmCouplingBedElevation, DoesNotJumpWhenAParticleCrossesAColumnEdge) {
     const auto naive_after = naive();
     for (std::size_t c = 0; c < after.size(); ++c) {
       largest_change = std::max(largest_change, std::abs(after[c] - before[c]));
-      naive_largest_change = std::max(naive_largest_change, std::abs(naive_after[c] - naive_before[c]));
+      naive_largest_change =
+          std::max(naive_largest_change, std::abs(naive_after[c] - naive_before[c]));
     }
     before = after;
     naive_before = naive_after;
   }
   // Lipschitz in the particle position: height d over a move of `step` in a 0.1 m cell.
   const double bound = d * step / 0.1 * (1.0 + 1e-9);
-  std::printf("  largest change per move %.3e m (bound %.3e m); per-column maximum would jump %.3e m\n",
-              largest_change, bound, naive_largest_change);
+  std::printf(
+      "  largest change per move %.3e m (bound %.3e m); per-column maximum would jump %.3e m\n",
+      largest_change, bound, naive_largest_change);
   EXPECT_LE(largest_change, bound);
   EXPECT_GT(naive_largest_change, 10.0 * bound);
 }
@@ -100,7 +104,8 @@ std::vector<double> brute_force_bed(const SurfaceGrid<2>& surface, const Particl
     for (std::size_t p = 0; p < particles.size(); ++p)
       if (std::abs(mid - particles.position[p][0]) < particles.half_length[p][0])
         top = std::max(top, particles.position[p][1] + particles.half_length[p][1]);
-    const auto cell = static_cast<std::size_t>(std::clamp(static_cast<int>((mid - x0) / dx), 0, n - 1));
+    const auto cell =
+        static_cast<std::size_t>(std::clamp(static_cast<int>((mid - x0) / dx), 0, n - 1));
     bed[cell] += top * (b - a) / dx;
   }
   return bed;
@@ -124,9 +129,10 @@ TEST(MpmCouplingBedElevation, MatchesTheBruteForceEnvelopeOfAJumbledHeap) {
   const auto bed = bed_elevation(surface, particles, testing::porous_roles(), 1);
   const auto exact = brute_force_bed(surface, particles);
   double largest_error = 0.0;
-  for (std::size_t c = 0; c < bed.size(); ++c) largest_error = std::max(largest_error, std::abs(bed[c] - exact[c]));
-  std::printf("  %zu points, largest difference from the brute-force envelope %.1e m\n", particles.size(),
-              largest_error);
+  for (std::size_t c = 0; c < bed.size(); ++c)
+    largest_error = std::max(largest_error, std::abs(bed[c] - exact[c]));
+  std::printf("  %zu points, largest difference from the brute-force envelope %.1e m\n",
+              particles.size(), largest_error);
   EXPECT_LT(largest_error, 1e-12);
 }
 

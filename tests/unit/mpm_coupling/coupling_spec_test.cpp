@@ -1,9 +1,10 @@
 // The `coupling:` block of an mpm_case file.
+#include "mpm/coupling/coupling_spec.hpp"
+
 #include <gtest/gtest.h>
 
 #include "cosim/config/document.hpp"
 #include "cosim/error.hpp"
-#include "mpm/coupling/coupling_spec.hpp"
 #include "mpm/case/load_case.hpp"
 #include "mpm/coupling/field_names.hpp"
 #include "text_files.hpp"

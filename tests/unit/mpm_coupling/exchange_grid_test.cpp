@@ -1,10 +1,11 @@
 // The exchange grid's particle -> cell map conserves mass, momentum and solid
 // volume; its cell -> point interpolation is exact for linear fields.
+#include "mpm/coupling/exchange_grid.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "mpm/coupling/exchange_grid.hpp"
 #include "mpm/coupling/porous_fields_writer.hpp"
 #include "particle_fixtures.hpp"
 
@@ -15,15 +16,16 @@ template <int Dim>
 ExchangeGrid<Dim> unit_square_grid(int cells_per_direction, int factor) {
   std::array<int, Dim> cells{};
   cells.fill(cells_per_direction);
-  const Grid<Dim> g = make_grid<Dim>(Vec<Dim>::Zero(), Vec<Dim>::Constant(1.0 / cells_per_direction), cells,
-                                     ShapeKind::linear);
+  const Grid<Dim> g = make_grid<Dim>(
+      Vec<Dim>::Zero(), Vec<Dim>::Constant(1.0 / cells_per_direction), cells, ShapeKind::linear);
   return ExchangeGrid<Dim>::covering(g, factor);
 }
 
 template <int Dim>
 void expect_conservative(int cells, int factor) {
   const auto grid = unit_square_grid<Dim>(cells, factor);
-  auto particles = testing::random_particles<Dim>(500, Vec<Dim>::Zero(), Vec<Dim>::Ones(), 7u + static_cast<unsigned>(factor));
+  auto particles = testing::random_particles<Dim>(500, Vec<Dim>::Zero(), Vec<Dim>::Ones(),
+                                                  7u + static_cast<unsigned>(factor));
   const auto roles = testing::porous_roles();
   const std::vector<std::uint8_t> none(particles.size(), 0);
   const PorousFields f = porous_fields(grid, particles, roles, none, 1e30);
@@ -42,14 +44,17 @@ void expect_conservative(int cells, int factor) {
     cell_mass += f.solid_bulk_density[c] * vc;
     cell_solid_volume += f.solid_fraction[c] * vc;
     for (int k = 0; k < Dim; ++k)
-      cell_momentum[k] += f.solid_bulk_density[c] * vc * f.solid_velocity[c * Dim + static_cast<std::size_t>(k)];
+      cell_momentum[k] +=
+          f.solid_bulk_density[c] * vc * f.solid_velocity[c * Dim + static_cast<std::size_t>(k)];
   }
   EXPECT_EQ(f.capped_cells, 0u);
   const double mass_error = std::abs(cell_mass - mass) / mass;
   const double volume_error = std::abs(cell_solid_volume - solid_volume) / solid_volume;
   const double momentum_error = (cell_momentum - momentum).norm() / momentum.norm();
-  std::printf("  %dD, %d cells, factor %d: relative errors mass %.2e, solid volume %.2e, momentum %.2e (tol 1e-12)\n",
-              Dim, cells, factor, mass_error, volume_error, momentum_error);
+  std::printf(
+      "  %dD, %d cells, factor %d: relative errors mass %.2e, solid volume %.2e, momentum %.2e "
+      "(tol 1e-12)\n",
+      Dim, cells, factor, mass_error, volume_error, momentum_error);
   EXPECT_LT(mass_error, 1e-12);
   EXPECT_LT(volume_error, 1e-12);
   EXPECT_LT(momentum_error, 1e-12);
@@ -103,7 +108,8 @@ void expect_linear_exact() {
   for (int trial = 0; trial < 200; ++trial) {
     Vec<Dim> x;
     for (int k = 0; k < Dim; ++k) x[k] = u(rng);
-    if (trial < 2) x.setConstant(trial == 0 ? 0.0 : 1.0);  // the corners, in the extrapolated half cells
+    if (trial < 2)
+      x.setConstant(trial == 0 ? 0.0 : 1.0);  // the corners, in the extrapolated half cells
     double value = 0.0, weights = 0.0;
     Vec<Dim> gradient = Vec<Dim>::Zero();
     grid.for_each_consistent(x, [&](std::size_t c, double w, const Vec<Dim>& dw) {
@@ -115,8 +121,8 @@ void expect_linear_exact() {
     worst_gradient = std::max(worst_gradient, (gradient - slope).norm());
     worst_sum = std::max(worst_sum, std::abs(weights - 1.0));
   }
-  std::printf("  %dD: max error value %.2e, gradient %.2e, weight sum %.2e (tol 1e-12)\n", Dim, worst_value,
-              worst_gradient, worst_sum);
+  std::printf("  %dD: max error value %.2e, gradient %.2e, weight sum %.2e (tol 1e-12)\n", Dim,
+              worst_value, worst_gradient, worst_sum);
   EXPECT_LT(worst_value, 1e-12);
   EXPECT_LT(worst_gradient, 1e-12);
   EXPECT_LT(worst_sum, 1e-12);
@@ -129,7 +135,8 @@ TEST(MpmCouplingExchangeGrid, CellToPointInterpolationIsExactForLinearFieldsUpTo
 
 TEST(MpmCouplingExchangeGrid, ConservativeWeightsAreNonNegativePartitionOfUnity) {
   const auto grid = unit_square_grid<2>(4, 1);
-  for (const Vec<2>& x : {Vec<2>(0.0, 0.0), Vec<2>(0.01, 0.99), Vec<2>(0.5, 0.3), Vec<2>(1.0, 1.0)}) {
+  for (const Vec<2>& x :
+       {Vec<2>(0.0, 0.0), Vec<2>(0.01, 0.99), Vec<2>(0.5, 0.3), Vec<2>(1.0, 1.0)}) {
     double sum = 0.0;
     grid.for_each_conservative(x, [&](std::size_t, double w) {
       EXPECT_GE(w, 0.0);
@@ -184,7 +191,8 @@ TEST(MpmCouplingExchangeGrid, ABoxBodyFillsExactlyTheCellsItCovers) {
 TEST(MpmCouplingExchangeGrid, HeldSolidIsWrittenWithAnEffectivelyInfiniteBulkDensity) {
   const auto grid = unit_square_grid<2>(4, 1);
   Particles<2> particles;
-  testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.25), 0.125, 0.4, 2650.0, 0);  // bottom row: held
+  testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.25), 0.125, 0.4, 2650.0,
+                        0);  // bottom row: held
   testing::add_block<2>(particles, Vec<2>(0.0, 0.25), Vec<2>(1.0, 1.0), 0.125, 0.4, 2650.0, 1);
   std::vector<BodyRole> roles = testing::porous_roles(2);
   roles[0].held = true;
@@ -257,7 +265,8 @@ TEST(MpmCouplingExchangeGrid, ClusteredPointsHandTheirExcessToTheCellTheyLeftSho
   }
   for (std::size_t p = 0; p < particles.size(); ++p)
     particles.velocity[p] = Vec<2>(p < 6 ? 1.0 : 3.0, 0.0);
-  for (std::size_t p = 0; p < particles.size(); ++p) particles.half_length[p] = Vec<2>::Constant(h / 4.0 - 1e-6);
+  for (std::size_t p = 0; p < particles.size(); ++p)
+    particles.half_length[p] = Vec<2>::Constant(h / 4.0 - 1e-6);
   const std::size_t left = grid.flat({0, 0}), right = grid.flat({1, 0});
   const PorousFields f = porous_fields(grid, particles, testing::porous_roles(1),
                                        std::vector<std::uint8_t>(particles.size(), 0), 1e30);
@@ -267,13 +276,14 @@ TEST(MpmCouplingExchangeGrid, ClusteredPointsHandTheirExcessToTheCellTheyLeftSho
   const double cell_volume = grid.cell_volume();
   std::printf("  solid fraction left %.6f right %.6f (sand 0.6)\n", f.solid_fraction[left],
               f.solid_fraction[right]);
-  // The right cell accepts its room times the share of it its own points fill: the excess moves over
-  // the sweeps, to the 0.1 % overfill the spreading leaves.
+  // The right cell accepts its room times the share of it its own points fill: the excess moves
+  // over the sweeps, to the 0.1 % overfill the spreading leaves.
   EXPECT_NEAR(f.solid_fraction[left], 0.6, 2e-3);
   EXPECT_NEAR(f.solid_fraction[right], 0.6, 2e-3);
-  EXPECT_NEAR((f.solid_fraction[left] + f.solid_fraction[right]) * cell_volume, 8 * 0.6 * cell_volume / 4.0,
-              1e-12);
-  EXPECT_NEAR((f.solid_bulk_density[left] + f.solid_bulk_density[right]) * cell_volume, 8 * point_mass, 1e-12);
+  EXPECT_NEAR((f.solid_fraction[left] + f.solid_fraction[right]) * cell_volume,
+              8 * 0.6 * cell_volume / 4.0, 1e-12);
+  EXPECT_NEAR((f.solid_bulk_density[left] + f.solid_bulk_density[right]) * cell_volume,
+              8 * point_mass, 1e-12);
   const double momentum = (f.solid_bulk_density[left] * f.solid_velocity[left * 2] +
                            f.solid_bulk_density[right] * f.solid_velocity[right * 2]) *
                           cell_volume;

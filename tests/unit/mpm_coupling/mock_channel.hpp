@@ -35,14 +35,17 @@ class MockChannel final : public coupling::CouplingChannel {
   void declare_write(cosim::FieldSpec field) override { write_specs[field.name] = field; }
   void declare_read(cosim::FieldSpec field, double default_value) override {
     const std::size_t n = size_of(field);
-    Read r{field, std::vector<double>(n, field.time == cosim::TimeTreatment::integral ? 0.0 : default_value),
-           std::vector<double>(n, 0.0)};
+    Read r{
+        field,
+        std::vector<double>(n, field.time == cosim::TimeTreatment::integral ? 0.0 : default_value),
+        std::vector<double>(n, 0.0)};
     reads[field.name] = std::move(r);
   }
   void write(std::string_view field, std::span<const double> values) override {
     const std::string name(field);
     if (!write_specs.count(name)) throw std::logic_error("write of undeclared " + name);
-    if (values.size() != size_of(write_specs[name])) throw std::logic_error("wrong size for " + name);
+    if (values.size() != size_of(write_specs[name]))
+      throw std::logic_error("wrong size for " + name);
     written[name].assign(values.begin(), values.end());
     ++write_count[name];
   }

@@ -1,5 +1,7 @@
 // The exchange impulse is split over the particles by mass and applied in
 // full over a window.
+#include "mpm/coupling/momentum_exchange_increment.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,14 +9,14 @@
 #include "mock_channel.hpp"
 #include "mpm/coupling/exchange_grid.hpp"
 #include "mpm/coupling/field_names.hpp"
-#include "mpm/coupling/momentum_exchange_increment.hpp"
 #include "particle_fixtures.hpp"
 
 namespace mpm::coupling {
 namespace {
 
 TEST(MpmCouplingImpulse, SplitOverParticlesConservesEachCellsImpulse) {
-  const Grid<3> g = make_grid<3>(Vec<3>::Zero(), Vec<3>::Constant(0.25), {4, 4, 4}, ShapeKind::linear);
+  const Grid<3> g =
+      make_grid<3>(Vec<3>::Zero(), Vec<3>::Constant(0.25), {4, 4, 4}, ShapeKind::linear);
   const auto grid = ExchangeGrid<3>::covering(g, 1);
   // Particles everywhere, so every cell holds solid.
   auto particles = testing::random_particles<3>(2000, Vec<3>::Zero(), Vec<3>::Ones(), 5);
@@ -38,13 +40,16 @@ TEST(MpmCouplingImpulse, CellsWithOnlyRigidSolidAbsorbTheirImpulseAndEmptyCellsP
   const Grid<2> g = make_grid<2>(Vec<2>::Zero(), Vec<2>::Constant(0.25), {4, 4}, ShapeKind::linear);
   const auto grid = ExchangeGrid<2>::covering(g, 1);
   Particles<2> particles;
-  testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.5), 0.125, 0.0, 7800.0, 0);   // rigid floor
-  testing::add_block<2>(particles, Vec<2>(0.0, 0.5), Vec<2>(0.5, 0.75), 0.125, 0.4, 2650.0, 1);  // soil, left half
+  testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.5), 0.125, 0.0, 7800.0,
+                        0);  // rigid floor
+  testing::add_block<2>(particles, Vec<2>(0.0, 0.5), Vec<2>(0.5, 0.75), 0.125, 0.4, 2650.0,
+                        1);  // soil, left half
   auto roles = testing::porous_roles(2);
   roles[0].rigid = roles[0].held = true;
   std::vector<double> impulse(grid.size() * 2, 0.0);
   for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) impulse[grid.flat({i, j}) * 2 + 1] = 1.0;  // 1 kg m/s up in every cell
+    for (int j = 0; j < 4; ++j)
+      impulse[grid.flat({i, j}) * 2 + 1] = 1.0;  // 1 kg m/s up in every cell
   std::vector<Vec<2>> particle_impulse;
   const auto split = split_impulse(grid, impulse, particles, roles, particle_impulse);
   for (std::size_t p = 0; p < particles.size(); ++p)
@@ -64,15 +69,20 @@ TEST(MpmCouplingImpulse, CellsWithOnlyRigidSolidAbsorbTheirImpulseAndEmptyCellsP
 }
 
 TEST(MpmCouplingImpulse, StepSharesOverAWindowAddUpToTheReceivedImpulse) {
-  const Grid<2> g = make_grid<2>(Vec<2>::Zero(), Vec<2>::Constant(0.1), {10, 10}, ShapeKind::linear);
+  const Grid<2> g =
+      make_grid<2>(Vec<2>::Zero(), Vec<2>::Constant(0.1), {10, 10}, ShapeKind::linear);
   const auto grid = ExchangeGrid<2>::covering(g, 1);
   auto particles = testing::random_particles<2>(800, Vec<2>::Zero(), Vec<2>::Ones(), 21);
   const auto roles = testing::porous_roles();
   testing::MockChannel channel;
   channel.window = 1e-3;
   channel.declare_mesh({names::exchange_mesh, grid.mesh()});
-  cosim::FieldSpec spec{.name = names::impulse, .mesh = names::exchange_mesh, .components = 2, .unit = "kg m/s",
-                        .quantity = cosim::Quantity::extensive, .time = cosim::TimeTreatment::integral};
+  cosim::FieldSpec spec{.name = names::impulse,
+                        .mesh = names::exchange_mesh,
+                        .components = 2,
+                        .unit = "kg m/s",
+                        .quantity = cosim::Quantity::extensive,
+                        .time = cosim::TimeTreatment::integral};
   channel.declare_read(spec, 0.0);
   std::mt19937 rng(4);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -80,7 +90,8 @@ TEST(MpmCouplingImpulse, StepSharesOverAWindowAddUpToTheReceivedImpulse) {
   for (double& j : window_impulse) j = u(rng);
   channel.set(names::impulse, window_impulse);
   Vec<2> received = Vec<2>::Zero();
-  for (std::size_t c = 0; c < grid.size(); ++c) received += Vec<2>(window_impulse[2 * c], window_impulse[2 * c + 1]);
+  for (std::size_t c = 0; c < grid.size(); ++c)
+    received += Vec<2>(window_impulse[2 * c], window_impulse[2 * c + 1]);
 
   Vec<2> applied = Vec<2>::Zero();
   std::vector<double> step(grid.size() * 2);
@@ -91,14 +102,16 @@ TEST(MpmCouplingImpulse, StepSharesOverAWindowAddUpToTheReceivedImpulse) {
     channel.read_increment(names::impulse, dt, step);
     split_impulse(grid, step, particles, roles, particle_impulse);
     for (const auto& j : particle_impulse) applied += j;
-    for (std::size_t p = 0; p < particles.size(); ++p) particles.position[p][0] = std::fmod(particles.position[p][0] + 0.013, 1.0);
+    for (std::size_t p = 0; p < particles.size(); ++p)
+      particles.position[p][0] = std::fmod(particles.position[p][0] + 0.013, 1.0);
     const bool last = dt >= channel.max_time_step() - 1e-12;
     channel.advance(dt);
     ++steps;
     if (last) break;
   }
   const double error = (applied - received).norm() / received.norm();
-  std::printf("  %d steps: applied over the window vs received: relative error %.2e (tol 1e-12)\n", steps, error);
+  std::printf("  %d steps: applied over the window vs received: relative error %.2e (tol 1e-12)\n",
+              steps, error);
   EXPECT_GT(steps, 5);
   EXPECT_LT(error, 1e-12);
 }

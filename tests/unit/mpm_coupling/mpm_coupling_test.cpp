@@ -1,5 +1,7 @@
 // MpmCoupling on a real solver with a mock partner: declarations, the call
 // order, and what reaches the particles over whole windows.
+#include "mpm/coupling/mpm_coupling.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 #include "mock_channel.hpp"
 #include "mpm/coupling/coupling_observer.hpp"
 #include "mpm/coupling/field_names.hpp"
-#include "mpm/coupling/mpm_coupling.hpp"
 #include "mpm_case_builder.hpp"
 
 namespace mpm::coupling {
@@ -19,7 +20,8 @@ CaseDescription floating_block_case() {
   CaseDescription c = testing::empty_case(2, {8, 8, 1}, 0.125);
   c.shape = ShapeKind::gimp;
   c.materials.push_back(testing::elastic(2650.0, 1e6, 0.3));
-  BodySpec soil = testing::box_body("soil", 0, 2, Vec3d(0.25, 0.25, 0.0), Vec3d(0.75, 0.75, 0.0), 0.125, 2);
+  BodySpec soil =
+      testing::box_body("soil", 0, 2, Vec3d(0.25, 0.25, 0.0), Vec3d(0.75, 0.75, 0.0), 0.125, 2);
   PorousSpec porous;
   porous.porosity = 0.4;
   porous.grain_size = 1e-3;
@@ -33,8 +35,8 @@ CaseDescription floating_block_case() {
 CouplingSpec both_blocks() {
   CouplingSpec spec;
   spec.exchange_grid = ExchangeGridSpec{};
-  spec.exchange_grid->writes = {n::solid_fraction, n::solid_velocity, n::solid_bulk_density, n::permeability,
-                                n::grain_size};
+  spec.exchange_grid->writes = {n::solid_fraction, n::solid_velocity, n::solid_bulk_density,
+                                n::permeability, n::grain_size};
   spec.exchange_grid->reads = {n::pore_pressure, n::impulse};
   spec.surface = SurfaceSpec{};
   spec.surface->cells = {4};
@@ -49,7 +51,9 @@ struct Rig {
   MpmCoupling<2> coupling;
 
   explicit Rig(const CaseDescription& c, const CouplingSpec& spec, double window)
-      : solver(c), channel(new testing::MockChannel), coupling(solver, std::unique_ptr<CouplingChannel>(channel), spec) {
+      : solver(c),
+        channel(new testing::MockChannel),
+        coupling(solver, std::unique_ptr<CouplingChannel>(channel), spec) {
     channel->window = window;
     coupling.declare();
   }
@@ -130,8 +134,10 @@ TEST(MpmCoupling, ParticlesGainExactlyTheImpulseReceivedOverAWindow) {
   // Empty cells away from the block absorb theirs.
   EXPECT_LT((applied + d.impulse_total.absorbed - d.impulse_total.received).norm(), 1e-14);
   const double error = (gained - applied).norm() / applied.norm();
-  std::printf("  momentum gained %.9g, %.9g vs impulse applied %.9g, %.9g: relative error %.2e (tol 1e-12)\n",
-              gained[0], gained[1], applied[0], applied[1], error);
+  std::printf(
+      "  momentum gained %.9g, %.9g vs impulse applied %.9g, %.9g: relative error %.2e (tol "
+      "1e-12)\n",
+      gained[0], gained[1], applied[0], applied[1], error);
   EXPECT_LT(error, 1e-12);
   EXPECT_GT(applied.norm(), 0.5 * 0.02 * 16);  // most of the block's cells
 }
@@ -143,17 +149,19 @@ TEST(MpmCoupling, HydrostaticPorePressureBuoysTheSolidVolume) {
   Rig rig(floating_block_case(), spec, 1e-4);
   std::vector<double> p(64);
   for (int j = 0; j < 8; ++j)
-    for (int i = 0; i < 8; ++i) p[static_cast<std::size_t>(j * 8 + i)] = 1000.0 * 9.81 * (1.0 - (j + 0.5) * 0.125);
+    for (int i = 0; i < 8; ++i)
+      p[static_cast<std::size_t>(j * 8 + i)] = 1000.0 * 9.81 * (1.0 - (j + 0.5) * 0.125);
   rig.channel->set(n::pore_pressure, p);
   rig.solver.step(1e-5);
   Vec<2> force = Vec<2>::Zero();
   for (const auto& f : rig.solver.particles().external_force) force += f;
   const double buoyancy = 1000.0 * 9.81 * 0.6 * 0.25;
   const double error = std::abs(force[1] - buoyancy) / buoyancy;
-  std::printf("  buoyancy %.9g N vs rho_w g (1-n) V = %.9g N: relative error %.2e (tol 1e-12)\n", force[1], buoyancy,
-              error);
+  std::printf("  buoyancy %.9g N vs rho_w g (1-n) V = %.9g N: relative error %.2e (tol 1e-12)\n",
+              force[1], buoyancy, error);
   EXPECT_LT(error, 1e-12);
-  EXPECT_NEAR(rig.solver.particles().pore_pressure[0], 1000.0 * 9.81 * (1.0 - 0.25 - 0.125 / 4), 1e-9);
+  EXPECT_NEAR(rig.solver.particles().pore_pressure[0], 1000.0 * 9.81 * (1.0 - 0.25 - 0.125 / 4),
+              1e-9);
 }
 
 TEST(MpmCoupling, BedTractionReachesTheSurfaceParticlesInFull) {
@@ -170,7 +178,8 @@ TEST(MpmCoupling, BedTractionReachesTheSurfaceParticlesInFull) {
 
 TEST(MpmCoupling, RigidBodiesAreHeldInTheExchange) {
   CaseDescription c = floating_block_case();
-  BodySpec floor = testing::box_body("floor", -1, 2, Vec3d(0.0, 0.0, 0.0), Vec3d(1.0, 0.25, 0.0), 0.125, 2);
+  BodySpec floor =
+      testing::box_body("floor", -1, 2, Vec3d(0.0, 0.0, 0.0), Vec3d(1.0, 0.25, 0.0), 0.125, 2);
   floor.rigid = RigidMotion{};
   floor.density_override = 7800.0;
   c.bodies.push_back(floor);
@@ -178,7 +187,7 @@ TEST(MpmCoupling, RigidBodiesAreHeldInTheExchange) {
   spec.exchange_grid->hold_at_fixed_faces = false;
   Rig rig(c, spec, 1e-4);
   const auto& rho = rig.channel->written.at(n::solid_bulk_density);
-  EXPECT_GT(rho[0], 1e30);        // the floor's cells
+  EXPECT_GT(rho[0], 1e30);         // the floor's cells
   EXPECT_LT(rho[3 * 8 + 3], 1e4);  // the soil's
   // Rows 0-1 under the floor: its particles' domains end at its top face.
   EXPECT_EQ(rig.coupling.diagnostics().held_cells, 16u);
@@ -188,16 +197,19 @@ TEST(MpmCoupling, UnknownBodyNamesAreInputErrors) {
   CouplingSpec spec = both_blocks();
   spec.exchange_grid->held_bodies = {"sand"};
   Solver<2> solver(floating_block_case());
-  EXPECT_THROW(MpmCoupling<2>(solver, std::make_unique<testing::MockChannel>(), spec), cosim::InputError);
+  EXPECT_THROW(MpmCoupling<2>(solver, std::make_unique<testing::MockChannel>(), spec),
+               cosim::InputError);
   spec = both_blocks();
   spec.surface->cells = {4, 4};
-  EXPECT_THROW(MpmCoupling<2>(solver, std::make_unique<testing::MockChannel>(), spec), cosim::InputError);
+  EXPECT_THROW(MpmCoupling<2>(solver, std::make_unique<testing::MockChannel>(), spec),
+               cosim::InputError);
 }
 
 TEST(MpmCoupling, Works3DOverAWindow) {
   CaseDescription c = testing::empty_case(3, {4, 4, 4}, 0.25);
   c.materials.push_back(testing::elastic(2650.0, 1e6, 0.3));
-  c.bodies.push_back(testing::box_body("soil", 0, 3, Vec3d(0.25, 0.25, 0.0), Vec3d(0.75, 0.75, 0.5), 0.25, 2));
+  c.bodies.push_back(
+      testing::box_body("soil", 0, 3, Vec3d(0.25, 0.25, 0.0), Vec3d(0.75, 0.75, 0.5), 0.25, 2));
   CouplingSpec spec = both_blocks();
   spec.surface->cells = {2, 2};
   Solver<3> solver(c);
@@ -216,7 +228,8 @@ TEST(MpmCoupling, Works3DOverAWindow) {
   }
   const auto& d = coupling.diagnostics();
   const Vec<3> gained = solver.totals().momentum - before;
-  // Over the window: the applied impulse plus the traction's (4 columns x 0.25 m^2 x -50 Pa x 1e-4 s).
+  // Over the window: the applied impulse plus the traction's (4 columns x 0.25 m^2 x -50 Pa x 1e-4
+  // s).
   const Vec<3> traction_impulse = Vec<3>::Constant(-50.0 * 0.25 * 4 * 1e-4);
   EXPECT_LT((gained - d.impulse_total.applied - traction_impulse).norm(), 1e-12 * gained.norm());
   EXPECT_EQ(channel->write_count.at(n::bed_elevation), 2);

@@ -12,8 +12,8 @@ namespace mpm::testing {
 
 // Appends a block [lo, hi] of particles of size d (per direction) to `particles`.
 template <int Dim>
-void add_block(Particles<Dim>& particles, const Vec<Dim>& lo, const Vec<Dim>& hi, double d, double porosity,
-               double grain_density, std::uint32_t body) {
+void add_block(Particles<Dim>& particles, const Vec<Dim>& lo, const Vec<Dim>& hi, double d,
+               double porosity, double grain_density, std::uint32_t body) {
   std::array<int, Dim> count{};
   std::size_t total = 1;
   for (int k = 0; k < Dim; ++k) {
@@ -47,7 +47,8 @@ void add_block(Particles<Dim>& particles, const Vec<Dim>& lo, const Vec<Dim>& hi
 // n particles at random positions inside [lo, hi] with random masses,
 // volumes, porosities and velocities.
 template <int Dim>
-Particles<Dim> random_particles(std::size_t n, const Vec<Dim>& lo, const Vec<Dim>& hi, unsigned seed) {
+Particles<Dim> random_particles(std::size_t n, const Vec<Dim>& lo, const Vec<Dim>& hi,
+                                unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   Particles<Dim> particles;

@@ -1,10 +1,11 @@
 // The pore pressure acts on the solid as -phi_s grad p (Tran et al., MPMICE, eq. 7).
+#include "mpm/coupling/pore_pressure_force.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "mpm/coupling/exchange_grid.hpp"
-#include "mpm/coupling/pore_pressure_force.hpp"
 #include "particle_fixtures.hpp"
 
 namespace mpm::coupling {
@@ -15,7 +16,8 @@ ExchangeGrid<2> column_grid() {
   return ExchangeGrid<2>::covering(g, 1);
 }
 
-std::vector<double> cell_field(const ExchangeGrid<2>& grid, const std::function<double(const Vec<2>&)>& f) {
+std::vector<double> cell_field(const ExchangeGrid<2>& grid,
+                               const std::function<double(const Vec<2>&)>& f) {
   std::vector<double> v(grid.size());
   for (int j = 0; j < grid.cells[1]; ++j)
     for (int i = 0; i < grid.cells[0]; ++i) v[grid.flat({i, j})] = f(grid.centre({i, j}));
@@ -28,8 +30,8 @@ TEST(MpmCouplingPorePressure, ConstantPressureGivesNoForceAndIsTheParticlePressu
   testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 1.2), 0.05, 0.4, 2650.0, 0);
   const auto roles = testing::porous_roles();
   std::vector<Vec<2>> force;
-  const Vec<2> total = pore_pressure_force(grid, cell_field(grid, [](const Vec<2>&) { return 2.5e5; }), particles,
-                                           roles, force);
+  const Vec<2> total = pore_pressure_force(
+      grid, cell_field(grid, [](const Vec<2>&) { return 2.5e5; }), particles, roles, force);
   double worst = 0.0;
   for (std::size_t p = 0; p < particles.size(); ++p) {
     worst = std::max(worst, force[p].norm());
@@ -44,24 +46,29 @@ TEST(MpmCouplingPorePressure, HydrostaticPressureGivesTheBuoyancyOfTheSolidVolum
   const auto grid = column_grid();
   Particles<2> particles;
   testing::add_block<2>(particles, Vec<2>(0.0, 0.0), Vec<2>(1.0, 1.2), 0.05, 0.4, 2650.0, 0);
-  testing::add_block<2>(particles, Vec<2>(0.2, 1.2), Vec<2>(0.6, 1.4), 0.05, 0.0, 2400.0, 1);  // impermeable block
-  testing::add_block<2>(particles, Vec<2>(0.0, 1.8), Vec<2>(1.0, 2.0), 0.05, 0.3, 2650.0, 2);  // in the top half cells
+  testing::add_block<2>(particles, Vec<2>(0.2, 1.2), Vec<2>(0.6, 1.4), 0.05, 0.0, 2400.0,
+                        1);  // impermeable block
+  testing::add_block<2>(particles, Vec<2>(0.0, 1.8), Vec<2>(1.0, 2.0), 0.05, 0.3, 2650.0,
+                        2);  // in the top half cells
   auto roles = testing::porous_roles(3);
   roles[1].porous = false;
   const double rho_w = 1000.0, g = 9.81, surface = 2.0;
   std::vector<Vec<2>> force;
   const Vec<2> total = pore_pressure_force(
-      grid, cell_field(grid, [&](const Vec<2>& x) { return rho_w * g * (surface - x[1]); }), particles, roles, force);
+      grid, cell_field(grid, [&](const Vec<2>& x) { return rho_w * g * (surface - x[1]); }),
+      particles, roles, force);
   double solid_volume = 0.0;
   for (std::size_t p = 0; p < particles.size(); ++p) {
     solid_volume += (1.0 - particles.porosity[p]) * particles.volume[p];
-    const double expected = roles[particles.body[p]].porous ? rho_w * g * (surface - particles.position[p][1]) : 0.0;
+    const double expected =
+        roles[particles.body[p]].porous ? rho_w * g * (surface - particles.position[p][1]) : 0.0;
     EXPECT_NEAR(particles.pore_pressure[p], expected, 1e-8);
   }
   const double buoyancy = rho_w * g * solid_volume;
   const double error = std::abs(total[1] - buoyancy) / buoyancy;
-  std::printf("  buoyancy %.9g N vs rho_w g sum (1-n) V = %.9g N: relative error %.2e (tol 1e-12)\n", total[1],
-              buoyancy, error);
+  std::printf(
+      "  buoyancy %.9g N vs rho_w g sum (1-n) V = %.9g N: relative error %.2e (tol 1e-12)\n",
+      total[1], buoyancy, error);
   EXPECT_LT(error, 1e-12);
   EXPECT_LT(std::abs(total[0]), 1e-12 * buoyancy);
 }
@@ -72,9 +79,9 @@ TEST(MpmCouplingPorePressure, LinearPressureGivesMinusSolidVolumeTimesGradientPe
   const auto roles = testing::porous_roles();
   const Vec<2> gradient(-3.0e3, 7.0e3);
   std::vector<Vec<2>> force;
-  const Vec<2> total =
-      pore_pressure_force(grid, cell_field(grid, [&](const Vec<2>& x) { return 1e5 + gradient.dot(x); }), particles,
-                          roles, force);
+  const Vec<2> total = pore_pressure_force(
+      grid, cell_field(grid, [&](const Vec<2>& x) { return 1e5 + gradient.dot(x); }), particles,
+      roles, force);
   Vec<2> expected = Vec<2>::Zero();
   double worst = 0.0;
   for (std::size_t p = 0; p < particles.size(); ++p) {
@@ -95,9 +102,9 @@ TEST(MpmCouplingPorePressure, RigidBodiesTakeNoForce) {
   std::vector<BodyRole> roles(1);
   roles[0].rigid = roles[0].held = true;
   std::vector<Vec<2>> force;
-  const Vec<2> total =
-      pore_pressure_force(grid, cell_field(grid, [](const Vec<2>& x) { return 1e4 * (2.0 - x[1]); }), particles,
-                          roles, force);
+  const Vec<2> total = pore_pressure_force(
+      grid, cell_field(grid, [](const Vec<2>& x) { return 1e4 * (2.0 - x[1]); }), particles, roles,
+      force);
   EXPECT_EQ(total.norm(), 0.0);
 }
 

@@ -1,4 +1,6 @@
 // Particles read from CSV files, and the located errors for bad files.
+#include "mpm/geometry/particle_file.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +8,6 @@
 #include <string>
 
 #include "cosim/error.hpp"
-#include "mpm/geometry/particle_file.hpp"
 #include "scratch_directory.hpp"
 
 namespace mpm {

@@ -32,13 +32,15 @@ TEST(Polygon, ContainsConvexAndConcave) {
   EXPECT_FALSE(triangle.contains(Vec<2>(1.5, 1.5)));
   EXPECT_DOUBLE_EQ(triangle.area(), 2.0);
   // an L shape, clockwise
-  const Polygon l_shape({Vec<2>(0, 0), Vec<2>(0, 2), Vec<2>(1, 2), Vec<2>(1, 1), Vec<2>(2, 1), Vec<2>(2, 0)});
+  const Polygon l_shape(
+      {Vec<2>(0, 0), Vec<2>(0, 2), Vec<2>(1, 2), Vec<2>(1, 1), Vec<2>(2, 1), Vec<2>(2, 0)});
   EXPECT_DOUBLE_EQ(l_shape.area(), 3.0);
   EXPECT_TRUE(l_shape.contains(Vec<2>(0.5, 1.5)));
   EXPECT_TRUE(l_shape.contains(Vec<2>(1.5, 0.5)));
   EXPECT_FALSE(l_shape.contains(Vec<2>(1.5, 1.5)));
-  EXPECT_FALSE(l_shape.contains(Vec<2>(-0.5, 1.0)));  // ray through the vertices (0, ...) edge and (2, 1)
-  EXPECT_TRUE(l_shape.contains(Vec<2>(0.5, 1.0)));    // ray through the reflex vertex (1, 1)
+  EXPECT_FALSE(
+      l_shape.contains(Vec<2>(-0.5, 1.0)));  // ray through the vertices (0, ...) edge and (2, 1)
+  EXPECT_TRUE(l_shape.contains(Vec<2>(0.5, 1.0)));  // ray through the reflex vertex (1, 1)
   const Box<2>& b = l_shape.bounding_box();
   EXPECT_EQ(b.lower, Vec<2>(0, 0));
   EXPECT_EQ(b.upper, Vec<2>(2, 2));
@@ -143,7 +145,8 @@ TEST(Polyhedron, UnitCubeContainsItsInteriorIncludingRaysThroughEdgesAndVertices
     std::uniform_real_distribution<double> u(-0.5, 1.5);
     for (int p = 0; p < 2000; ++p) {
       const Vec<3> x(u(rng), u(rng), u(rng));
-      EXPECT_EQ(cube.contains(x), (x.array() > 0.0).all() && (x.array() < 1.0).all()) << x.transpose();
+      EXPECT_EQ(cube.contains(x), (x.array() > 0.0).all() && (x.array() < 1.0).all())
+          << x.transpose();
     }
   }
 }
@@ -164,14 +167,16 @@ TEST(Polyhedron, TetrahedronMatchesBarycentricTest) {
   }
   EXPECT_GT(inside_count, 100);
   EXPECT_TRUE(tet.contains(Vec<3>(0.25, 0.25, 0.25)));
-  EXPECT_FALSE(tet.contains(Vec<3>(-0.5, 0.25, 0.25)));  // ray through the tetrahedron: two crossings
-  EXPECT_FALSE(tet.contains(Vec<3>(-0.5, 0.0, 0.0)));    // ray along an edge
+  EXPECT_FALSE(
+      tet.contains(Vec<3>(-0.5, 0.25, 0.25)));         // ray through the tetrahedron: two crossings
+  EXPECT_FALSE(tet.contains(Vec<3>(-0.5, 0.0, 0.0)));  // ray along an edge
 }
 
 TEST(Polyhedron, RejectsOpenOrInconsistentSurfaces) {
   const std::vector<Vec<3>> v{Vec<3>(0, 0, 0), Vec<3>(1, 0, 0), Vec<3>(0, 1, 0), Vec<3>(0, 0, 1)};
   EXPECT_THROW(Polyhedron(v, {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}}), cosim::InputError);
-  EXPECT_THROW(Polyhedron(v, {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 2, 3}}), cosim::InputError);  // flipped face
+  EXPECT_THROW(Polyhedron(v, {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 2, 3}}),
+               cosim::InputError);  // flipped face
   EXPECT_THROW(Polyhedron(v, {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 7}}), cosim::InputError);
   EXPECT_THROW(Polyhedron(v, {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 3}}), cosim::InputError);
 }

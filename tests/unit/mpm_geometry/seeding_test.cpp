@@ -1,5 +1,7 @@
 // Seeding regions with particles: regular sub-cell centres and the R_d
 // quasi-random sequence.
+#include "mpm/geometry/seeding.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 #include "mpm/geometry/box.hpp"
 #include "mpm/geometry/polygon.hpp"
 #include "mpm/geometry/polyhedron.hpp"
-#include "mpm/geometry/seeding.hpp"
 
 namespace mpm {
 namespace {
@@ -57,22 +58,22 @@ TEST(Seeding, PolygonAreaWithinResolution) {
   for (auto kind : {SeedingPattern::Kind::regular, SeedingPattern::Kind::quasi_random}) {
     const auto seeded = seed_region(triangle, g, SeedingPattern{kind, 2, 0});
     const double error = std::abs(seeded.total_volume() - triangle.area()) / triangle.area();
-    std::printf("triangle area %.5f, seeded %.5f, relative error %.2e (tolerance 2e-2)\n", triangle.area(),
-                seeded.total_volume(), error);
+    std::printf("triangle area %.5f, seeded %.5f, relative error %.2e (tolerance 2e-2)\n",
+                triangle.area(), seeded.total_volume(), error);
     EXPECT_LT(error, 0.02);
     for (const auto& x : seeded.positions) EXPECT_TRUE(triangle.contains(x));
   }
 }
 
 TEST(Seeding, PolyhedronVolumeWithinResolution) {
-  const std::vector<Vec<3>> v{Vec<3>(-0.9, -0.8, -0.7), Vec<3>(0.8, -0.6, -0.8), Vec<3>(-0.5, 0.9, -0.6),
-                              Vec<3>(-0.4, -0.3, 0.9)};
+  const std::vector<Vec<3>> v{Vec<3>(-0.9, -0.8, -0.7), Vec<3>(0.8, -0.6, -0.8),
+                              Vec<3>(-0.5, 0.9, -0.6), Vec<3>(-0.4, -0.3, 0.9)};
   const Polyhedron tet(v, {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
   const auto g = grid<3>(0.1, 20);
   const auto seeded = seed_region(tet, g, SeedingPattern{SeedingPattern::Kind::regular, 2, 0});
   const double error = std::abs(seeded.total_volume() - tet.volume()) / tet.volume();
-  std::printf("tetrahedron volume %.5f, seeded %.5f, relative error %.2e (tolerance 3e-2)\n", tet.volume(),
-              seeded.total_volume(), error);
+  std::printf("tetrahedron volume %.5f, seeded %.5f, relative error %.2e (tolerance 3e-2)\n",
+              tet.volume(), seeded.total_volume(), error);
   EXPECT_LT(error, 0.03);
 }
 
@@ -89,7 +90,8 @@ TEST(Seeding, RSequenceRoots) {
   EXPECT_NEAR(r_sequence_root(1), (1.0 + std::sqrt(5.0)) / 2.0, 1e-15);  // golden ratio
   // plastic constant, closed form of van den Bout et al. after eq. 88 (its
   // decimal value there, 1.32471795572, has transposed digits: 1.3247179572)
-  const double plastic = std::cbrt((9.0 + std::sqrt(69.0)) / 18.0) + std::cbrt((9.0 - std::sqrt(69.0)) / 18.0);
+  const double plastic =
+      std::cbrt((9.0 + std::sqrt(69.0)) / 18.0) + std::cbrt((9.0 - std::sqrt(69.0)) / 18.0);
   EXPECT_NEAR(r_sequence_root(2), plastic, 1e-15);
   EXPECT_NEAR(r_sequence_root(2), 1.3247179572, 1e-10);
   const double phi3 = r_sequence_root(3);
@@ -101,7 +103,8 @@ template <int Dim>
 double min_distance(const std::vector<Vec<Dim>>& points) {
   double best = 1e300;
   for (std::size_t i = 0; i < points.size(); ++i)
-    for (std::size_t j = i + 1; j < points.size(); ++j) best = std::min(best, (points[i] - points[j]).norm());
+    for (std::size_t j = i + 1; j < points.size(); ++j)
+      best = std::min(best, (points[i] - points[j]).norm());
   return best;
 }
 
@@ -113,7 +116,8 @@ void check_quasi_random(int per_cell) {
   const SeedingPattern pattern{SeedingPattern::Kind::quasi_random, 2, per_cell};
   const auto a = seed_region(box, g, pattern);
   const auto b = seed_region(box, g, pattern);
-  ASSERT_EQ(a.size(), static_cast<std::size_t>(per_cell) * static_cast<std::size_t>(std::pow(5, Dim)));
+  ASSERT_EQ(a.size(),
+            static_cast<std::size_t>(per_cell) * static_cast<std::size_t>(std::pow(5, Dim)));
   EXPECT_EQ(a.positions, b.positions);  // deterministic
   EXPECT_NEAR(a.total_volume(), box.volume(), 1e-12);
   // each cell holds exactly per_cell points, strictly inside it
@@ -132,7 +136,8 @@ void check_quasi_random(int per_cell) {
   // 0.5 h / n^(1/Dim) for these counts
   const double bound = 0.5 * h / std::pow(per_cell, 1.0 / Dim);
   const double measured = min_distance<Dim>(a.positions);
-  std::printf("R_%d, %d per cell: min distance %.4f h (bound %.4f h)\n", Dim, per_cell, measured / h, bound / h);
+  std::printf("R_%d, %d per cell: min distance %.4f h (bound %.4f h)\n", Dim, per_cell,
+              measured / h, bound / h);
   EXPECT_GT(measured, bound);
 }
 
@@ -144,7 +149,8 @@ TEST(Seeding, QuasiRandomIsDeterministicInsideItsCellsAndWellSpread) {
 TEST(Seeding, RejectsBadCounts) {
   const auto g = grid<2>(0.1, 10);
   const Box<2> box{g.origin, g.upper()};
-  EXPECT_THROW(seed_region(box, g, SeedingPattern{SeedingPattern::Kind::regular, 0, 0}), cosim::InputError);
+  EXPECT_THROW(seed_region(box, g, SeedingPattern{SeedingPattern::Kind::regular, 0, 0}),
+               cosim::InputError);
 }
 
 }  // namespace

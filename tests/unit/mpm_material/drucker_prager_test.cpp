@@ -1,3 +1,5 @@
+#include "mpm/material/drucker_prager.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +8,6 @@
 #include <random>
 
 #include "material_test_support.hpp"
-#include "mpm/material/drucker_prager.hpp"
 
 namespace mpm::testing {
 namespace {
@@ -14,15 +15,24 @@ namespace {
 constexpr double deg = std::numbers::pi / 180.0;
 constexpr double sqrt2 = std::numbers::sqrt2;
 
-ElasticConstants soil_elasticity() { return ElasticConstants::from_youngs_poisson(2.0e7, 0.3); }
+ElasticConstants soil_elasticity() {
+  return ElasticConstants::from_youngs_poisson(2.0e7, 0.3);
+}
 
-double mean(const Tensor& t) { return t.trace() / 3.0; }
-Tensor deviator(const Tensor& t) { return t - mean(t) * Tensor::Identity(); }
-double sqrt_j2(const Tensor& t) { return std::sqrt(0.5 * deviator(t).squaredNorm()); }
+double mean(const Tensor& t) {
+  return t.trace() / 3.0;
+}
+Tensor deviator(const Tensor& t) {
+  return t - mean(t) * Tensor::Identity();
+}
+double sqrt_j2(const Tensor& t) {
+  return std::sqrt(0.5 * deviator(t).squaredNorm());
+}
 
 TEST(DruckerPragerCone, PlaneStrainMatchIsVanDenBoutEq20) {
   const double phi = 30 * deg, c = 1e4;
-  const auto cone = DruckerPragerCone::matched(DruckerPragerMatch::plane_strain, phi, 0.0, c, 1e300);
+  const auto cone =
+      DruckerPragerCone::matched(DruckerPragerMatch::plane_strain, phi, 0.0, c, 1e300);
   const double root = std::sqrt(9 + 12 * std::tan(phi) * std::tan(phi));
   EXPECT_DOUBLE_EQ(cone.alpha_friction, std::tan(phi) / root);
   EXPECT_DOUBLE_EQ(cone.strength, 3 * c / root);
@@ -34,14 +44,18 @@ TEST(DruckerPragerCone, PlaneStrainMatchIsVanDenBoutEq20) {
 // extension states (sigma_1 > sigma_2 = sigma_3).
 TEST(DruckerPragerCone, ConesPassThroughTheMohrCoulombMeridians) {
   const double phi = 35 * deg, c = 2e4, s = std::sin(phi);
-  const auto compression = DruckerPragerCone::matched(DruckerPragerMatch::compression_cone, phi, 0.0, c, 1e300);
-  const auto extension = DruckerPragerCone::matched(DruckerPragerMatch::extension_cone, phi, 0.0, c, 1e300);
+  const auto compression =
+      DruckerPragerCone::matched(DruckerPragerMatch::compression_cone, phi, 0.0, c, 1e300);
+  const auto extension =
+      DruckerPragerCone::matched(DruckerPragerMatch::extension_cone, phi, 0.0, c, 1e300);
   for (const double confining : {-1e4, -1e5, -1e6}) {
     // MC: (1 + s) s1 - (1 - s) s3 = 2 c cos phi.
-    const double major = ((1 + s) * confining - 2 * c * std::cos(phi)) / (1 - s);  // sigma_3 at sigma_1 = confining
+    const double major =
+        ((1 + s) * confining - 2 * c * std::cos(phi)) / (1 - s);  // sigma_3 at sigma_1 = confining
     Tensor tc = Eigen::Vector3d(confining, confining, major).asDiagonal();
     EXPECT_NEAR(compression.yield(tc) / std::abs(major), 0.0, 1e-12);
-    const double minor = ((1 - s) * confining + 2 * c * std::cos(phi)) / (1 + s);  // sigma_1 at sigma_3 = confining
+    const double minor =
+        ((1 - s) * confining + 2 * c * std::cos(phi)) / (1 + s);  // sigma_1 at sigma_3 = confining
     Tensor te = Eigen::Vector3d(minor, confining, confining).asDiagonal();
     EXPECT_NEAR(extension.yield(te) / std::abs(confining), 0.0, 1e-12);
   }
@@ -55,12 +69,14 @@ TEST(DruckerPragerReturn, RandomTrialsEndOnTheSurfaceWithFlowAlongThePotential) 
   std::map<std::string, int> hits;
   for (const double t : {std::numeric_limits<double>::infinity(), 3e3}) {
     for (const double psi : {0.0, 10 * deg, 30 * deg}) {
-      const auto cone = DruckerPragerCone::matched(DruckerPragerMatch::plane_strain, 30 * deg, psi, 1e4, t);
+      const auto cone =
+          DruckerPragerCone::matched(DruckerPragerMatch::plane_strain, 30 * deg, psi, 1e4, t);
       double worst = 0.0;
       for (int n = 0; n < 3000; ++n) {
         std::uniform_real_distribution<double> u(0.0, 1.0);
         const double shear = 1e5 * std::pow(u(rng), 3.0);
-        const Tensor trial = random_symmetric(rng, shear) + (-2e5 + 2.5e5 * u(rng)) * Tensor::Identity();
+        const Tensor trial =
+            random_symmetric(rng, shear) + (-2e5 + 2.5e5 * u(rng)) * Tensor::Identity();
         const Tensor sigma = drucker_prager_return(trial, cone, e);
         const double scale = std::max(1e4, trial.norm());
         worst = std::max(worst, cone.yield(sigma) / scale);
@@ -87,18 +103,22 @@ TEST(DruckerPragerReturn, RandomTrialsEndOnTheSurfaceWithFlowAlongThePotential) 
           ASSERT_TRUE(on_cone && on_cutoff);
           ++hits[std::isfinite(t) ? "corner" : "apex"];
           // s shrinks along itself; the mean stress falls to the limit.
-          EXPECT_LT((deviator(sigma) - sqrt_j2(sigma) / sqrt_j2(trial) * deviator(trial)).norm(), 1e-9 * scale);
+          EXPECT_LT((deviator(sigma) - sqrt_j2(sigma) / sqrt_j2(trial) * deviator(trial)).norm(),
+                    1e-9 * scale);
         }
       }
-      std::cout << "    psi " << psi / deg << " t " << t << ": worst f/|sigma| " << worst << " (tolerance 1e-10)\n";
+      std::cout << "    psi " << psi / deg << " t " << t << ": worst f/|sigma| " << worst
+                << " (tolerance 1e-10)\n";
     }
   }
   for (const auto& [name, count] : hits) std::cout << "    " << name << ": " << count << '\n';
-  for (const char* region : {"elastic", "cone", "cut-off", "corner", "apex"}) EXPECT_GT(hits[region], 10) << region;
+  for (const char* region : {"elastic", "cone", "cut-off", "corner", "apex"})
+    EXPECT_GT(hits[region], 10) << region;
 }
 
 const char* const clay =
-    "type: drucker_prager\ndensity: 2000\nyoungs_modulus: 2.0e7\npoisson_ratio: 0.3\nfriction_angle: 30\n"
+    "type: drucker_prager\ndensity: 2000\nyoungs_modulus: 2.0e7\npoisson_ratio: "
+    "0.3\nfriction_angle: 30\n"
     "dilation_angle: 10\ncohesion: 1.0e4\n";
 
 TEST(DruckerPrager, RandomStepsAreFrameIndifferent) {
@@ -116,7 +136,8 @@ TEST(DruckerPrager, RandomStepsAreFrameIndifferent) {
     db.strain_increment = Q * da.strain_increment * Q.transpose();
     m->update(da, a);
     m->update(db, b);
-    EXPECT_LT((Q * a.stress * Q.transpose() - b.stress).norm(), 1e-9 * std::max(1e4, a.stress.norm()));
+    EXPECT_LT((Q * a.stress * Q.transpose() - b.stress).norm(),
+              1e-9 * std::max(1e4, a.stress.norm()));
     EXPECT_LE(m->yield_function(a), 1e-8 * std::max(1e4, a.stress.norm()));
     plastic += a.plastic_strain > 0.0;
   }
@@ -130,12 +151,14 @@ TEST(DruckerPrager, RandomStepsAreFrameIndifferent) {
 // d eps_xx - d eps_yy = sqrt(1 - 3 alpha^2) mu.
 TEST(DruckerPrager, AssociatedPlaneStrainLimitIsMohrCoulomb) {
   const auto m = material_from_yaml(
-      "type: drucker_prager\ndensity: 2000\nyoungs_modulus: 2.0e7\npoisson_ratio: 0.3\nfriction_angle: 30\n"
+      "type: drucker_prager\ndensity: 2000\nyoungs_modulus: 2.0e7\npoisson_ratio: "
+      "0.3\nfriction_angle: 30\n"
       "dilation_angle: 30\ncohesion: 1.0e4\n");
   MaterialState state;
   state.stress = -1e5 * Tensor::Identity();
   Deformation d;
-  const double alpha = std::tan(30 * deg) / std::sqrt(9 + 12 * std::tan(30 * deg) * std::tan(30 * deg));
+  const double alpha =
+      std::tan(30 * deg) / std::sqrt(9 + 12 * std::tan(30 * deg) * std::tan(30 * deg));
   const double mu = 1e-4, sum = 3 * alpha * mu, difference = std::sqrt(1 - 3 * alpha * alpha) * mu;
   d.strain_increment(0, 0) = 0.5 * (sum + difference);
   d.strain_increment(1, 1) = 0.5 * (sum - difference);

@@ -1,9 +1,10 @@
+#include "mpm/material/friction_softening.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "mpm/material/friction_softening.hpp"
 #include "mpm/material/rowe_dilatancy.hpp"
 
 namespace mpm {
@@ -36,8 +37,10 @@ TEST(FrictionSoftening, RoweDilationIsZeroAtResidualAndPositiveBefore) {
   EXPECT_GT(law.dilation_angle(10.5 * deg), 0.0);
   EXPECT_EQ(law.dilation_angle(5 * deg), 0.0);  // clamped
   const double peak = law.dilation_angle(45 * deg);
-  EXPECT_NEAR(std::sin(peak), (std::sin(45 * deg) - std::sin(10 * deg)) / (1 - std::sin(10 * deg) * std::sin(45 * deg)),
-              1e-15);
+  EXPECT_NEAR(
+      std::sin(peak),
+      (std::sin(45 * deg) - std::sin(10 * deg)) / (1 - std::sin(10 * deg) * std::sin(45 * deg)),
+      1e-15);
   EXPECT_LT(peak, 45 * deg);
   double previous = 0.0;
   for (double phi = 10 * deg; phi <= 45 * deg; phi += 0.1 * deg) {
@@ -48,7 +51,8 @@ TEST(FrictionSoftening, RoweDilationIsZeroAtResidualAndPositiveBefore) {
 }
 
 TEST(FrictionSoftening, ConstantDilationIsCappedAtTheMobilisedFriction) {
-  const FrictionSoftening law(40 * deg, 20 * deg, 10.0, FrictionSoftening::Dilatancy::constant, 25 * deg);
+  const FrictionSoftening law(40 * deg, 20 * deg, 10.0, FrictionSoftening::Dilatancy::constant,
+                              25 * deg);
   EXPECT_DOUBLE_EQ(law.dilation_angle(40 * deg), 25 * deg);
   EXPECT_DOUBLE_EQ(law.dilation_angle(22 * deg), 22 * deg);
 }

@@ -7,7 +7,8 @@
 namespace mpm::testing {
 namespace {
 
-const char* const steel = "type: linear_elastic\ndensity: 7800\nyoungs_modulus: 2.0e11\npoisson_ratio: 0.25\n";
+const char* const steel =
+    "type: linear_elastic\ndensity: 7800\nyoungs_modulus: 2.0e11\npoisson_ratio: 0.25\n";
 
 TEST(LinearElastic, ModuliFromYoungsModulusAndPoissonRatio) {
   const auto m = material_from_yaml(steel);

@@ -25,24 +25,28 @@ TEST(MaterialRegistry, UnknownTypeIsRefusedWithASuggestion) {
 }
 
 TEST(MaterialRegistry, IncompressiblePoissonRatioIsRefusedAtItsKey) {
-  const auto error =
-      material_error("type: linear_elastic\ndensity: 2000\nyoungs_modulus: 1.0e7\npoisson_ratio: 0.5\n");
+  const auto error = material_error(
+      "type: linear_elastic\ndensity: 2000\nyoungs_modulus: 1.0e7\npoisson_ratio: 0.5\n");
   EXPECT_EQ(error.where().line, 4);
-  EXPECT_NE(std::string(error.what()).find("poisson_ratio must be < 0.5 (got 0.5)"), std::string::npos);
+  EXPECT_NE(std::string(error.what()).find("poisson_ratio must be < 0.5 (got 0.5)"),
+            std::string::npos);
 }
 
 TEST(MaterialRegistry, NonPositiveModulusAndDensityAreRefusedAtTheirKeys) {
-  auto error = material_error("type: neo_hookean\ndensity: 2000\nyoungs_modulus: 0\npoisson_ratio: 0.3\n");
+  auto error =
+      material_error("type: neo_hookean\ndensity: 2000\nyoungs_modulus: 0\npoisson_ratio: 0.3\n");
   EXPECT_EQ(error.where().line, 3);
   EXPECT_NE(std::string(error.what()).find("youngs_modulus"), std::string::npos);
-  error = material_error("type: linear_elastic\ndensity: -1\nyoungs_modulus: 1e6\npoisson_ratio: 0.3\n");
+  error = material_error(
+      "type: linear_elastic\ndensity: -1\nyoungs_modulus: 1e6\npoisson_ratio: 0.3\n");
   EXPECT_EQ(error.where().line, 2);
   EXPECT_NE(std::string(error.what()).find("density"), std::string::npos);
 }
 
 TEST(MaterialRegistry, UnknownKeyIsRefusedWithASuggestion) {
   const auto error = material_error(
-      "type: linear_elastic\ndensity: 2000\nyoungs_modulus: 1.0e7\npoisson_ratio: 0.3\nobjective_rat: jaumann\n");
+      "type: linear_elastic\ndensity: 2000\nyoungs_modulus: 1.0e7\npoisson_ratio: "
+      "0.3\nobjective_rat: jaumann\n");
   EXPECT_EQ(error.where().line, 5);
   EXPECT_NE(std::string(error.what()).find("objective_rate"), std::string::npos);
 }

@@ -33,7 +33,9 @@ inline Tensor random_matrix(std::mt19937& rng, double scale) {
   return t;
 }
 
-inline Tensor random_symmetric(std::mt19937& rng, double scale) { return sym(random_matrix(rng, scale)); }
+inline Tensor random_symmetric(std::mt19937& rng, double scale) {
+  return sym(random_matrix(rng, scale));
+}
 
 inline Tensor random_rotation(std::mt19937& rng) {
   std::normal_distribution<double> n(0.0, 1.0);

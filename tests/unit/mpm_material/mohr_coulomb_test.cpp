@@ -1,3 +1,5 @@
+#include "mpm/material/mohr_coulomb.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
@@ -8,7 +10,6 @@
 #include <random>
 
 #include "material_test_support.hpp"
-#include "mpm/material/mohr_coulomb.hpp"
 #include "mpm/material/mohr_coulomb_return.hpp"
 
 namespace mpm::testing {
@@ -16,25 +17,36 @@ namespace {
 
 constexpr double deg = std::numbers::pi / 180.0;
 
-ElasticConstants soil_elasticity() { return ElasticConstants::from_youngs_poisson(2.0e7, 0.3); }
+ElasticConstants soil_elasticity() {
+  return ElasticConstants::from_youngs_poisson(2.0e7, 0.3);
+}
 
 // Gradients of the potentials of the six planes in sorted principal space.
 std::array<Vec3d, 6> potential_gradients(double dilation_angle) {
   const double s = std::sin(dilation_angle);
-  return {Vec3d(1 + s, 0, -(1 - s)), Vec3d(0, 1 + s, -(1 - s)), Vec3d(1 + s, -(1 - s), 0),
-          Vec3d::Unit(0),            Vec3d::Unit(1),            Vec3d::Unit(2)};
+  return {Vec3d(1 + s, 0, -(1 - s)),
+          Vec3d(0, 1 + s, -(1 - s)),
+          Vec3d(1 + s, -(1 - s), 0),
+          Vec3d::Unit(0),
+          Vec3d::Unit(1),
+          Vec3d::Unit(2)};
 }
 
 std::array<double, 6> plane_values(const MohrCoulombSurface& m, const Vec3d& s) {
   const double sp = m.sin_friction, k = 2 * m.cohesion * m.cos_friction;
   const double t = m.tensile_strength;
-  return {(1 + sp) * s[0] - (1 - sp) * s[2] - k, (1 + sp) * s[1] - (1 - sp) * s[2] - k,
-          (1 + sp) * s[0] - (1 - sp) * s[1] - k, s[0] - t, s[1] - t, s[2] - t};
+  return {(1 + sp) * s[0] - (1 - sp) * s[2] - k,
+          (1 + sp) * s[1] - (1 - sp) * s[2] - k,
+          (1 + sp) * s[0] - (1 - sp) * s[1] - k,
+          s[0] - t,
+          s[1] - t,
+          s[2] - t};
 }
 
 Vec3d plastic_strain(const ElasticConstants& e, const Vec3d& correction) {
   const double mean = correction.mean();
-  return (correction - Vec3d::Constant(mean)) / (2 * e.shear) + Vec3d::Constant(mean / (3 * e.bulk));
+  return (correction - Vec3d::Constant(mean)) / (2 * e.shear) +
+         Vec3d::Constant(mean / (3 * e.bulk));
 }
 
 std::string region_name(unsigned active) {
@@ -119,13 +131,14 @@ TEST(MohrCoulombReturn, RandomTrialsEndOnTheSurfaceWithFlowAlongThePotential) {
       EXPECT_GE(mu.minCoeff(), -1e-8 * strain.norm()) << region_name(r.active);
     }
     std::cout << "    phi " << k.phi / deg << " psi " << k.psi / deg << " c " << k.c << " t " << k.t
-              << ": worst f/|sigma| " << worst_yield << " (tolerance 1e-8), worst flow residual " << worst_flow
-              << " (tolerance 1e-8)\n";
+              << ": worst f/|sigma| " << worst_yield << " (tolerance 1e-8), worst flow residual "
+              << worst_flow << " (tolerance 1e-8)\n";
   }
   for (const auto& [name, count] : hits) std::cout << "    " << name << ": " << count << '\n';
   for (const char* region :
-       {"elastic", "shear plane", "tension plane", "compression edge", "extension edge", "shear-tension line",
-        "biaxial tension line", "shear apex", "tension apex", "tension corner (1=2)", "tension corner (2=3)"}) {
+       {"elastic", "shear plane", "tension plane", "compression edge", "extension edge",
+        "shear-tension line", "biaxial tension line", "shear apex", "tension apex",
+        "tension corner (1=2)", "tension corner (2=3)"}) {
     EXPECT_GT(hits[region], 5) << region << " was hardly reached";
   }
 }
@@ -158,7 +171,8 @@ TEST(MohrCoulomb, ElasticInsideTheSurface) {
   d.strain_increment(0, 0) = -1e-5;
   d.strain_increment(0, 1) = d.strain_increment(1, 0) = 2e-5;
   m->update(d, state);
-  EXPECT_LT(relative_difference(state.stress, -1e5 * Tensor::Identity() + e.stress_increment(d.strain_increment)),
+  EXPECT_LT(relative_difference(state.stress,
+                                -1e5 * Tensor::Identity() + e.stress_increment(d.strain_increment)),
             1e-14);
   EXPECT_EQ(state.plastic_strain, 0.0);
   EXPECT_NEAR(m->bulk_modulus(), e.bulk, 1e-6);
@@ -194,15 +208,17 @@ TEST(MohrCoulomb, RandomStepsStayAdmissibleCoaxialAndFrameIndifferent) {
     const double difference = (Q * state.stress * Q.transpose() - rotated.stress).norm() / scale;
     worst_objectivity = std::max(worst_objectivity, difference);
     EXPECT_LT(difference, 1e-9);
-    EXPECT_NEAR(state.plastic_strain, rotated.plastic_strain, 1e-9 * std::max(1e-3, state.plastic_strain));
+    EXPECT_NEAR(state.plastic_strain, rotated.plastic_strain,
+                1e-9 * std::max(1e-3, state.plastic_strain));
     if (state.plastic_strain > 0.0) {
       ++plastic;
       const Tensor strain = e.strain_increment(trial - state.stress);
-      EXPECT_LT((strain * state.stress - state.stress * strain).norm(), 1e-8 * strain.norm() * scale);
+      EXPECT_LT((strain * state.stress - state.stress * strain).norm(),
+                1e-8 * strain.norm() * scale);
     }
   }
-  std::cout << "    " << plastic << " plastic steps; worst |Q s Q^T - s(Q)|/|s| " << worst_objectivity
-            << " (tolerance 1e-9)\n";
+  std::cout << "    " << plastic << " plastic steps; worst |Q s Q^T - s(Q)|/|s| "
+            << worst_objectivity << " (tolerance 1e-9)\n";
   EXPECT_GT(plastic, 200);
 }
 
@@ -210,7 +226,8 @@ TEST(MohrCoulomb, RandomStepsStayAdmissibleCoaxialAndFrameIndifferent) {
 // point to the shear plane with sigma_zz kept as the intermediate stress.
 TEST(MohrCoulomb, PlaneStrainCompressionReachesTheFrictionalLimit) {
   const auto m = material_from_yaml(
-      "type: mohr_coulomb\ndensity: 2650\nyoungs_modulus: 2.0e7\npoisson_ratio: 0.3\nfriction_angle: 30\n");
+      "type: mohr_coulomb\ndensity: 2650\nyoungs_modulus: 2.0e7\npoisson_ratio: "
+      "0.3\nfriction_angle: 30\n");
   MaterialState state;
   state.stress = -1e5 * Tensor::Identity();
   Deformation d;
@@ -256,7 +273,8 @@ TEST(MohrCoulomb, SofteningLowersTheMobilisedFrictionAngleToResidual) {
     EXPECT_LE(phi, previous + 1e-15);
     previous = phi;
   }
-  std::cout << "    after shear: eps_p " << state.plastic_strain << ", phi_m " << previous / deg << " deg\n";
+  std::cout << "    after shear: eps_p " << state.plastic_strain << ", phi_m " << previous / deg
+            << " deg\n";
   EXPECT_GT(state.plastic_strain, 1.0);
   EXPECT_NEAR(previous, 10 * deg, 1e-6);
   EXPECT_GT(state.internal[0], 0.0);  // Rowe dilatancy dilates while phi_m > phi_r
@@ -264,8 +282,10 @@ TEST(MohrCoulomb, SofteningLowersTheMobilisedFrictionAngleToResidual) {
 
 TEST(MohrCoulomb, CohesionDegradesWhileYieldingOnly) {
   const auto m = material_from_yaml(
-      "type: mohr_coulomb\ndensity: 2650\nyoungs_modulus: 2.0e7\npoisson_ratio: 0.3\nfriction_angle: 30\n"
-      "dilation_angle: 20\ncohesion: 1.0e4\ncohesion_degradation: {critical_volumetric_strain: 0.01}\n");
+      "type: mohr_coulomb\ndensity: 2650\nyoungs_modulus: 2.0e7\npoisson_ratio: "
+      "0.3\nfriction_angle: 30\n"
+      "dilation_angle: 20\ncohesion: 1.0e4\ncohesion_degradation: {critical_volumetric_strain: "
+      "0.01}\n");
   MaterialState state;
   Deformation d;
   d.strain_increment(0, 0) = -1e-6;
@@ -285,8 +305,10 @@ TEST(MohrCoulomb, CohesionDegradesWhileYieldingOnly) {
 }
 
 TEST(MohrCoulomb, InvalidParametersAreRefusedAtTheirKeys) {
-  const std::string base = "type: mohr_coulomb\ndensity: 2650\nyoungs_modulus: 2.0e7\npoisson_ratio: 0.3\n";
-  auto error = material_error(base + "friction_angle: 20\nresidual_friction_angle: 30\nsoftening_rate: 5\n");
+  const std::string base =
+      "type: mohr_coulomb\ndensity: 2650\nyoungs_modulus: 2.0e7\npoisson_ratio: 0.3\n";
+  auto error =
+      material_error(base + "friction_angle: 20\nresidual_friction_angle: 30\nsoftening_rate: 5\n");
   EXPECT_EQ(error.where().line, 6);
   EXPECT_NE(std::string(error.what()).find("residual_friction_angle"), std::string::npos);
   error = material_error(base + "friction_angle: 20\nresidual_friction_angle: 10\n");
@@ -300,10 +322,12 @@ TEST(MohrCoulomb, InvalidParametersAreRefusedAtTheirKeys) {
   EXPECT_EQ(error.where().line, 7);
   error = material_error(base + "friction_angle: 30\ncohesion: -1\n");
   EXPECT_EQ(error.where().line, 6);
-  error = material_error(base + "friction_angle: 30\ncohesion_degradation: {critical_volumetric_strain: 0}\n");
+  error = material_error(
+      base + "friction_angle: 30\ncohesion_degradation: {critical_volumetric_strain: 0}\n");
   EXPECT_EQ(error.where().line, 6);
-  error = material_error("type: mohr_coulomb\ndensity: 2650\nyoungs_modulus: 2.0e7\npoisson_ratio: 0.5\n"
-                         "friction_angle: 30\n");
+  error = material_error(
+      "type: mohr_coulomb\ndensity: 2650\nyoungs_modulus: 2.0e7\npoisson_ratio: 0.5\n"
+      "friction_angle: 30\n");
   EXPECT_EQ(error.where().line, 4);
 }
 

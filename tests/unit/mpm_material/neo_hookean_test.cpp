@@ -9,7 +9,8 @@
 namespace mpm::testing {
 namespace {
 
-const char* const rubber = "type: neo_hookean\ndensity: 1100\nyoungs_modulus: 1.0e6\npoisson_ratio: 0.3\n";
+const char* const rubber =
+    "type: neo_hookean\ndensity: 1100\nyoungs_modulus: 1.0e6\npoisson_ratio: 0.3\n";
 
 TEST(NeoHookean, IsHyperelasticWithTheSmallStrainModuli) {
   const auto m = material_from_yaml(rubber);

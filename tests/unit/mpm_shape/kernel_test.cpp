@@ -156,7 +156,8 @@ TYPED_TEST(KernelTest, ContinuousAcrossCellBoundaries) {
       breaks.push_back(k + 0.5);  // where GIMP's first value changes
     }
     for (double xb : breaks) {
-      const Dense left = dense<Kernel>(xb - e, lp, kCells), right = dense<Kernel>(xb + e, lp, kCells);
+      const Dense left = dense<Kernel>(xb - e, lp, kCells),
+                  right = dense<Kernel>(xb + e, lp, kCells);
       for (std::size_t i = 0; i < left.N.size(); ++i) {
         EXPECT_NEAR(left.N[i], right.N[i], 1e-9) << "at " << xb << " value " << i;
         // (a clipped GIMP domain has a kink where it starts touching a face)
@@ -251,7 +252,8 @@ double cox_de_boor_derivative(const std::vector<double>& t, std::size_t i, int p
   const auto pd = static_cast<std::size_t>(p);
   double value = 0.0;
   if (t[i + pd] > t[i]) value += p / (t[i + pd] - t[i]) * cox_de_boor(t, i, p - 1, x);
-  if (t[i + pd + 1] > t[i + 1]) value -= p / (t[i + pd + 1] - t[i + 1]) * cox_de_boor(t, i + 1, p - 1, x);
+  if (t[i + pd + 1] > t[i + 1])
+    value -= p / (t[i + pd + 1] - t[i + 1]) * cox_de_boor(t, i + 1, p - 1, x);
   return value;
 }
 
@@ -262,7 +264,8 @@ TEST(QuadraticBsplineKernel, MatchesCoxDeBoorRecursion) {
     for (double xi : sample_points(cells, 300, 6)) {
       const Dense d = dense<QuadraticBsplineKernel>(xi, 0.0, cells);
       for (std::size_t i = 0; i < d.N.size(); ++i) {
-        EXPECT_NEAR(d.N[i], cox_de_boor(t, i, 2, xi), 1e-14) << "cells " << cells << " xi " << xi << " i " << i;
+        EXPECT_NEAR(d.N[i], cox_de_boor(t, i, 2, xi), 1e-14)
+            << "cells " << cells << " xi " << xi << " i " << i;
         EXPECT_NEAR(d.dN[i], cox_de_boor_derivative(t, i, 2, xi), 1e-13)
             << "cells " << cells << " xi " << xi << " i " << i;
       }
@@ -272,15 +275,19 @@ TEST(QuadraticBsplineKernel, MatchesCoxDeBoorRecursion) {
 
 TEST(QuadraticBsplineKernel, GrevilleAbscissae) {
   const std::vector<double> expected{0.0, 0.5, 1.5, 2.5, 3.0};
-  for (int i = 0; i < 5; ++i) EXPECT_EQ(QuadraticBsplineKernel::dof_coordinate(i, 3), expected[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < 5; ++i)
+    EXPECT_EQ(QuadraticBsplineKernel::dof_coordinate(i, 3), expected[static_cast<std::size_t>(i)]);
   const auto t = open_knots(3);
-  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(QuadraticBsplineKernel::dof_coordinate(static_cast<int>(i), 3), 0.5 * (t[i + 1] + t[i + 2]));
+  for (std::size_t i = 0; i < 5; ++i)
+    EXPECT_EQ(QuadraticBsplineKernel::dof_coordinate(static_cast<int>(i), 3),
+              0.5 * (t[i + 1] + t[i + 2]));
 }
 
 TEST(ShapeKernels, PointsOutsideTheGridAreClampedToTheFace) {
   for (double xi : {-0.5, kCells + 0.3}) {
     const double face = std::clamp(xi, 0.0, double{kCells});
-    const Dense a = dense<QuadraticBsplineKernel>(xi, 0.0, kCells), b = dense<QuadraticBsplineKernel>(face, 0.0, kCells);
+    const Dense a = dense<QuadraticBsplineKernel>(xi, 0.0, kCells),
+                b = dense<QuadraticBsplineKernel>(face, 0.0, kCells);
     EXPECT_EQ(a.N, b.N);
     const Dense c = dense<GimpKernel>(xi, 0.25, kCells), e = dense<GimpKernel>(face, 0.25, kCells);
     EXPECT_EQ(c.N, e.N);

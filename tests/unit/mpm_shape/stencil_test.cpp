@@ -1,4 +1,6 @@
 // Tensor-product stencils in 1D, 2D and 3D and the per-run kernel dispatch.
+#include "mpm/shape/stencil.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -6,7 +8,6 @@
 #include <vector>
 
 #include "mpm/shape/shape_dispatch.hpp"
-#include "mpm/shape/stencil.hpp"
 
 namespace mpm {
 namespace {
@@ -34,7 +35,8 @@ Vec<Dim> value_position(std::size_t flat, const GridGeometry<Dim>& g) {
   Vec<Dim> x;
   for (int d = 0; d < Dim; ++d) {
     const auto n = static_cast<std::size_t>(Kernel::dofs(g.cells[d]));
-    x[d] = g.origin[d] + g.spacing[d] * Kernel::dof_coordinate(static_cast<int>(flat % n), g.cells[d]);
+    x[d] =
+        g.origin[d] + g.spacing[d] * Kernel::dof_coordinate(static_cast<int>(flat % n), g.cells[d]);
     flat /= n;
   }
   return x;
@@ -67,8 +69,8 @@ struct Case {
   using Kernel = K;
 };
 using Cases = ::testing::Types<Case<1, GimpKernel>, Case<2, LinearKernel>, Case<2, GimpKernel>,
-                               Case<2, QuadraticBsplineKernel>, Case<3, LinearKernel>, Case<3, GimpKernel>,
-                               Case<3, QuadraticBsplineKernel>>;
+                               Case<2, QuadraticBsplineKernel>, Case<3, LinearKernel>,
+                               Case<3, GimpKernel>, Case<3, QuadraticBsplineKernel>>;
 TYPED_TEST_SUITE(StencilTest, Cases);
 
 TYPED_TEST(StencilTest, PartitionOfUnityAndLinearReproductionInside) {
@@ -152,7 +154,8 @@ TEST(ShapeDispatch, PicksTheKernelOfTheRun) {
   EXPECT_EQ(support(ShapeKind::linear), 2);
   EXPECT_EQ(support(ShapeKind::gimp), 3);
   EXPECT_EQ(support(ShapeKind::quadratic_bspline), 3);
-  const int dofs = with_kernel<3>(ShapeKind::quadratic_bspline, [](auto kernel) { return decltype(kernel)::dofs(5); });
+  const int dofs = with_kernel<3>(ShapeKind::quadratic_bspline,
+                                  [](auto kernel) { return decltype(kernel)::dofs(5); });
   EXPECT_EQ(dofs, 7);
   EXPECT_EQ(to_string(ShapeKind::quadratic_bspline), "quadratic_bspline");
 }

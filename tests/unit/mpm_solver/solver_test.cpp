@@ -1,3 +1,5 @@
+#include "mpm/solver/solver.hpp"
+
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -10,7 +12,6 @@
 #include <vector>
 
 #include "cosim/error.hpp"
-#include "mpm/solver/solver.hpp"
 #include "mpm_case_builder.hpp"
 
 namespace mpm {
@@ -59,8 +60,10 @@ void expect_transfer_conserves(ShapeKind shape) {
   }
   const double mass_error = std::abs(mass - before.mass) / before.mass;
   const double momentum_error = (momentum - before.momentum).norm() / (before.mass * 1.0);
-  std::printf("%dD %s: grid mass error %.2e, momentum error %.2e, net internal force %.2e N (tolerance 1e-12)\n",
-              Dim, std::string(to_string(shape)).c_str(), mass_error, momentum_error, force.norm());
+  std::printf(
+      "%dD %s: grid mass error %.2e, momentum error %.2e, net internal force %.2e N (tolerance "
+      "1e-12)\n",
+      Dim, std::string(to_string(shape)).c_str(), mass_error, momentum_error, force.norm());
   EXPECT_LT(mass_error, 1e-12);
   EXPECT_LT(momentum_error, 1e-12);
   // Internal forces are equilibrated: the gradients of a partition of unity sum to zero.
@@ -138,7 +141,8 @@ double volume_change_spread_in_cells(LockingMitigation locking) {
   for (std::size_t p = 0; p < particles.size(); ++p) {
     const Vec<2> x = particles.position[p];
     particles.velocity[p] = Vec<2>(-x[0] * x[1], 0.0);
-    cell[p] = 1000L * static_cast<long>(std::floor(x[0] / 0.1)) + static_cast<long>(std::floor(x[1] / 0.1));
+    cell[p] = 1000L * static_cast<long>(std::floor(x[0] / 0.1)) +
+              static_cast<long>(std::floor(x[1] / 0.1));
   }
   std::vector<double> initial(particles.volume);
   solver.step(1e-4);
@@ -160,8 +164,9 @@ TEST(SolverLocking, BbarPointsOfOneCellChangeVolumeAlike) {
   const double none = volume_change_spread_in_cells(LockingMitigation::none);
   const double bbar = volume_change_spread_in_cells(LockingMitigation::bbar);
   const double fbar = volume_change_spread_in_cells(LockingMitigation::fbar);
-  std::printf("largest in-cell spread of J - 1: none %.3e, bbar %.3e, fbar %.3e (tolerance 1e-3 x none)\n", none,
-              bbar, fbar);
+  std::printf(
+      "largest in-cell spread of J - 1: none %.3e, bbar %.3e, fbar %.3e (tolerance 1e-3 x none)\n",
+      none, bbar, fbar);
   ASSERT_GT(none, 1e-6);
   EXPECT_LT(bbar, 1e-3 * none);
   EXPECT_LT(fbar, 1e-3 * none);
@@ -218,14 +223,17 @@ void expect_stress_rotates_with_body(const std::string& rate) {
     const Tensor s = from_voigt(particles.stress[p]);
     worst = std::max(worst, (s.topLeftCorner<2, 2>() - expected).norm() / s0);
   }
-  std::printf("%s: stress after a %.2f rad rigid rotation, worst relative error %.3e (tolerance 5e-3)\n",
-              rate.c_str(), angle, worst);
+  std::printf(
+      "%s: stress after a %.2f rad rigid rotation, worst relative error %.3e (tolerance 5e-3)\n",
+      rate.c_str(), angle, worst);
   // The remainder is the transfer error of a rotating point set (the mass-weighted
   // grid velocity is not exactly the rigid field), the same for both rates.
   EXPECT_LT(worst, 5e-3);
 }
 
-TEST(SolverObjectivity, JaumannStressTurnsWithRigidRotation) { expect_stress_rotates_with_body("jaumann"); }
+TEST(SolverObjectivity, JaumannStressTurnsWithRigidRotation) {
+  expect_stress_rotates_with_body("jaumann");
+}
 TEST(SolverObjectivity, PolarRotationStressTurnsWithRigidRotation) {
   expect_stress_rotates_with_body("polar_rotation");
 }
@@ -246,7 +254,8 @@ double worst_domain_error(GimpDomain domain, const Eigen::Matrix2d& L, int steps
   Solver<2> solver(c);
   const Vec<2> centre(1.2, 1.2);
   solver.add_grid_velocity_correction([&](double, double, Grid<2>& grid) {
-    for (std::size_t i = 0; i < grid.size(); ++i) grid.velocity[i] = L * (grid.position(i) - centre);
+    for (std::size_t i = 0; i < grid.size(); ++i)
+      grid.velocity[i] = L * (grid.position(i) - centre);
   });
   const auto& particles = solver.particles();
   const std::vector<Vec<2>> initial = particles.half_length;
@@ -257,9 +266,12 @@ double worst_domain_error(GimpDomain domain, const Eigen::Matrix2d& L, int steps
   double worst = 0.0;
   for (std::size_t p = 0; p < particles.size(); ++p) {
     EXPECT_LT((particles.deformation_gradient[p] - F).norm(), 1e-12);
-    const Vec<2> expected =
-        domain == GimpDomain::deformed ? Vec<2>(initial[p].cwiseProduct(F.diagonal().cwiseAbs())) : initial[p];
-    worst = std::max(worst, ((particles.half_length[p] - expected).array() / initial[p].array()).abs().maxCoeff());
+    const Vec<2> expected = domain == GimpDomain::deformed
+                                ? Vec<2>(initial[p].cwiseProduct(F.diagonal().cwiseAbs()))
+                                : initial[p];
+    worst = std::max(
+        worst,
+        ((particles.half_length[p] - expected).array() / initial[p].array()).abs().maxCoeff());
   }
   return worst;
 }
@@ -268,7 +280,8 @@ TEST(SolverGimpDomain, DeformedDomainFollowsTheDiagonalOfF) {
   Eigen::Matrix2d L;
   L << 0.5, 0.2, 0.0, -0.3;  // stretch in x, compression in y, shear
   const double worst = worst_domain_error(GimpDomain::deformed, L, 200, 1e-3);
-  std::printf("deformed GIMP domain: worst relative half-length error %.2e (tolerance 1e-13)\n", worst);
+  std::printf("deformed GIMP domain: worst relative half-length error %.2e (tolerance 1e-13)\n",
+              worst);
   EXPECT_LT(worst, 1e-13);
 }
 
@@ -299,8 +312,10 @@ TEST(SolverContact, HeadOnCollisionConservesMomentumAndBounces) {
     double right_of_left = -1e9, left_of_right = 1e9;
     for (std::size_t p = 0; p < solver.particles().size(); ++p) {
       const double x = solver.particles().position[p][0];
-      if (solver.particles().body[p] == 0) right_of_left = std::max(right_of_left, x);
-      else left_of_right = std::min(left_of_right, x);
+      if (solver.particles().body[p] == 0)
+        right_of_left = std::max(right_of_left, x);
+      else
+        left_of_right = std::min(left_of_right, x);
     }
     min_gap = std::min(min_gap, left_of_right - right_of_left);
   }
@@ -308,9 +323,11 @@ TEST(SolverContact, HeadOnCollisionConservesMomentumAndBounces) {
   const double momentum_error = (end.momentum - start.momentum).norm() / start.mass;
   const double energy_start = start.kinetic_energy + start.strain_energy;
   const double energy_end = end.kinetic_energy + end.strain_energy;
-  std::printf("collision: momentum error %.2e m/s (tolerance 1e-12); energy %.3f J -> %.3f J "
-              "(kinetic %.3f, strain %.3f; tolerance +8 %%); closest approach of the point centres %.4f m\n",
-              momentum_error, energy_start, energy_end, end.kinetic_energy, end.strain_energy, min_gap);
+  std::printf(
+      "collision: momentum error %.2e m/s (tolerance 1e-12); energy %.3f J -> %.3f J "
+      "(kinetic %.3f, strain %.3f; tolerance +8 %%); closest approach of the point centres %.4f "
+      "m\n",
+      momentum_error, energy_start, energy_end, end.kinetic_energy, end.strain_energy, min_gap);
   EXPECT_LT(momentum_error, 1e-12);
   // Explicit MPM with a FLIP blend is not exactly energy-conserving; a few per cent is usual.
   EXPECT_LT(energy_end, 1.08 * energy_start);
@@ -321,8 +338,8 @@ TEST(SolverContact, HeadOnCollisionConservesMomentumAndBounces) {
     (P.body[p] == 0 ? v_left : v_right) += P.mass[p] * P.velocity[p][0];
     (P.body[p] == 0 ? m_left : m_right) += P.mass[p];
   }
-  std::printf("collision: mean velocities after %.3f s: left %.4f m/s, right %.4f m/s\n", solver.time(),
-              v_left / m_left, v_right / m_right);
+  std::printf("collision: mean velocities after %.3f s: left %.4f m/s, right %.4f m/s\n",
+              solver.time(), v_left / m_left, v_right / m_right);
   EXPECT_LT(v_left / m_left, v_right / m_right);  // they separate
 }
 
@@ -359,8 +376,11 @@ TEST(SolverContact, BlockOnRigidFloorDeceleratesAtMuG) {
   const double t2 = solver.time(), v2 = mean_velocity();
   const double deceleration = (v1 - v2) / (t2 - t1);
   const double error = std::abs(deceleration - mu * g) / (mu * g);
-  std::printf("sliding block: deceleration %.4f m/s^2, Coulomb mu g %.4f m/s^2, error %.2f %% (tolerance 10 %%); "
-              "friction work %.4f J\n", deceleration, mu * g, 100 * error, solver.totals().contact_dissipation);
+  std::printf(
+      "sliding block: deceleration %.4f m/s^2, Coulomb mu g %.4f m/s^2, error %.2f %% (tolerance "
+      "10 %%); "
+      "friction work %.4f J\n",
+      deceleration, mu * g, 100 * error, solver.totals().contact_dissipation);
   EXPECT_LT(error, 0.10);
   EXPECT_GT(solver.totals().contact_dissipation, 0.0);
 }

@@ -80,17 +80,17 @@ blocks
   EXPECT_EQ(mesh_cell_count(scratch / "blocks"), 400.0);
   // A mesh made already: its owner file's header.
   write_text(scratch / "mesh" / "constant" / "polyMesh" / "owner",
-        "FoamFile\n{\n    note        \"nPoints:1234  nCells:5678  nFaces:999  "
-        "nInternalFaces:99\";\n}\n");
+             "FoamFile\n{\n    note        \"nPoints:1234  nCells:5678  nFaces:999  "
+             "nInternalFaces:99\";\n}\n");
   EXPECT_EQ(mesh_cell_count(scratch / "mesh"), 5678.0);
   // Macros in the counts: unknown, not guessed.
   write_text(scratch / "macros" / "system" / "blockMeshDict",
-        "n 10;\nblocks ( hex (0 1 2 3 4 5 6 7) ($n 1 1) simpleGrading (1 1 1) );\n");
+             "n 10;\nblocks ( hex (0 1 2 3 4 5 6 7) ($n 1 1) simpleGrading (1 1 1) );\n");
   EXPECT_EQ(mesh_cell_count(scratch / "macros"), std::nullopt);
   EXPECT_EQ(mesh_cell_count(scratch / "nothing"), std::nullopt);
 
-  const fs::path shipped =
-      fs::path(COSIM_SOURCE_DIR) / "configs" / "openfoam_coupled" / "darcy_user_case" / "water.yaml";
+  const fs::path shipped = fs::path(COSIM_SOURCE_DIR) / "configs" / "openfoam_coupled" /
+                           "darcy_user_case" / "water.yaml";
   EXPECT_EQ(load_case(shipped).size.count("cells"), 160.0);
 }
 

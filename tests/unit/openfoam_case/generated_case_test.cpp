@@ -117,9 +117,12 @@ TEST(OpenFoamGeneratedCase, WaterRegionsSpanThe2dThickness) {
 }
 
 TEST(OpenFoamControlDict, RestartsFromTheLatestTimeAndWritesEveryFieldAtTheEnd) {
-  const std::string d = control_dict(
-      {.application = "interFoam", .end_time = 0.25, .time_step = 1e-3, .write_every = 50,
-       .write_density_at = {}, .write_steps_between = {}});
+  const std::string d = control_dict({.application = "interFoam",
+                                      .end_time = 0.25,
+                                      .time_step = 1e-3,
+                                      .write_every = 50,
+                                      .write_density_at = {},
+                                      .write_steps_between = {}});
   for (const char* entry :
        {"application interFoam;", "startFrom latestTime;", "endTime 0.25;", "deltaT 0.001;",
         "writeControl timeStep;", "writeInterval 50;", "adjustTimeStep no;",

@@ -5,8 +5,11 @@
 namespace {
 
 TEST(ControlDict, WritesTheDensityAloneOnlyAtTheStepItIsAskedFor) {
-  openfoam::ControlSettings s{.application = "MPPICInterFoam", .end_time = 0.01,
-                              .time_step = 1e-3, .write_every = 10, .write_density_at = {},
+  openfoam::ControlSettings s{.application = "MPPICInterFoam",
+                              .end_time = 0.01,
+                              .time_step = 1e-3,
+                              .write_every = 10,
+                              .write_density_at = {},
                               .write_steps_between = {}};
   EXPECT_EQ(openfoam::control_dict(s).find("functions"), std::string::npos);
   s.write_density_at = 0.009;
@@ -18,8 +21,10 @@ TEST(ControlDict, WritesTheDensityAloneOnlyAtTheStepItIsAskedFor) {
 }
 
 TEST(ControlDict, WritesThePressureAndTheCloudsMomentumAtEveryStepOfTheWindowBeforeItsEnd) {
-  const openfoam::ControlSettings s{.application = "MPPICInterFoam", .end_time = 0.004,
-                                    .time_step = 1e-3, .write_every = 4,
+  const openfoam::ControlSettings s{.application = "MPPICInterFoam",
+                                    .end_time = 0.004,
+                                    .time_step = 1e-3,
+                                    .write_every = 4,
                                     .write_density_at = 0.003,
                                     .write_steps_between = std::pair{0.001, 0.003}};
   const std::string text = openfoam::control_dict(s);

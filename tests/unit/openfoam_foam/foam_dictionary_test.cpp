@@ -13,9 +13,9 @@ namespace {
 TEST(OpenFoamDictionaryValue, ANumberIsTheValuesLastToken) {
   EXPECT_EQ(scalar_value("1000", "transportProperties", "water/rho"), 1000.0);
   EXPECT_EQ(scalar_value("[1 -3 0 0 0 0 0] 998", "transportProperties", "water/rho"), 998.0);
-  EXPECT_EQ(scalar_value("nu [0 2 -1 0 0 0 0] 1.002004008016032e-06", "transportProperties",
-                         "water/nu"),
-            1.002004008016032e-06);
+  EXPECT_EQ(
+      scalar_value("nu [0 2 -1 0 0 0 0] 1.002004008016032e-06", "transportProperties", "water/nu"),
+      1.002004008016032e-06);
 }
 
 TEST(OpenFoamDictionaryValue, AVectorIsTheValuesLastThreeNumbers) {

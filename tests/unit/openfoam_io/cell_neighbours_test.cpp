@@ -21,8 +21,7 @@ std::vector<std::size_t> sorted(std::span<const std::size_t> cells) {
   return v;
 }
 
-void write_labels(const fs::path& file, const std::string& object,
-                  const std::vector<int>& labels) {
+void write_labels(const fs::path& file, const std::string& object, const std::vector<int>& labels) {
   std::ofstream out(file);
   out << "FoamFile\n{\n    version 2.0;\n    format ascii;\n    class labelList;\n"
       << "    note \"nCells:4\";\n    location \"constant/polyMesh\";\n    object " << object

@@ -17,7 +17,8 @@ void write_step(const fs::path& case_dir, const std::string& time, const std::ve
                 const std::vector<double>& trans) {
   fs::create_directories(case_dir / time);
   const std::string patches = "    \".*\" { type zeroGradient; }";
-  write_vol_field(case_dir / time / "p", time, {FieldType::scalar, "[1 -1 -2 0 0 0 0]", p, patches});
+  write_vol_field(case_dir / time / "p", time,
+                  {FieldType::scalar, "[1 -1 -2 0 0 0 0]", p, patches});
   write_vol_field(case_dir / time / "kinematicCloud:UTrans", time,
                   {FieldType::vector, "[1 1 -1 0 0 0 0]", trans, patches});
 }

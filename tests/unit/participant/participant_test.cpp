@@ -101,7 +101,7 @@ TEST(Participant, ReadIncrementsAddUpExactlyToTheWindowIntegral) {
 TEST(Participant, UsageErrorsAreReportedNotIgnored) {
   Participant p("soil", CouplingEndpoint{});
   p.declare_mesh(line_grid());
-  EXPECT_THROW(p.declare_mesh(line_grid()), Error);                              // twice
+  EXPECT_THROW(p.declare_mesh(line_grid()), Error);  // twice
   FieldSpec on_unknown_mesh = field("x");
   on_unknown_mesh.mesh = "nope";
   EXPECT_THROW(p.declare_write(on_unknown_mesh), Error);

@@ -66,8 +66,9 @@ TEST(SweCaseLimits, ACellWidthOfAPicometreIsRefusedBeforeAnyEdgeIsMade) {
 }
 
 TEST(SweCaseLimits, TooManyCellsAreRefusedIn1DAnd2D) {
-  EXPECT_THAT(error_of(replaced(dam, "segments:\n    - {to: 0.5, width: 0.01}\n    - {to: 1.0, width: 0.02}",
-                                "to: 1.0\n  cells: 2000000000")),
+  EXPECT_THAT(error_of(replaced(
+                  dam, "segments:\n    - {to: 0.5, width: 0.01}\n    - {to: 1.0, width: 0.02}",
+                  "to: 1.0\n  cells: 2000000000")),
               HasSubstr("(2 000 000 000 cells)"));
   EXPECT_THAT(error_of(replaced(basin, "cells: [100, 100]", "cells: [1000000, 1000000]")),
               HasSubstr("key 'limits.memory_gib': the run would need about"));

@@ -1,3 +1,5 @@
+#include "swe/case/load_case.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -5,7 +7,6 @@
 #include "cosim/error.hpp"
 #include "input_error.hpp"
 #include "replaced_text.hpp"
-#include "swe/case/load_case.hpp"
 
 using cosim::testing::replaced;
 
@@ -98,14 +99,18 @@ TEST(SweCase, RefusesANegativeInitialDepthAtItsLine) {
 }
 
 TEST(SweCase, RefusesCellsOfZeroOrNegativeWidth) {
-  std::string message = error_of(replaced(stoker, "{to: 0.75, width: 0.016}", "{to: 0.2, width: 0.016}"));
+  std::string message =
+      error_of(replaced(stoker, "{to: 0.75, width: 0.016}", "{to: 0.2, width: 0.016}"));
   EXPECT_NE(message.find("segments[1].to"), std::string::npos) << message;
   EXPECT_NE(message.find("case.yaml:8"), std::string::npos) << message;
-  message = error_of(replaced(stoker, "from: 0.0\n  segments:\n    - {to: 0.25, width: 0.03}\n    - {to: 0.75, width: 0.016}\n    - {to: 1.0, width: 0.03}",
+  message = error_of(replaced(stoker,
+                              "from: 0.0\n  segments:\n    - {to: 0.25, width: 0.03}\n    - {to: "
+                              "0.75, width: 0.016}\n    - {to: 1.0, width: 0.03}",
                               "edges: [0.0, 0.5, 0.5, 1.0]"));
   EXPECT_NE(message.find("zero or negative width"), std::string::npos) << message;
   EXPECT_NE(message.find("mesh.edges"), std::string::npos) << message;
-  message = error_of(replaced(stoker, "width: 0.03}\n    - {to: 0.75", "width: -0.03}\n    - {to: 0.75"));
+  message =
+      error_of(replaced(stoker, "width: 0.03}\n    - {to: 0.75", "width: -0.03}\n    - {to: 0.75"));
   EXPECT_NE(message.find("width"), std::string::npos) << message;
 }
 
@@ -117,14 +122,16 @@ TEST(SweCase, RefusesAGaugeOutsideTheDomain) {
 }
 
 TEST(SweCase, RefusesABedProfileThatDoesNotCoverTheDomain) {
-  const std::string text = replaced(stoker, "initial:", "bed: {profile: [[0.2, 0.0], [1.0, 0.1]]}\ninitial:");
+  const std::string text =
+      replaced(stoker, "initial:", "bed: {profile: [[0.2, 0.0], [1.0, 0.1]]}\ninitial:");
   const std::string message = error_of(text);
   EXPECT_NE(message.find("bed.profile"), std::string::npos) << message;
   EXPECT_NE(message.find("must cover the domain"), std::string::npos) << message;
 }
 
 TEST(SweCase, RefusesKeysOfTheOtherDimension) {
-  std::string message = error_of(replaced(stoker, "boundaries: {left: transmissive", "boundaries: {x_min: transmissive"));
+  std::string message = error_of(
+      replaced(stoker, "boundaries: {left: transmissive", "boundaries: {x_min: transmissive"));
   EXPECT_NE(message.find("not a face of a 1D case"), std::string::npos) << message;
   message = error_of(replaced(stoker, "x: 0.5}", "position: [0.5, 0.0]}"));
   EXPECT_NE(message.find("a 1D gauge takes `x`"), std::string::npos) << message;

@@ -1,3 +1,5 @@
+#include "swe/coupling/bed_traction.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -5,7 +7,6 @@
 #include <vector>
 
 #include "cosim/error.hpp"
-#include "swe/coupling/bed_traction.hpp"
 #include "swe/solver_1d.hpp"
 #include "swe/solver_2d.hpp"
 
@@ -15,7 +16,8 @@ constexpr double g = 9.81, rho = 1000.0;
 
 swe::Solver1d line(std::size_t cells, double length) {
   std::vector<double> edges(cells + 1);
-  for (std::size_t i = 0; i <= cells; ++i) edges[i] = length * static_cast<double>(i) / static_cast<double>(cells);
+  for (std::size_t i = 0; i <= cells; ++i)
+    edges[i] = length * static_cast<double>(i) / static_cast<double>(cells);
   return swe::Solver1d(edges, swe::Physics{}, swe::Scheme{}, {});
 }
 
@@ -68,11 +70,11 @@ TEST(BedTraction, ExcessPressureIsTheWavesPushOverTheInitialSurfaceOnWetCellsOnl
   spec.pressure = swe::BedPressure::excess;
   spec.initial_surface = {1.2, 1.0, 1.0, 2.0};  // the last cell started under 1.5 m of water
   const auto t = swe::bed_traction(s, spec);
-  EXPECT_EQ(t[1], 0.0);                        // dry cell
-  EXPECT_NEAR(t[3], -rho * g * 0.1, 1e-9);     // crest
-  EXPECT_EQ(t[5], 0.0);                        // a trough does not pull
-  EXPECT_EQ(t[7], 0.0);                        // nor does water draining off the cell
-  EXPECT_EQ(t[0], 0.0);                        // no horizontal pressure
+  EXPECT_EQ(t[1], 0.0);                     // dry cell
+  EXPECT_NEAR(t[3], -rho * g * 0.1, 1e-9);  // crest
+  EXPECT_EQ(t[5], 0.0);                     // a trough does not pull
+  EXPECT_EQ(t[7], 0.0);                     // nor does water draining off the cell
+  EXPECT_EQ(t[0], 0.0);                     // no horizontal pressure
   spec.initial_surface.pop_back();
   EXPECT_THROW(swe::bed_traction(s, spec), cosim::Error);
 }
@@ -84,7 +86,8 @@ TEST(BedTraction, HasThreeComponentsIn2DAndBalancesALakeAtRestInTotal) {
   swe::Solver2d s(grid, swe::Physics{}, swe::Scheme{}, {});
   std::vector<double> bed(30), h(30);
   for (std::size_t c = 0; c < 30; ++c) {
-    const double x = 0.2 * (static_cast<double>(c % 6) + 0.5), y = 0.25 * (static_cast<double>(c / 6) + 0.5);
+    const double x = 0.2 * (static_cast<double>(c % 6) + 0.5),
+                 y = 0.25 * (static_cast<double>(c / 6) + 0.5);
     bed[c] = 0.3 * std::exp(-((x - 0.6) * (x - 0.6) + (y - 0.6) * (y - 0.6)));
     h[c] = 0.5 - bed[c];
   }

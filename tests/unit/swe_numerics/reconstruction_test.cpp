@@ -34,7 +34,8 @@ TEST(CellBedSource, CancelsTheFacePressuresOfAReconstructedLakeAtRest) {
 }
 
 TEST(SlopeLimiter, IsZeroAtExtremaAndBoundedOtherwise) {
-  for (auto kind : {swe::LimiterKind::minmod, swe::LimiterKind::van_leer, swe::LimiterKind::monotonized_central}) {
+  for (auto kind : {swe::LimiterKind::minmod, swe::LimiterKind::van_leer,
+                    swe::LimiterKind::monotonized_central}) {
     EXPECT_EQ(swe::limited_slope(kind, 1.0, -1.0), 0.0) << swe::to_string(kind);
     EXPECT_DOUBLE_EQ(swe::limited_slope(kind, 0.5, 0.5), 0.5) << swe::to_string(kind);
     const double s = swe::limited_slope(kind, 0.1, 1.0);
@@ -52,7 +53,8 @@ TEST(ManningFriction, ShrinksMomentumAsEquation36) {
   EXPECT_LT(factor, 1.0);
   EXPECT_EQ(swe::manning_factor(0.0, u, g, n, dt), 1.0);
   EXPECT_EQ(swe::manning_factor(h, u, g, 0.0, dt), 1.0);
-  EXPECT_NEAR(swe::manning_bed_shear(h, u, u, g, n, 1000.0), 1000.0 * g * n * n * u * u / std::cbrt(h), 1e-9);
+  EXPECT_NEAR(swe::manning_bed_shear(h, u, u, g, n, 1000.0),
+              1000.0 * g * n * n * u * u / std::cbrt(h), 1e-9);
 }
 
 }  // namespace

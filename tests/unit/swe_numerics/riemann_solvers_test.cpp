@@ -1,14 +1,15 @@
+#include "swe/numerics/riemann_solvers.hpp"
+
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
 
-#include "swe/numerics/riemann_solvers.hpp"
-
 namespace {
 
 constexpr double g = 9.81;
-constexpr std::array<swe::FluxKind, 3> all_fluxes{swe::FluxKind::roe, swe::FluxKind::hll, swe::FluxKind::hllc};
+constexpr std::array<swe::FluxKind, 3> all_fluxes{swe::FluxKind::roe, swe::FluxKind::hll,
+                                                  swe::FluxKind::hllc};
 
 class EveryFlux : public ::testing::TestWithParam<swe::FluxKind> {};
 
@@ -28,7 +29,8 @@ TEST_P(EveryFlux, IsSymmetricUnderReflection) {
   // mass and tangential fluxes change sign, the normal momentum flux does not.
   const swe::FaceState l{1.0, 0.4, 0.3}, r{0.5, -0.1, -0.6};
   const swe::FaceFlux f = swe::numerical_flux(GetParam(), l, r, g);
-  const swe::FaceFlux m = swe::numerical_flux(GetParam(), {r.h, -r.un, r.ut}, {l.h, -l.un, l.ut}, g);
+  const swe::FaceFlux m =
+      swe::numerical_flux(GetParam(), {r.h, -r.un, r.ut}, {l.h, -l.un, l.ut}, g);
   EXPECT_NEAR(f.mass, -m.mass, 1e-14);
   EXPECT_NEAR(f.normal_momentum, m.normal_momentum, 1e-14);
   EXPECT_NEAR(f.tangential_momentum, -m.tangential_momentum, 1e-14);
@@ -63,7 +65,8 @@ TEST(RoeFlux, MatchesTheExactStokerStateOnAStationaryShock) {
   // A stationary hydraulic jump (Rankine-Hugoniot with shock speed 0) is an
   // exact discrete solution of Roe's scheme: the flux equals F(U_l) = F(U_r).
   const double h1 = 1.0, h2 = 2.0;
-  const double u1 = std::sqrt(0.5 * g * h2 * (h1 + h2) / h1);  // h1 u1 = h2 u2, momentum flux continuous
+  const double u1 =
+      std::sqrt(0.5 * g * h2 * (h1 + h2) / h1);  // h1 u1 = h2 u2, momentum flux continuous
   const double u2 = h1 * u1 / h2;
   const swe::FaceFlux f = swe::roe_flux({h1, u1, 0.0}, {h2, u2, 0.0}, g);
   const swe::FaceFlux left = swe::physical_flux({h1, u1, 0.0}, g);

@@ -11,10 +11,11 @@ using swe::BoundaryKind;
 TEST(Solver1dBoundary, InflowDischargeAddsQdtPerStepIntoAUniformFlow) {
   const std::size_t n = 100;
   const double q = 0.5;
-  for (auto [left, right, sign] : {std::tuple{swe::Boundary{BoundaryKind::inflow_discharge, q},
-                                              swe::Boundary{BoundaryKind::wall, 0.0}, 1.0},
-                                   std::tuple{swe::Boundary{BoundaryKind::wall, 0.0},
-                                              swe::Boundary{BoundaryKind::inflow_discharge, q}, -1.0}}) {
+  for (auto [left, right, sign] :
+       {std::tuple{swe::Boundary{BoundaryKind::inflow_discharge, q},
+                   swe::Boundary{BoundaryKind::wall, 0.0}, 1.0},
+        std::tuple{swe::Boundary{BoundaryKind::wall, 0.0},
+                   swe::Boundary{BoundaryKind::inflow_discharge, q}, -1.0}}) {
     swe::Solver1d s(swe_test::uneven_edges(n, 0.0, 10.0), {}, {}, {left, right});
     s.set_state(std::vector<double>(n, 1.0), std::vector<double>(n, sign * q), {});
     for (int k = 0; k < 10; ++k) {
@@ -62,8 +63,9 @@ TEST(Solver1dBoundary, FixedDepthDrivesTheBoundaryCellTowardsTheDepth) {
     std::size_t cell;
     double start, target;
   };
-  for (const Case& c : {Case{{{BoundaryKind::wall, 0.0}, {BoundaryKind::fixed_depth, 0.6}}, n - 1, 1.0, 0.6},
-                        Case{{{BoundaryKind::fixed_depth, 0.8}, {BoundaryKind::wall, 0.0}}, 0, 0.5, 0.8}}) {
+  for (const Case& c :
+       {Case{{{BoundaryKind::wall, 0.0}, {BoundaryKind::fixed_depth, 0.6}}, n - 1, 1.0, 0.6},
+        Case{{{BoundaryKind::fixed_depth, 0.8}, {BoundaryKind::wall, 0.0}}, 0, 0.5, 0.8}}) {
     swe::Solver1d s(swe_test::uneven_edges(n, 0.0, 20.0), {}, {}, c.b);
     s.set_state(std::vector<double>(n, c.start), std::vector<double>(n, 0.0), {});
     const double v0 = s.totals().volume;

@@ -1,13 +1,14 @@
 // The branch-free fluxes and slopes of the 1D block kernels against the
 // shared swe/numerics solvers and limiter on random states, dry sides
 // included.
+#include "solver_1d/branch_free_flux.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <random>
 
-#include "solver_1d/branch_free_flux.hpp"
 #include "solver_1d/branch_free_slope.hpp"
 #include "swe/numerics/riemann_solvers.hpp"
 #include "swe/numerics/slope_limiter.hpp"
@@ -35,7 +36,8 @@ struct RandomFaces {
 };
 
 template <swe::FluxKind flux>
-void expect_same_fluxes(swe::FaceFlux (*reference)(const swe::FaceState&, const swe::FaceState&, double)) {
+void expect_same_fluxes(swe::FaceFlux (*reference)(const swe::FaceState&, const swe::FaceState&,
+                                                   double)) {
   RandomFaces faces;
   double worst = 0.0;
   int dry_faces = 0;
@@ -45,7 +47,8 @@ void expect_same_fluxes(swe::FaceFlux (*reference)(const swe::FaceState&, const 
     const double ur = hr > 0.0 ? faces.velocity(faces.rng) : 0.0;
     if (hl <= 0.0 || hr <= 0.0) ++dry_faces;
     const swe::FaceFlux expected = reference({hl, ul, 0.0}, {hr, ur, 0.0}, g);
-    const swe::solver_1d::FaceFlux1d f = swe::solver_1d::face_flux_1d<flux>(hl, ul, hr, ur, g, std::sqrt(g));
+    const swe::solver_1d::FaceFlux1d f =
+        swe::solver_1d::face_flux_1d<flux>(hl, ul, hr, ur, g, std::sqrt(g));
     worst = std::max({worst, relative_difference(f.mass, expected.mass),
                       relative_difference(f.momentum, expected.normal_momentum)});
     ASSERT_LE(relative_difference(f.mass, expected.mass), relative_tolerance)
@@ -58,11 +61,17 @@ void expect_same_fluxes(swe::FaceFlux (*reference)(const swe::FaceState&, const 
             << relative_tolerance << ") over 200000 faces, " << dry_faces << " with a dry side\n";
 }
 
-TEST(BranchFreeFlux, HllMatchesSharedSolver) { expect_same_fluxes<swe::FluxKind::hll>(&swe::hll_flux); }
+TEST(BranchFreeFlux, HllMatchesSharedSolver) {
+  expect_same_fluxes<swe::FluxKind::hll>(&swe::hll_flux);
+}
 
-TEST(BranchFreeFlux, HllcMatchesSharedSolverIn1d) { expect_same_fluxes<swe::FluxKind::hllc>(&swe::hllc_flux); }
+TEST(BranchFreeFlux, HllcMatchesSharedSolverIn1d) {
+  expect_same_fluxes<swe::FluxKind::hllc>(&swe::hllc_flux);
+}
 
-TEST(BranchFreeFlux, RoeMatchesSharedSolver) { expect_same_fluxes<swe::FluxKind::roe>(&swe::roe_flux); }
+TEST(BranchFreeFlux, RoeMatchesSharedSolver) {
+  expect_same_fluxes<swe::FluxKind::roe>(&swe::roe_flux);
+}
 
 // Where it reports itself plain, the plain Roe formula is the whole of
 // swe::roe_flux; it must not claim so at a dry side.
@@ -72,7 +81,8 @@ TEST(BranchFreeFlux, PlainRoeMatchesSharedSolverWhereItClaimsTo) {
   for (int i = 0; i < 200000; ++i) {
     const double hl = faces.random_depth(), hr = faces.random_depth();
     const double ul = faces.velocity(faces.rng), ur = faces.velocity(faces.rng);
-    const swe::solver_1d::PlainRoeFlux1d f = swe::solver_1d::plain_roe_flux_1d(hl, ul, hr, ur, g, std::sqrt(g));
+    const swe::solver_1d::PlainRoeFlux1d f =
+        swe::solver_1d::plain_roe_flux_1d(hl, ul, hr, ur, g, std::sqrt(g));
     if (hl <= 0.0 || hr <= 0.0) {
       ASSERT_EQ(f.plain, 0.0) << "hl " << hl << " hr " << hr;
     }

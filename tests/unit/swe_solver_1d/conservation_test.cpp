@@ -26,7 +26,8 @@ void run(swe::Solver1d& s, int steps) {
 TEST(Solver1dConservation, ConstantStateStaysConstant) {
   for (FluxKind flux : all_fluxes) {
     const auto edges = swe_test::uneven_edges(40, 0.0, 2.0);
-    const swe::Boundaries1d open{{swe::BoundaryKind::transmissive, 0.0}, {swe::BoundaryKind::transmissive, 0.0}};
+    const swe::Boundaries1d open{{swe::BoundaryKind::transmissive, 0.0},
+                                 {swe::BoundaryKind::transmissive, 0.0}};
     swe::Solver1d s(edges, {}, scheme(flux), open);
     s.set_bed(std::vector<double>(40, -0.3));
     s.set_state(std::vector<double>(40, 0.8), std::vector<double>(40, 0.4), {});
@@ -58,7 +59,8 @@ TEST(Solver1dConservation, WallsKeepTheVolumeToRoundOffWithDryCells) {
     for (int k = 0; k < 300; ++k) {
       s.step(s.stable_time_step());
       const auto d = s.depth();
-      ASSERT_GE(*std::min_element(d.begin(), d.end()), 0.0) << swe::to_string(flux) << " step " << k;
+      ASSERT_GE(*std::min_element(d.begin(), d.end()), 0.0)
+          << swe::to_string(flux) << " step " << k;
     }
     EXPECT_NEAR(s.totals().volume, v0, 1e-13 * v0) << swe::to_string(flux);
   }
@@ -69,7 +71,8 @@ TEST(Solver1dConservation, WallsKeepTheVolumeToRoundOffWithDryCells) {
 TEST(Solver1dBalance, LakeAtRestWithAnEmergedBumpStaysAtRest) {
   const std::size_t n = 80;
   for (FluxKind flux : all_fluxes) {
-    for (LimiterKind limiter : {LimiterKind::none, LimiterKind::van_leer, LimiterKind::monotonized_central}) {
+    for (LimiterKind limiter :
+         {LimiterKind::none, LimiterKind::van_leer, LimiterKind::monotonized_central}) {
       const auto edges = swe_test::uneven_edges(n, 0.0, 1.0);
       const auto x = swe_test::centres(edges);
       std::vector<double> h(n), bed(n);
@@ -81,7 +84,8 @@ TEST(Solver1dBalance, LakeAtRestWithAnEmergedBumpStaysAtRest) {
       s.set_bed(bed);
       s.set_state(h, std::vector<double>(n, 0.0), {});
       run(s, 200);
-      EXPECT_LE(swe_test::max_abs_velocity(s), 1e-12) << swe::to_string(flux) << " " << swe::to_string(limiter);
+      EXPECT_LE(swe_test::max_abs_velocity(s), 1e-12)
+          << swe::to_string(flux) << " " << swe::to_string(limiter);
       for (std::size_t i = 0; i < n; ++i) ASSERT_NEAR(s.depth()[i], h[i], 1e-13) << "cell " << i;
     }
   }
@@ -138,8 +142,10 @@ TEST(Solver1dSymmetry, MirroredProblemGivesTheMirroredSolution) {
       m.step(dt);
     }
     for (std::size_t i = 0; i < n; ++i) {
-      EXPECT_NEAR(m.depth()[n - 1 - i], s.depth()[i], 1e-12) << swe::to_string(flux) << " cell " << i;
-      EXPECT_NEAR(m.discharge_x()[n - 1 - i], -s.discharge_x()[i], 1e-12) << swe::to_string(flux) << " cell " << i;
+      EXPECT_NEAR(m.depth()[n - 1 - i], s.depth()[i], 1e-12)
+          << swe::to_string(flux) << " cell " << i;
+      EXPECT_NEAR(m.discharge_x()[n - 1 - i], -s.discharge_x()[i], 1e-12)
+          << swe::to_string(flux) << " cell " << i;
     }
   }
 }
@@ -162,7 +168,8 @@ TEST(Solver1dPositivity, DryBedDamBreakKeepsDepthsNonNegative) {
       for (int k = 0; k < 400; ++k) {
         s.step(s.stable_time_step());
         const auto d = s.depth();
-        ASSERT_GE(*std::min_element(d.begin(), d.end()), 0.0) << swe::to_string(flux) << " step " << k;
+        ASSERT_GE(*std::min_element(d.begin(), d.end()), 0.0)
+            << swe::to_string(flux) << " step " << k;
         for (std::size_t i = 0; i < n; ++i) ASSERT_TRUE(std::isfinite(s.discharge_x()[i]));
       }
       EXPECT_NEAR(s.totals().volume, v0, 1e-13 * v0);

@@ -9,7 +9,9 @@
 
 namespace {
 
-swe::Solver1d make(std::vector<double> edges) { return {std::move(edges), {}, {}, swe_test::walls()}; }
+swe::Solver1d make(std::vector<double> edges) {
+  return {std::move(edges), {}, {}, swe_test::walls()};
+}
 
 TEST(Solver1dConstruction, RejectsTooFewOrNonIncreasingEdges) {
   EXPECT_THROW(make({}), cosim::InputError);

@@ -14,7 +14,8 @@ TEST(Solver1dFriction, UniformFlowDecaysByTheSemiImplicitManningFactor) {
   const std::size_t n = 30;
   swe::Physics p;
   p.manning = 0.1;
-  const swe::Boundaries1d open{{swe::BoundaryKind::transmissive, 0.0}, {swe::BoundaryKind::transmissive, 0.0}};
+  const swe::Boundaries1d open{{swe::BoundaryKind::transmissive, 0.0},
+                               {swe::BoundaryKind::transmissive, 0.0}};
   swe::Solver1d s(swe_test::uneven_edges(n, 0.0, 3.0), p, {}, open);
   const double h = 0.2;
   double hu = 0.3;

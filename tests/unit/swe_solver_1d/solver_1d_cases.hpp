@@ -26,7 +26,8 @@ inline std::vector<double> uneven_edges(std::size_t n, double a, double b) {
 
 inline std::vector<double> uniform_edges(std::size_t n, double a, double b) {
   std::vector<double> edges(n + 1);
-  for (std::size_t i = 0; i <= n; ++i) edges[i] = a + (b - a) * static_cast<double>(i) / static_cast<double>(n);
+  for (std::size_t i = 0; i <= n; ++i)
+    edges[i] = a + (b - a) * static_cast<double>(i) / static_cast<double>(n);
   return edges;
 }
 
@@ -43,7 +44,8 @@ inline swe::Boundaries1d walls() {
 inline double max_abs_velocity(const swe::Solver& s) {
   double m = 0.0;
   for (std::size_t i = 0; i < s.cell_count(); ++i) {
-    if (s.depth()[i] >= s.physics().dry_depth) m = std::max(m, std::abs(s.discharge_x()[i] / s.depth()[i]));
+    if (s.depth()[i] >= s.physics().dry_depth)
+      m = std::max(m, std::abs(s.discharge_x()[i] / s.depth()[i]));
   }
   return m;
 }

@@ -13,8 +13,9 @@
 namespace {
 
 std::vector<swe::FaceState> states() {
-  std::vector<swe::FaceState> s = {{0.0, 0.0, 0.0}, {0.0, 1.0, 0.5}, {1.0, 0.0, 0.0},  {0.5, 3.0, -1.0},
-                                   {0.5, -3.0, 1.0}, {2.0, 10.0, 0.2}, {0.1, -8.0, 0.0}, {1e-9, 0.0, 0.0}};
+  std::vector<swe::FaceState> s = {{0.0, 0.0, 0.0},  {0.0, 1.0, 0.5},  {1.0, 0.0, 0.0},
+                                   {0.5, 3.0, -1.0}, {0.5, -3.0, 1.0}, {2.0, 10.0, 0.2},
+                                   {0.1, -8.0, 0.0}, {1e-9, 0.0, 0.0}};
   std::mt19937 random(7);
   std::uniform_real_distribution<double> depth(0.0, 2.0), speed(-6.0, 6.0);
   for (int k = 0; k < 200; ++k) s.push_back({depth(random), speed(random), speed(random)});
@@ -39,14 +40,18 @@ TEST(Solver2dKernels, HllcWithSelectsGivesTheBitsOfHllcFlux) {
 TEST(Solver2dKernels, BranchFreeSlopesGiveTheBitsOfLimitedSlope) {
   std::mt19937 random(11);
   std::uniform_real_distribution<double> jump(-1.0, 1.0);
-  std::vector<std::pair<double, double>> pairs = {{0.0, 0.0}, {1.0, -1.0}, {0.0, 1.0}, {0.3, 0.3}, {-0.2, -0.7}};
+  std::vector<std::pair<double, double>> pairs = {
+      {0.0, 0.0}, {1.0, -1.0}, {0.0, 1.0}, {0.3, 0.3}, {-0.2, -0.7}};
   for (int k = 0; k < 2000; ++k) pairs.emplace_back(jump(random), jump(random));
   int differences = 0;
   for (const auto& [a, b] : pairs) {
     using swe::LimiterKind;
-    differences += swe::limited_slope<LimiterKind::none>(a, b) != swe::limited_slope(LimiterKind::none, a, b);
-    differences += swe::limited_slope<LimiterKind::minmod>(a, b) != swe::limited_slope(LimiterKind::minmod, a, b);
-    differences += swe::limited_slope<LimiterKind::van_leer>(a, b) != swe::limited_slope(LimiterKind::van_leer, a, b);
+    differences +=
+        swe::limited_slope<LimiterKind::none>(a, b) != swe::limited_slope(LimiterKind::none, a, b);
+    differences += swe::limited_slope<LimiterKind::minmod>(a, b) !=
+                   swe::limited_slope(LimiterKind::minmod, a, b);
+    differences += swe::limited_slope<LimiterKind::van_leer>(a, b) !=
+                   swe::limited_slope(LimiterKind::van_leer, a, b);
     differences += swe::limited_slope<LimiterKind::monotonized_central>(a, b) !=
                    swe::limited_slope(LimiterKind::monotonized_central, a, b);
   }

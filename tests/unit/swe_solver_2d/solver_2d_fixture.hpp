@@ -15,11 +15,13 @@ inline swe::Boundaries2d all_sides(swe::BoundaryKind kind, double value = 0.0) {
 }
 
 // Values f(x, y) at the cell centres, x fastest.
-inline std::vector<double> sample(const swe::Grid2d& grid, const std::function<double(double, double)>& f) {
+inline std::vector<double> sample(const swe::Grid2d& grid,
+                                  const std::function<double(double, double)>& f) {
   std::vector<double> values;
   for (int j = 0; j < grid.cells[1]; ++j)
     for (int i = 0; i < grid.cells[0]; ++i)
-      values.push_back(f(grid.origin[0] + (i + 0.5) * grid.spacing[0], grid.origin[1] + (j + 0.5) * grid.spacing[1]));
+      values.push_back(f(grid.origin[0] + (i + 0.5) * grid.spacing[0],
+                         grid.origin[1] + (j + 0.5) * grid.spacing[1]));
   return values;
 }
 
@@ -33,7 +35,8 @@ inline double max_speed(const swe::Solver& solver) {
   const auto hu = solver.discharge_x();
   const auto hv = solver.discharge_y();
   for (std::size_t c = 0; c < h.size(); ++c)
-    if (h[c] >= solver.physics().dry_depth) speed = std::max({speed, std::abs(hu[c] / h[c]), std::abs(hv[c] / h[c])});
+    if (h[c] >= solver.physics().dry_depth)
+      speed = std::max({speed, std::abs(hu[c] / h[c]), std::abs(hv[c] / h[c])});
   return speed;
 }
 

@@ -1,3 +1,5 @@
+#include "swe/solver_2d.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,7 +10,6 @@
 
 #include "cosim/error.hpp"
 #include "solver_2d_fixture.hpp"
-#include "swe/solver_2d.hpp"
 
 namespace {
 
@@ -47,8 +48,9 @@ TEST(Solver2d, RejectsABadGrid) {
   EXPECT_NE(message_of({{0, 0}, {0.0, 1.0}, {4, 4}}).find("spacing in x"), std::string::npos);
   EXPECT_NE(message_of({{0, 0}, {1.0, -2.0}, {4, 4}}).find("-2"), std::string::npos);
   EXPECT_NE(message_of({{0, 0}, {1.0, 1.0}, {4, 0}}).find("cell count in y"), std::string::npos);
-  EXPECT_THROW(swe::Solver2d({{0, 0}, {1.0, 1.0}, {-3, 4}}, {}, {}, all_sides(swe::BoundaryKind::wall)),
-               cosim::InputError);
+  EXPECT_THROW(
+      swe::Solver2d({{0, 0}, {1.0, 1.0}, {-3, 4}}, {}, {}, all_sides(swe::BoundaryKind::wall)),
+      cosim::InputError);
 }
 
 TEST(Solver2d, RejectsNegativeDepthsAndWrongSizes) {
@@ -72,7 +74,8 @@ TEST(Solver2d, KeepsAConstantStateConstant) {
   const swe::Grid2d grid{{0, 0}, {0.1, 0.2}, {12, 9}};
   swe::Solver2d solver(grid, {}, {}, all_sides(swe::BoundaryKind::transmissive));
   const std::size_t n = solver.cell_count();
-  solver.set_state(std::vector<double>(n, 0.8), std::vector<double>(n, 0.8 * 0.3), std::vector<double>(n, -0.8 * 0.2));
+  solver.set_state(std::vector<double>(n, 0.8), std::vector<double>(n, 0.8 * 0.3),
+                   std::vector<double>(n, -0.8 * 0.2));
   run_steps(solver, 20);
   for (std::size_t c = 0; c < n; ++c) {
     EXPECT_NEAR(solver.depth()[c], 0.8, 1e-14);
@@ -84,7 +87,9 @@ TEST(Solver2d, KeepsAConstantStateConstant) {
 TEST(Solver2d, ConservesVolumeWithWallsFromAStateWithDryCells) {
   const swe::Grid2d grid{{0, 0}, {0.05, 0.05}, {40, 30}};
   swe::Solver2d solver(grid, {}, {}, all_sides(swe::BoundaryKind::wall));
-  solver.set_bed(sample(grid, [](double x, double y) { return 0.3 * std::exp(-20 * ((x - 1.2) * (x - 1.2) + (y - 0.7) * (y - 0.7))); }));
+  solver.set_bed(sample(grid, [](double x, double y) {
+    return 0.3 * std::exp(-20 * ((x - 1.2) * (x - 1.2) + (y - 0.7) * (y - 0.7)));
+  }));
   solver.set_state(sample(grid, [](double x, double) { return x < 0.6 ? 1.0 : 0.0; }),
                    sample(grid, [](double x, double) { return x < 0.6 ? 0.2 : 0.0; }), {});
   const double volume = solver.totals().volume;
@@ -96,7 +101,8 @@ TEST(Solver2d, ConservesVolumeWithWallsFromAStateWithDryCells) {
 TEST(Solver2d, KeepsALakeAtRestAroundAnEmergedIsland) {
   const swe::Grid2d grid{{-1, -1}, {0.05, 0.05}, {40, 40}};
   swe::Solver2d solver(grid, {}, {}, all_sides(swe::BoundaryKind::wall));
-  const auto bed = sample(grid, [](double x, double y) { return 0.8 * std::exp(-5 * (x * x + 2 * y * y)); });
+  const auto bed =
+      sample(grid, [](double x, double y) { return 0.8 * std::exp(-5 * (x * x + 2 * y * y)); });
   std::vector<double> h(bed.size());
   for (std::size_t c = 0; c < h.size(); ++c) h[c] = std::max(0.0, 0.5 - bed[c]);
   ASSERT_TRUE(std::count(h.begin(), h.end(), 0.0) > 10);
@@ -127,9 +133,11 @@ TEST(Solver2d, ManningFrictionDecaysMomentumAsEquation36) {
   swe::Solver2d solver(grid, physics, {}, all_sides(swe::BoundaryKind::transmissive));
   const double h = 0.5, u = 1.0, v = 0.5, dt = 0.01;
   const std::size_t n = solver.cell_count();
-  solver.set_state(std::vector<double>(n, h), std::vector<double>(n, h * u), std::vector<double>(n, h * v));
+  solver.set_state(std::vector<double>(n, h), std::vector<double>(n, h * u),
+                   std::vector<double>(n, h * v));
   solver.step(dt);
-  const double factor = 1.0 / (1.0 + dt * physics.gravity * 0.03 * 0.03 * std::hypot(u, v) / std::pow(h, 4.0 / 3.0));
+  const double factor =
+      1.0 / (1.0 + dt * physics.gravity * 0.03 * 0.03 * std::hypot(u, v) / std::pow(h, 4.0 / 3.0));
   ASSERT_LT(factor, 0.9999);
   for (std::size_t c = 0; c < n; ++c) {
     EXPECT_NEAR(solver.depth()[c], h, 1e-14);
@@ -144,12 +152,14 @@ TEST(Solver2d, KeepsDepthsNonNegativeInADryBedDamBreak) {
     swe::Scheme scheme;
     scheme.flux = flux;
     swe::Solver2d solver(grid, {}, scheme, all_sides(swe::BoundaryKind::wall));
-    solver.set_state(sample(grid, [](double x, double y) { return x < 0.4 && y < 0.5 ? 1.0 : 0.0; }), {}, {});
+    solver.set_state(
+        sample(grid, [](double x, double y) { return x < 0.4 && y < 0.5 ? 1.0 : 0.0; }), {}, {});
     const double volume = solver.totals().volume;
     for (int n = 0; n < 150; ++n) {
       solver.step(solver.stable_time_step());
       const auto h = solver.depth();
-      ASSERT_GE(*std::min_element(h.begin(), h.end()), 0.0) << swe::to_string(flux) << " step " << n;
+      ASSERT_GE(*std::min_element(h.begin(), h.end()), 0.0)
+          << swe::to_string(flux) << " step " << n;
     }
     EXPECT_NEAR(solver.totals().volume, volume, 1e-13 * volume) << swe::to_string(flux);
     EXPECT_TRUE(std::isfinite(solver.totals().momentum_x));

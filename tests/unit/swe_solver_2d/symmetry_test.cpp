@@ -13,8 +13,12 @@ namespace {
 using swe_2d_test::run_steps;
 using swe_2d_test::sample;
 
-double bed_of(double x, double y) { return 0.2 * std::exp(-8 * ((x - 0.6) * (x - 0.6) + (y - 0.4) * (y - 0.4))) + 0.05 * x; }
-double depth_of(double x, double y) { return std::max(0.0, (x + 0.5 * y < 0.5 ? 0.6 : 0.25) - bed_of(x, y)); }
+double bed_of(double x, double y) {
+  return 0.2 * std::exp(-8 * ((x - 0.6) * (x - 0.6) + (y - 0.4) * (y - 0.4))) + 0.05 * x;
+}
+double depth_of(double x, double y) {
+  return std::max(0.0, (x + 0.5 * y < 0.5 ? 0.6 : 0.25) - bed_of(x, y));
+}
 
 // The same problem with x and y exchanged: grid, fields, boundaries.
 struct Problem {
@@ -24,8 +28,12 @@ struct Problem {
 
   double bed(double x, double y) const { return transposed ? bed_of(y, x) : bed_of(x, y); }
   double depth(double x, double y) const { return transposed ? depth_of(y, x) : depth_of(x, y); }
-  double velocity_x(double x, double y) const { return transposed ? 0.3 * std::sin(3 * x) : 0.2 * y; }
-  double velocity_y(double x, double y) const { return transposed ? 0.2 * x : 0.3 * std::sin(3 * y); }
+  double velocity_x(double x, double y) const {
+    return transposed ? 0.3 * std::sin(3 * x) : 0.2 * y;
+  }
+  double velocity_y(double x, double y) const {
+    return transposed ? 0.2 * x : 0.3 * std::sin(3 * y);
+  }
 };
 
 std::unique_ptr<swe::Solver2d> run(const Problem& p, int steps) {
@@ -35,8 +43,10 @@ std::unique_ptr<swe::Solver2d> run(const Problem& p, int steps) {
   swe::Solver2d& solver = *result;
   solver.set_bed(sample(p.grid, [&](double x, double y) { return p.bed(x, y); }));
   const auto h = sample(p.grid, [&](double x, double y) { return p.depth(x, y); });
-  const auto hu = sample(p.grid, [&](double x, double y) { return p.depth(x, y) * p.velocity_x(x, y); });
-  const auto hv = sample(p.grid, [&](double x, double y) { return p.depth(x, y) * p.velocity_y(x, y); });
+  const auto hu =
+      sample(p.grid, [&](double x, double y) { return p.depth(x, y) * p.velocity_x(x, y); });
+  const auto hv =
+      sample(p.grid, [&](double x, double y) { return p.depth(x, y) * p.velocity_y(x, y); });
   solver.set_state(h, hu, hv);
   run_steps(solver, steps);
   return result;
@@ -44,8 +54,9 @@ std::unique_ptr<swe::Solver2d> run(const Problem& p, int steps) {
 
 TEST(Solver2dSymmetry, TransposingTheProblemTransposesTheSolutionBitwise) {
   const int nx = 23, ny = 14;
-  const swe::Boundary wall{swe::BoundaryKind::wall, 0.0}, open{swe::BoundaryKind::transmissive, 0.0},
-      inflow{swe::BoundaryKind::inflow_discharge, 0.05}, level{swe::BoundaryKind::fixed_depth, 0.3};
+  const swe::Boundary wall{swe::BoundaryKind::wall, 0.0},
+      open{swe::BoundaryKind::transmissive, 0.0}, inflow{swe::BoundaryKind::inflow_discharge, 0.05},
+      level{swe::BoundaryKind::fixed_depth, 0.3};
   const Problem original{{{0, 0}, {0.05, 0.07}, {nx, ny}}, {wall, open, level, inflow}, false};
   const Problem transposed{{{0, 0}, {0.07, 0.05}, {ny, nx}}, {level, inflow, wall, open}, true};
   const auto pa = run(original, 60), pb = run(transposed, 60);
@@ -66,9 +77,11 @@ TEST(Solver2dSymmetry, TransposingTheProblemTransposesTheSolutionBitwise) {
 TEST(Solver2dSymmetry, AOneDimensionalProblemAlongXStaysOneDimensional) {
   const int nx = 60, ny = 4;
   const swe::Grid2d grid{{0, 0}, {0.02, 0.05}, {nx, ny}};
-  const swe::Boundary wall{swe::BoundaryKind::wall, 0.0}, open{swe::BoundaryKind::transmissive, 0.0};
+  const swe::Boundary wall{swe::BoundaryKind::wall, 0.0},
+      open{swe::BoundaryKind::transmissive, 0.0};
   swe::Solver2d solver(grid, {}, {}, {open, wall, wall, wall});
-  solver.set_bed(sample(grid, [](double x, double) { return 0.3 * std::exp(-40 * (x - 0.8) * (x - 0.8)); }));
+  solver.set_bed(
+      sample(grid, [](double x, double) { return 0.3 * std::exp(-40 * (x - 0.8) * (x - 0.8)); }));
   solver.set_state(sample(grid, [](double x, double) { return x < 0.5 ? 1.0 : 0.1; }), {}, {});
   run_steps(solver, 150);
   int differences = 0;

@@ -27,8 +27,7 @@ SodResult run_sod(int cells) {
   validation::run_until(*solver, c, c.end_time);
   const auto after = solver->totals();
   const cosim::bench::ExactRiemannSolution exact({1.0, 0.0, 1.0e5}, {0.125, 0.0, 1.0e4}, 1.4);
-  const auto reference =
-      cosim::bench::cell_averages(exact, 1.4, 0.0, 1.0, cells, 0.5, c.end_time);
+  const auto reference = cosim::bench::cell_averages(exact, 1.4, 0.0, 1.0, cells, 0.5, c.end_time);
   SodResult r;
   double total = 0.0;
   int star_cells = 0;

@@ -23,8 +23,8 @@
 #include <string>
 #include <vector>
 
-#include "hdf5_reader.hpp"
 #include "bench_smoke_run.hpp"
+#include "hdf5_reader.hpp"
 #include "run_process.hpp"
 #include "text_files.hpp"
 
@@ -56,17 +56,17 @@ TEST(OpenFoamGranularCollapse, TheColumnSitsInHydrostaticWaterAndSpreads) {
   const auto& last = gauges.back();
   const double base_error = last[1] / hydrostatic - 1.0;
   const double open_error = last[6] / hydrostatic - 1.0;
-  fmt::print("pore pressure at t = {:.3f} s, y = {} m: column base {:.1f} Pa ({:+.2f} %), open "
-             "water {:.1f} Pa ({:+.2f} %), hydrostatic {:.1f} Pa (open water: tolerance 2 %)\n",
-             last[0], gauge_height, last[1], 100.0 * base_error, last[6], 100.0 * open_error,
-             hydrostatic);
+  fmt::print(
+      "pore pressure at t = {:.3f} s, y = {} m: column base {:.1f} Pa ({:+.2f} %), open "
+      "water {:.1f} Pa ({:+.2f} %), hydrostatic {:.1f} Pa (open water: tolerance 2 %)\n",
+      last[0], gauge_height, last[1], 100.0 * base_error, last[6], 100.0 * open_error, hydrostatic);
   const auto exchange = read_csv(run / "water" / "soil_exchange.csv");
   ASSERT_FALSE(exchange.empty());
-  fmt::print("cloud vs law momentum in the last window: {:.2e} (printed only: at one step per "
-             "window the cloud drags with the window's start velocity, the law with its end's)\n",
-             exchange.back()[5]);
-  const auto water =
-      nlohmann::json::parse(read_text(run / "water" / "summary.json"))["conserved"];
+  fmt::print(
+      "cloud vs law momentum in the last window: {:.2e} (printed only: at one step per "
+      "window the cloud drags with the window's start velocity, the law with its end's)\n",
+      exchange.back()[5]);
+  const auto water = nlohmann::json::parse(read_text(run / "water" / "summary.json"))["conserved"];
   const double start = water["volume_water"]["start"].get<double>();
   const double end = water["volume_water"]["end"].get<double>();
   fmt::print("water volume {:.6f} -> {:.6f} m^2 ({:+.2e}; tolerance 1e-2)\n", start, end,
@@ -95,9 +95,10 @@ TEST(OpenFoamGranularCollapse, TheColumnSitsInHydrostaticWaterAndSpreads) {
     front = std::max(front, xyz[i]);
     top = std::max(top, xyz[i + 1]);
   }
-  fmt::print("deposit at t = 2 s: front x = {:.4f} m (gate at 0.06 m), top y = {:.4f} m (column "
-             "0.08 m)\n",
-             front, top);
+  fmt::print(
+      "deposit at t = 2 s: front x = {:.4f} m (gate at 0.06 m), top y = {:.4f} m (column "
+      "0.08 m)\n",
+      front, top);
   EXPECT_GT(front, 0.09);
   EXPECT_LT(top, 0.075);
 #else

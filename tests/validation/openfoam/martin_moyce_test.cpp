@@ -41,7 +41,8 @@ TEST(OpenFoamMartinMoyce, SurgeFrontFollowsTheExperimentLikeTheIceSolver) {
   const std::vector<mm::Point> measured =
       mm::experiment_front(std::string(COSIM_REFERENCE_DATA) + "/martin_moyce_1952.csv");
   ASSERT_GE(measured.size(), 10u);
-  const fs::path output = cosim::testing::bench_smoke_run("verification", "martin_moyce", "openfoam");
+  const fs::path output =
+      cosim::testing::bench_smoke_run("verification", "martin_moyce", "openfoam");
 
   const double a = mm::column_width;
   const double dx = length_x / cells_x;

@@ -64,8 +64,8 @@ TEST(OpenFoamUserCase, AUsersCaseDirectoryGivesTheGeneratedCasesFlow) {
   for (std::size_t i = 0; i < got.size(); ++i) {
     ASSERT_EQ(got[i].size(), expected[i].size());
     for (std::size_t k = 0; k < got[i].size(); ++k) {
-      largest = std::max(largest, std::abs(got[i][k] - expected[i][k]) /
-                                      std::max(1.0, std::abs(expected[i][k])));
+      largest = std::max(
+          largest, std::abs(got[i][k] - expected[i][k]) / std::max(1.0, std::abs(expected[i][k])));
     }
   }
   fmt::print(
@@ -86,9 +86,9 @@ TEST(OpenFoamUserCase, AUsersCaseDirectoryGivesTheGeneratedCasesFlow) {
   // The copy was completed for MPPICInterFoam.
   const fs::path copy = user / "run" / "water" / "case";
   EXPECT_TRUE(fs::exists(copy / "constant" / "kinematicCloudProperties"));
-  EXPECT_NE(read_text(copy / "system" / "fvSchemes")
-                .find("div((((alphac*rho)*nuEff)*dev2(T(grad(U)))))"),
-            std::string::npos);
+  EXPECT_NE(
+      read_text(copy / "system" / "fvSchemes").find("div((((alphac*rho)*nuEff)*dev2(T(grad(U)))))"),
+      std::string::npos);
 }
 
 }  // namespace

@@ -1,8 +1,7 @@
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "swe/solver_1d.hpp"
 
@@ -14,7 +13,8 @@ std::vector<double> edges_of(std::size_t n, bool uneven) {
   std::vector<double> e{0.0};
   for (std::size_t i = 0; i < n; ++i) {
     const double s = static_cast<double>(i) / static_cast<double>(n);
-    e.push_back(e.back() + (uneven ? (1.0 + 0.6 * std::sin(9.0 * s)) * (s < 0.4 ? 1.0 : 2.3) : 1.0));
+    e.push_back(e.back() +
+                (uneven ? (1.0 + 0.6 * std::sin(9.0 * s)) * (s < 0.4 ? 1.0 : 2.3) : 1.0));
   }
   for (double& x : e) x /= e.back();
   return e;
@@ -34,7 +34,8 @@ TEST(LakeAtRest, EmergedBumpStaysAtRestFor1000Steps) {
       }
       swe::Scheme scheme;
       scheme.flux = flux;
-      swe::Solver1d s(edges, {}, scheme, {{swe::BoundaryKind::wall, 0.0}, {swe::BoundaryKind::wall, 0.0}});
+      swe::Solver1d s(edges, {}, scheme,
+                      {{swe::BoundaryKind::wall, 0.0}, {swe::BoundaryKind::wall, 0.0}});
       s.set_bed(bed);
       s.set_state(h, std::vector<double>(n, 0.0), {});
       const double dt = s.stable_time_step();
@@ -47,8 +48,10 @@ TEST(LakeAtRest, EmergedBumpStaysAtRestFor1000Steps) {
         max_dh = std::max(max_dh, std::abs(d - h[i]));
         dry += h[i] == 0.0 ? 1 : 0;
       }
-      fmt::print("{:<12} {:<5} dry cells {:>3}: max |u| = {:.2e} m/s (tolerance {:.0e}), max |dh| = {:.2e} m\n",
-                 uneven ? "non-uniform" : "uniform", swe::to_string(flux), dry, max_u, tolerance, max_dh);
+      fmt::print(
+          "{:<12} {:<5} dry cells {:>3}: max |u| = {:.2e} m/s (tolerance {:.0e}), max |dh| = "
+          "{:.2e} m\n",
+          uneven ? "non-uniform" : "uniform", swe::to_string(flux), dry, max_u, tolerance, max_dh);
       EXPECT_GT(dry, 10u);
       EXPECT_LE(max_u, tolerance);
     }

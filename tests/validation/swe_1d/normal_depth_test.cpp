@@ -1,8 +1,7 @@
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "swe/solver_1d.hpp"
 
@@ -23,10 +22,12 @@ TEST(ManningNormalDepth, SteadyUniformFlowOnASlope) {
   physics.manning = 0.03;
   const double h_normal = std::pow(physics.manning * q / std::sqrt(slope), 0.6);
   std::vector<double> edges(n + 1), bed(n);
-  for (std::size_t i = 0; i <= n; ++i) edges[i] = length * static_cast<double>(i) / static_cast<double>(n);
+  for (std::size_t i = 0; i <= n; ++i)
+    edges[i] = length * static_cast<double>(i) / static_cast<double>(n);
   for (std::size_t i = 0; i < n; ++i) bed[i] = -slope * 0.5 * (edges[i] + edges[i + 1]);
-  swe::Solver1d s(edges, physics, {},
-                  {{swe::BoundaryKind::inflow_discharge, q}, {swe::BoundaryKind::fixed_depth, h_normal}});
+  swe::Solver1d s(
+      edges, physics, {},
+      {{swe::BoundaryKind::inflow_discharge, q}, {swe::BoundaryKind::fixed_depth, h_normal}});
   s.set_bed(bed);
   s.set_state(std::vector<double>(n, 0.5 * h_normal), std::vector<double>(n, 0.0), {});
   double t = 0.0;
@@ -38,8 +39,10 @@ TEST(ManningNormalDepth, SteadyUniformFlowOnASlope) {
   for (std::size_t cell : {n / 4, n / 2}) {
     const double h = s.depth()[cell], discharge = s.discharge_x()[cell];
     const double error = std::abs(h - h_normal) / h_normal;
-    fmt::print("normal depth {:.5f} m; depth at x = {:.0f} m: {:.5f} m (error {:.3f} %, tolerance 1 %), "
-               "discharge {:.5f} m^2/s\n", h_normal, s.edges()[cell], h, 100.0 * error, discharge);
+    fmt::print(
+        "normal depth {:.5f} m; depth at x = {:.0f} m: {:.5f} m (error {:.3f} %, tolerance 1 %), "
+        "discharge {:.5f} m^2/s\n",
+        h_normal, s.edges()[cell], h, 100.0 * error, discharge);
     EXPECT_LE(error, 0.01);
     EXPECT_NEAR(discharge, q, 0.01 * q);
   }

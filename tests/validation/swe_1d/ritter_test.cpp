@@ -1,8 +1,7 @@
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "bench/shallow_water_dam_break.hpp"
 #include "swe/solver_1d.hpp"
@@ -42,9 +41,11 @@ TEST(Ritter, WetFrontAndRarefactionHeadOnADryBed) {
       const auto edges = edges_of(2000, uneven);
       swe::Scheme scheme;
       scheme.flux = flux;
-      swe::Solver1d s(edges, {}, scheme, {{swe::BoundaryKind::wall, 0.0}, {swe::BoundaryKind::wall, 0.0}});
+      swe::Solver1d s(edges, {}, scheme,
+                      {{swe::BoundaryKind::wall, 0.0}, {swe::BoundaryKind::wall, 0.0}});
       std::vector<double> h(s.cell_count());
-      for (std::size_t i = 0; i < h.size(); ++i) h[i] = 0.5 * (edges[i] + edges[i + 1]) < x0 ? h0 : 0.0;
+      for (std::size_t i = 0; i < h.size(); ++i)
+        h[i] = 0.5 * (edges[i] + edges[i + 1]) < x0 ? h0 : 0.0;
       s.set_state(h, std::vector<double>(h.size(), 0.0), {});
       double t = 0.0;
       for (double t_out : {0.25, 0.5, 0.75}) {
@@ -65,11 +66,14 @@ TEST(Ritter, WetFrontAndRarefactionHeadOnADryBed) {
         const double front_error = std::abs(front - front_exact) / (ideal_front - x0);
         const double ideal_error = std::abs(front - ideal_front) / (ideal_front - x0);
         const double head_error = std::abs(head - head_exact) / (x0 - head_exact);
-        fmt::print("{:<12} {:<5} t = {:.2f} s: front {:.4f} m (exact 1e-3 m level {:.4f}: error {:.2f} % of "
-                   "travel; ideal front {:.4f}: {:.2f} %), head {:.4f} m (exact {:.4f}, error {:.2f} %); "
-                   "tolerance 5 %\n",
-                   uneven ? "non-uniform" : "uniform", swe::to_string(flux), t, front, front_exact,
-                   100.0 * front_error, ideal_front, 100.0 * ideal_error, head, head_exact, 100.0 * head_error);
+        fmt::print(
+            "{:<12} {:<5} t = {:.2f} s: front {:.4f} m (exact 1e-3 m level {:.4f}: error {:.2f} % "
+            "of "
+            "travel; ideal front {:.4f}: {:.2f} %), head {:.4f} m (exact {:.4f}, error {:.2f} %); "
+            "tolerance 5 %\n",
+            uneven ? "non-uniform" : "uniform", swe::to_string(flux), t, front, front_exact,
+            100.0 * front_error, ideal_front, 100.0 * ideal_error, head, head_exact,
+            100.0 * head_error);
         EXPECT_LE(front_error, 0.05);
         EXPECT_LE(head_error, 0.05);
       }

@@ -1,10 +1,9 @@
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "bench/shallow_water_dam_break.hpp"
 #include "swe/solver_1d.hpp"
@@ -34,7 +33,8 @@ std::vector<double> paper_non_uniform(double dx_fine, double dx_coarse) {
   const auto coarse = static_cast<std::size_t>(std::lround(0.25 / dx_coarse));
   std::vector<double> e{0.0};
   auto fill = [&](double a, double b, std::size_t n) {
-    for (std::size_t i = 1; i <= n; ++i) e.push_back(a + (b - a) * static_cast<double>(i) / static_cast<double>(n));
+    for (std::size_t i = 1; i <= n; ++i)
+      e.push_back(a + (b - a) * static_cast<double>(i) / static_cast<double>(n));
   };
   fill(0.0, 0.25, coarse);
   fill(0.25, 0.75, fine);
@@ -58,17 +58,20 @@ double l1_depth_error(const swe::Solver1d& s, const cosim::bench::ExactDamBreak&
   return error;
 }
 
-double run_stoker(const std::vector<double>& edges, swe::FluxKind flux, const cosim::bench::ExactDamBreak& exact) {
+double run_stoker(const std::vector<double>& edges, swe::FluxKind flux,
+                  const cosim::bench::ExactDamBreak& exact) {
   swe::Scheme scheme;
   scheme.flux = flux;
   scheme.limiter = swe::LimiterKind::van_leer;
   scheme.courant = 0.5;
   swe::Physics physics;
   physics.gravity = g;
-  const swe::Boundaries1d open{{swe::BoundaryKind::transmissive, 0.0}, {swe::BoundaryKind::transmissive, 0.0}};
+  const swe::Boundaries1d open{{swe::BoundaryKind::transmissive, 0.0},
+                               {swe::BoundaryKind::transmissive, 0.0}};
   swe::Solver1d s(edges, physics, scheme, open);
   std::vector<double> h(s.cell_count());
-  for (std::size_t i = 0; i < h.size(); ++i) h[i] = 0.5 * (edges[i] + edges[i + 1]) <= 0.5 ? 1.0 : 0.5;
+  for (std::size_t i = 0; i < h.size(); ++i)
+    h[i] = 0.5 * (edges[i] + edges[i + 1]) <= 0.5 ? 1.0 : 0.5;
   s.set_state(h, std::vector<double>(h.size(), 0.0), {});
   double t = 0.0;
   while (t < t_end) {
@@ -81,13 +84,16 @@ double run_stoker(const std::vector<double>& edges, swe::FluxKind flux, const co
 
 TEST(Stoker, ShockSpeedMatchesThePaper) {
   const cosim::bench::ExactDamBreak exact(1.0, 0.5, 0.5, g);
-  fmt::print("exact middle state h* = {:.6f} m, u* = {:.6f} m/s, shock speed {:.5f} m/s (paper C_s = 2.9579)\n",
-             exact.middle_depth(), exact.middle_velocity(), exact.front_speed());
+  fmt::print(
+      "exact middle state h* = {:.6f} m, u* = {:.6f} m/s, shock speed {:.5f} m/s (paper C_s = "
+      "2.9579)\n",
+      exact.middle_depth(), exact.middle_velocity(), exact.front_speed());
   EXPECT_LT(std::abs(exact.front_speed() - 2.9579), 1e-3);
   // The paper's closed forms for the middle state from C_s.
   const double root = std::sqrt(1.0 + 16.0 * exact.front_speed() * exact.front_speed() / g);
   EXPECT_NEAR(exact.middle_depth(), 0.25 * (root - 1.0), 1e-12);
-  EXPECT_NEAR(exact.middle_velocity(), exact.front_speed() - g / (8.0 * exact.front_speed()) * (1.0 + root), 1e-12);
+  EXPECT_NEAR(exact.middle_velocity(),
+              exact.front_speed() - g / (8.0 * exact.front_speed()) * (1.0 + root), 1e-12);
 }
 
 TEST(Stoker, L1DepthErrorOnThePapersMeshes) {
@@ -96,10 +102,11 @@ TEST(Stoker, L1DepthErrorOnThePapersMeshes) {
     std::string name, family;
     std::vector<double> edges;
   };
-  const std::vector<Mesh> meshes{{"uniform 50", "uniform", uniform(50)},
-                                 {"uniform 100", "uniform", uniform(100)},
-                                 {"non-uniform 0.016/0.03", "non-uniform", paper_non_uniform(0.016, 0.03)},
-                                 {"non-uniform 0.008/0.015", "non-uniform", paper_non_uniform(0.008, 0.015)}};
+  const std::vector<Mesh> meshes{
+      {"uniform 50", "uniform", uniform(50)},
+      {"uniform 100", "uniform", uniform(100)},
+      {"non-uniform 0.016/0.03", "non-uniform", paper_non_uniform(0.016, 0.03)},
+      {"non-uniform 0.008/0.015", "non-uniform", paper_non_uniform(0.008, 0.015)}};
   std::map<std::string, std::vector<double>> errors;  // family + flux -> coarse, fine
   fmt::print("{:<26} {:>6} {:>14} {:>14}\n", "mesh", "cells", "L1(h) Roe [m]", "L1(h) HLL [m]");
   for (const Mesh& m : meshes) {
@@ -115,7 +122,8 @@ TEST(Stoker, L1DepthErrorOnThePapersMeshes) {
     }
   }
   for (const auto& [family, e] : errors) {
-    fmt::print("{}: coarse {:.3e} m -> fine {:.3e} m (ratio {:.2f})\n", family, e[0], e[1], e[0] / e[1]);
+    fmt::print("{}: coarse {:.3e} m -> fine {:.3e} m (ratio {:.2f})\n", family, e[0], e[1],
+               e[0] / e[1]);
     EXPECT_LT(e[1], e[0]) << family;
   }
 }

@@ -22,8 +22,9 @@ TEST(Swe2dLakeAtRest, StaysAtRestAroundAnEmergedIsland) {
   for (int j = 0; j < n; ++j) {
     for (int i = 0; i < n; ++i) {
       const double x = (i + 0.5) * 0.01, y = (j + 0.5) * 0.01;
-      const double b = 0.8 * std::exp(-30.0 * ((x - 0.45) * (x - 0.45) + 0.6 * (y - 0.55) * (y - 0.55))) +
-                       0.1 * std::sin(7.0 * x) * std::sin(5.0 * y);
+      const double b =
+          0.8 * std::exp(-30.0 * ((x - 0.45) * (x - 0.45) + 0.6 * (y - 0.55) * (y - 0.55))) +
+          0.1 * std::sin(7.0 * x) * std::sin(5.0 * y);
       bed.push_back(b);
       depth.push_back(std::max(0.0, surface - b));
     }
@@ -43,9 +44,10 @@ TEST(Swe2dLakeAtRest, StaysAtRestAroundAnEmergedIsland) {
     }
     max_surface_change = std::max(max_surface_change, std::abs(h - depth[c]));
   }
-  fmt::print("lake at rest, {} x {} cells ({} dry), {} steps: max |u| = {:.3e} m/s, max |v| = {:.3e} m/s "
-             "(tolerance {:.0e}), max depth change {:.3e} m\n",
-             n, n, dry, steps, max_u, max_v, tolerance, max_surface_change);
+  fmt::print(
+      "lake at rest, {} x {} cells ({} dry), {} steps: max |u| = {:.3e} m/s, max |v| = {:.3e} m/s "
+      "(tolerance {:.0e}), max depth change {:.3e} m\n",
+      n, n, dry, steps, max_u, max_v, tolerance, max_surface_change);
   EXPECT_LE(max_u, tolerance);
   EXPECT_LE(max_v, tolerance);
   EXPECT_LE(max_surface_change, 1e-12);

@@ -22,7 +22,8 @@ constexpr int cells_per_side = 200;
 #endif
 
 struct Outcome {
-  double symmetry_deviation = 0.0;  // max |profile - +x profile| / max h, over -x, +y, -y (h and normal discharge)
+  double symmetry_deviation =
+      0.0;  // max |profile - +x profile| / max h, over -x, +y, -y (h and normal discharge)
   double diagonal_mean_deviation = 0.0;  // mean |h_diag - h_axis(r)| / (h_max - h_min)
   double diagonal_max_deviation = 0.0;
 };
@@ -60,10 +61,11 @@ Outcome radial_dam_break(double outside_depth, double end_time) {
     const double h0 = depth[at(half + k, half)], q = qx[at(half + k, half)];
     const double deviations[] = {
         depth[at(half - 1 - k, half)] - h0, -qx[at(half - 1 - k, half)] - q,  // -x
-        depth[at(half, half + k)] - h0, qy[at(half, half + k)] - q,           // +y
+        depth[at(half, half + k)] - h0,     qy[at(half, half + k)] - q,       // +y
         depth[at(half, half - 1 - k)] - h0, -qy[at(half, half - 1 - k)] - q,  // -y
     };
-    for (double d : deviations) o.symmetry_deviation = std::max(o.symmetry_deviation, std::abs(d) / h_max);
+    for (double d : deviations)
+      o.symmetry_deviation = std::max(o.symmetry_deviation, std::abs(d) / h_max);
   }
   // Diagonal cell (half + k, half + k) against the +x axis profile at its radius.
   std::vector<double> axis_radius, axis_depth;
@@ -94,10 +96,12 @@ constexpr double symmetry_tolerance = 1e-10;
 TEST(Swe2dRadialDamBreak, WetBedStaysRadiallySymmetric) {
   const double mean_tolerance = 0.02;
   const Outcome o = radial_dam_break(0.5, 0.15);
-  fmt::print("radial dam break 1.0 | 0.5 m, {}^2 cells, t = 0.15 s: axis symmetry deviation {:.2e} "
-             "(tolerance {:.0e}); diagonal vs axis: mean {:.2e} (tolerance {:.0e}), max {:.2e} of the jump\n",
-             cells_per_side, o.symmetry_deviation, symmetry_tolerance, o.diagonal_mean_deviation, mean_tolerance,
-             o.diagonal_max_deviation);
+  fmt::print(
+      "radial dam break 1.0 | 0.5 m, {}^2 cells, t = 0.15 s: axis symmetry deviation {:.2e} "
+      "(tolerance {:.0e}); diagonal vs axis: mean {:.2e} (tolerance {:.0e}), max {:.2e} of the "
+      "jump\n",
+      cells_per_side, o.symmetry_deviation, symmetry_tolerance, o.diagonal_mean_deviation,
+      mean_tolerance, o.diagonal_max_deviation);
   EXPECT_LE(o.symmetry_deviation, symmetry_tolerance);
   EXPECT_LE(o.diagonal_mean_deviation, mean_tolerance);
 }
@@ -105,10 +109,12 @@ TEST(Swe2dRadialDamBreak, WetBedStaysRadiallySymmetric) {
 TEST(Swe2dRadialDamBreak, DryBedStaysRadiallySymmetric) {
   const double mean_tolerance = 0.03;
   const Outcome o = radial_dam_break(0.0, 0.08);
-  fmt::print("radial dam break 1.0 m | dry, {}^2 cells, t = 0.08 s: axis symmetry deviation {:.2e} "
-             "(tolerance {:.0e}); diagonal vs axis: mean {:.2e} (tolerance {:.0e}), max {:.2e} of the jump\n",
-             cells_per_side, o.symmetry_deviation, symmetry_tolerance, o.diagonal_mean_deviation, mean_tolerance,
-             o.diagonal_max_deviation);
+  fmt::print(
+      "radial dam break 1.0 m | dry, {}^2 cells, t = 0.08 s: axis symmetry deviation {:.2e} "
+      "(tolerance {:.0e}); diagonal vs axis: mean {:.2e} (tolerance {:.0e}), max {:.2e} of the "
+      "jump\n",
+      cells_per_side, o.symmetry_deviation, symmetry_tolerance, o.diagonal_mean_deviation,
+      mean_tolerance, o.diagonal_max_deviation);
   EXPECT_LE(o.symmetry_deviation, symmetry_tolerance);
   EXPECT_LE(o.diagonal_mean_deviation, mean_tolerance);
 }

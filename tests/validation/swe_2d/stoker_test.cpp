@@ -20,9 +20,12 @@ constexpr double g = 9.81, h_left = 1.0, h_right = 0.5, dam = 0.5, end_time = 0.
 double stoker_l1_error(bool along_x, const cosim::bench::ExactDamBreak& exact) {
   const int n = 100, across = 3;
   const double dx = 1.0 / n;
-  const swe::Boundary open{swe::BoundaryKind::transmissive, 0.0}, wall{swe::BoundaryKind::wall, 0.0};
-  const swe::Grid2d grid = along_x ? swe::Grid2d{{0, 0}, {dx, dx}, {n, across}} : swe::Grid2d{{0, 0}, {dx, dx}, {across, n}};
-  const swe::Boundaries2d sides = along_x ? swe::Boundaries2d{open, open, wall, wall} : swe::Boundaries2d{wall, wall, open, open};
+  const swe::Boundary open{swe::BoundaryKind::transmissive, 0.0},
+      wall{swe::BoundaryKind::wall, 0.0};
+  const swe::Grid2d grid = along_x ? swe::Grid2d{{0, 0}, {dx, dx}, {n, across}}
+                                   : swe::Grid2d{{0, 0}, {dx, dx}, {across, n}};
+  const swe::Boundaries2d sides = along_x ? swe::Boundaries2d{open, open, wall, wall}
+                                          : swe::Boundaries2d{wall, wall, open, open};
   swe::Solver2d solver(grid, {}, {}, sides);
   std::vector<double> h(solver.cell_count());
   for (std::size_t c = 0; c < h.size(); ++c) {
@@ -48,9 +51,10 @@ TEST(Swe2dStoker, MatchesTheExactDamBreakAlongXAndY) {
   const cosim::bench::ExactDamBreak exact(h_left, h_right, dam, g);
   const double tolerance = 5e-3;
   const double along_x = stoker_l1_error(true, exact), along_y = stoker_l1_error(false, exact);
-  fmt::print("Stoker dam break (h_m = {:.5f} m), t = {} s, 100 x 3 cells: L1(h) along x = {:.3e} m, "
-             "along y = {:.3e} m (tolerance {:.0e} m)\n",
-             exact.middle_depth(), end_time, along_x, along_y, tolerance);
+  fmt::print(
+      "Stoker dam break (h_m = {:.5f} m), t = {} s, 100 x 3 cells: L1(h) along x = {:.3e} m, "
+      "along y = {:.3e} m (tolerance {:.0e} m)\n",
+      exact.middle_depth(), end_time, along_x, along_y, tolerance);
   EXPECT_LE(along_x, tolerance);
   EXPECT_LE(along_y, tolerance);
   EXPECT_NEAR(along_x, along_y, 1e-14);  // the same code sweeps x and y

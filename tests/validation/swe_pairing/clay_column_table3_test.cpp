@@ -26,8 +26,8 @@
 // The soil is configs/mpm/clay_column_seed002.yaml: quadratic B-splines on
 // 0.025 m cells, the converged runout (the paper's 0.05 m GIMP grid is
 // 7-8 % short at 0.5 and 1 s; numbers in that file).
-#include <gtest/gtest.h>
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -50,7 +50,8 @@ namespace {
 
 constexpr double g = 9.81;
 constexpr double h_s = 1.0;
-constexpr double base_band = 0.1;  // soil within this height of its lowest point counts as the base [m]
+constexpr double base_band =
+    0.1;  // soil within this height of its lowest point counts as the base [m]
 
 struct Reference {
   double runout, eta_max, soil_speed, water_speed;
@@ -58,8 +59,8 @@ struct Reference {
 
 // seed002_table3_clay_column_still_water.csv: R_ws, t -> the four numbers.
 std::map<std::pair<double, double>, Reference> read_table3() {
-  const fs::path file =
-      fs::path(COSIM_SOURCE_DIR) / "configs" / "bench" / "reference" / "zheng_table3_clay_column_still_water.csv";
+  const fs::path file = fs::path(COSIM_SOURCE_DIR) / "configs" / "bench" / "reference" /
+                        "zheng_table3_clay_column_still_water.csv";
   std::ifstream in(file);
   if (!in) throw std::runtime_error("cannot read " + file.string());
   std::map<std::pair<double, double>, Reference> table;
@@ -132,7 +133,8 @@ struct WaterRow {
 // water.csv: time, volume, eta_max, eta_min, speed_max.
 std::map<double, WaterRow> water_rows(const fs::path& water) {
   std::map<double, WaterRow> out;
-  for (const auto& row : ct::read_csv(water / "water.csv")) out[std::round(row[0] * 1e6) / 1e6] = {row[2], row[4]};
+  for (const auto& row : ct::read_csv(water / "water.csv"))
+    out[std::round(row[0] * 1e6) / 1e6] = {row[2], row[4]};
   return out;
 }
 
@@ -142,9 +144,11 @@ TEST_P(ClayColumnInStillWater, MatchesZhengTable3) {
   const std::string tag = GetParam();
   const double r_ws = std::stod(tag);
   const fs::path out = ct::fresh_directory("clay_still_water_Rws" + tag);
-  const fs::path job = fs::path(COSIM_SOURCE_DIR) / "configs" / ("clay_still_water_Rws" + tag + ".yaml");
-  const auto result = ct::run({ct::binary("cosim").string(), "run", job.string(), "--output", out.string()},
-                              std::chrono::seconds(800));
+  const fs::path job =
+      fs::path(COSIM_SOURCE_DIR) / "configs" / ("clay_still_water_Rws" + tag + ".yaml");
+  const auto result =
+      ct::run({ct::binary("cosim").string(), "run", job.string(), "--output", out.string()},
+              std::chrono::seconds(800));
   ASSERT_EQ(result.exit_code, 0) << result.output;
 
   const auto table = read_table3();
@@ -153,8 +157,12 @@ TEST_P(ClayColumnInStillWater, MatchesZhengTable3) {
   const auto water = water_rows(out / "water");
   ASSERT_TRUE(soil.count(0.0));
   const double toe0 = toe(soil.at(0.0));
-  fmt::print("Zheng et al. Table 3, R_ws = {}: ours / paper (relative error); tolerances in the header\n", tag);
-  fmt::print("  t [s]   runout Ds/hs           eta_max/hs             |v_s|max/sqrt(g hs)    |u_0|max/sqrt(g hs)\n");
+  fmt::print(
+      "Zheng et al. Table 3, R_ws = {}: ours / paper (relative error); tolerances in the header\n",
+      tag);
+  fmt::print(
+      "  t [s]   runout Ds/hs           eta_max/hs             |v_s|max/sqrt(g hs)    "
+      "|u_0|max/sqrt(g hs)\n");
   auto cell = [](double ours, double theirs) {
     return fmt::format("{:.3f}/{:.3f} ({:+.1f}%)", ours, theirs, 100.0 * (ours / theirs - 1.0));
   };
@@ -176,14 +184,18 @@ TEST_P(ClayColumnInStillWater, MatchesZhengTable3) {
                cell(m.water_speed, m.ref.water_speed));
   for (const Measured& m : rows) {
     const double eta_tolerance = m.t < 2.0 ? 0.03 : 0.04;
-    EXPECT_NEAR(m.eta_max, m.ref.eta_max, eta_tolerance * m.ref.eta_max) << "eta_max at t = " << m.t;
+    EXPECT_NEAR(m.eta_max, m.ref.eta_max, eta_tolerance * m.ref.eta_max)
+        << "eta_max at t = " << m.t;
     EXPECT_NEAR(m.runout, m.ref.runout, 0.05 * m.ref.runout) << "runout at t = " << m.t;
   }
-  EXPECT_NEAR(rows[0].soil_speed, rows[0].ref.soil_speed, 0.50 * rows[0].ref.soil_speed) << "soil speed at 0.5 s";
+  EXPECT_NEAR(rows[0].soil_speed, rows[0].ref.soil_speed, 0.50 * rows[0].ref.soil_speed)
+      << "soil speed at 0.5 s";
   EXPECT_LT(rows[2].soil_speed, rows[2].ref.soil_speed) << "the soil has not come to rest by 5 s";
 }
 
 INSTANTIATE_TEST_SUITE_P(ZhengSec43, ClayColumnInStillWater, ::testing::Values("1.0", "1.5", "2.0"),
-                         [](const auto& p) { return std::string("Rws") + (p.param[0]) + (p.param[2]); });
+                         [](const auto& p) {
+                           return std::string("Rws") + (p.param[0]) + (p.param[2]);
+                         });
 
 }  // namespace

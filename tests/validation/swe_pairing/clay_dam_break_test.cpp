@@ -9,8 +9,8 @@
 // (configs/mpm/clay_column_variants/paper_gimp_0.05m.yaml, a quarter of the
 // points, half the steps); COSIM_FULL_VALIDATION runs the jobs as shipped
 // (quadratic B-splines on 0.025 m cells).
-#include <gtest/gtest.h>
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -54,8 +54,9 @@ fs::path job_file(const std::string& tag, [[maybe_unused]] const fs::path& dir) 
   return shipped;
 #else
   std::string text = ct::read_text(shipped);
-  text = ct::replaced(text, "config: mpm/clay_column_seed002.yaml",
-                      "config: " + (configs / "mpm" / "clay_column_variants" / "paper_gimp_0.05m.yaml").string());
+  text = ct::replaced(
+      text, "config: mpm/clay_column_seed002.yaml",
+      "config: " + (configs / "mpm" / "clay_column_variants" / "paper_gimp_0.05m.yaml").string());
   text = ct::replaced(text, "config: swe/", "config: " + (configs / "swe").string() + "/");
   const fs::path job = dir / ("clay_dam_break_R" + tag + "_ci.yaml");
   std::ofstream(job) << text;
@@ -69,8 +70,8 @@ TEST_P(ClayColumnInDamBreak, RunsTenSecondsAndTheWaterReturnsTowardsRest) {
   const std::string tag = GetParam();
   const fs::path out = ct::fresh_directory("clay_dam_break_R" + tag);
   const fs::path job = job_file(tag, ct::fresh_directory("clay_dam_break_R" + tag + "_job"));
-  const auto result = ct::run({ct::binary("cosim").string(), "run", job.string(), "--output", out.string(),
-                               "--verbosity", "quiet"},
+  const auto result = ct::run({ct::binary("cosim").string(), "run", job.string(), "--output",
+                               out.string(), "--verbosity", "quiet"},
                               std::chrono::seconds(1200));
   ASSERT_EQ(result.exit_code, 0) << result.output;
 
@@ -90,14 +91,17 @@ TEST_P(ClayColumnInDamBreak, RunsTenSecondsAndTheWaterReturnsTowardsRest) {
     return r;
   };
   const double early = range_over(0.0, 2.0), late = range_over(9.0, 10.0);
-  fmt::print("R = {}: free-surface range max(eta) - min(eta): {:.3f} m over 0-2 s, {:.3f} m over 9-10 s\n", tag,
-             early, late);
+  fmt::print(
+      "R = {}: free-surface range max(eta) - min(eta): {:.3f} m over 0-2 s, {:.3f} m over 9-10 s\n",
+      tag, early, late);
   EXPECT_LT(late, 0.6 * early) << "the surface does not settle";
 
   // Waves reach the far wall: the right-end gauge rises above the still level.
   double right_end_peak = 0.0;
-  for (const auto& row : ct::read_csv(out / "water" / "gauges.csv")) right_end_peak = std::max(right_end_peak, row[4]);
-  fmt::print("R = {}: highest free surface at the right wall {:.3f} m (still level 1 m)\n", tag, right_end_peak);
+  for (const auto& row : ct::read_csv(out / "water" / "gauges.csv"))
+    right_end_peak = std::max(right_end_peak, row[4]);
+  fmt::print("R = {}: highest free surface at the right wall {:.3f} m (still level 1 m)\n", tag,
+             right_end_peak);
   EXPECT_GT(right_end_peak, 1.01);
 
   std::map<double, std::vector<double>> water_at;
@@ -106,8 +110,8 @@ TEST_P(ClayColumnInDamBreak, RunsTenSecondsAndTheWaterReturnsTowardsRest) {
   for (double t : {0.5, 1.0, 5.0}) {
     const Table5Row ref = table5.at({tag, t});
     const auto& row = water_at.at(t);
-    fmt::print("        {:4.1f}   {:.3f} ({:.3f})            {:.3f} ({:.3f})\n", t, row[2], ref.eta_max,
-               row[4] / std::sqrt(g), ref.water_speed);
+    fmt::print("        {:4.1f}   {:.3f} ({:.3f})            {:.3f} ({:.3f})\n", t, row[2],
+               ref.eta_max, row[4] / std::sqrt(g), ref.water_speed);
   }
   const auto soil = nlohmann::json::parse(ct::read_text(out / "soil" / "summary.json"));
   EXPECT_EQ(soil["status"]["exit_code"], 0);
