@@ -34,6 +34,22 @@ class App;
 //
 // Without an endpoint the same code runs standalone: nothing is exchanged,
 // reads return the declared defaults and the solver's own end time applies.
+//
+// Implicit coupling repeats a window until the exchanged fields converge.
+// A solver that can go back to a window's start declares it, saves its state
+// when asked, and restores it when the window must run again:
+//
+//   p.declare_repeatable();                          // before initialize
+//   while (p.is_coupling_ongoing()) {
+//     if (p.must_save_state()) saved = state;
+//     ... step as above ...
+//     p.advance(dt);
+//     if (p.must_restore_state()) state = saved;     // time() is back at the window's start
+//     if (p.is_window_complete()) write_due_outputs();
+//   }
+//
+// Outputs are written only when is_window_complete(): a window that is
+// repeated must not leave a trace.
 namespace cosim {
 
 // Where to reach the coupler; given to a participant on its command line by
@@ -51,21 +67,27 @@ struct CouplingEndpoint {
   // when empty, and the variable removed so the solver's own child
   // processes do not inherit it.
   std::string token = {};
+  // Standalone only: run every window twice, going back to its start once
+  // (--cosim-repeat-windows): checks a solver's save and restore, since the
+  // repeated run must give exactly the results of a plain one.
+  bool repeat_windows = false;
 
   bool is_standalone() const { return uri.empty(); }
   // The job's name for this participant, or the solver's own when standalone.
   std::string name_or(std::string fallback) const { return name.empty() ? fallback : name; }
 };
 
-// Adds --cosim-endpoint, --cosim-name, --cosim-job, --cosim-config-hash and
-// --cosim-connect-timeout to a solver's command line.
+// Adds --cosim-endpoint, --cosim-name, --cosim-job, --cosim-config-hash,
+// --cosim-connect-timeout and --cosim-repeat-windows to a solver's command
+// line.
 void add_coupling_options(CLI::App& app, CouplingEndpoint& endpoint);
 
 // Wall time a participant spent in the coupling, by phase [s].
 struct CouplingTimings {
-  double waiting = 0.0;    // blocked until the coupler's answer arrived
-  double transport = 0.0;  // encoding and sending
-  std::size_t windows = 0;
+  double waiting = 0.0;        // blocked until the coupler's answer arrived
+  double transport = 0.0;      // encoding and sending
+  std::size_t windows = 0;     // windows completed
+  std::size_t iterations = 0;  // window attempts (windows plus repetitions)
 };
 
 class Participant {
@@ -84,6 +106,10 @@ class Participant {
   // `default_value` fills the field until the first exchange, and always
   // when standalone.
   void declare_read(FieldSpec field, double default_value = 0.0);
+  // The solver saves its state when must_save_state() and restores it when
+  // must_restore_state(): an implicit job can repeat its windows. A job with
+  // an implicit scheme refuses a participant that does not declare this.
+  void declare_repeatable();
 
   // Connects to the coupler (handshake: protocol version, job id, config
   // hash), exchanges the initial data (fields written before initialize),
@@ -96,6 +122,7 @@ class Participant {
   double time() const;
   double window_size() const;
   std::size_t window_index() const;  // 1 for the first window
+  std::size_t iteration() const;     // attempt at the current window, 1 for the first
   double end_time() const;
   // The longest step that stays inside the current window.
   double max_time_step() const;
@@ -116,10 +143,26 @@ class Participant {
   // steps, so the solver ends as on an error and records why.
   void advance(double dt);
 
-  // State fields: the latest received values (linearly extrapolated inside
-  // the window when the job asks for it). Integral fields: the whole
-  // integral received for the current window.
-  void read(std::string_view field, std::span<double> values) const;
+  // At the start of a window that may be repeated (after initialize() and
+  // after an advance() that completed a window): save the solver's state now.
+  bool must_save_state() const;
+  // After an advance() that ended a window which must run again: restore the
+  // saved state; time() is the window's start and the reads hold the next
+  // iterate.
+  bool must_restore_state() const;
+  // After an advance() that completed a window for good (every window end of
+  // an explicit scheme, a converged one of an implicit scheme): outputs due
+  // may be written.
+  bool is_window_complete() const;
+
+  // State fields: the latest received values at time() + relative_time
+  // (0 <= relative_time <= max_time_step()). Explicit schemes: linearly
+  // extrapolated from the last two received when the job asks for it.
+  // Implicit schemes: the current iterate of the window-end values, or
+  // (time_interpolation: linear) interpolated between the converged values at
+  // the window's start and that iterate. Integral fields: the whole integral
+  // received for the current window.
+  void read(std::string_view field, std::span<double> values, double relative_time = 0.0) const;
   std::vector<double> read(std::string_view field) const;
   // Integral fields: the share of the window's integral for a step of dt;
   // over a window the shares add up exactly to the integral received.

@@ -89,7 +89,8 @@ std::string to_json(const Hello& h) {
          {"pid", h.pid},
          {"meshes", json::array()},
          {"writes", json::array()},
-         {"reads", json::array()}};
+         {"reads", json::array()},
+         {"repeatable", h.repeatable}};
   for (const auto& m : h.meshes)
     j["meshes"].push_back({{"name", m.name}, {"kind", to_string(m.kind)}, {"dim", m.dim}});
   for (const auto& f : h.writes) j["writes"].push_back(field_to_json(f));
@@ -103,6 +104,9 @@ std::string to_json(const Welcome& w) {
               {"end_time", w.end_time},
               {"window", w.window},
               {"extrapolation", w.extrapolation == Extrapolation::linear ? "linear" : "constant"},
+              {"implicit", w.implicit},
+              {"time_interpolation",
+               w.time_interpolation == TimeInterpolation::linear ? "linear" : "constant"},
               {"timeout_s", w.timeout_s},
               {"sends", w.sends}}
       .dump();
@@ -123,6 +127,7 @@ Hello parse_hello(const std::string& text, const std::string& peer) {
                           static_cast<int>(whole_number(m.at("dim"), 1, 3, "dim"))});
     for (const auto& f : j.at("writes")) h.writes.push_back(field_from_json(f));
     for (const auto& f : j.at("reads")) h.reads.push_back(field_from_json(f));
+    h.repeatable = j.at("repeatable").get<bool>();
     return h;
   } catch (const std::exception& e) {
     throw ProtocolError(peer, std::string("malformed hello: ") + e.what());
@@ -140,6 +145,10 @@ Welcome parse_welcome(const std::string& text, const std::string& peer) {
     w.extrapolation = j.at("extrapolation").get<std::string>() == "linear"
                           ? Extrapolation::linear
                           : Extrapolation::constant;
+    w.implicit = j.at("implicit").get<bool>();
+    w.time_interpolation = j.at("time_interpolation").get<std::string>() == "linear"
+                               ? TimeInterpolation::linear
+                               : TimeInterpolation::constant;
     w.timeout_s = j.at("timeout_s").get<double>();
     w.sends = j.at("sends").get<std::vector<std::string>>();
     if (!(w.window > 0.0) || !(w.end_time >= w.start_time) || !(w.timeout_s > 0.0))

@@ -29,9 +29,15 @@ struct Hello {
   std::vector<MeshDeclaration> meshes;
   std::vector<FieldSpec> writes;
   std::vector<FieldSpec> reads;
+  // The solver saves its state at a window's start and can run the window
+  // again from it (Participant::declare_repeatable); implicit schemes need it.
+  bool repeatable = false;
 };
 
 enum class Extrapolation { constant, linear };
+// What an implicit scheme's participant reads inside a window, between the
+// converged values at its start and the current iterate at its end.
+enum class TimeInterpolation { constant, linear };
 
 struct Welcome {
   std::string config_hash;  // the job's; the participant checks it against its own
@@ -39,6 +45,10 @@ struct Welcome {
   double end_time = 0.0;
   double window = 0.0;
   Extrapolation extrapolation = Extrapolation::constant;
+  // Implicit schemes: windows may be repeated (window_repeat), and the
+  // fields received are iterates of the values at the window's end.
+  bool implicit = false;
+  TimeInterpolation time_interpolation = TimeInterpolation::constant;
   double timeout_s = 600.0;        // longest wait for the coupler (beyond its own window timeout)
   std::vector<std::string> sends;  // the participant's reads the job sends it
 };

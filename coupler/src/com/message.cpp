@@ -180,6 +180,8 @@ const char* to_string(MessageType type) {
       return "finish";
     case MessageType::abort:
       return "abort";
+    case MessageType::window_repeat:
+      return "window_repeat";
   }
   return "unknown";
 }
@@ -213,7 +215,7 @@ Header decode_header(std::span<const std::byte> bytes, const std::string& peer) 
                                           h.version, protocol_version));
   const auto type = r.get<std::uint8_t>("type");
   if (type < static_cast<std::uint8_t>(MessageType::hello) ||
-      type > static_cast<std::uint8_t>(MessageType::abort))
+      type > static_cast<std::uint8_t>(MessageType::window_repeat))
     throw ProtocolError(peer, fmt::format("unknown message type {}", type));
   h.type = static_cast<MessageType>(type);
   const auto element = r.get<std::uint8_t>("element type");

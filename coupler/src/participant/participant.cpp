@@ -52,6 +52,9 @@ void add_coupling_options(CLI::App& app, CouplingEndpoint& endpoint) {
       ->add_option("--cosim-connect-timeout", endpoint.connect_timeout_s,
                    "seconds to wait for the coupler's welcome")
       ->check(CLI::Range(0.1, 1.0e6));
+  group->add_flag("--cosim-repeat-windows", endpoint.repeat_windows,
+                  "standalone: run every window twice, going back to its start once (checks "
+                  "the solver's save and restore)");
 }
 
 struct WriteBuffer {
@@ -65,6 +68,7 @@ struct ReadBuffer {
   FieldSpec spec;
   std::vector<double> current;
   std::vector<double> previous;  // for linear extrapolation
+  std::vector<double> start;     // implicit schemes: the converged values at the window's start
   double received_at = 0.0;
   double previous_at = 0.0;
   bool has_previous = false;
@@ -92,6 +96,12 @@ struct Participant::Impl {
   std::size_t window = 0;
   double standalone_window = 0.0;
   CouplingTimings timings;
+  bool repeatable = false;
+  std::size_t iteration = 1;
+  bool save_state = false;
+  bool restore_state = false;
+  bool window_complete = false;
+  bool repeat_requested = false;  // the coupler's window_repeat
 
   std::size_t size_of(const FieldSpec& f) const {
     return meshes.at(f.mesh).mesh.size() * static_cast<std::size_t>(f.components);
@@ -99,10 +109,15 @@ struct Participant::Impl {
 
   // Computed from the window's index, as the coupler does, never accumulated:
   // over thousands of windows a running sum drifts past the coupler's tolerance.
-  double window_end() const {
+  double window_end() const { return window_time(window); }
+  double window_start() const { return window_time(window - 1); }
+  double window_time(std::size_t w) const {
     return std::min(schedule.end_time,
-                    schedule.start_time + static_cast<double>(window) * schedule.window);
+                    schedule.start_time + static_cast<double>(w) * schedule.window);
   }
+  // Whether windows run more than once: an implicit job, or a standalone
+  // check of save and restore.
+  bool repeats_windows() const { return schedule.implicit || endpoint.repeat_windows; }
 
   void send(com::Message message) {
     const auto start = Clock::now();
@@ -192,8 +207,9 @@ struct Participant::Impl {
   }
 
   // Receives the mapped fields for the next window, then window_begin or
-  // finish.
+  // finish; or, in an implicit scheme, the next iterate and window_repeat.
   void receive_window_data() {
+    repeat_requested = false;
     for (;;) {
       com::Message m = receive(schedule.timeout_s);
       switch (m.header.type) {
@@ -204,6 +220,15 @@ struct Participant::Impl {
           if (m.header.window != window + 1)
             throw ProtocolError(com::coupler_peer, fmt::format("began window {} after window {}",
                                                                m.header.window, window));
+          for (auto& [field_name, r] : reads) r.start = r.current;
+          return;
+        case MessageType::window_repeat:
+          if (!schedule.implicit || m.header.window != window || window == 0)
+            throw ProtocolError(
+                com::coupler_peer,
+                fmt::format("asked to repeat window {} during window {}{}", m.header.window, window,
+                            schedule.implicit ? "" : " of an explicit scheme"));
+          repeat_requested = true;
           return;
         case MessageType::finish:
           finished = true;
@@ -312,8 +337,15 @@ void Participant::declare_read(FieldSpec field, double default_value) {
   r.spec = field;
   r.current.assign(n, field.time == TimeTreatment::integral ? 0.0 : default_value);
   r.previous = r.current;
+  r.start = r.current;
   r.delivered.assign(n, 0.0);
   impl_->reads.emplace(field.name, std::move(r));
+}
+
+void Participant::declare_repeatable() {
+  if (impl_->initialized)
+    usage_error(impl_->name, "declare_repeatable() comes before initialize()");
+  impl_->repeatable = true;
 }
 
 void Participant::set_standalone_window(double window) {
@@ -334,6 +366,9 @@ void Participant::initialize(double start_time, double end_time) {
     s.schedule.window =
         s.standalone_window > 0.0 ? s.standalone_window : std::max(end_time - start_time, 1e-300);
     s.time = start_time;
+    if (s.endpoint.repeat_windows && !s.repeatable)
+      usage_error(s.name, "--cosim-repeat-windows needs a solver that declares it is repeatable");
+    s.save_state = s.repeats_windows();
     return;
   }
 
@@ -353,6 +388,7 @@ void Participant::initialize(double start_time, double end_time) {
     hello.meshes.push_back({mesh_name, entry.mesh.kind(), entry.mesh.dimension()});
   for (const auto& [field_name, w] : s.writes) hello.writes.push_back(w.spec);
   for (const auto& [field_name, r] : s.reads) hello.reads.push_back(r.spec);
+  hello.repeatable = s.repeatable;
   s.window = 0;
   s.send(com::make_text_message(MessageType::hello, s.endpoint.job_id, s.name, 0, start_time,
                                 com::to_json(hello)));
@@ -380,6 +416,7 @@ void Participant::initialize(double start_time, double end_time) {
   s.receive_window_data();
   s.window = 1;
   s.timings.windows = 0;
+  s.save_state = s.repeats_windows() && is_coupling_ongoing();
 }
 
 double Participant::time() const {
@@ -390,6 +427,9 @@ double Participant::window_size() const {
 }
 std::size_t Participant::window_index() const {
   return impl_->window;
+}
+std::size_t Participant::iteration() const {
+  return impl_->iteration;
 }
 double Participant::end_time() const {
   return impl_->schedule.end_time;
@@ -448,30 +488,69 @@ void Participant::advance(double dt) {
 
   const bool completes_window = dt >= remaining - tolerance;
   s.time = completes_window ? s.window_end() : s.time + dt;
+  s.save_state = s.restore_state = s.window_complete = false;
   if (!completes_window) return;
 
-  ++s.timings.windows;
+  ++s.timings.iterations;
   if (is_coupled()) {
     s.send_window_data();
     s.receive_window_data();
+  } else {
+    // Standalone check of save and restore: the first attempt is repeated.
+    s.repeat_requested = s.endpoint.repeat_windows && s.iteration == 1;
   }
-  ++s.window;
   for (auto& [field_name, r] : s.reads) std::fill(r.delivered.begin(), r.delivered.end(), 0.0);
+  if (s.repeat_requested) {
+    s.time = s.window_start();
+    ++s.iteration;
+    s.restore_state = true;
+    return;
+  }
+  ++s.timings.windows;
+  ++s.window;
+  s.iteration = 1;
+  s.window_complete = true;
+  s.save_state = s.repeats_windows() && is_coupling_ongoing();
 }
 
-void Participant::read(std::string_view field, std::span<double> values) const {
+bool Participant::must_save_state() const {
+  return impl_->save_state;
+}
+bool Participant::must_restore_state() const {
+  return impl_->restore_state;
+}
+bool Participant::is_window_complete() const {
+  return impl_->window_complete;
+}
+
+void Participant::read(std::string_view field, std::span<double> values,
+                       double relative_time) const {
   const Impl& s = *impl_;
   const ReadBuffer& r = s.read_buffer(field);
   if (values.size() != r.current.size())
     usage_error(s.name, fmt::format("reads {} values of field '{}', which has {}", values.size(),
                                     field, r.current.size()));
-  const bool extrapolate = s.schedule.extrapolation == com::Extrapolation::linear &&
+  if (!(relative_time >= 0.0) ||
+      relative_time > max_time_step() + window_end_tolerance * s.schedule.window)
+    usage_error(s.name,
+                fmt::format("reads '{}' {} s ahead, outside the window", field, relative_time));
+  const double t = s.time + relative_time;
+  if (s.schedule.implicit && r.spec.time == TimeTreatment::state &&
+      s.schedule.time_interpolation == com::TimeInterpolation::linear) {
+    // Waveform relaxation: linear in time between the window's two ends.
+    const double share = (t - s.window_start()) / (s.window_end() - s.window_start());
+    for (std::size_t i = 0; i < values.size(); ++i)
+      values[i] = r.start[i] + share * (r.current[i] - r.start[i]);
+    return;
+  }
+  const bool extrapolate = !s.schedule.implicit &&
+                           s.schedule.extrapolation == com::Extrapolation::linear &&
                            r.has_previous && r.received_at > r.previous_at;
   if (!extrapolate) {
     std::copy(r.current.begin(), r.current.end(), values.begin());
     return;
   }
-  const double slope_factor = (s.time - r.received_at) / (r.received_at - r.previous_at);
+  const double slope_factor = (t - r.received_at) / (r.received_at - r.previous_at);
   for (std::size_t i = 0; i < values.size(); ++i)
     values[i] = r.current[i] + slope_factor * (r.current[i] - r.previous[i]);
 }

@@ -1,5 +1,6 @@
 #include "com/message.hpp"
 
+#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -75,7 +76,9 @@ TEST(MessageHeader, RejectsTruncatedForeignAndOtherVersionHeadersNamingThePeer) 
     decode_header(encode_header(other), "water");
     FAIL();
   } catch (const ProtocolError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("speaks cosim protocol version 2, this side speaks 1"));
+    EXPECT_THAT(e.what(),
+                HasSubstr(fmt::format("speaks cosim protocol version {}, this side speaks {}",
+                                      protocol_version + 1, protocol_version)));
   }
   auto trailing = bytes;
   trailing.push_back(std::byte{0});
@@ -158,7 +161,7 @@ TEST(Handshake, AHelloWithNumbersOutOfRangeIsMalformed) {
     f.replace(f.find("COMPONENTS"), 10, components);
     return R"({"participant": "s", "config_hash": "0", "program": "x", "pid": )" + pid +
            R"(, "meshes": [{"name": "m", "kind": "uniform_grid", "dim": )" + dim +
-           R"(}], "writes": [)" + f + R"(], "reads": []})";
+           R"(}], "writes": [)" + f + R"(], "reads": [], "repeatable": false})";
   };
   EXPECT_NO_THROW(parse_hello(hello("12", "2", "1"), "s"));
   for (const auto& [pid, dim, components] :
@@ -203,15 +206,27 @@ TEST(Handshake, HelloAndWelcomeRoundTrip) {
   ASSERT_EQ(back.reads.size(), 1u);
   EXPECT_TRUE(back.reads[0].optional);
   EXPECT_THROW(parse_hello("{\"participant\": 3}", "soil"), ProtocolError);
-  Welcome w{"00ff", 0.0, 1.0, 0.01, Extrapolation::linear, 30.0, {"pore_pressure"}};
+  h.repeatable = true;
+  EXPECT_TRUE(parse_hello(to_json(h), "soil").repeatable);
+  Welcome w{.config_hash = "00ff",
+            .start_time = 0.0,
+            .end_time = 1.0,
+            .window = 0.01,
+            .extrapolation = Extrapolation::linear,
+            .implicit = true,
+            .time_interpolation = TimeInterpolation::linear,
+            .timeout_s = 30.0,
+            .sends = {"pore_pressure"}};
   const Welcome wb = parse_welcome(to_json(w), "coupler");
+  EXPECT_TRUE(wb.implicit);
+  EXPECT_EQ(wb.time_interpolation, TimeInterpolation::linear);
   EXPECT_EQ(wb.sends, std::vector<std::string>{"pore_pressure"});
   EXPECT_EQ(wb.window, 0.01);
   EXPECT_EQ(wb.config_hash, "00ff");
   EXPECT_EQ(wb.extrapolation, Extrapolation::linear);
   EXPECT_THROW(
       parse_welcome(
-          R"({"config_hash":"0","start_time":0,"end_time":1,"window":-1,"extrapolation":"constant","timeout_s":1,"sends":[]})",
+          R"({"config_hash":"0","start_time":0,"end_time":1,"window":-1,"extrapolation":"constant","implicit":false,"time_interpolation":"constant","timeout_s":1,"sends":[]})",
           "c"),
       ProtocolError);
 }

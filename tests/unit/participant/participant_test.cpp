@@ -7,6 +7,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <numeric>
 
 #include "cosim/error.hpp"
@@ -115,6 +116,87 @@ TEST(Participant, UsageErrorsAreReportedNotIgnored) {
   EXPECT_THROW(p.advance(-1.0), NumericalError);
   std::vector<double> out(4);
   EXPECT_THROW(p.read_increment("u", 0.1, out), Error);  // not an integral field read
+}
+
+// --cosim-repeat-windows runs each window twice: the solver is asked to save
+// at every window's start, to restore after the first attempt, and may write
+// its outputs only after the second. A toy solver state (a step counter and a
+// running sum) shows the repeated run ends exactly where a plain one does.
+TEST(Participant, RepeatedWindowsRestartFromTheSavedStateAndCompleteOnce) {
+  struct State {
+    int steps = 0;
+    double sum = 0.0;
+  };
+  const auto run = [](bool repeat) {
+    CouplingEndpoint endpoint;
+    endpoint.repeat_windows = repeat;
+    Participant p("soil", endpoint);
+    p.declare_mesh(line_grid());
+    p.declare_repeatable();
+    p.set_standalone_window(0.25);
+    p.initialize(0.0, 1.0);
+    State state, saved;
+    int saves = 0, restores = 0, completed = 0;
+    std::vector<std::size_t> attempts;
+    EXPECT_EQ(p.must_save_state(), repeat);
+    while (p.is_coupling_ongoing()) {
+      if (p.must_save_state()) {
+        saved = state;
+        ++saves;
+      }
+      attempts.push_back(p.iteration());
+      const double dt = std::min(0.1, p.max_time_step());
+      ++state.steps;
+      state.sum += p.time() + dt;
+      p.advance(dt);
+      if (p.must_restore_state()) {
+        EXPECT_FALSE(p.is_window_complete());
+        state = saved;
+        ++restores;
+        EXPECT_DOUBLE_EQ(p.time(), 0.25 * static_cast<double>(p.window_index() - 1));
+      }
+      if (p.is_window_complete()) ++completed;
+    }
+    EXPECT_EQ(completed, 4);
+    EXPECT_EQ(restores, repeat ? 4 : 0);
+    EXPECT_EQ(saves, repeat ? 4 : 0);
+    EXPECT_EQ(p.timings().windows, 4u);
+    EXPECT_EQ(p.timings().iterations, repeat ? 8u : 4u);
+    EXPECT_EQ(std::count(attempts.begin(), attempts.end(), 2u),
+              repeat ? 12 : 0);  // steps of a second attempt
+    return std::pair{state.steps, state.sum};
+  };
+  const auto plain = run(false);
+  const auto repeated = run(true);
+  EXPECT_EQ(plain.first, 12);  // 0.1, 0.1, 0.05 per window
+  EXPECT_EQ(repeated.first, plain.first);
+  EXPECT_EQ(repeated.second, plain.second);
+}
+
+TEST(Participant, RepeatingWindowsNeedsASolverThatDeclaresIt) {
+  CouplingEndpoint endpoint;
+  endpoint.repeat_windows = true;
+  Participant p("soil", endpoint);
+  p.declare_mesh(line_grid());
+  EXPECT_THROW(p.initialize(0.0, 1.0), Error);
+  Participant late("soil", CouplingEndpoint{});
+  late.declare_mesh(line_grid());
+  late.initialize(0.0, 1.0);
+  EXPECT_THROW(late.declare_repeatable(), Error);
+  EXPECT_FALSE(late.must_save_state());  // explicit and standalone: nothing to save
+}
+
+TEST(Participant, ReadsAheadInsideTheWindowOnly) {
+  Participant p("soil", CouplingEndpoint{});
+  p.declare_mesh(line_grid());
+  p.declare_read(field("pore_pressure"), 5.0);
+  p.set_standalone_window(0.5);
+  p.initialize(0.0, 1.0);
+  std::vector<double> values(4);
+  p.read("pore_pressure", values, 0.5);
+  EXPECT_EQ(values, std::vector<double>(4, 5.0));
+  EXPECT_THROW(p.read("pore_pressure", values, 0.6), Error);
+  EXPECT_THROW(p.read("pore_pressure", values, -0.1), Error);
 }
 
 TEST(Participant, MeshesAreValidatedWhenDeclared) {
