@@ -10,6 +10,7 @@
 #include "cosim/config/schema.hpp"
 #include "cosim/error.hpp"
 #include "cosim/mesh.hpp"
+#include "job/coupling_spec.hpp"
 #include "mapping/constraint.hpp"
 
 // A coupled run as its YAML `kind: job` file describes it, validated in full
@@ -119,6 +120,7 @@ struct Job {
   double window = 0.0;
   SourceLocation window_where;  // of the `window` key, for messages about it
   StabilityCheck stability;
+  CouplingSpec coupling;
   TransportKind transport = TransportKind::zmq;
   ZmqSpec zmq;
   com::Extrapolation extrapolation = com::Extrapolation::constant;

@@ -123,6 +123,83 @@ Schema energy_exchange_schema() {
   return Schema::any_of({Schema::one_of({"none"}), s});
 }
 
+Schema convergence_measure_schema() {
+  Schema s = Schema::object(
+      "A convergence measure of one field the coupler sends, with r = H(x) - x its change over "
+      "an iteration (2-norm over the field's values); the field has converged when any limit "
+      "given holds, and a window when every field has.");
+  s.required("field", Schema::string().non_empty(),
+             "<participant>.<field>: a field the coupler sends that participant.")
+      .optional("relative", Schema::number().positive(), "||r|| <= relative ||H(x)||.")
+      .optional("absolute", Schema::number().positive(), "||r|| <= absolute, in the field's unit.")
+      .optional("residual_relative", Schema::number().positive(),
+                "||r|| <= residual_relative times ||r|| of the window's first iteration.");
+  return s;
+}
+
+Schema acceleration_schema() {
+  Schema s = Schema::object(
+      "How the next iterate of an implicit window is made from the last one, x, and the "
+      "participants' answer to it, H(x).");
+  s.optional("method",
+             Schema::one_of({"none", "constant", "aitken", "iqn-ils"}).default_value("iqn-ils"),
+             "none: x = H(x); constant: under-relaxation by `relaxation`; aitken: dynamic "
+             "relaxation (Kuettler & Wall 2008); iqn-ils: interface quasi-Newton with an inverse "
+             "least-squares Jacobian (Degroote et al. 2009).")
+      .optional("relaxation", Schema::number().range(1e-6, 1.0).default_value("0.5"),
+                "constant: the factor; aitken: the first iteration's; iqn-ils: the factor of an "
+                "iteration with no column yet.")
+      .optional("max_columns", Schema::integer().range(1, 10000).default_value("100"),
+                "iqn-ils: most columns kept in its least-squares system.")
+      .optional("reuse_windows", Schema::integer().range(0, 1000).default_value("8"),
+                "iqn-ils: keep the columns of this many converged windows for the next.")
+      .optional("filter", Schema::one_of({"none", "qr1", "qr2"}).default_value("qr2"),
+                "iqn-ils: drop (nearly) dependent columns (Haelterman et al. 2016).")
+      .optional("filter_limit", Schema::number().range(1e-16, 1.0).default_value("1e-2"),
+                "iqn-ils: the filter's threshold.")
+      .optional("preconditioner",
+                Schema::one_of({"none", "value", "residual-sum"}).default_value("residual-sum"),
+                "Scaling of each field's part of the quasi-Newton system, so fields in Pa and "
+                "m/s converge together (preCICE's preconditioners).")
+      .optional("freeze_preconditioner_after",
+                Schema::integer().range(0, 1000000).default_value("0"),
+                "Windows after which the scaling stops changing (0: never).")
+      .optional("fields", Schema::sequence(Schema::string().non_empty()),
+                "<participant>.<field> the accelerator updates; the others take H(x). Default: "
+                "the convergence measures' fields.");
+  return s;
+}
+
+Schema coupling_schema() {
+  Schema s = Schema::object(
+      "The coupling scheme: one exchange per window (explicit), or windows repeated until the "
+      "exchanged fields converge (implicit; architecture.md §13).");
+  s.optional("scheme",
+             Schema::one_of({"parallel-explicit", "parallel-implicit"})
+                 .default_value("parallel-explicit"),
+             "parallel-explicit: every participant runs a window at once on the fields of the "
+             "window before; parallel-implicit: the same, repeated from the window's start until "
+             "the `convergence` measures hold.")
+      .optional("time_interpolation",
+                Schema::one_of({"constant", "linear"}).default_value("constant"),
+                "Implicit schemes: what a participant reads inside a window: the current iterate "
+                "of the window-end values, or values linear in time between the window's "
+                "converged start and that iterate (waveform relaxation).")
+      .optional("max_iterations", Schema::integer().range(1, 100000).default_value("50"),
+                "Implicit schemes: the most iterations of a window.")
+      .optional("on_max_iterations", Schema::one_of({"continue", "stop"}).default_value("stop"),
+                "continue: take the last iterate, warn, and count the window as not converged; "
+                "stop: end the run with exit 4 naming the window, the field and its residual.")
+      .optional("divergence_factor", Schema::number().range(1.0, 1e300).default_value("1e3"),
+                "A residual that grows by more than this factor over one iteration ends the run "
+                "(exit 4).")
+      .optional("convergence", Schema::sequence(convergence_measure_schema()),
+                "Implicit schemes: the convergence measures, at least one.")
+      .optional("acceleration", acceleration_schema().default_value("{}"),
+                "Implicit schemes: how iterates are updated (default: iqn-ils with its defaults).");
+  return s;
+}
+
 Schema make_job_schema() {
   Schema s = Schema::file("job",
                           "A coupled run: participants, the fields they exchange, and "
@@ -155,6 +232,8 @@ Schema make_job_schema() {
       .optional("energy_exchange", energy_exchange_schema().default_value("none"),
                 "Implicit heat exchange between a fluid and a solid, solved by the coupler each "
                 "window; both read the heat they receive as 'heat_exchange_energy'.")
+      .optional("coupling", coupling_schema().default_value("{}"),
+                "The coupling scheme: explicit or implicit, convergence and acceleration.")
       .optional("stability_check", stability_check_schema().default_value("{}"),
                 "The explicit coupling's window against its stability bound.")
       .optional("output", output_schema().default_value("{}"), "Coupler output.");

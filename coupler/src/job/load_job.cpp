@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <set>
 #include <string_view>
 
 #include "com/transport.hpp"
@@ -283,6 +284,7 @@ Job load_job(const std::filesystem::path& file) {
   const config::Document doc = config::Document::load_file(file);
   const config::Node root = doc.root();
   job_schema().validate(root);
+  const std::set<std::string> coupling_keys = written_coupling_keys(root);
   job_schema().add_defaults(root);
 
   Job job;
@@ -336,6 +338,7 @@ Job load_job(const std::filesystem::path& file) {
   if (auto e = root.find("energy_exchange"); e && e->is_map())
     job.energy_exchange = read_energy_exchange(job, *e);
   check_reads_provided(job, root);
+  job.coupling = read_coupling(job, root["coupling"], coupling_keys);
   job.config_hash = hash_inputs(doc, job);
   return job;
 }

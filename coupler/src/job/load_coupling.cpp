@@ -1,0 +1,154 @@
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
+#include "cosim/config/node.hpp"
+#include "cosim/fields.hpp"
+#include "job/coupling_spec.hpp"
+#include "job/job.hpp"
+
+namespace cosim::job {
+
+namespace {
+
+// The fields the coupler sends `participant`: the exchanges' and the
+// exchange steps' (check_reads_provided has made sure every read is one).
+bool coupler_sends(const Job& job, const std::string& participant, const std::string& field) {
+  const ParticipantSpec* p = job.participant(participant);
+  return p && p->reads.count(field) > 0;
+}
+
+SentField sent_field(const Job& job, const config::Node& node) {
+  const auto label = node.as<std::string>();
+  const auto dot = label.find('.');
+  if (dot == std::string::npos || dot == 0 || dot + 1 == label.size())
+    node.fail(fmt::format("'{}' is not <participant>.<field>", label));
+  SentField f{label.substr(0, dot), label.substr(dot + 1)};
+  const ParticipantSpec* p = job.participant(f.participant);
+  if (!p) node.fail(fmt::format("no participant named '{}'", f.participant));
+  if (!coupler_sends(job, f.participant, f.field)) {
+    std::string reads;
+    for (const auto& [name, mesh] : p->reads) reads += (reads.empty() ? "" : ", ") + name;
+    node.fail(fmt::format("the coupler sends participant '{}' no field '{}' (it sends: {})",
+                          f.participant, f.field, reads.empty() ? "none" : reads));
+  }
+  return f;
+}
+
+acceleration::AccelerationSpec read_acceleration(const config::Node& a,
+                                                 const std::set<std::string>& written) {
+  using namespace acceleration;
+  AccelerationSpec spec;
+  const auto method = a.get<std::string>("method");
+  spec.method = method == "iqn-ils"  ? Method::iqn_ils
+                : method == "aitken" ? Method::aitken
+                                     : Method::constant;
+  spec.relaxation = method == "none" ? 1.0 : a.get<double>("relaxation");
+  if (method == "none" && written.count("acceleration.relaxation"))
+    a["relaxation"].fail("method none takes H(x) as it is; a relaxation needs method constant");
+  spec.max_columns = a.get<std::size_t>("max_columns");
+  spec.reuse_windows = a.get<std::size_t>("reuse_windows");
+  const auto filter = a.get<std::string>("filter");
+  spec.filter = filter == "qr1" ? Filter::qr1 : filter == "qr2" ? Filter::qr2 : Filter::none;
+  spec.filter_limit = a.get<double>("filter_limit");
+  const auto preconditioner = a.get<std::string>("preconditioner");
+  spec.preconditioner = preconditioner == "value"          ? Preconditioner::value
+                        : preconditioner == "residual-sum" ? Preconditioner::residual_sum
+                                                           : Preconditioner::none;
+  spec.freeze_preconditioner_after = a.get<std::size_t>("freeze_preconditioner_after");
+  return spec;
+}
+
+// The implicit schemes repeat what the participants compute; an exchange the
+// coupler solves itself from the window-end states would see its own result
+// in them and converge to the wrong drag or heat.
+void check_exchanges_repeatable(const Job& job, const config::Node& scheme) {
+  if (job.momentum_exchange && job.momentum_exchange->solved_by == ExchangeSolver::coupler)
+    scheme.fail(
+        "an implicit scheme needs the momentum exchange solved inside the fluid's steps "
+        "(momentum_exchange.solved_by: fluid); the coupler's once-per-window exchange is "
+        "explicit only");
+  if (job.energy_exchange)
+    scheme.fail("the energy exchange is solved once per window by the coupler: explicit only");
+}
+
+}  // namespace
+
+std::set<std::string> written_coupling_keys(const config::Node& root) {
+  std::set<std::string> keys;
+  const auto c = root.find("coupling");
+  if (!c || !c->is_map()) return keys;
+  for (const auto& [key, value] : c->entries()) {
+    keys.insert(key);
+    if (key == "acceleration" && value.is_map())
+      for (const auto& [inner, v] : value.entries()) keys.insert("acceleration." + inner);
+  }
+  return keys;
+}
+
+CouplingSpec read_coupling(const Job& job, const config::Node& c,
+                           const std::set<std::string>& written) {
+  CouplingSpec spec;
+  spec.where = c.location();
+  spec.scheme_where = c["scheme"].location();
+  spec.scheme = c.get<std::string>("scheme") == "parallel-implicit" ? Scheme::parallel_implicit
+                                                                    : Scheme::parallel_explicit;
+  spec.time_interpolation = c.get<std::string>("time_interpolation") == "linear"
+                                ? com::TimeInterpolation::linear
+                                : com::TimeInterpolation::constant;
+  spec.max_iterations = c.get<std::size_t>("max_iterations");
+  spec.on_max_iterations = c.get<std::string>("on_max_iterations") == "continue"
+                               ? OnMaxIterations::continue_run
+                               : OnMaxIterations::stop;
+  spec.divergence_factor = c.get<double>("divergence_factor");
+
+  if (!spec.is_implicit()) {
+    for (const char* key : {"convergence", "acceleration", "time_interpolation", "max_iterations",
+                            "on_max_iterations", "divergence_factor"})
+      if (written.count(key))
+        c[key].fail_at_key(fmt::format("'{}' applies to implicit schemes; this job's scheme is {}",
+                                       key, c.get<std::string>("scheme")));
+    return spec;
+  }
+  check_exchanges_repeatable(job, c["scheme"]);
+
+  const auto measures = c.find("convergence");
+  if (!measures || measures->size() == 0)
+    c.fail_at_key(
+        "an implicit scheme needs at least one convergence measure (coupling.convergence)");
+  for (const config::Node& m : measures->items()) {
+    ConvergenceMeasure measure;
+    measure.field = sent_field(job, m["field"]);
+    measure.where = m.location();
+    measure.key_path = m.key_path();
+    if (auto r = m.find("relative")) measure.relative = r->as<double>();
+    if (auto a = m.find("absolute")) measure.absolute = a->as<double>();
+    if (auto r = m.find("residual_relative")) measure.residual_relative = r->as<double>();
+    if (!measure.relative && !measure.absolute && !measure.residual_relative)
+      m.fail("a convergence measure needs a limit: relative, absolute or residual_relative");
+    for (const ConvergenceMeasure& other : spec.convergence)
+      if (other.field.label() == measure.field.label())
+        m["field"].fail(fmt::format("'{}' has a convergence measure already (at {})",
+                                    measure.field.label(), other.key_path));
+    spec.convergence.push_back(std::move(measure));
+  }
+
+  const config::Node a = c["acceleration"];
+  spec.acceleration = read_acceleration(a, written);
+  if (auto fields = a.find("fields")) {
+    for (const config::Node& f : fields->items()) {
+      SentField field = sent_field(job, f);
+      for (const SentField& other : spec.accelerated)
+        if (other.label() == field.label())
+          f.fail(fmt::format("'{}' is listed twice", field.label()));
+      spec.accelerated.push_back(std::move(field));
+    }
+    if (spec.accelerated.empty()) fields->fail("list at least one field, or leave the key out");
+  } else {
+    for (const ConvergenceMeasure& m : spec.convergence) spec.accelerated.push_back(m.field);
+  }
+  return spec;
+}
+
+}  // namespace cosim::job
