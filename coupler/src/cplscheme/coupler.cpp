@@ -16,11 +16,13 @@
 #include "cosim/io/snapshot_writer.hpp"
 #include "cosim/io/tail_lines.hpp"
 #include "energy_exchange_step.hpp"
+#include "fields_by_peer.hpp"
 #include "mapping/bounded_redistribution.hpp"
 #include "mapping/build_operator.hpp"
 #include "momentum_exchange_step.hpp"
 #include "operator_cache.hpp"
 #include "progress.hpp"
+#include "window_iteration.hpp"
 
 namespace cosim::cplscheme {
 
@@ -43,11 +45,6 @@ struct Peer {
   std::map<std::string, std::vector<double>> written;
   bool window_done = false;
 };
-
-// What the coupler sends each participant in a window: field -> values,
-// shared with the messages (no copy) and the snapshot writer.
-using FieldValues = std::shared_ptr<const std::vector<double>>;
-using FieldsByPeer = std::map<std::string, std::map<std::string, FieldValues>>;
 
 double sum(std::span<const double> v) {
   return std::accumulate(v.begin(), v.end(), 0.0);
@@ -106,6 +103,7 @@ struct Coupler::Impl {
   double max_conservation_error = 0.0;
   double next_output_time = 0.0;
   StrangerLog strangers;
+  std::optional<WindowIteration> iteration;  // implicit schemes
 
   Impl(const job::Job& j, com::Hub& t, runtime::Supervisor* s, RunSummary& sum, CouplerOptions o)
       : job(j), transport(t), supervisor(s), summary(sum), options(std::move(o)) {
@@ -232,6 +230,13 @@ struct Coupler::Impl {
     peer.connected = true;
     peer.hello = hello;
     ++connected;
+    if (job.coupling.is_implicit() && !hello.repeatable)
+      throw InputError(
+          job.coupling.scheme_where, "coupling.scheme",
+          fmt::format("participant '{}' ({}) cannot repeat a window (it does not save and restore "
+                      "its state), which the implicit scheme needs; use scheme: "
+                      "parallel-explicit",
+                      h.sender, hello.program));
     spdlog::info("participant '{}' connected ({}, pid {})", h.sender, hello.program, hello.pid);
   }
 
@@ -278,6 +283,8 @@ struct Coupler::Impl {
     welcome.end_time = job.end_time;
     welcome.window = job.window;
     welcome.extrapolation = job.extrapolation;
+    welcome.implicit = job.coupling.is_implicit();
+    welcome.time_interpolation = job.coupling.time_interpolation;
     // The coupler judges which participant hangs; the others wait longer
     // than it does so that they do not time out first and take the blame.
     welcome.timeout_s = 2.0 * job.window_timeout_s + 10.0;
@@ -476,6 +483,13 @@ struct Coupler::Impl {
                                       {"cell", bound->cell},
                                       {"refuse_above", job.stability.refuse_above},
                                       {"accept_unstable", job.stability.accept_unstable}});
+    if (job.coupling.is_implicit()) {
+      spdlog::info(
+          "implicit coupling: the window {} s is {:.3g} times the explicit scheme's "
+          "stability bound {:.3g} s",
+          job.window, ratio, bound->window);
+      return;
+    }
     if (ratio <= 1.0) {
       spdlog::info("explicit coupling: the window {} s is {:.2g} of its stability bound {:.3g} s",
                    job.window, ratio, bound->window);
@@ -535,17 +549,59 @@ struct Coupler::Impl {
         std::make_shared<const std::vector<double>>(std::move(heat.solid));
   }
 
-  // The coupler's part of a window, in order: the fields the participants
-  // wrote mapped to their readers, the exchange steps, then everything sent,
-  // recorded, and the next window begun.
+  // The coupler's part of an explicit window, in order: the participants'
+  // answer (their fields mapped to the readers, then the exchange steps),
+  // sent, recorded, and the next window begun.
   void map_and_send() {
     const double t = window_time(window);
-    FieldsByPeer received = map_exchanged_fields();
-    exchange_momentum(received);
-    exchange_energy(received);
-    send_fields(t, received);
-    write_snapshots(t, received);
+    FieldsByPeer answer = window_answer();
+    send_fields(t, answer);
+    if (iteration) iteration->sent(answer);
+    write_snapshots(t, answer);
     begin_next_window(t);
+  }
+
+  // An implicit window: run by the participants until the window iteration
+  // accepts their answer, each repetition from the window's start with the
+  // next iterate; only the accepted answer is recorded.
+  void iterate_window() {
+    const double t = window_time(window);
+    for (;;) {
+      collect_window();
+      FieldsByPeer answer = window_answer();
+      if (iteration->judge(window, t, answer) != WindowIteration::Verdict::repeat) {
+        send_fields(t, answer);
+        iteration->sent(answer);
+        write_snapshots(t, answer);
+        begin_next_window(t);
+        return;
+      }
+      send_fields(t, iteration->next());
+      iteration->sent(iteration->next());
+      repeat_window(t);
+    }
+  }
+
+  FieldsByPeer window_answer() {
+    FieldsByPeer answer = map_exchanged_fields();
+    exchange_momentum(answer);
+    exchange_energy(answer);
+    return answer;
+  }
+
+  void repeat_window(double t) {
+    for (const auto& [name, peer] : peers) send(name, message(MessageType::window_repeat, t));
+  }
+
+  // Implicit schemes: the iteration's measures, in the units the
+  // participants declared for the fields they read.
+  void start_window_iteration() {
+    if (!job.coupling.is_implicit()) return;
+    std::map<std::string, std::string> units;
+    for (const job::ConvergenceMeasure& m : job.coupling.convergence)
+      units[m.field.label()] =
+          declared(peers.at(m.field.participant).hello.reads, m.field.field).unit;
+    iteration.emplace(job.coupling, units, options.output_dir / "coupling_iterations.csv");
   }
 
   FieldsByPeer map_exchanged_fields() {
@@ -657,14 +713,19 @@ void Coupler::run() {
   Progress progress(s.job.start_time, s.job.end_time, windows, s.options.progress_on_terminal);
   try {
     s.admit_participants();
+    s.start_window_iteration();
     spdlog::info("all {} participants connected; {} windows of {} s from t = {} s to {} s",
                  s.peers.size(), windows, s.job.window, s.job.start_time, s.job.end_time);
     s.next_output_time = s.job.start_time;
     auto last_summary = std::chrono::steady_clock::now();
     for (s.window = 0; s.window <= windows; ++s.window) {
-      s.collect_window();
-      if (s.window == 0) s.check_explicit_stability();
-      s.map_and_send();
+      if (s.window == 0 || !s.iteration) {
+        s.collect_window();
+        if (s.window == 0) s.check_explicit_stability();
+        s.map_and_send();
+      } else {
+        s.iterate_window();
+      }
       s.summary.set_windows(static_cast<std::int64_t>(s.window));
       s.summary.set_metric("max_conservative_mapping_error", s.max_conservation_error, "1");
       if (s.momentum_exchange)
@@ -672,7 +733,9 @@ void Coupler::run() {
                              "1");
       if (s.energy_exchange)
         s.summary.set_metric("max_energy_exchange_balance_error", s.max_energy_balance_error, "1");
-      progress.update(s.window, s.window_time(s.window));
+      progress.update(s.window, s.window_time(s.window),
+                      s.iteration && s.window > 0 ? s.iteration->last_window_iterations() : 0);
+      if (s.iteration) s.summary.set_section("coupling", s.iteration->summary());
       s.summary.set_progress(s.window_time(s.window), s.job.end_time);
       const auto now = std::chrono::steady_clock::now();
       if (s.window % 100 == 0 || now - last_summary > std::chrono::seconds(2)) {

@@ -24,14 +24,15 @@ Progress::Progress(double start_time, double end_time, std::size_t windows, bool
       started_(std::chrono::steady_clock::now()),
       last_report_(started_) {}
 
-void Progress::update(std::size_t window, double time) {
+void Progress::update(std::size_t window, double time, std::size_t iterations) {
   const auto now = std::chrono::steady_clock::now();
   const double wall = std::chrono::duration<double>(now - started_).count();
   const double done = (time - start_time_) / (end_time_ - start_time_);
   const double eta = done > 0.0 ? wall * (1.0 - done) / done : 0.0;
-  const std::string line =
-      fmt::format("t = {:.6g} s ({:5.1f} %)  window {}/{}  wall {}  ETA {}", time, 100.0 * done,
-                  window, windows_, clock_text(wall), clock_text(eta));
+  const std::string line = fmt::format(
+      "t = {:.6g} s ({:5.1f} %)  window {}/{}{}  wall {}  ETA {}", time, 100.0 * done, window,
+      windows_, iterations ? fmt::format(" ({} iterations)", iterations) : std::string(),
+      clock_text(wall), clock_text(eta));
   if (terminal_) {
     std::fprintf(stderr, "\r%s\033[K", line.c_str());
     std::fflush(stderr);

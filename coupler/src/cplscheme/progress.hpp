@@ -10,7 +10,8 @@ namespace cosim::cplscheme {
 class Progress {
  public:
   Progress(double start_time, double end_time, std::size_t windows, bool terminal);
-  void update(std::size_t window, double time);
+  // `iterations`: an implicit window's iterations (0: explicit, not shown).
+  void update(std::size_t window, double time, std::size_t iterations = 0);
   void finish();
 
  private:

@@ -1,0 +1,198 @@
+#include "window_iteration.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "cosim/error.hpp"
+
+namespace cosim::cplscheme {
+
+namespace {
+
+const std::vector<double>& values_of(const FieldsByPeer& fields, const job::SentField& f) {
+  const auto peer = fields.find(f.participant);
+  if (peer != fields.end()) {
+    const auto field = peer->second.find(f.field);
+    if (field != peer->second.end()) return *field->second;
+  }
+  throw Error(ExitCode::internal_error,
+              fmt::format("window iteration: no values of '{}' sent", f.label()));
+}
+
+double norm(std::span<const double> v) {
+  return std::sqrt(std::inner_product(v.begin(), v.end(), v.begin(), 0.0));
+}
+
+double median(std::vector<std::size_t> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? static_cast<double>(v[n / 2]) : 0.5 * static_cast<double>(v[n / 2 - 1] + v[n / 2]);
+}
+
+std::vector<std::string> csv_columns(const job::CouplingSpec& spec,
+                                     const std::map<std::string, std::string>& units) {
+  std::vector<std::string> columns{"window", column_name("time", "s"), "iterations", "converged"};
+  for (const job::ConvergenceMeasure& m : spec.convergence) {
+    const std::string label = m.field.label();
+    columns.push_back(column_name(label + " residual", units.at(label)));
+    columns.push_back(column_name(label + " relative residual", "1"));
+  }
+  return columns;
+}
+
+}  // namespace
+
+struct WindowIteration::Measure {
+  const job::ConvergenceMeasure* spec;
+  double residual = 0.0;           // ||r^k||
+  double relative = 0.0;           // ||r^k|| / ||H(x^k)||
+  double first_residual = 0.0;     // ||r^1|| of the window
+  double previous_residual = 0.0;  // ||r^{k-1}||
+
+  bool holds(std::size_t iteration, double answer_norm) const {
+    return (spec->relative && residual <= *spec->relative * answer_norm) ||
+           (spec->absolute && residual <= *spec->absolute) ||
+           (spec->residual_relative && iteration >= 2 &&
+            residual <= *spec->residual_relative * first_residual);
+  }
+};
+
+WindowIteration::WindowIteration(const job::CouplingSpec& spec,
+                                 const std::map<std::string, std::string>& units,
+                                 const std::filesystem::path& csv)
+    : spec_(spec), csv_(csv, csv_columns(spec, units)) {
+  for (const job::ConvergenceMeasure& m : spec.convergence) measures_.push_back(Measure{&m});
+}
+
+WindowIteration::~WindowIteration() = default;
+
+void WindowIteration::sent(const FieldsByPeer& x) {
+  sent_ = x;
+}
+
+std::vector<double> WindowIteration::gather(const FieldsByPeer& fields) const {
+  std::vector<double> out;
+  for (const job::SentField& f : spec_.accelerated) {
+    const auto& v = values_of(fields, f);
+    out.insert(out.end(), v.begin(), v.end());
+  }
+  return out;
+}
+
+void WindowIteration::scatter(std::span<const double> values, FieldsByPeer& fields) const {
+  std::size_t offset = 0;
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    const job::SentField& f = spec_.accelerated[b];
+    const auto first = values.begin() + static_cast<std::ptrdiff_t>(offset);
+    fields[f.participant][f.field] = std::make_shared<const std::vector<double>>(
+        first, first + static_cast<std::ptrdiff_t>(blocks_[b].size));
+    offset += blocks_[b].size;
+  }
+}
+
+WindowIteration::Verdict WindowIteration::judge(std::size_t window, double time,
+                                                const FieldsByPeer& answer) {
+  ++iteration_;
+  bool all_hold = true;
+  for (Measure& m : measures_) {
+    const auto& x = values_of(sent_, m.spec->field);
+    const auto& h = values_of(answer, m.spec->field);
+    std::vector<double> r(h.size());
+    for (std::size_t i = 0; i < h.size(); ++i) r[i] = h[i] - x[i];
+    m.previous_residual = m.residual;
+    m.residual = norm(r);
+    const double answer_norm = norm(h);
+    m.relative = answer_norm > 0.0
+                     ? m.residual / answer_norm
+                     : (m.residual > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
+    if (iteration_ == 1) m.first_residual = m.residual;
+    if (!std::isfinite(m.residual))
+      throw NumericalError(
+          fmt::format("window {} (t = {:.6g} s), iteration {}: the residual of '{}' is not finite",
+                      window, time, iteration_, m.spec->field.label()));
+    if (iteration_ >= 2 && m.previous_residual > 0.0 &&
+        m.residual > spec_.divergence_factor * m.previous_residual)
+      throw NumericalError(fmt::format(
+          "window {} (t = {:.6g} s): the implicit coupling diverges: the residual of '{}' grew "
+          "from {:.4g} to {:.4g} over iteration {} (more than coupling.divergence_factor = {:g} "
+          "times); a shorter window or another acceleration may converge",
+          window, time, m.spec->field.label(), m.previous_residual, m.residual, iteration_,
+          spec_.divergence_factor));
+    all_hold = m.holds(iteration_, answer_norm) && all_hold;
+  }
+
+  std::vector<double> x = gather(sent_);
+  std::vector<double> h = gather(answer);
+  if (!accelerator_) {
+    for (const job::SentField& f : spec_.accelerated)
+      blocks_.push_back({f.label(), values_of(answer, f).size()});
+    accelerator_ = acceleration::make_accelerator(spec_.acceleration, blocks_);
+  }
+  if (all_hold) {
+    accelerator_->window_converged(x, h);
+    window_done(true, window, time);
+    return Verdict::converged;
+  }
+  if (iteration_ >= spec_.max_iterations) {
+    const std::string what = fmt::format(
+        "window {} (t = {:.6g} s) has not converged in {} iterations (coupling.max_iterations): "
+        "{}",
+        window, time, iteration_, worst_measure());
+    if (spec_.on_max_iterations == job::OnMaxIterations::stop)
+      throw NumericalError(what + " (coupling.on_max_iterations: continue takes the last iterate)");
+    spdlog::warn("{}; the last iterate is taken (coupling.on_max_iterations: continue)", what);
+    accelerator_->window_converged(x, h);
+    window_done(false, window, time);
+    return Verdict::gave_up;
+  }
+  std::vector<double> accelerated(x.size());
+  accelerator_->accelerate(x, h, accelerated);
+  next_ = answer;
+  scatter(accelerated, next_);
+  return Verdict::repeat;
+}
+
+std::string WindowIteration::worst_measure() const {
+  std::string out;
+  for (const Measure& m : measures_)
+    out += fmt::format("{}'{}' residual {:.4g} (relative {:.4g})", out.empty() ? "" : ", ",
+                       m.spec->field.label(), m.residual, m.relative);
+  return out;
+}
+
+void WindowIteration::window_done(bool converged, std::size_t window, double time) {
+  std::vector<double> row{static_cast<double>(window), time, static_cast<double>(iteration_),
+                          converged ? 1.0 : 0.0};
+  for (const Measure& m : measures_) {
+    row.push_back(m.residual);
+    row.push_back(m.relative);
+  }
+  csv_.append(row);
+  iterations_per_window_.push_back(iteration_);
+  if (!converged) ++not_converged_;
+  last_iterations_ = iteration_;
+  iteration_ = 0;
+  for (Measure& m : measures_) m.residual = m.previous_residual = m.first_residual = 0.0;
+}
+
+nlohmann::json WindowIteration::summary() const {
+  const auto& v = iterations_per_window_;
+  nlohmann::json residuals = nlohmann::json::object();
+  for (const Measure& m : measures_) residuals[m.spec->field.label()] = m.relative;
+  return {{"scheme", "parallel-implicit"},
+          {"windows", v.size()},
+          {"iterations", std::accumulate(v.begin(), v.end(), std::size_t{0})},
+          {"median_iterations_per_window", median(v)},
+          {"max_iterations_per_window", v.empty() ? 0 : *std::max_element(v.begin(), v.end())},
+          {"windows_not_converged", not_converged_},
+          {"accelerator_columns", accelerator_ ? accelerator_->columns() : 0},
+          {"csv", csv_.path().filename().string()}};
+}
+
+}  // namespace cosim::cplscheme
