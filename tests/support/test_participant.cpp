@@ -51,6 +51,11 @@ struct FieldConfig {
   // Check at every sub-step (from this window on) instead of at window starts
   // only: with linear extrapolation a field linear in time reads exactly.
   long check_every_step_from_window = 0;
+  // Writes: f + coefficient * (the read field at the step's end), a
+  // participant whose answer depends on what it reads (implicit coupling's
+  // fixed-point problems).
+  std::string response_to;
+  double response_coefficient = 0.0;
 };
 
 // Optional dynamics: a velocity state per element that a body force drives
@@ -80,6 +85,9 @@ Schema config_schema() {
       .required("cells", Schema::vector(1, 3), "Cells per direction.")
       .optional("location", Schema::one_of({"cell", "node"}).default_value("cell"),
                 "Where values live.");
+  Schema response = Schema::object("A written field's dependence on a read one.");
+  response.required("read", Schema::string().non_empty(), "The read field.")
+      .required("coefficient", Schema::number(), "Its factor.");
   Schema field = Schema::object("A field.");
   field.required("name", Schema::string().non_empty(), "Field name.")
       .optional("quantity", Schema::one_of({"intensive", "extensive"}).default_value("intensive"),
@@ -94,7 +102,9 @@ Schema config_schema() {
       .optional("check_every_step_from_window", Schema::integer().positive(),
                 "Also check the read at every sub-step from this window on.")
       .optional("tolerance", Schema::number().non_negative(),
-                "Check reads against `function` to this tolerance.");
+                "Check reads against `function` to this tolerance.")
+      .optional("response", response,
+                "Writes only: add coefficient times a read field (same mesh) to `function`.");
   Schema dynamics = Schema::object("A velocity state driven by a body force and the impulse read.");
   dynamics.required("velocity", Schema::string().non_empty(), "Written field holding the velocity.")
       .required("impulse", Schema::string().non_empty(), "Read field of momentum [kg m/s].")
@@ -127,6 +137,10 @@ FieldConfig read_field(const Node& f) {
   if (auto t = f.find("tolerance")) {
     c.tolerance = t->as<double>();
     c.check = true;
+  }
+  if (auto r = f.find("response")) {
+    c.response_to = (*r)["read"].as<std::string>();
+    c.response_coefficient = (*r)["coefficient"].as<double>();
   }
   return c;
 }
@@ -199,26 +213,40 @@ int signal_number(const std::string& name) {
 }
 
 int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std::string& output,
-        long crash_at_window, long hang_at_window, const RaisedSignal& raised) {
+        long crash_at_window, long hang_at_window, const RaisedSignal& raised, bool repeatable) {
   cosim::create_output_directory(output);
   std::ofstream(std::filesystem::path(output) / "pid") << ::getpid() << "\n";
-  // One CSV per field and direction: <output>/<field>_<sent|applied|read>.csv
+  // One CSV per field and direction: <output>/<field>_<sent|applied|read>.csv;
+  // rows wait until the window they belong to is complete, so a repeated
+  // window leaves none.
   std::map<std::string, cosim::TimeSeriesWriter> logs;
+  struct Row {
+    std::string key;
+    std::vector<double> values;
+  };
+  std::vector<Row> pending_rows;
   auto log = [&](const std::string& field, const std::string& direction, double window, double t,
                  double sum, double max_error) {
-    const std::string key = field + "_" + direction;
-    auto it = logs.find(key);
-    if (it == logs.end())
-      it = logs.emplace(key, cosim::TimeSeriesWriter(std::filesystem::path(output) / (key + ".csv"),
-                                                     {"window", "time [s]", "total", "max_error"}))
-               .first;
-    it->second.append({window, t, sum, max_error});
+    pending_rows.push_back({field + "_" + direction, {window, t, sum, max_error}});
+  };
+  auto write_rows = [&] {
+    for (const Row& row : pending_rows) {
+      auto it = logs.find(row.key);
+      if (it == logs.end())
+        it = logs.emplace(row.key, cosim::TimeSeriesWriter(
+                                       std::filesystem::path(output) / (row.key + ".csv"),
+                                       {"window", "time [s]", "total", "max_error"}))
+                 .first;
+      it->second.append(row.values);
+    }
+    pending_rows.clear();
   };
 
   cosim::Participant participant(endpoint.name_or("test_participant"), endpoint);
   participant.declare_mesh(config.mesh);
   for (const auto& w : config.writes) participant.declare_write(w.spec);
   for (const auto& r : config.reads) participant.declare_read(r.spec);
+  if (repeatable) participant.declare_repeatable();
 
   const cosim::Mesh& mesh = config.mesh;
   auto values_of = [&](const FieldConfig& f, double t) {
@@ -298,9 +326,18 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
   std::map<std::string, std::vector<double>> received_integral;
   for (const auto& r : config.reads)
     received_integral[r.spec.name].assign(participant.field_size(r.spec.name), 0.0);
-  try {
+  // The state a repeated window starts again from (implicit coupling).
+  struct State {
+    std::vector<double> velocity;
+    std::map<std::string, std::vector<double>> sent_integral, received_integral;
+  } saved;
+  auto begin_window = [&] {
+    if (participant.must_save_state()) saved = {velocity, sent_integral, received_integral};
     check_reads(false);
     apply_impulse();
+  };
+  try {
+    begin_window();
     while (participant.is_coupling_ongoing()) {
       const std::size_t window = participant.window_index();
       raised.at(fmt::format("window:{}", window));
@@ -330,12 +367,25 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
           participant.write(w.spec.name, velocity);
           continue;
         }
-        const auto v = values_of(w, w.spec.time == cosim::TimeTreatment::integral ? t : t + dt);
+        auto v = values_of(w, w.spec.time == cosim::TimeTreatment::integral ? t : t + dt);
+        if (!w.response_to.empty()) {
+          std::vector<double> read(v.size());
+          participant.read(w.response_to, read, dt);
+          for (std::size_t e = 0; e < v.size(); ++e) v[e] += w.response_coefficient * read[e];
+        }
         participant.write(w.spec.name, v);
         if (w.spec.time == cosim::TimeTreatment::integral)
           for (std::size_t e = 0; e < v.size(); ++e) sent_integral[w.spec.name][e] += v[e] * dt;
       }
       participant.advance(dt);
+      if (participant.must_restore_state()) {
+        velocity = saved.velocity;
+        sent_integral = saved.sent_integral;
+        received_integral = saved.received_integral;
+        pending_rows.clear();
+        begin_window();
+        continue;
+      }
       if (participant.window_index() != window) {  // the window completed
         for (const auto& w : config.writes) {
           if (w.spec.time != cosim::TimeTreatment::integral) continue;
@@ -350,10 +400,8 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
           std::fill(received_integral[r.spec.name].begin(), received_integral[r.spec.name].end(),
                     0.0);
         }
-        if (participant.is_coupling_ongoing()) {
-          check_reads(false);
-          apply_impulse();
-        }
+        write_rows();
+        if (participant.is_coupling_ongoing()) begin_window();
       }
     }
   } catch (const std::exception& e) {
@@ -372,7 +420,7 @@ int main(int argc, char** argv) {
   CLI::App app{"cosim_test_participant: analytic fields for the coupler's tests"};
   std::string config_file, output, raise_signal;
   long crash_at_window = 0, hang_at_window = 0;
-  bool validate = false;
+  bool validate = false, not_repeatable = false;
   RaisedSignal raised;
   cosim::CouplingEndpoint endpoint;
   app.add_option("--config", config_file, "test_participant YAML")->required();
@@ -382,6 +430,8 @@ int main(int argc, char** argv) {
   app.add_option("--hang-at-window", hang_at_window, "stop answering at this window");
   app.add_option("--raise", raise_signal, "send itself this signal (SIGKILL, SIGSTOP, SIGSEGV...)");
   app.add_option("--raise-at", raised.phase, "when: startup | window:<N> | end");
+  app.add_flag("--not-repeatable", not_repeatable,
+               "do not declare that windows can be repeated (implicit schemes refuse it)");
   cosim::add_coupling_options(app, endpoint);
   try {
     app.parse(argc, argv);
@@ -400,8 +450,9 @@ int main(int argc, char** argv) {
     cosim::create_output_directory(output);
     cosim::RunSummary summary(output, "cosim_test_participant");
     summary.write();
-    return cosim::run_and_finish(
-        summary, [&] { run(config, endpoint, output, crash_at_window, hang_at_window, raised); });
+    return cosim::run_and_finish(summary, [&] {
+      run(config, endpoint, output, crash_at_window, hang_at_window, raised, !not_repeatable);
+    });
   } catch (const cosim::Error& e) {
     std::cerr << "cosim_test_participant: error: " << e.what() << "\n";
     return cosim::to_int(e.code());
