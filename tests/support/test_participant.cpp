@@ -400,6 +400,14 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
           std::fill(received_integral[r.spec.name].begin(), received_integral[r.spec.name].end(),
                     0.0);
         }
+        if (config.dynamics) {
+          const auto comps = static_cast<std::size_t>(velocity_components);
+          std::vector<double> mean(comps, 0.0);
+          for (std::size_t i = 0; i < velocity.size(); ++i)
+            mean[i % comps] += velocity[i] / static_cast<double>(mesh.size());
+          log(config.dynamics->velocity, "window_end", static_cast<double>(window),
+              participant.time(), mean[0], comps > 1 ? mean[1] : 0.0);
+        }
         write_rows();
         if (participant.is_coupling_ongoing()) begin_window();
       }

@@ -104,6 +104,9 @@ struct Coupler::Impl {
   double next_output_time = 0.0;
   StrangerLog strangers;
   std::optional<WindowIteration> iteration;  // implicit schemes
+  // Implicit schemes: the momentum per exchange cell in the fields last sent
+  // (the iterate the participants run), and in the last answer.
+  ExchangeCellImpulses applied_exchange_impulses, answered_exchange_impulses;
 
   Impl(const job::Job& j, com::Hub& t, runtime::Supervisor* s, RunSummary& sum, CouplerOptions o)
       : job(j), transport(t), supervisor(s), summary(sum), options(std::move(o)) {
@@ -523,7 +526,10 @@ struct Coupler::Impl {
     const job::MomentumExchangeSpec& spec = *job.momentum_exchange;
     // Window 0 carries the initial state: nothing has been integrated yet.
     const double dt = window == 0 ? 0.0 : job.window;
-    auto impulses = momentum_exchange->run(dt, side_of(spec.fluid), side_of(spec.solid), operators);
+    auto impulses =
+        momentum_exchange->run(dt, side_of(spec.fluid), side_of(spec.solid), operators,
+                               iteration && window > 0 ? &applied_exchange_impulses : nullptr);
+    answered_exchange_impulses = std::move(impulses.on_exchange_mesh);
     max_momentum_balance_error =
         std::max(max_momentum_balance_error, impulses.momentum_balance_error);
     if (spec.solved_by == job::ExchangeSolver::fluid)
@@ -556,7 +562,7 @@ struct Coupler::Impl {
     const double t = window_time(window);
     FieldsByPeer answer = window_answer();
     send_fields(t, answer);
-    if (iteration) iteration->sent(answer);
+    record_iterate(answer);
     write_snapshots(t, answer);
     begin_next_window(t);
   }
@@ -571,13 +577,13 @@ struct Coupler::Impl {
       FieldsByPeer answer = window_answer();
       if (iteration->judge(window, t, answer) != WindowIteration::Verdict::repeat) {
         send_fields(t, answer);
-        iteration->sent(answer);
+        record_iterate(answer);
         write_snapshots(t, answer);
         begin_next_window(t);
         return;
       }
       send_fields(t, iteration->next());
-      iteration->sent(iteration->next());
+      record_iterate(iteration->next());
       repeat_window(t);
     }
   }
@@ -587,6 +593,14 @@ struct Coupler::Impl {
     exchange_momentum(answer);
     exchange_energy(answer);
     return answer;
+  }
+
+  // What the participants run the window with next; the exchange's momentum
+  // is never accelerated, so it is the last answer's.
+  void record_iterate(const FieldsByPeer& x) {
+    if (!iteration) return;
+    iteration->sent(x);
+    applied_exchange_impulses = answered_exchange_impulses;
   }
 
   void repeat_window(double t) {

@@ -56,6 +56,19 @@ std::vector<double> on_exchange_mesh(const PhaseSide& side, const std::string& f
       .apply(side.written->at(field), components);
 }
 
+// U* = U - j / (rho_bar V) per exchange cell: the velocity a phase would have
+// reached without the momentum it was given (none where the phase is absent).
+void predicted_velocity(const Mesh& cells, std::span<const double> bulk_density,
+                        std::span<const double> given, std::vector<double>& velocity) {
+  if (given.size() != velocity.size()) return;  // the first window: nothing given yet
+  const std::size_t dim = velocity.size() / std::max<std::size_t>(bulk_density.size(), 1);
+  for (std::size_t c = 0; c < bulk_density.size(); ++c) {
+    const double mass = bulk_density[c] * cells.control_volume(c);
+    if (!(mass > 0.0)) continue;
+    for (std::size_t k = 0; k < dim; ++k) velocity[c * dim + k] -= given[c * dim + k] / mass;
+  }
+}
+
 }  // namespace
 
 MomentumExchangeStep::MomentumExchangeStep(const job::MomentumExchangeSpec& spec,
@@ -103,9 +116,9 @@ void MomentumExchangeStep::check_declarations(const job::Job& job, const com::He
   }
 }
 
-MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const PhaseSide& fluid,
-                                                         const PhaseSide& solid,
-                                                         OperatorCache& operators) const {
+MomentumExchangeStep::Impulses MomentumExchangeStep::run(
+    double window, const PhaseSide& fluid, const PhaseSide& solid, OperatorCache& operators,
+    const ExchangeCellImpulses* applied) const {
   const ExchangeMesh exchange_cells = exchange_mesh_of(spec_, fluid, solid);
   const Mesh& exchange_mesh = exchange_cells.mesh;
   const std::size_t exchange_version = exchange_cells.version;
@@ -123,10 +136,14 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const Ph
     return on_exchange_mesh(side, field, components, exchange_cells, operators);
   };
   const auto phi_s = mapped(solid, f::solid_fraction.name, 1);
-  const auto u_s = mapped(solid, f::solid_velocity.name, dim);
+  auto u_s = mapped(solid, f::solid_velocity.name, dim);
   const auto rho_s = mapped(solid, f::solid_bulk_density.name, 1);
-  const auto u_f = mapped(fluid, f::fluid_velocity.name, dim);
+  auto u_f = mapped(fluid, f::fluid_velocity.name, dim);
   const auto rho_f = mapped(fluid, f::fluid_bulk_density.name, 1);
+  if (applied && spec_.solved_by == job::ExchangeSolver::coupler) {
+    predicted_velocity(exchange_mesh, rho_f, applied->fluid, u_f);
+    predicted_velocity(exchange_mesh, rho_s, applied->solid, u_s);
+  }
   std::vector<double> grain, permeability;
   if (law_->cell_input() == exchange::CellInput::grain_size)
     grain = mapped(solid, f::grain_size.name, 1);
@@ -151,6 +168,7 @@ MomentumExchangeStep::Impulses MomentumExchangeStep::run(double window, const Ph
   };
   Impulses out;
   const std::vector<double>* given = &j_f;
+  if (spec_.solved_by == job::ExchangeSolver::coupler) out.on_exchange_mesh = {j_f, j_s};
   if (spec_.solved_by == job::ExchangeSolver::coupler) {
     out.fluid = impulse_to(fluid, exchange_cells.name, exchange_mesh, exchange_version, j_f);
     out.solid = impulse_to(solid, exchange_cells.name, exchange_mesh, exchange_version, j_s);

@@ -24,6 +24,12 @@ namespace cosim::cplscheme {
 // the fluid (mapped consistently to its `drag_coefficient`) and hands the
 // momentum the fluid gave the solid over the window (its written
 // `momentum_exchange_impulse`) conservatively to the solid.
+// Momentum per cell of the exchange mesh, dim per cell [kg m/s].
+struct ExchangeCellImpulses {
+  std::vector<double> fluid;
+  std::vector<double> solid;
+};
+
 class MomentumExchangeStep {
  public:
   MomentumExchangeStep(const job::MomentumExchangeSpec& spec, const std::string& job_file);
@@ -41,9 +47,19 @@ class MomentumExchangeStep {
     // empty), and the balance error compares what the solid receives with what
     // the fluid wrote.
     std::vector<double> drag_coefficient;
+    // solved_by coupler: the momentum each phase receives per exchange cell,
+    // before it is mapped to the phase.
+    ExchangeCellImpulses on_exchange_mesh;
   };
+  // `applied`: in an implicit scheme, the momentum the phases were given in
+  // the window being repeated (on the exchange mesh, as returned for the
+  // iterate they ran). The exchange then acts on the window's predicted
+  // velocities, U* = U - j / (rho_bar V), as a fluid solver's Lagrangian
+  // velocities before its exchange (Tran et al., MPMICE, eqs. 48 and 131):
+  // the momentum it returns does not depend on the momentum already applied,
+  // and the iteration's fixed point is the backward-Euler drag of the window.
   Impulses run(double window, const PhaseSide& fluid, const PhaseSide& solid,
-               OperatorCache& operators) const;
+               OperatorCache& operators, const ExchangeCellImpulses* applied = nullptr) const;
 
   // The explicit coupling's stability bound on the exchange mesh
   // (explicit_stability.hpp), when the fluid writes its pore fluid's bulk

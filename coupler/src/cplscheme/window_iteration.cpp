@@ -129,13 +129,13 @@ WindowIteration::Verdict WindowIteration::judge(std::size_t window, double time,
 
   std::vector<double> x = gather(sent_);
   std::vector<double> h = gather(answer);
-  if (!accelerator_) {
+  if (!accelerator_ && !spec_.accelerated.empty()) {
     for (const job::SentField& f : spec_.accelerated)
       blocks_.push_back({f.label(), values_of(answer, f).size()});
     accelerator_ = acceleration::make_accelerator(spec_.acceleration, blocks_);
   }
   if (all_hold) {
-    accelerator_->window_converged(x, h);
+    if (accelerator_) accelerator_->window_converged(x, h);
     window_done(true, window, time);
     return Verdict::converged;
   }
@@ -147,14 +147,16 @@ WindowIteration::Verdict WindowIteration::judge(std::size_t window, double time,
     if (spec_.on_max_iterations == job::OnMaxIterations::stop)
       throw NumericalError(what + " (coupling.on_max_iterations: continue takes the last iterate)");
     spdlog::warn("{}; the last iterate is taken (coupling.on_max_iterations: continue)", what);
-    accelerator_->window_converged(x, h);
+    if (accelerator_) accelerator_->window_converged(x, h);
     window_done(false, window, time);
     return Verdict::gave_up;
   }
-  std::vector<double> accelerated(x.size());
-  accelerator_->accelerate(x, h, accelerated);
   next_ = answer;
-  scatter(accelerated, next_);
+  if (accelerator_) {
+    std::vector<double> accelerated(x.size());
+    accelerator_->accelerate(x, h, accelerated);
+    scatter(accelerated, next_);
+  }
   return Verdict::repeat;
 }
 

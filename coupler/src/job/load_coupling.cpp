@@ -60,17 +60,20 @@ acceleration::AccelerationSpec read_acceleration(const config::Node& a,
   return spec;
 }
 
-// The implicit schemes repeat what the participants compute; an exchange the
-// coupler solves itself from the window-end states would see its own result
-// in them and converge to the wrong drag or heat.
+// The coupler's energy exchange computes a window's heat from its end
+// temperatures; repeated, it would see its own result in them.
 void check_exchanges_repeatable(const Job& job, const config::Node& scheme) {
-  if (job.momentum_exchange && job.momentum_exchange->solved_by == ExchangeSolver::coupler)
-    scheme.fail(
-        "an implicit scheme needs the momentum exchange solved inside the fluid's steps "
-        "(momentum_exchange.solved_by: fluid); the coupler's once-per-window exchange is "
-        "explicit only");
   if (job.energy_exchange)
-    scheme.fail("the energy exchange is solved once per window by the coupler: explicit only");
+    scheme.fail(
+        "the energy exchange is explicit only (the coupler solves it once per window from the "
+        "window-end temperatures); use scheme: parallel-explicit");
+}
+
+// The momentum the coupler's exchange gives each phase is its answer to the
+// window's predicted velocities, not an iterate to accelerate.
+bool computed_by_exchange(const Job& job, const SentField& f) {
+  return job.momentum_exchange && job.momentum_exchange->solved_by == ExchangeSolver::coupler &&
+         f.field == fields::momentum_exchange_impulse.name;
 }
 
 }  // namespace
@@ -139,6 +142,11 @@ CouplingSpec read_coupling(const Job& job, const config::Node& c,
   if (auto fields = a.find("fields")) {
     for (const config::Node& f : fields->items()) {
       SentField field = sent_field(job, f);
+      if (computed_by_exchange(job, field))
+        f.fail(
+            fmt::format("'{}' is the momentum exchange's answer to the predicted velocities "
+                        "(architecture.md §13), never accelerated; measure it, do not list it",
+                        field.label()));
       for (const SentField& other : spec.accelerated)
         if (other.label() == field.label())
           f.fail(fmt::format("'{}' is listed twice", field.label()));
@@ -146,7 +154,8 @@ CouplingSpec read_coupling(const Job& job, const config::Node& c,
     }
     if (spec.accelerated.empty()) fields->fail("list at least one field, or leave the key out");
   } else {
-    for (const ConvergenceMeasure& m : spec.convergence) spec.accelerated.push_back(m.field);
+    for (const ConvergenceMeasure& m : spec.convergence)
+      if (!computed_by_exchange(job, m.field)) spec.accelerated.push_back(m.field);
   }
   return spec;
 }
