@@ -349,6 +349,75 @@ TEST(ImplicitCoupling, StiffDragMatchesTheExactSolutionAtAWindowOf1e4RelaxationT
   EXPECT_GT(explicit_run.worst_relative_velocity_error, 1.0);
 }
 
+// Waveform relaxation: y' = -z and z' = y, split between two participants
+// that sub-cycle 20 steps a window (midpoint rule, the partner's field read
+// at each step's middle), y = cos t and z = sin t exactly. Reading the
+// iterate of the window-end value, held over the window, is first order in
+// the window; reading it linear in time between the window's two ends is
+// second order: halving the window divides the error at t = 1 s by about 2
+// and by about 4.
+double oscillator_error(const std::string& interpolation, double window) {
+  const fs::path dir = fresh_directory("e2e_waveform_" + interpolation);
+  const std::string grid = "mesh: {dim: 1, origin: [0.0], spacing: [0.25], cells: [4]}\n";
+  write_text(dir / "job.yaml", fmt::format(R"(kind: job
+name: oscillator
+end_time: 1.0
+window: {0}
+participants:
+  left:
+    executable: cosim_test_participant
+    config: left.yaml
+    meshes: {{grid: {{kind: uniform_grid, dim: 1}}}}
+    writes: {{y: grid}}
+    reads: {{z: grid}}
+  right:
+    executable: cosim_test_participant
+    config: right.yaml
+    meshes: {{grid: {{kind: uniform_grid, dim: 1}}}}
+    writes: {{z: grid}}
+    reads: {{y: grid}}
+exchange:
+  - {{field: y, from: left, to: right, mapping: consistent}}
+  - {{field: z, from: right, to: left, mapping: consistent}}
+coupling:
+  scheme: parallel-implicit
+  time_interpolation: {1}
+  convergence: [{{field: right.y, absolute: 1.0e-13}}, {{field: left.z, absolute: 1.0e-13}}]
+)",
+                                           window, interpolation));
+  const std::string dt = fmt::format("dt: {}\n", window / 20.0);
+  write_text(dir / "left.yaml", "kind: test_participant\n" + dt + grid +
+                                    "writes: [{name: y}]\nreads: [{name: z}]\n"
+                                    "ode: {state: y, rate_from: z, coefficient: -1.0, initial: "
+                                    "1.0}\n");
+  write_text(dir / "right.yaml", "kind: test_participant\n" + dt + grid +
+                                     "writes: [{name: z}]\nreads: [{name: y}]\n"
+                                     "ode: {state: z, rate_from: y, coefficient: 1.0, initial: "
+                                     "0.0}\n");
+  const auto r = cosim_run(dir);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const auto y = read_csv(dir / "run" / "left" / "y_window_end.csv");
+  if (y.empty()) return NAN;
+  EXPECT_NEAR(y.back()[1], 1.0, 1e-12);
+  return std::abs(y.back()[2] - std::cos(1.0));
+}
+
+TEST(ImplicitCoupling, LinearTimeInterpolationIsSecondOrderInTheWindow) {
+  const double constant_coarse = oscillator_error("constant", 0.1);
+  const double constant_fine = oscillator_error("constant", 0.05);
+  const double linear_coarse = oscillator_error("linear", 0.1);
+  const double linear_fine = oscillator_error("linear", 0.05);
+  const double constant_order = std::log2(constant_coarse / constant_fine);
+  const double linear_order = std::log2(linear_coarse / linear_fine);
+  std::printf(
+      "oscillator y(1 s): constant interpolation errors %.3e, %.3e (order %.2f); linear %.3e, "
+      "%.3e (order %.2f)\n",
+      constant_coarse, constant_fine, constant_order, linear_coarse, linear_fine, linear_order);
+  EXPECT_NEAR(constant_order, 1.0, 0.2);
+  EXPECT_NEAR(linear_order, 2.0, 0.2);
+  EXPECT_LT(linear_fine, 0.1 * constant_fine);
+}
+
 struct BadCoupling {
   const char* coupling;
   const char* location;

@@ -68,9 +68,20 @@ struct Dynamics {
   std::vector<double> body_force;
 };
 
+// Optional ordinary differential equation: a written field y with
+// dy/dt = coefficient * z(t), z a read field, integrated by the midpoint
+// rule with z read at each step's middle (time interpolation tests).
+struct Ode {
+  std::string state;
+  std::string rate_from;
+  double coefficient = 0.0;
+  double initial = 0.0;
+};
+
 struct Config {
   double dt = 1e-3;
   std::optional<Dynamics> dynamics;
+  std::optional<Ode> ode;
   double end_time = 1.0;
   cosim::Mesh mesh;
   std::vector<FieldConfig> writes;
@@ -110,6 +121,11 @@ Schema config_schema() {
       .required("impulse", Schema::string().non_empty(), "Read field of momentum [kg m/s].")
       .required("bulk_density", Schema::number().positive().unit("kg/m^3"), "rho_bar.")
       .required("body_force", Schema::vector(1, 3), "Force per unit volume [N/m^3].");
+  Schema ode = Schema::object("A written field y with dy/dt = coefficient z(t), z read.");
+  ode.required("state", Schema::string().non_empty(), "The written field y.")
+      .required("rate_from", Schema::string().non_empty(), "The read field z.")
+      .required("coefficient", Schema::number(), "Its factor.")
+      .required("initial", Schema::number(), "y at the start.");
   Schema s = Schema::file("test_participant", "Test participant for the coupler's tests.");
   s.required("dt", Schema::number().positive().unit("s"), "Own time step.")
       .optional("end_time", Schema::number().positive().unit("s").default_value("1"),
@@ -117,7 +133,8 @@ Schema config_schema() {
       .required("mesh", mesh, "Its mesh.")
       .optional("writes", Schema::sequence(field), "Fields written.")
       .optional("reads", Schema::sequence(field), "Fields read.")
-      .optional("dynamics", dynamics, "Velocity dynamics (Darcy tests).");
+      .optional("dynamics", dynamics, "Velocity dynamics (Darcy tests).")
+      .optional("ode", ode, "dy/dt = coefficient z(t) for a written y and a read z.");
   return s;
 }
 
@@ -183,6 +200,9 @@ Config load_config(const std::string& file) {
     dyn.body_force = (*d)["body_force"].as<std::vector<double>>();
     c.dynamics = dyn;
   }
+  if (auto o = root.find("ode"))
+    c.ode = Ode{(*o)["state"].as<std::string>(), (*o)["rate_from"].as<std::string>(),
+                (*o)["coefficient"].as<double>(), (*o)["initial"].as<double>()};
   return c;
 }
 
@@ -261,6 +281,11 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
   };
   // Initial data: state fields at the start time.
   for (const auto& w : config.writes) participant.write(w.spec.name, values_of(w, 0.0));
+  std::vector<double> ode_state;
+  if (config.ode) {
+    ode_state.assign(participant.field_size(config.ode->state), config.ode->initial);
+    participant.write(config.ode->state, ode_state);
+  }
 
   raised.at("startup");
   participant.initialize(0.0, config.end_time);
@@ -328,11 +353,12 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
     received_integral[r.spec.name].assign(participant.field_size(r.spec.name), 0.0);
   // The state a repeated window starts again from (implicit coupling).
   struct State {
-    std::vector<double> velocity;
+    std::vector<double> velocity, ode_state;
     std::map<std::string, std::vector<double>> sent_integral, received_integral;
   } saved;
   auto begin_window = [&] {
-    if (participant.must_save_state()) saved = {velocity, sent_integral, received_integral};
+    if (participant.must_save_state())
+      saved = {velocity, ode_state, sent_integral, received_integral};
     check_reads(false);
     apply_impulse();
   };
@@ -362,9 +388,19 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
           velocity[i] +=
               config.dynamics->body_force[i % comps] / config.dynamics->bulk_density * dt;
       }
+      if (config.ode) {
+        std::vector<double> rate(ode_state.size());
+        participant.read(config.ode->rate_from, rate, 0.5 * dt);
+        for (std::size_t e = 0; e < ode_state.size(); ++e)
+          ode_state[e] += dt * config.ode->coefficient * rate[e];
+      }
       for (const auto& w : config.writes) {
         if (config.dynamics && w.spec.name == config.dynamics->velocity) {
           participant.write(w.spec.name, velocity);
+          continue;
+        }
+        if (config.ode && w.spec.name == config.ode->state) {
+          participant.write(w.spec.name, ode_state);
           continue;
         }
         auto v = values_of(w, w.spec.time == cosim::TimeTreatment::integral ? t : t + dt);
@@ -380,6 +416,7 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
       participant.advance(dt);
       if (participant.must_restore_state()) {
         velocity = saved.velocity;
+        ode_state = saved.ode_state;
         sent_integral = saved.sent_integral;
         received_integral = saved.received_integral;
         pending_rows.clear();
@@ -408,6 +445,9 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
           log(config.dynamics->velocity, "window_end", static_cast<double>(window),
               participant.time(), mean[0], comps > 1 ? mean[1] : 0.0);
         }
+        if (config.ode)
+          log(config.ode->state, "window_end", static_cast<double>(window), participant.time(),
+              total(ode_state) / static_cast<double>(ode_state.size()), 0.0);
         write_rows();
         if (participant.is_coupling_ongoing()) begin_window();
       }
