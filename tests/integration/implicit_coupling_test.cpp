@@ -418,6 +418,53 @@ TEST(ImplicitCoupling, LinearTimeInterpolationIsSecondOrderInTheWindow) {
   EXPECT_LT(linear_fine, 0.1 * constant_fine);
 }
 
+// Serial schemes on the same fixed point: left runs each window first on
+// b of the window before, right then on left's new a. Explicitly that is a
+// Gauss-Seidel step, a_n = 2 - 1.5 a_{n-1}, which diverges; implicitly it
+// converges, and, the gain being real, Aitken's one factor finds it in a few
+// iterations as IQN-ILS does.
+TEST(ImplicitCoupling, SerialExplicitDivergesAndSerialImplicitConverges) {
+  {
+    const fs::path dir = fresh_directory("e2e_serial_explicit");
+    write_case(dir, "coupling: {scheme: serial-explicit, first: left}\n");
+    const auto r = cosim_run(dir);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto a_read = reads_per_window(dir / "run" / "right" / "a_read.csv");
+    ASSERT_EQ(a_read.size(), 10u);
+    // Window 1: left on b's initial 2 gives a = 2; then a_n = 2 - 1.5 a_{n-1}.
+    double a = 2.0;
+    for (std::size_t n = 0; n < a_read.size(); ++n, a = 2.0 - 1.5 * a)
+      EXPECT_NEAR(a_read[n], a, 1e-12 * std::abs(a)) << "window " << n + 1;
+    std::printf("serial-explicit: a read by right in window 10: %.6g (fixed point 0.8)\n",
+                a_read.back());
+  }
+  for (const char* method : {"aitken", "iqn-ils"}) {
+    const fs::path dir = fresh_directory(std::string("e2e_serial_implicit_") + method);
+    write_case(dir, fmt::format(R"(coupling:
+  scheme: serial-implicit
+  first: left
+  convergence: [{{field: left.b, relative: 1.0e-10}}, {{field: right.a, relative: 1.0e-10}}]
+  acceleration: {{method: {}}}
+)",
+                                method));
+    const auto r = cosim_run(dir);
+    ASSERT_EQ(r.exit_code, 0) << method << "\n" << r.output;
+    const auto a_read = reads_per_window(dir / "run" / "right" / "a_read.csv");
+    const auto b_read = reads_per_window(dir / "run" / "left" / "b_read.csv");
+    ASSERT_EQ(a_read.size(), 10u);
+    ASSERT_EQ(b_read.size(), 10u);
+    EXPECT_NEAR(a_read.back(), a_exact, 1e-8) << method;
+    EXPECT_NEAR(b_read.back(), b_exact, 1e-8) << method;
+    const auto summary = nlohmann::json::parse(read_text(dir / "run" / "summary.json"));
+    const double median = summary["coupling"]["median_iterations_per_window"].get<double>();
+    const int most = summary["coupling"]["max_iterations_per_window"].get<int>();
+    std::printf("serial-implicit %s: median %.1f, max %d iterations per window\n", method, median,
+                most);
+    EXPECT_EQ(summary["coupling"]["scheme"], "serial-implicit");
+    EXPECT_LE(median, 5.0) << method;
+  }
+}
+
 struct BadCoupling {
   const char* coupling;
   const char* location;
@@ -442,6 +489,12 @@ TEST(ImplicitCoupling, BadCouplingBlocksAreRefusedAtTheirKeys) {
        "job.yaml:24:17", "needs a limit"},
       {"coupling:\n  scheme: parallel-implicit\n  convergence: [{field: nobody.a, absolute: 1}]\n",
        "job.yaml:24:25", "no participant named 'nobody'"},
+      {"coupling:\n  scheme: serial-explicit\n  first: middle\n", "job.yaml:24:10",
+       "no participant named 'middle'"},
+      {"coupling:\n  first: left\n", "job.yaml:23:3", "'first' applies to serial schemes"},
+      {"coupling:\n  scheme: serial-implicit\n  convergence: [{field: right.a, relative: "
+       "1e-6}]\n  acceleration: {fields: [right.a]}\n",
+       "job.yaml:25:26", "a serial scheme accelerates what the coupler sends the first"},
   };
   for (const BadCoupling& c : cases) {
     const fs::path dir = fresh_directory("e2e_implicit_bad");

@@ -414,18 +414,22 @@ struct Coupler::Impl {
     }
   }
 
-  void collect_window() {
+  // Every participant's end of the window, or (serial schemes) one's.
+  void collect_window(const std::string* only = nullptr) {
+    auto expected = [&](const std::string& name) { return !only || name == *only; };
     for (auto& [name, peer] : peers) peer.window_done = false;
     const auto deadline =
         Clock::now() + std::chrono::milliseconds(static_cast<long>(job.window_timeout_s * 1e3));
     auto pending = [&] {
       std::string names;
       for (const auto& [name, peer] : peers)
-        if (!peer.window_done) names += (names.empty() ? "'" : ", '") + name + "'";
+        if (expected(name) && !peer.window_done)
+          names += (names.empty() ? "'" : ", '") + name + "'";
       return names;
     };
+    const std::size_t awaited = only ? 1 : peers.size();
     std::size_t done = 0;
-    while (done < peers.size()) {
+    while (done < awaited) {
       auto r = receive(deadline, fmt::format("window {} from {} (window_timeout {} s)", window,
                                              pending(), job.window_timeout_s));
       if (!r->admitted) {
@@ -442,7 +446,13 @@ struct Coupler::Impl {
       }
       const bool was_done = peers.at(r->peer).window_done;
       handle_window_message(r->peer, r->message);
-      if (!was_done && peers.at(r->peer).window_done) ++done;
+      if (!was_done && peers.at(r->peer).window_done) {
+        if (!expected(r->peer))
+          throw ProtocolError(r->peer, fmt::format("ended window {} out of turn (serial scheme: "
+                                                   "'{}' runs it now)",
+                                                   window, *only));
+        ++done;
+      }
     }
   }
 
@@ -588,6 +598,61 @@ struct Coupler::Impl {
     }
   }
 
+  // A serial window: `first` runs it on the second's values of the window
+  // before, then the second on the first's new values; the second's answer
+  // goes to the first with the next window. Implicit: repeated, both from
+  // the window's start, until the window iteration accepts the answer.
+  void serial_window() {
+    const double t = window_time(window);
+    const std::string& first = job.coupling.first;
+    const std::string& second = job.coupling.second;
+    for (std::size_t k = 1;; ++k) {
+      collect_window(&first);
+      FieldsByPeer answer = map_exchanged_fields(&second);
+      send_fields(t, answer);
+      tell(second, k == 1 ? MessageType::window_begin : MessageType::window_repeat, window, t);
+      collect_window(&second);
+      answer.merge(map_exchanged_fields(&first));
+      if (!iteration || iteration->judge(window, t, answer) != WindowIteration::Verdict::repeat) {
+        send_fields(t, part_of(answer, first));
+        record_iterate(answer);
+        write_snapshots(t, answer);
+        const bool last = window >= job.windows();
+        tell(first, last ? MessageType::finish : MessageType::window_begin, window + 1, t);
+        if (last) tell(second, MessageType::finish, window + 1, t);
+        return;
+      }
+      send_fields(t, part_of(iteration->next(), first));
+      record_iterate(iteration->next());
+      tell(first, MessageType::window_repeat, window, t);
+    }
+  }
+
+  // Window 0 of a serial scheme: the first participant begins window 1 on
+  // the second's initial fields; the second waits for the first's answer.
+  void serial_start() {
+    const double t = window_time(0);
+    const std::string& first = job.coupling.first;
+    FieldsByPeer initial = map_exchanged_fields(&first);
+    send_fields(t, initial);
+    initial.merge(map_exchanged_fields(&job.coupling.second));
+    record_iterate(initial);
+    write_snapshots(t, initial);
+    tell(first, MessageType::window_begin, 1, t);
+  }
+
+  static FieldsByPeer part_of(const FieldsByPeer& fields, const std::string& name) {
+    FieldsByPeer part;
+    if (auto it = fields.find(name); it != fields.end()) part.insert(*it);
+    return part;
+  }
+
+  void tell(const std::string& name, MessageType type, std::size_t w, double t) {
+    com::Message m = message(type, t);
+    m.header.window = w;
+    send(name, m);
+  }
+
   FieldsByPeer window_answer() {
     FieldsByPeer answer = map_exchanged_fields();
     exchange_momentum(answer);
@@ -618,11 +683,13 @@ struct Coupler::Impl {
     iteration.emplace(job.coupling, units, options.output_dir / "coupling_iterations.csv");
   }
 
-  FieldsByPeer map_exchanged_fields() {
+  // The exchanges' fields mapped to their readers, or (serial schemes) to one.
+  FieldsByPeer map_exchanged_fields(const std::string* only_to = nullptr) {
     auto scope = summary.phases().measure("mapping");
     FieldsByPeer received;
     for (std::size_t i = 0; i < job.exchanges.size(); ++i) {
       const job::ExchangeSpec& x = job.exchanges[i];
+      if (only_to && x.to != *only_to) continue;
       const Peer& to = peers.at(x.to);
       const FieldSpec& spec = declared(to.hello.reads, x.field);
       const std::vector<double>& source = peers.at(x.from).written.at(x.field);
@@ -733,12 +800,20 @@ void Coupler::run() {
     s.next_output_time = s.job.start_time;
     auto last_summary = std::chrono::steady_clock::now();
     for (s.window = 0; s.window <= windows; ++s.window) {
-      if (s.window == 0 || !s.iteration) {
+      if (s.window == 0) {
         s.collect_window();
-        if (s.window == 0) s.check_explicit_stability();
-        s.map_and_send();
-      } else {
+        s.check_explicit_stability();
+        if (s.job.coupling.is_serial())
+          s.serial_start();
+        else
+          s.map_and_send();
+      } else if (s.job.coupling.is_serial()) {
+        s.serial_window();
+      } else if (s.iteration) {
         s.iterate_window();
+      } else {
+        s.collect_window();
+        s.map_and_send();
       }
       s.summary.set_windows(static_cast<std::int64_t>(s.window));
       s.summary.set_metric("max_conservative_mapping_error", s.max_conservation_error, "1");

@@ -73,7 +73,8 @@ WindowIteration::WindowIteration(const job::CouplingSpec& spec,
 WindowIteration::~WindowIteration() = default;
 
 void WindowIteration::sent(const FieldsByPeer& x) {
-  sent_ = x;
+  for (const auto& [participant, fields] : x)
+    for (const auto& [field, values] : fields) sent_[participant][field] = values;
 }
 
 std::vector<double> WindowIteration::gather(const FieldsByPeer& fields) const {
@@ -187,7 +188,7 @@ nlohmann::json WindowIteration::summary() const {
   const auto& v = iterations_per_window_;
   nlohmann::json residuals = nlohmann::json::object();
   for (const Measure& m : measures_) residuals[m.spec->field.label()] = m.relative;
-  return {{"scheme", "parallel-implicit"},
+  return {{"scheme", spec_.is_serial() ? "serial-implicit" : "parallel-implicit"},
           {"windows", v.size()},
           {"iterations", std::accumulate(v.begin(), v.end(), std::size_t{0})},
           {"median_iterations_per_window", median(v)},

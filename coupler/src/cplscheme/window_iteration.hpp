@@ -34,7 +34,7 @@ class WindowIteration {
   ~WindowIteration();
 
   // The iterate the participants run the window with next (what the coupler
-  // has just sent them).
+  // has just sent them), field by field: fields not in `x` keep theirs.
   void sent(const FieldsByPeer& x);
 
   enum class Verdict {

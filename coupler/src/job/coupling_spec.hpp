@@ -29,6 +29,13 @@ enum class Scheme {
   // every participant restoring its saved state, until the fields the
   // coupler sends stop changing (preCICE's parallel-implicit scheme).
   parallel_implicit,
+  // Two participants, one after the other: `first` runs a window on the
+  // second's values of the window before, then the second runs it on the
+  // first's new values (a Gauss-Seidel step across the interface).
+  serial_explicit,
+  // As serial-explicit, repeated until converged; the accelerated fields are
+  // those sent to `first` (preCICE's serial-implicit scheme).
+  serial_implicit,
 };
 
 // A field the coupler sends a participant, as `<participant>.<field>`.
@@ -68,10 +75,18 @@ struct CouplingSpec {
   // The fields the accelerator updates, in this order; the others take
   // H(x) as it is. Default: the convergence measures' fields.
   std::vector<SentField> accelerated;
+  // Serial schemes: the participant that runs each window first, and the other.
+  std::string first;
+  std::string second;
   SourceLocation where;  // of `coupling`, or of the job when absent
   SourceLocation scheme_where;
 
-  bool is_implicit() const { return scheme == Scheme::parallel_implicit; }
+  bool is_implicit() const {
+    return scheme == Scheme::parallel_implicit || scheme == Scheme::serial_implicit;
+  }
+  bool is_serial() const {
+    return scheme == Scheme::serial_explicit || scheme == Scheme::serial_implicit;
+  }
 };
 
 // The keys of `coupling:` the file gives (before the schema's defaults are

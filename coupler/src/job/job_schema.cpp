@@ -175,11 +175,17 @@ Schema coupling_schema() {
       "The coupling scheme: one exchange per window (explicit), or windows repeated until the "
       "exchanged fields converge (implicit; architecture.md §13).");
   s.optional("scheme",
-             Schema::one_of({"parallel-explicit", "parallel-implicit"})
+             Schema::one_of(
+                 {"parallel-explicit", "parallel-implicit", "serial-explicit", "serial-implicit"})
                  .default_value("parallel-explicit"),
              "parallel-explicit: every participant runs a window at once on the fields of the "
              "window before; parallel-implicit: the same, repeated from the window's start until "
-             "the `convergence` measures hold.")
+             "the `convergence` measures hold; serial-explicit: two participants, `first` runs "
+             "the window, then the other on its new values; serial-implicit: the same, repeated "
+             "until converged.")
+      .optional("first", Schema::string().non_empty(),
+                "Serial schemes: the participant that runs each window first (default: the first "
+                "one listed).")
       .optional("time_interpolation",
                 Schema::one_of({"constant", "linear"}).default_value("constant"),
                 "Implicit schemes: what a participant reads inside a window: the current iterate "

@@ -76,6 +76,24 @@ bool computed_by_exchange(const Job& job, const SentField& f) {
          f.field == fields::momentum_exchange_impulse.name;
 }
 
+// Serial schemes run two participants one after the other; the exchange
+// steps need both phases' states of the same window at once.
+void read_serial_order(const Job& job, const config::Node& c, CouplingSpec& spec) {
+  if (job.participants.size() != 2)
+    c["scheme"].fail(fmt::format("a serial scheme couples two participants; this job has {}",
+                                 job.participants.size()));
+  if (job.momentum_exchange || job.energy_exchange)
+    c["scheme"].fail(
+        "the momentum and energy exchanges need both phases' states of a window at once: use a "
+        "parallel scheme");
+  spec.first = job.participants.front().name;
+  if (auto f = c.find("first")) {
+    spec.first = f->as<std::string>();
+    if (!job.participant(spec.first)) f->fail(fmt::format("no participant named '{}'", spec.first));
+  }
+  spec.second = job.participants[job.participants[0].name == spec.first ? 1 : 0].name;
+}
+
 }  // namespace
 
 std::set<std::string> written_coupling_keys(const config::Node& root) {
@@ -95,8 +113,15 @@ CouplingSpec read_coupling(const Job& job, const config::Node& c,
   CouplingSpec spec;
   spec.where = c.location();
   spec.scheme_where = c["scheme"].location();
-  spec.scheme = c.get<std::string>("scheme") == "parallel-implicit" ? Scheme::parallel_implicit
-                                                                    : Scheme::parallel_explicit;
+  const auto scheme = c.get<std::string>("scheme");
+  spec.scheme = scheme == "parallel-implicit" ? Scheme::parallel_implicit
+                : scheme == "serial-explicit" ? Scheme::serial_explicit
+                : scheme == "serial-implicit" ? Scheme::serial_implicit
+                                              : Scheme::parallel_explicit;
+  if (spec.is_serial())
+    read_serial_order(job, c, spec);
+  else if (written.count("first"))
+    c["first"].fail_at_key("'first' applies to serial schemes; this job's scheme is " + scheme);
   spec.time_interpolation = c.get<std::string>("time_interpolation") == "linear"
                                 ? com::TimeInterpolation::linear
                                 : com::TimeInterpolation::constant;
@@ -110,11 +135,15 @@ CouplingSpec read_coupling(const Job& job, const config::Node& c,
     for (const char* key : {"convergence", "acceleration", "time_interpolation", "max_iterations",
                             "on_max_iterations", "divergence_factor"})
       if (written.count(key))
-        c[key].fail_at_key(fmt::format("'{}' applies to implicit schemes; this job's scheme is {}",
-                                       key, c.get<std::string>("scheme")));
+        c[key].fail_at_key(
+            fmt::format("'{}' applies to implicit schemes; this job's scheme is {}", key, scheme));
     return spec;
   }
   check_exchanges_repeatable(job, c["scheme"]);
+  if (spec.is_serial() && spec.time_interpolation == com::TimeInterpolation::linear)
+    c["time_interpolation"].fail(
+        "linear time interpolation is for parallel schemes (in a serial one the second "
+        "participant reads the first's new values; interpolating them is planned)");
 
   const auto measures = c.find("convergence");
   if (!measures || measures->size() == 0)
@@ -155,8 +184,17 @@ CouplingSpec read_coupling(const Job& job, const config::Node& c,
     if (spec.accelerated.empty()) fields->fail("list at least one field, or leave the key out");
   } else {
     for (const ConvergenceMeasure& m : spec.convergence)
-      if (!computed_by_exchange(job, m.field)) spec.accelerated.push_back(m.field);
+      if (!computed_by_exchange(job, m.field) &&
+          (!spec.is_serial() || m.field.participant == spec.first))
+        spec.accelerated.push_back(m.field);
   }
+  if (spec.is_serial())
+    for (const SentField& f : spec.accelerated)
+      if (f.participant != spec.first)
+        a["fields"].fail(fmt::format(
+            "'{}': a serial scheme accelerates what the coupler sends the first participant, "
+            "'{}'",
+            f.label(), spec.first));
   return spec;
 }
 
