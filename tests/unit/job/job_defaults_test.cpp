@@ -56,6 +56,47 @@ TEST(JobSchemaDefaults, AJobWithoutTheOptionalKeysReadsTheSchemaDefaults) {
   EXPECT_EQ(job_schema().default_of("participants.<name>.meshes"), "{}");
   EXPECT_EQ(job_schema().default_of("momentum_exchange.solved_by"), "coupler");
   EXPECT_EQ(job_schema().default_of("exchange.[].mapping.kernel"), "linear");
+  EXPECT_EQ(schema_default<std::string>("coupling.scheme"), "parallel-explicit");
+  EXPECT_FALSE(job.coupling.is_implicit());
+  EXPECT_FALSE(job.coupling.is_serial());
+}
+
+TEST(JobSchemaDefaults, AnImplicitJobReadsTheCouplingAndAccelerationDefaults) {
+  const cosim::testing::ScratchDirectory dir;
+  const Job job = load_job(dir.write(
+      "job.yaml",
+      "kind: job\nname: bare\nend_time: 1.0\nwindow: 0.1\n"
+      "participants:\n  a: {executable: x, meshes: {g: {kind: uniform_grid, dim: 1}}, writes: {p: "
+      "g}, reads: {q: g}}\n"
+      "  b: {executable: x, meshes: {g: {kind: uniform_grid, dim: 1}}, writes: {q: g}, reads: {p: "
+      "g}}\n"
+      "exchange:\n  - {field: p, from: a, to: b, mapping: consistent}\n"
+      "  - {field: q, from: b, to: a, mapping: consistent}\n"
+      "coupling:\n  scheme: parallel-implicit\n  convergence: [{field: b.p, relative: 1e-6}]\n"));
+  const CouplingSpec& c = job.coupling;
+  EXPECT_TRUE(c.is_implicit());
+  EXPECT_EQ(c.time_interpolation == com::TimeInterpolation::linear ? "linear" : "constant",
+            schema_default<std::string>("coupling.time_interpolation"));
+  EXPECT_EQ(c.max_iterations, schema_default<std::size_t>("coupling.max_iterations"));
+  EXPECT_EQ(c.on_max_iterations == OnMaxIterations::stop ? "stop" : "continue",
+            schema_default<std::string>("coupling.on_max_iterations"));
+  EXPECT_EQ(c.divergence_factor, schema_default<double>("coupling.divergence_factor"));
+  const acceleration::AccelerationSpec& a = c.acceleration;
+  EXPECT_EQ(a.method == acceleration::Method::iqn_ils ? "iqn-ils" : "other",
+            schema_default<std::string>("coupling.acceleration.method"));
+  EXPECT_EQ(a.relaxation, schema_default<double>("coupling.acceleration.relaxation"));
+  EXPECT_EQ(a.max_columns, schema_default<std::size_t>("coupling.acceleration.max_columns"));
+  EXPECT_EQ(a.reuse_windows, schema_default<std::size_t>("coupling.acceleration.reuse_windows"));
+  EXPECT_EQ(a.filter == acceleration::Filter::qr2 ? "qr2" : "other",
+            schema_default<std::string>("coupling.acceleration.filter"));
+  EXPECT_EQ(a.filter_limit, schema_default<double>("coupling.acceleration.filter_limit"));
+  EXPECT_EQ(
+      a.preconditioner == acceleration::Preconditioner::residual_sum ? "residual-sum" : "other",
+      schema_default<std::string>("coupling.acceleration.preconditioner"));
+  EXPECT_EQ(a.freeze_preconditioner_after,
+            schema_default<std::size_t>("coupling.acceleration.freeze_preconditioner_after"));
+  ASSERT_EQ(c.accelerated.size(), 1u);  // the measured field
+  EXPECT_EQ(c.accelerated[0].label(), "b.p");
 }
 
 }  // namespace
