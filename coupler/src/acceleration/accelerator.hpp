@@ -40,7 +40,7 @@ struct AccelerationSpec {
   // windows (0: each window starts without columns).
   std::size_t reuse_windows = 8;
   Filter filter = Filter::qr2;
-  // The filter's threshold, in (0, 1).
+  // The filter's threshold, in (0, 1); unused with Filter::none.
   double filter_limit = 1e-2;
   Preconditioner preconditioner = Preconditioner::residual_sum;
   // After this many converged windows the preconditioner's weights stop
