@@ -3,48 +3,64 @@
 #include <algorithm>
 #include <cmath>
 
+#include "state_io.hpp"
+#include "vector_view.hpp"
+
 namespace cosim::acceleration {
 
-Aitken::Aitken(double initial, BlockWeights weights)
-    : initial_(initial), weights_(std::move(weights)), omega_(initial) {}
+Aitken::Aitken(double initial_relaxation, std::size_t size)
+    : initial_relaxation_(initial_relaxation),
+      size_(size),
+      omega_(initial_relaxation),
+      previous_residual_(Eigen::VectorXd::Zero(static_cast<Eigen::Index>(size))) {}
 
 void Aitken::accelerate(std::span<const double> x, std::span<const double> h,
                         std::span<double> next) {
-  std::vector<double> r(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) r[i] = h[i] - x[i];
-  weights_.update(x, r, first_of_window_);
-  if (first_of_window_) {
-    omega_ = std::copysign(std::min(initial_, std::abs(omega_)), omega_);
+  detail::require_size(x, size_, "x");
+  detail::require_size(h, size_, "H(x)");
+  detail::require_size(next, size_, "the next iterate");
+  const Eigen::VectorXd residual = detail::as_eigen(h) - detail::as_eigen(x);
+
+  if (!window_has_residual_) {
+    omega_ = std::copysign(std::min(initial_relaxation_, std::abs(omega_)), omega_);
   } else {
-    std::vector<double> dr(r.size());
-    for (std::size_t i = 0; i < r.size(); ++i) dr[i] = r[i] - previous_residual_[i];
-    const double denominator = weights_.dot(dr, dr);
-    if (denominator > 0.0) omega_ = -omega_ * weights_.dot(previous_residual_, dr) / denominator;
+    const Eigen::VectorXd residual_change = residual - previous_residual_;
+    const double change_squared = residual_change.squaredNorm();
+    if (change_squared > 0.0)
+      omega_ = -omega_ * previous_residual_.dot(residual_change) / change_squared;
+    else
+      omega_ = initial_relaxation_;
   }
-  for (std::size_t i = 0; i < x.size(); ++i) next[i] = x[i] + omega_ * r[i];
-  previous_residual_ = std::move(r);
-  first_of_window_ = false;
+  if (omega_ == 0.0 || !std::isfinite(omega_)) omega_ = initial_relaxation_;
+
+  previous_residual_ = residual;
+  window_has_residual_ = true;
+  detail::as_eigen(next) = detail::as_eigen(x) + omega_ * residual;
 }
 
-void Aitken::window_converged(std::span<const double>, std::span<const double>) {
-  first_of_window_ = true;
-  weights_.window_converged();
+void Aitken::window_converged(std::span<const double> x, std::span<const double> h) {
+  detail::require_size(x, size_, "x");
+  detail::require_size(h, size_, "H(x)");
+  window_has_residual_ = false;
 }
 
 AcceleratorState Aitken::state() const {
-  AcceleratorState s;
-  weights_.save(s);
-  s.scalars.push_back(omega_);
-  s.scalars.push_back(first_of_window_ ? 1.0 : 0.0);
-  s.vectors.push_back(previous_residual_);
-  return s;
+  detail::StateWriter writer(Method::aitken, size_);
+  writer.scalar(omega_);
+  writer.flag(window_has_residual_);
+  writer.vector(previous_residual_);
+  return writer.take();
 }
 
 void Aitken::restore(const AcceleratorState& s) {
-  const std::size_t v = weights_.restore(s, 0);
-  omega_ = s.scalars.at(1);
-  first_of_window_ = s.scalars.at(2) != 0.0;
-  previous_residual_ = s.vectors.at(v);
+  detail::StateReader reader(s, Method::aitken, size_);
+  const double omega = reader.scalar("relaxation factor");
+  const bool window_has_residual = reader.flag("window-has-residual flag");
+  Eigen::VectorXd previous_residual = reader.vector("previous residual", size_);
+  reader.finish();
+  omega_ = omega;
+  window_has_residual_ = window_has_residual;
+  previous_residual_ = std::move(previous_residual);
 }
 
 }  // namespace cosim::acceleration

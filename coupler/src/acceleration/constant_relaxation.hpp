@@ -1,21 +1,25 @@
 #pragma once
 
-#include "accelerator.hpp"
+#include <cstddef>
+
+#include "acceleration/accelerator.hpp"
 
 namespace cosim::acceleration {
 
-// x^{k+1} = x^k + omega (H(x^k) - x^k); omega = 1 takes H(x^k) as it is.
+// x^{k+1} = x^k + omega (H(x^k) - x^k).
 class ConstantRelaxation final : public Accelerator {
  public:
-  explicit ConstantRelaxation(double omega) : omega_(omega) {}
+  ConstantRelaxation(double omega, std::size_t size) : omega_(omega), size_(size) {}
+
   void accelerate(std::span<const double> x, std::span<const double> h,
                   std::span<double> next) override;
-  void window_converged(std::span<const double>, std::span<const double>) override {}
-  AcceleratorState state() const override { return {}; }
-  void restore(const AcceleratorState&) override {}
+  void window_converged(std::span<const double> x, std::span<const double> h) override;
+  AcceleratorState state() const override;
+  void restore(const AcceleratorState& s) override;
 
  private:
   double omega_;
+  std::size_t size_;
 };
 
 }  // namespace cosim::acceleration

@@ -1,129 +1,134 @@
 #include "iqn_ils.hpp"
 
-#include <Eigen/Dense>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "qr_filter.hpp"
+#include "state_io.hpp"
+#include "vector_view.hpp"
 
 namespace cosim::acceleration {
 
-IqnIls::IqnIls(const AccelerationSpec& spec, BlockWeights weights)
-    : spec_(spec), weights_(std::move(weights)) {}
+IqnIls::IqnIls(const AccelerationSpec& spec, std::vector<Block> blocks)
+    : relaxation_(spec.relaxation),
+      max_columns_(spec.max_columns),
+      reuse_windows_(spec.reuse_windows),
+      filter_(spec.filter),
+      filter_limit_(spec.filter_limit),
+      size_(total_size(blocks)),
+      weights_(spec.preconditioner, std::move(blocks), spec.freeze_preconditioner_after),
+      previous_residual_(Eigen::VectorXd::Zero(static_cast<Eigen::Index>(size_))),
+      previous_output_(Eigen::VectorXd::Zero(static_cast<Eigen::Index>(size_))) {}
 
-void IqnIls::add_column(const std::vector<double>& r, std::span<const double> h) {
-  std::vector<double> v(r.size()), w(r.size());
-  for (std::size_t i = 0; i < r.size(); ++i) {
-    v[i] = r[i] - previous_residual_[i];
-    w[i] = h[i] - previous_answer_[i];
+void IqnIls::add_pair(const Eigen::VectorXd& r, const Eigen::VectorXd& h) {
+  if (window_has_pair_) {
+    columns_.push_front({r - previous_residual_, h - previous_output_, window_});
+    if (columns_.size() > max_columns_) columns_.pop_back();
   }
-  v_.push_front(std::move(v));
-  w_.push_front(std::move(w));
-  column_window_.push_front(window_);
-  while (v_.size() > spec_.max_columns) {
-    v_.pop_back();
-    w_.pop_back();
-    column_window_.pop_back();
-  }
+  previous_residual_ = r;
+  previous_output_ = h;
+  window_has_pair_ = true;
+}
+
+Eigen::VectorXd IqnIls::least_squares_coefficients(const Eigen::VectorXd& r) {
+  Eigen::MatrixXd weighted_v(static_cast<Eigen::Index>(size_),
+                             static_cast<Eigen::Index>(columns_.size()));
+  for (std::size_t c = 0; c < columns_.size(); ++c)
+    weighted_v.col(static_cast<Eigen::Index>(c)) = columns_[c].residual_difference;
+  weights_.apply(weighted_v);
+  Eigen::VectorXd weighted_r = r;
+  weights_.apply(weighted_r);
+
+  const FilteredQr qr = filtered_qr(weighted_v, filter_, filter_limit_);
+  for (auto c = qr.dropped.rbegin(); c != qr.dropped.rend(); ++c)
+    columns_.erase(columns_.begin() + static_cast<std::ptrdiff_t>(*c));
+
+  const Eigen::VectorXd rhs = -(qr.q.transpose() * weighted_r);
+  return qr.r.triangularView<Eigen::Upper>().solve(rhs);
 }
 
 void IqnIls::accelerate(std::span<const double> x, std::span<const double> h,
                         std::span<double> next) {
-  const std::size_t n = x.size();
-  std::vector<double> r(n);
-  for (std::size_t i = 0; i < n; ++i) r[i] = h[i] - x[i];
-  weights_.update(x, r, first_of_window_);
-  if (!first_of_window_) add_column(r, h);
-  previous_residual_ = r;
-  previous_answer_.assign(h.begin(), h.end());
-  first_of_window_ = false;
+  detail::require_size(x, size_, "x");
+  detail::require_size(h, size_, "H(x)");
+  detail::require_size(next, size_, "the next iterate");
+  const Eigen::VectorXd output = detail::as_eigen(h);
+  const Eigen::VectorXd residual = output - detail::as_eigen(x);
+  weights_.update(detail::as_eigen(x), residual);
+  add_pair(residual, output);
 
-  if (v_.empty()) {
-    for (std::size_t i = 0; i < n; ++i) next[i] = x[i] + spec_.relaxation * r[i];
-    return;
+  Eigen::VectorXd coefficients;
+  if (!columns_.empty()) coefficients = least_squares_coefficients(residual);
+  Eigen::VectorXd next_iterate;
+  if (columns_.empty()) {
+    next_iterate = detail::as_eigen(x) + relaxation_ * residual;
+  } else {
+    next_iterate = output;
+    for (std::size_t j = 0; j < columns_.size(); ++j)
+      next_iterate += coefficients(static_cast<Eigen::Index>(j)) * columns_[j].output_difference;
   }
-  // The least-squares system in the weighted norm: min ||P (V c + r)||.
-  const auto rows = static_cast<Eigen::Index>(n);
-  Eigen::MatrixXd v(rows, static_cast<Eigen::Index>(v_.size()));
-  for (std::size_t j = 0; j < v_.size(); ++j) {
-    std::vector<double> column = v_[j];
-    weights_.scale(column);
-    v.col(static_cast<Eigen::Index>(j)) = Eigen::Map<const Eigen::VectorXd>(column.data(), rows);
-  }
-  const FilteredQR qr = filtered_qr(v, spec_.filter, spec_.filter_limit);
-  // A column the filter drops carries no information now and will not later.
-  if (qr.kept.size() < v_.size()) {
-    std::deque<std::vector<double>> kept_v, kept_w;
-    std::deque<std::size_t> kept_window;
-    for (std::size_t j : qr.kept) {
-      kept_v.push_back(std::move(v_[j]));
-      kept_w.push_back(std::move(w_[j]));
-      kept_window.push_back(column_window_[j]);
-    }
-    v_ = std::move(kept_v);
-    w_ = std::move(kept_w);
-    column_window_ = std::move(kept_window);
-  }
-  std::vector<double> scaled_r = r;
-  weights_.scale(scaled_r);
-  const Eigen::VectorXd rhs =
-      -qr.q.transpose() * Eigen::Map<const Eigen::VectorXd>(scaled_r.data(), rows);
-  const Eigen::VectorXd c = qr.r.triangularView<Eigen::Upper>().solve(rhs);
-  for (std::size_t i = 0; i < n; ++i) next[i] = h[i];
-  for (std::size_t j = 0; j < w_.size(); ++j) {
-    const double cj = c[static_cast<Eigen::Index>(j)];
-    for (std::size_t i = 0; i < n; ++i) next[i] += cj * w_[j][i];
-  }
+  detail::as_eigen(next) = next_iterate;
 }
 
 void IqnIls::window_converged(std::span<const double> x, std::span<const double> h) {
-  if (!first_of_window_) {
-    std::vector<double> r(x.size());
-    for (std::size_t i = 0; i < x.size(); ++i) r[i] = h[i] - x[i];
-    add_column(r, h);
-  }
-  ++window_;
-  // Keep the columns of the last reuse_windows windows, this one included.
-  while (!column_window_.empty() &&
-         (spec_.reuse_windows == 0 || column_window_.back() + spec_.reuse_windows < window_)) {
-    v_.pop_back();
-    w_.pop_back();
-    column_window_.pop_back();
-  }
-  first_of_window_ = true;
-  previous_residual_.clear();
-  previous_answer_.clear();
+  detail::require_size(x, size_, "x");
+  detail::require_size(h, size_, "H(x)");
+  const Eigen::VectorXd output = detail::as_eigen(h);
+  add_pair(output - detail::as_eigen(x), output);
   weights_.window_converged();
+  window_has_pair_ = false;
+  ++window_;
+  while (!columns_.empty() && columns_.back().window + reuse_windows_ < window_)
+    columns_.pop_back();
 }
 
 AcceleratorState IqnIls::state() const {
-  AcceleratorState s;
-  weights_.save(s);
-  s.scalars.push_back(static_cast<double>(window_));
-  s.scalars.push_back(first_of_window_ ? 1.0 : 0.0);
-  s.vectors.push_back(previous_residual_);
-  s.vectors.push_back(previous_answer_);
-  s.vectors.push_back(std::vector<double>(column_window_.begin(), column_window_.end()));
-  for (std::size_t j = 0; j < v_.size(); ++j) {
-    s.vectors.push_back(v_[j]);
-    s.vectors.push_back(w_[j]);
+  detail::StateWriter writer(Method::iqn_ils, size_);
+  writer.count(window_);
+  writer.flag(window_has_pair_);
+  writer.vector(previous_residual_);
+  writer.vector(previous_output_);
+  writer.count(columns_.size());
+  for (const Column& column : columns_) {
+    writer.count(column.window);
+    writer.vector(column.residual_difference);
+    writer.vector(column.output_difference);
   }
-  return s;
+  weights_.write(writer);
+  return writer.take();
 }
 
 void IqnIls::restore(const AcceleratorState& s) {
-  std::size_t k = weights_.restore(s, 0);
-  window_ = static_cast<std::size_t>(s.scalars.at(1));
-  first_of_window_ = s.scalars.at(2) != 0.0;
-  previous_residual_ = s.vectors.at(k++);
-  previous_answer_ = s.vectors.at(k++);
-  const std::vector<double>& windows = s.vectors.at(k++);
-  v_.clear();
-  w_.clear();
-  column_window_.clear();
-  for (double w : windows) {
-    column_window_.push_back(static_cast<std::size_t>(w));
-    v_.push_back(s.vectors.at(k++));
-    w_.push_back(s.vectors.at(k++));
+  detail::StateReader reader(s, Method::iqn_ils, size_);
+  const std::size_t window = reader.count("window count");
+  const bool window_has_pair = reader.flag("window-has-pair flag");
+  Eigen::VectorXd previous_residual = reader.vector("previous residual", size_);
+  Eigen::VectorXd previous_output = reader.vector("previous output", size_);
+  const std::size_t column_count = reader.count("column count");
+  if (column_count > max_columns_)
+    throw std::invalid_argument("acceleration: cannot restore the state: it has " +
+                                std::to_string(column_count) + " columns, more than max_columns " +
+                                std::to_string(max_columns_));
+  std::deque<Column> columns;
+  for (std::size_t c = 0; c < column_count; ++c) {
+    const std::size_t column_window = reader.count("column's window");
+    Eigen::VectorXd residual_difference = reader.vector("column of V", size_);
+    Eigen::VectorXd output_difference = reader.vector("column of W", size_);
+    columns.push_back(
+        {std::move(residual_difference), std::move(output_difference), column_window});
   }
+  PreconditionerWeights weights = weights_;
+  weights.read(reader);
+  reader.finish();
+
+  window_ = window;
+  window_has_pair_ = window_has_pair;
+  previous_residual_ = std::move(previous_residual);
+  previous_output_ = std::move(previous_output);
+  columns_ = std::move(columns);
+  weights_ = std::move(weights);
 }
 
 }  // namespace cosim::acceleration

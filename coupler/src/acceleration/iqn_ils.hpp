@@ -1,46 +1,70 @@
 #pragma once
 
+#include <Eigen/Core>
+#include <cstddef>
 #include <deque>
 #include <vector>
 
-#include "accelerator.hpp"
-#include "block_weights.hpp"
+#include "acceleration/accelerator.hpp"
+#include "preconditioner.hpp"
 
 namespace cosim::acceleration {
 
-// Interface quasi-Newton with an inverse Jacobian from a least-squares model
-// (IQN-ILS; Degroote et al. 2009). With r^k = H(x^k) - x^k, the columns
-//   V = [r^k - r^{k-1}, ...],  W = [H(x^k) - H(x^{k-1}), ...]  (newest first)
-// give c = argmin ||V c + r^k|| (weighted by the block weights, V filtered
-// and decomposed by filtered_qr), and
-//   x^{k+1} = H(x^k) + W c.
-// Columns of the last `reuse_windows` converged windows stay (Haelterman et
-// al. 2016), at most `max_columns` in all, the oldest dropped first; with no
-// column the step is constant relaxation.
+// Interface quasi-Newton with an approximation for the inverse of the Jacobian
+// from a least-squares model (IQN-ILS, Degroote et al. 2009). With the
+// residual r^k = h^k - x^k, h^k = H(x^k), each pair of successive iterations
+// gives a column of
+//   V = [r^k - r^{k-1}, ...],   W = [h^k - h^{k-1}, ...]   (newest first),
+// and
+//   c = argmin ||P (V c + r^k)||,   x^{k+1} = h^k + W c,
+// where P holds the preconditioner's block weights. The least squares problem
+// is solved with the filtered QR factorisation of P V (qr_filter.hpp), whose
+// dropped columns leave V and W for good. Without columns (none yet, or all
+// filtered out), x^{k+1} = x^k + omega r^k.
+//
+// Columns come from the iterations of the current window and, when a window
+// has converged (its last pair included), those of the last `reuse_windows`
+// converged windows are kept for the next ones (preCICE's reused time
+// windows). At most `max_columns` are kept, the oldest
+// dropped first.
 class IqnIls final : public Accelerator {
  public:
-  IqnIls(const AccelerationSpec& spec, BlockWeights weights);
+  IqnIls(const AccelerationSpec& spec, std::vector<Block> blocks);
+
   void accelerate(std::span<const double> x, std::span<const double> h,
                   std::span<double> next) override;
   void window_converged(std::span<const double> x, std::span<const double> h) override;
   AcceleratorState state() const override;
   void restore(const AcceleratorState& s) override;
-  std::size_t columns() const override { return v_.size(); }
+  std::size_t columns() const override { return columns_.size(); }
+
+  const PreconditionerWeights& preconditioner() const { return weights_; }
 
  private:
   struct Column {
-    std::vector<double> v, w;
-    std::size_t window;  // the window it was made in
+    Eigen::VectorXd residual_difference;  // of V
+    Eigen::VectorXd output_difference;    // of W
+    std::size_t window;                   // the window whose iterations gave it
   };
-  void add_column(const std::vector<double>& r, std::span<const double> h);
 
-  AccelerationSpec spec_;
-  BlockWeights weights_;
-  std::deque<std::vector<double>> v_, w_;  // newest first
-  std::deque<std::size_t> column_window_;
-  std::size_t window_ = 0;  // converged windows so far
-  bool first_of_window_ = true;
-  std::vector<double> previous_residual_, previous_answer_;
+  // Adds the column from the window's previous pair to (r, h), and makes
+  // (r, h) the previous pair.
+  void add_pair(const Eigen::VectorXd& r, const Eigen::VectorXd& h);
+  // c of min ||P (V c + r)||; drops the columns the filter leaves out.
+  Eigen::VectorXd least_squares_coefficients(const Eigen::VectorXd& r);
+
+  double relaxation_;
+  std::size_t max_columns_;
+  std::size_t reuse_windows_;
+  Filter filter_;
+  double filter_limit_;
+  std::size_t size_;
+  PreconditionerWeights weights_;
+  std::deque<Column> columns_;  // newest first
+  std::size_t window_ = 0;      // converged windows so far
+  bool window_has_pair_ = false;
+  Eigen::VectorXd previous_residual_;
+  Eigen::VectorXd previous_output_;
 };
 
 }  // namespace cosim::acceleration

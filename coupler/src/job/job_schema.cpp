@@ -155,7 +155,7 @@ Schema acceleration_schema() {
                 "iqn-ils: keep the columns of this many converged windows for the next.")
       .optional("filter", Schema::one_of({"none", "qr1", "qr2"}).default_value("qr2"),
                 "iqn-ils: drop (nearly) dependent columns (Haelterman et al. 2016).")
-      .optional("filter_limit", Schema::number().range(1e-16, 1.0).default_value("1e-2"),
+      .optional("filter_limit", Schema::number().range(1e-16, 0.5).default_value("1e-2"),
                 "iqn-ils: the filter's threshold.")
       .optional("preconditioner",
                 Schema::one_of({"none", "value", "residual-sum"}).default_value("residual-sum"),
