@@ -1,8 +1,9 @@
-// swe_fluid standalone with --cosim-repeat-windows: every window of a shipped
-// case runs twice, going back to the state saved at its start once, and the
-// run must leave exactly the files of a plain run with the same windows.
-// Prints what saving and restoring the state cost per window against the
-// solver's own time in the window.
+// swe_fluid repeating windows. Standalone with --cosim-repeat-windows: every
+// window of a shipped case runs twice, going back to the state saved at its
+// start once, and the run must leave exactly the files of a plain run with
+// the same windows; prints what saving and restoring the state cost per
+// window against the solver's own time in the window. In an implicit job: its
+// files hold the accepted attempt of every window and nothing else.
 
 #include <fmt/format.h>
 #include <gmock/gmock.h>
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "hdf5_contents.hpp"
+#include "hdf5_reader.hpp"
 #include "replaced_text.hpp"
 #include "run_process.hpp"
 #include "text_files.hpp"
@@ -152,6 +154,93 @@ INSTANTIATE_TEST_SUITE_P(ShippedCases, SweRepeatWindows,
                              WindowedCase{"radial_dam_break_2d", "radial_dam_break_2d.yaml",
                                           "time: {end_time: 0.4}", 0.4, 0.03}),
                          [](const auto& p) { return std::string(p.param.name); });
+
+// A dam break on a bed the soil (a test participant) raises at 0.1 m/s and
+// reads the traction of: with the parallel-implicit scheme every window runs
+// twice (the first iterate is the bed of the window's start, the second the
+// bed of its end, the answer). Snapshots fall inside windows, gauge rows come
+// every step: only the accepted attempt may show.
+TEST(SweImplicitJob, WritesTheAcceptedAttemptOfEveryWindowOnly) {
+  const fs::path dir = fresh_directory("swe_repeat_windows_implicit");
+  write_text(dir / "job.yaml", R"(kind: job
+name: swe_implicit
+end_time: 0.2
+window: 0.02
+participants:
+  soil:
+    executable: cosim_test_participant
+    config: soil.yaml
+    meshes: {grid: {kind: uniform_grid, dim: 1}}
+    writes: {bed_elevation: grid}
+    reads: {bed_traction: grid}
+  water:
+    executable: swe_fluid
+    config: water.yaml
+    meshes: {swe_cells: {kind: nonuniform_line, dim: 1}}
+    writes: {bed_traction: swe_cells}
+    reads: {bed_elevation: swe_cells}
+exchange:
+  - {from: soil, to: water, field: bed_elevation, mapping: consistent}
+  - {from: water, to: soil, field: bed_traction, mapping: consistent}
+coupling:
+  scheme: parallel-implicit
+  convergence: [{field: water.bed_elevation, absolute: 1.0e-12}]
+)");
+  write_text(dir / "soil.yaml", R"(kind: test_participant
+dt: 0.01
+mesh: {dim: 1, origin: [0.0], spacing: [0.1], cells: [40]}
+writes:
+  - {name: bed_elevation, unit: m, function: [0, 0, 0, 0, 0.1]}
+reads:
+  - {name: bed_traction, unit: Pa, components: 2}
+)");
+  write_text(dir / "water.yaml", R"(kind: swe_case
+name: water
+dimension: 1
+mesh: {from: 0.0, to: 4.0, cells: 80}
+initial:
+  depth: 0.0
+  regions:
+    - {box: {min: [0.0], max: [1.0]}, depth: 0.5}
+boundaries: {left: wall, right: wall}
+time: {end_time: 0.2}
+output:
+  every: 0.05
+  gauges:
+    - {name: middle, x: 2.0}
+)");
+  const ProcessResult r = run({binary("cosim").string(), "run", (dir / "job.yaml").string(),
+                               "--output", (dir / "run").string()},
+                              std::chrono::seconds(120));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const fs::path water = dir / "run" / "water";
+
+  const auto iterations = read_csv(dir / "run" / "coupling_iterations.csv");
+  ASSERT_EQ(iterations.size(), 10u);
+  for (const auto& row : iterations) {
+    EXPECT_GE(row[2], 2.0) << "window " << row[0] << " was not repeated";
+    EXPECT_EQ(row[3], 1.0) << "window " << row[0] << " did not converge";
+  }
+  // A row per accepted step, times increasing: none of a dropped attempt.
+  const auto gauges = read_csv(water / "gauges.csv");
+  const auto summary = nlohmann::json::parse(read_text(water / "summary.json"));
+  EXPECT_EQ(gauges.size(), summary["steps"].get<std::size_t>() + 1);
+  for (std::size_t k = 1; k < gauges.size(); ++k) ASSERT_GT(gauges[k][0], gauges[k - 1][0]);
+  EXPECT_NEAR(gauges.back()[0], 0.2, 1e-12);
+  EXPECT_EQ(read_csv(water / "water.csv").size(), 5u);  // t = 0, 0.05, ..., 0.2
+  EXPECT_FALSE(fs::exists(water / "swe_000005.h5"));
+
+  // Each snapshot shows the accepted attempt's bed, the answer at the end of
+  // the window it falls in (0.06 s, 0.1 s, 0.16 s, 0.2 s); the first attempt
+  // read the bed of the window's start.
+  const std::pair<const char*, double> snapshots[] = {{"swe_000001.h5", 0.006},
+                                                      {"swe_000002.h5", 0.01},
+                                                      {"swe_000003.h5", 0.016},
+                                                      {"swe_000004.h5", 0.02}};
+  for (const auto& [file, bed] : snapshots)
+    for (const double value : Hdf5Reader(water / file).doubles("/fields/bed").values)
+      ASSERT_NEAR(value, bed, 1e-12) << file;
+}
 
 }  // namespace
 }  // namespace cosim::testing
