@@ -44,6 +44,7 @@ TEST(SweCaseSchemaDefaults, ACaseWithoutTheOptionalKeysReadsTheSchemaDefaults) {
   EXPECT_EQ(c.bed.base, schema_default<double>("bed.base"));
   EXPECT_EQ(c.min_time_step, schema_default<double>("time.min_time_step"));
   EXPECT_EQ(c.max_time_step, schema_default<double>("time.max_time_step"));
+  EXPECT_EQ(c.window, schema_default<double>("time.window"));
   EXPECT_EQ(c.output_every, schema_default<double>("output.every"));
   EXPECT_EQ(c.snapshots, schema_default<bool>("output.snapshots"));
   EXPECT_EQ(c.gauge_every, schema_default<double>("output.gauge_every"));
@@ -71,6 +72,7 @@ TEST(SweCaseSchemaDefaults, TheDescriptionBuiltInCodeStartsFromTheSchemaDefaults
   EXPECT_EQ(in_code.bed.base, c.bed.base);
   EXPECT_EQ(in_code.min_time_step, c.min_time_step);
   EXPECT_EQ(in_code.max_time_step, c.max_time_step);
+  EXPECT_EQ(in_code.window, c.window);
   EXPECT_EQ(in_code.output_every, c.output_every);
   EXPECT_EQ(in_code.snapshots, c.snapshots);
   EXPECT_EQ(in_code.gauge_every, c.gauge_every);

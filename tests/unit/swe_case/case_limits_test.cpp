@@ -1,7 +1,7 @@
 // What a shallow-water case may ask for: its size is stated before anything
 // is allocated and refused above limits.memory_gib, and its output
-// intervals must give a sane number of outputs. Each refusal is located at
-// the key.
+// intervals and standalone window must give a sane number of outputs and
+// windows. Each refusal is located at the key.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -89,6 +89,14 @@ TEST(SweCaseLimits, OutputIntervalsGivingMoreThanAMillionOutputsAreRefused) {
               HasSubstr("case.yaml:15:10: key 'output.every': an interval of 1e-300 s gives"));
   EXPECT_THAT(error_of(replaced(dam, "gauge_every: 0.001", "gauge_every: 1.0e-9")),
               HasSubstr("key 'output.gauge_every'"));
+}
+
+TEST(SweCaseLimits, AWindowGivingMoreThanAMillionWindowsIsRefused) {
+  EXPECT_THAT(
+      error_of(replaced(dam, "time: {end_time: 0.1}", "time: {end_time: 0.1, window: 1e-9}")),
+      HasSubstr("case.yaml:13:31: key 'time.window': the window 1e-09 s gives 1e+08 windows"));
+  EXPECT_NO_THROW(swe::load_case_text(
+      replaced(dam, "time: {end_time: 0.1}", "time: {end_time: 0.1, window: 0.01}"), "case.yaml"));
 }
 
 }  // namespace

@@ -60,6 +60,15 @@ class Solver {
   // (Zheng et al., eq. 36).
   virtual void step(double dt) = 0;
 
+  // A copy of the complete state (depths, discharges and bed, with the
+  // boundary ghosts and the derived values the next step reads), kept by the
+  // solver: restore_state() puts it back bit for bit, so a coupling window
+  // that must run again starts exactly where its first attempt did. The
+  // copy's buffers are reused from one save to the next.
+  virtual void save_state() = 0;
+  // Throws cosim::Error (internal_error) when no state was saved.
+  virtual void restore_state() = 0;
+
   virtual std::span<const double> depth() const = 0;
   virtual std::span<const double> discharge_x() const = 0;
   virtual std::span<const double> discharge_y() const = 0;  // empty in 1D

@@ -66,6 +66,8 @@ class Solver1d final : public Solver {
   void set_bed(std::span<const double> bed) override;
   double stable_time_step() const override;
   void step(double dt) override;
+  void save_state() override;
+  void restore_state() override;
 
   std::span<const double> depth() const override;
   std::span<const double> discharge_x() const override;

@@ -56,6 +56,8 @@ class Solver2d final : public Solver {
   // +infinity when every cell is dry.
   double stable_time_step() const override;
   void step(double dt) override;
+  void save_state() override;
+  void restore_state() override;
 
   // Views of unpadded copies of the state, refreshed by the first call after
   // a step (the same storage for the solver's life).

@@ -154,7 +154,11 @@ Schema swe_case_schema() {
       .optional("min_time_step", Schema::number().positive().unit("s").default_value("1e-9"),
                 "A stable step below this ends the run as a numerical failure (exit 4).")
       .optional("max_time_step", Schema::number().non_negative().unit("s").default_value("0"),
-                "Upper bound of the step; 0: none beyond stability.");
+                "Upper bound of the step; 0: none beyond stability.")
+      .optional("window", Schema::number().non_negative().unit("s").default_value("0"),
+                "Standalone coupling window: steps end on window ends, and with "
+                "--cosim-repeat-windows every window runs twice (a check of save and restore). "
+                "0: the whole run is one window. Coupled, the job's window applies.");
   Schema output = Schema::object("What the run writes.").default_value("{}");
   output
       .optional("every", Schema::number().non_negative().unit("s").default_value("0"),

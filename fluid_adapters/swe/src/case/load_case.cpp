@@ -261,6 +261,12 @@ class CaseReader {
     c.end_time = time["end_time"].as<double>();
     c.min_time_step = time.get<double>("min_time_step");
     c.max_time_step = time.get<double>("max_time_step");
+    c.window = time.get<double>("window");
+    if (c.window > 0.0 && c.end_time / c.window > cosim::max_output_count)
+      time["window"].fail(
+          fmt::format("the window {:g} s gives {:.3g} windows over the run's {:g} "
+                      "s, more than {:g}; give a longer window",
+                      c.window, c.end_time / c.window, c.end_time, cosim::max_output_count));
   }
 
   void read_output(CaseDescription& c) {

@@ -25,7 +25,7 @@ GaugeRecorder::GaugeRecorder(const std::filesystem::path& file, const std::vecto
   row_.resize(1 + 3 * cells_.size());
 }
 
-void GaugeRecorder::record(double time, const Solver& solver) {
+void GaugeRecorder::record(double time, const Solver& solver, HeldOutputs& outputs) {
   const auto h = solver.depth();
   const auto bed = solver.bed();
   const auto qx = solver.discharge_x();
@@ -39,7 +39,7 @@ void GaugeRecorder::record(double time, const Solver& solver) {
     row_[2 + 3 * k] = h[c];
     row_[3 + 3 * k] = h[c] > dry ? q / h[c] : 0.0;
   }
-  writer_.append(row_);
+  outputs.append(writer_, row_);
 }
 
 }  // namespace swe

@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -20,6 +21,7 @@
 #include "swe/case/load_case.hpp"
 #include "swe/coupling/bed_traction.hpp"
 #include "swe/io/gauge_recorder.hpp"
+#include "swe/io/held_outputs.hpp"
 
 namespace swe {
 
@@ -63,6 +65,16 @@ nlohmann::json case_section(const CaseDescription& c, const Solver& solver) {
           {"end_time_s", c.end_time}};
 }
 
+// What a run accumulates besides the solver's state: saved with it at the
+// start of a window that may run again, and restored when it must.
+struct RunProgress {
+  std::size_t steps = 0;
+  double min_dt = infinity;
+  double eta_max = -infinity;  // over the snapshots
+  cosim::OutputSchedule snapshots;
+  std::optional<cosim::OutputSchedule> gauge_times = std::nullopt;
+};
+
 class CaseRun {
  public:
   CaseRun(const CaseDescription& description, const RunOptions& options,
@@ -73,7 +85,8 @@ class CaseRun {
         solver_(make_solver(description)),
         participant_(endpoint.name_or(description.name), endpoint),
         coupling_(description.coupling),
-        snapshots_(description.output_every, description.end_time),
+        progress_{.snapshots =
+                      cosim::OutputSchedule(description.output_every, description.end_time)},
         tolerance_(1e-10 * description.end_time) {}
 
   void run() {
@@ -82,12 +95,14 @@ class CaseRun {
         auto scope = summary_.phases().measure("setup");
         summary_.set_section("case", case_section(c_, *solver_));
         declare_coupling();
+        participant_.declare_repeatable();
+        if (c_.window > 0.0) participant_.set_standalone_window(c_.window);
         participant_.initialize(0.0, c_.end_time);
         if (participant_.is_coupled() && c_.coupling.reads_bed) lay_water_over_received_bed();
         record_initial_surface();
         end_time_ = participant_.end_time();
-        gauge_times_.emplace(c_.gauge_every, end_time_);
-        snapshots_ = cosim::OutputSchedule(c_.output_every, end_time_);
+        progress_.gauge_times.emplace(c_.gauge_every, end_time_);
+        progress_.snapshots = cosim::OutputSchedule(c_.output_every, end_time_);
         tolerance_ = 1e-10 * end_time_;
         open_outputs();
       }
@@ -103,8 +118,8 @@ class CaseRun {
       participant_.abort(e.what());
       throw;
     }
-    spdlog::info("completed: t = {:.6g} s in {} steps ({} snapshots)", participant_.time(), steps_,
-                 snapshot_writer_ ? snapshot_writer_->snapshots_written() : 0);
+    spdlog::info("completed: t = {:.6g} s in {} steps ({} snapshots)", participant_.time(),
+                 progress_.steps, snapshot_writer_ ? snapshot_writer_->snapshots_written() : 0);
   }
 
  private:
@@ -159,6 +174,7 @@ class CaseRun {
     const bool coupled = participant_.is_coupled();
     std::vector<double> bed;
     while (participant_.is_coupling_ongoing()) {
+      if (participant_.must_save_state()) save_window_start();
       const double t = participant_.time();
       if (coupled && c_.coupling.reads_bed) {
         auto scope = summary_.phases().measure("bed_update");
@@ -171,19 +187,19 @@ class CaseRun {
         throw cosim::NumericalError(
             fmt::format("the stable time step {:.4g} s fell below time.min_time_step = {:.4g} s at "
                         "t = {:.9g} s (step {})",
-                        stable, c_.min_time_step, t, steps_));
+                        stable, c_.min_time_step, t, progress_.steps));
       double dt = std::min(stable, participant_.max_time_step());
       if (c_.max_time_step > 0.0) dt = std::min(dt, c_.max_time_step);
-      const double next_output = c_.gauge_every > 0.0
-                                     ? std::min(snapshots_.next(), gauge_times_->next())
-                                     : snapshots_.next();
+      const double next_output =
+          c_.gauge_every > 0.0 ? std::min(progress_.snapshots.next(), progress_.gauge_times->next())
+                               : progress_.snapshots.next();
       if (next_output > t + tolerance_) dt = std::min(dt, next_output - t);
       {
         auto scope = summary_.phases().measure("advance");
         solver_->step(dt);
       }
-      ++steps_;
-      min_dt_ = std::min(min_dt_, dt);
+      ++progress_.steps;
+      progress_.min_dt = std::min(progress_.min_dt, dt);
       const bool window_ends = dt >= participant_.max_time_step() - tolerance_;
       if (coupled && c_.coupling.writes_traction && window_ends) {
         auto scope = summary_.phases().measure("traction");
@@ -193,8 +209,13 @@ class CaseRun {
         auto scope = summary_.phases().measure("coupling");
         participant_.advance(dt);
       }
+      if (participant_.must_restore_state()) {
+        restore_window_start();
+        continue;
+      }
+      if (participant_.is_window_complete()) outputs_.release();
       const double now = participant_.time();
-      if (steps_ % 64 == 0 || snapshots_.due(now, tolerance_)) check_state(now);
+      if (progress_.steps % 64 == 0 || progress_.snapshots.due(now, tolerance_)) check_state(now);
       write_outputs(now);
       if (Clock::now() - last_progress > std::chrono::seconds(5)) {
         last_progress = Clock::now();
@@ -202,12 +223,28 @@ class CaseRun {
         spdlog::info(
             "t = {:.6g} s / {:.6g} s, step {}, dt = {:.3g} s, eta max {:.6g} m, speed max {:.4g} "
             "m/s",
-            now, end_time_, steps_, dt, s.eta_max, s.speed_max);
-        summary_.set_steps(static_cast<std::int64_t>(steps_));
+            now, end_time_, progress_.steps, dt, s.eta_max, s.speed_max);
+        summary_.set_steps(static_cast<std::int64_t>(progress_.steps));
         summary_.set_progress(now, end_time_);
         summary_.write();
       }
     }
+  }
+
+  // A window that may run again starts from a copy of the solver's state and
+  // the run's progress, and holds its outputs until it is complete.
+  void save_window_start() {
+    auto scope = summary_.phases().measure("save_state");
+    solver_->save_state();
+    saved_progress_ = progress_;
+    outputs_.hold();
+  }
+
+  void restore_window_start() {
+    auto scope = summary_.phases().measure("restore_state");
+    solver_->restore_state();
+    progress_ = *saved_progress_;
+    outputs_.discard();
   }
 
   void check_state(double t) const {
@@ -217,21 +254,23 @@ class CaseRun {
       if (!std::isfinite(h[c]) || !std::isfinite(q[c]) || h[c] < 0.0)
         throw cosim::NumericalError(
             fmt::format("cell {} has depth {} and discharge {} at t = {:.9g} s (step {})", c, h[c],
-                        q[c], t, steps_));
+                        q[c], t, progress_.steps));
   }
 
+  // Outputs due at t, through outputs_: held while the window may run again.
   void write_outputs(double t) {
     const bool every_step = c_.gauge_every <= 0.0;
-    if (gauges_ && (t == 0.0 || every_step || gauge_times_->due(t, tolerance_)))
-      gauges_->record(t, *solver_);
-    if (t > 0.0) gauge_times_->passed(t, tolerance_);
-    if (t == 0.0 || snapshots_.due(t, tolerance_)) {
+    if (gauges_ && (t == 0.0 || every_step || progress_.gauge_times->due(t, tolerance_)))
+      gauges_->record(t, *solver_, outputs_);
+    if (t > 0.0) progress_.gauge_times->passed(t, tolerance_);
+    if (t == 0.0 || progress_.snapshots.due(t, tolerance_)) {
       auto scope = summary_.phases().measure("output");
       const WaterStats s = water_stats(*solver_);
-      eta_max_ = std::max(eta_max_, s.eta_max);
-      water_->append({t, s.volume, s.eta_max, s.eta_min, s.speed_max});
+      progress_.eta_max = std::max(progress_.eta_max, s.eta_max);
+      const std::array<double, 5> row{t, s.volume, s.eta_max, s.eta_min, s.speed_max};
+      outputs_.append(*water_, row);
       if (snapshot_writer_) write_snapshot(t);
-      if (t > 0.0) snapshots_.passed(t, tolerance_);
+      if (t > 0.0) progress_.snapshots.passed(t, tolerance_);
     }
   }
 
@@ -256,11 +295,12 @@ class CaseRun {
         velocity_[k + 1] = h[c] > dry ? qy[c] / h[c] : 0.0;
       }
     }
-    snapshot_writer_->write(t, {{"h", {h, 1, "m"}},
-                                {"eta", {eta_, 1, "m"}},
-                                {"bed", {bed, 1, "m"}},
-                                {"discharge", {discharge_, dim, "m^2/s"}},
-                                {"velocity", {velocity_, dim, "m/s"}}});
+    outputs_.write(*snapshot_writer_, t,
+                   {{"h", {h, 1, "m"}},
+                    {"eta", {eta_, 1, "m"}},
+                    {"bed", {bed, 1, "m"}},
+                    {"discharge", {discharge_, dim, "m^2/s"}},
+                    {"velocity", {velocity_, dim, "m/s"}}});
   }
 
   void record_conserved(const Totals& totals, bool start) {
@@ -275,10 +315,10 @@ class CaseRun {
     set("momentum_x", c_.physics.density * totals.momentum_x, line ? "kg/s" : "kg m/s");
     if (!line) set("momentum_y", c_.physics.density * totals.momentum_y, "kg m/s");
     if (!start) {
-      summary_.set_steps(static_cast<std::int64_t>(steps_));
+      summary_.set_steps(static_cast<std::int64_t>(progress_.steps));
       summary_.set_windows(static_cast<std::int64_t>(participant_.window_index()));
-      summary_.set_metric("max_free_surface", eta_max_, "m");
-      if (steps_ > 0) summary_.set_metric("min_time_step", min_dt_, "s");
+      summary_.set_metric("max_free_surface", progress_.eta_max, "m");
+      if (progress_.steps > 0) summary_.set_metric("min_time_step", progress_.min_dt, "s");
       const auto& timings = participant_.timings();
       summary_.set_metric("coupling_wait", timings.waiting, "s");
     }
@@ -290,13 +330,11 @@ class CaseRun {
   std::unique_ptr<Solver> solver_;
   cosim::Participant participant_;
   CouplingSpec coupling_;
-  cosim::OutputSchedule snapshots_;
-  std::optional<cosim::OutputSchedule> gauge_times_;
+  RunProgress progress_;
+  std::optional<RunProgress> saved_progress_;
   double tolerance_;
   double end_time_ = 0.0;
-  std::size_t steps_ = 0;
-  double min_dt_ = infinity;
-  double eta_max_ = -infinity;
+  HeldOutputs outputs_;
   std::optional<cosim::SnapshotWriter> snapshot_writer_;
   std::optional<GaugeRecorder> gauges_;
   std::optional<cosim::TimeSeriesWriter> water_;

@@ -61,6 +61,10 @@ struct Solver1d::Impl {
   std::vector<double> h_stage, q_stage;  // the first SSP-RK2 stage
   solver_1d::ImposedMassFlux imposed;
   std::vector<solver_1d::StageScratch> scratch;
+  // save_state(): h, q and bed with their ghosts (the stage arrays and the
+  // scratch are rewritten by every step before they are read).
+  std::vector<double> saved_h, saved_q, saved_bed;
+  bool has_saved_state = false;
 
   std::size_t n() const { return cells.count; }
   void fill_ghosts(std::vector<double>& depth, std::vector<double>& discharge) const {
@@ -211,6 +215,23 @@ void Solver1d::step(double dt) {
       s.scratch);
   if (s.physics.manning > 0.0) s.apply_friction(dt);
   s.fill_ghosts(s.h, s.q);
+}
+
+void Solver1d::save_state() {
+  Impl& s = *impl_;
+  s.saved_h = s.h;
+  s.saved_q = s.q;
+  s.saved_bed = s.bed;
+  s.has_saved_state = true;
+}
+
+void Solver1d::restore_state() {
+  Impl& s = *impl_;
+  if (!s.has_saved_state)
+    throw cosim::Error(cosim::ExitCode::internal_error, "Solver1d: no saved state to restore");
+  s.h = s.saved_h;
+  s.q = s.saved_q;
+  s.bed = s.saved_bed;
 }
 
 std::span<const double> Solver1d::depth() const {

@@ -96,6 +96,11 @@ struct Solver2d::Impl {
   // Unpadded copies of the state for depth() and the discharges, refreshed on demand.
   mutable std::vector<double> h_cells, hu_cells, hv_cells;
   mutable bool cells_current = false;
+  // save_state(): the state with its primitives and ghosts, and the bed (the
+  // stage and the workspaces are rewritten by every step before they are read).
+  PaddedFields saved_state;
+  std::vector<double> saved_bed, saved_bed_cells;
+  bool has_saved_state = false;
 
   Impl(Grid2d g, Physics p, Scheme s, Boundaries2d b)
       : grid(g),
@@ -274,6 +279,24 @@ void Solver2d::step(double dt) {
   solver_2d::runge_kutta_stage(m.stage_arguments(dt, 0.5, true), m.stage, m.state, m.state,
                                m.workspaces);
   m.fill_ghosts(m.state);
+  m.cells_current = false;
+}
+
+void Solver2d::save_state() {
+  Impl& m = *impl_;
+  m.saved_state = m.state;
+  m.saved_bed = m.bed;
+  m.saved_bed_cells = m.bed_cells;
+  m.has_saved_state = true;
+}
+
+void Solver2d::restore_state() {
+  Impl& m = *impl_;
+  if (!m.has_saved_state)
+    throw cosim::Error(cosim::ExitCode::internal_error, "swe 2D solver: no saved state to restore");
+  m.state = m.saved_state;
+  m.bed = m.saved_bed;
+  m.bed_cells = m.saved_bed_cells;
   m.cells_current = false;
 }
 

@@ -63,6 +63,7 @@ struct CaseDescription {
   double end_time = 0.0;
   double min_time_step = 1e-9;
   double max_time_step = 0.0;  // 0: no limit beyond stability
+  double window = 0.0;         // standalone coupling window; 0: the whole run
 
   double output_every = 0.0;  // snapshots; 0: start and end only
   bool snapshots = true;

@@ -5,6 +5,7 @@
 
 #include "cosim/io/time_series_writer.hpp"
 #include "swe/case/case_description.hpp"
+#include "swe/io/held_outputs.hpp"
 #include "swe/solver.hpp"
 
 namespace swe {
@@ -16,7 +17,9 @@ class GaugeRecorder {
  public:
   GaugeRecorder(const std::filesystem::path& file, const std::vector<Gauge>& gauges,
                 const Solver& solver);
-  void record(double time, const Solver& solver);
+  // Appends the row of `time` through `outputs` (held while its window may
+  // run again).
+  void record(double time, const Solver& solver, HeldOutputs& outputs);
   std::size_t rows() const { return writer_.rows_written(); }
 
  private:

@@ -28,7 +28,12 @@ struct RunOptions {
 // Coupled, it reads `bed_elevation` on its cells (mesh `swe_cells`) every
 // step and writes `bed_traction` at the end of every window; the pair's step
 // is min(stable SWE step, the window's remainder) (Zheng et al., eq. 38,
-// with the MPM's own step inside the MPM process). Returns the exit code.
+// with the MPM's own step inside the MPM process). Windows can be repeated
+// (implicit coupling; standalone, --cosim-repeat-windows with the case's
+// time.window): the solver's state and the run's progress are copied at a
+// window's start and restored when it runs again, and the outputs due inside
+// it are held in memory until it is complete (wall time in the summary's
+// phases save_state and restore_state). Returns the exit code.
 int run_case(const RunOptions& options, const cosim::CouplingEndpoint& endpoint);
 
 }  // namespace swe
