@@ -45,13 +45,8 @@ struct Solver<Dim>::Impl {
   std::vector<Vec<Dim>> initial_half_length;  // for GimpDomain::deformed
   double time = 0.0;
   std::size_t steps = 0;
-  double contact_dissipation = 0.0;
-  double boundary_dissipation = 0.0;
-  double external_work = 0.0;
-  double internal_work = 0.0;
+  AccumulatedEnergy accumulated;
   double initial_strain_energy = 0.0;
-  double external_heat = 0.0;
-  double heat_through_faces = 0.0;
   // Faces with a wall keep the points inside; free faces let them leave (an error).
   Vec<Dim> wall_lower;
   Vec<Dim> wall_upper;
@@ -323,7 +318,7 @@ void Solver<Dim>::Impl::add_external_work(double dt) {
   double work = 0.0;
   for (std::size_t p = 0; p < particles.size(); ++p)
     work += particles.external_force[p].dot(particles.velocity[p]) * dt;
-  external_work += work;
+  accumulated.external_work += work;
 }
 
 template <int Dim>
@@ -421,12 +416,12 @@ template <int Dim>
 void Solver<Dim>::Impl::apply_contact_and_boundaries(double /*dt*/) {
   if (grid.fields > 1) {
     const auto result = detail::apply_grid_contact(contact, grid, impulse_on_field);
-    contact_dissipation += result.dissipated;
+    accumulated.contact_dissipation += result.dissipated;
     for (auto& body : bodies)
       if (body.is_rigid())
         body.contact_impulse = impulse_on_field[static_cast<std::size_t>(body.field)];
   }
-  boundary_dissipation +=
+  accumulated.boundary_dissipation +=
       detail::apply_face_conditions(description.boundaries, faces, contact.rigid, grid);
   const std::size_t total = grid.mass.size();
 #pragma omp parallel for schedule(static) if (worth_threads(total))
@@ -443,7 +438,7 @@ void Solver<Dim>::Impl::apply_heat_sources(double dt) {
   for (auto& source : heat_sources) source(time, dt, particles);
   double heat_in = 0.0;
   for (const double q : particles.external_heat) heat_in += q * dt;
-  external_heat += heat_in;
+  accumulated.external_heat += heat_in;
 }
 
 // Tran et al., MPMICE, eq. 39: heat capacity and temperature of the grid.
@@ -463,7 +458,7 @@ void Solver<Dim>::Impl::conduct_heat() {
 // Tran et al., MPMICE, eq. 56, with the fixed-temperature faces.
 template <int Dim>
 void Solver<Dim>::Impl::integrate_grid_temperature(double dt) {
-  heat_through_faces += heat->integrate(dt, grid);
+  accumulated.heat_through_faces += heat->integrate(dt, grid);
 }
 
 // Tran et al., MPMICE, eqs. 87 and 92.
@@ -618,7 +613,7 @@ void Solver<Dim>::Impl::update_kinematics_and_stress(double dt, bool use_remappe
     work += detail::update_point(*body.material, L, dt, average,
                                  description.bodies[particles.body[p]].porous, p, particles);
   }
-  internal_work += work;
+  accumulated.internal_work += work;
 }
 
 // cpGIMP (Bardenhagen and Kober 2004): the domain stays aligned with the
@@ -700,16 +695,16 @@ Totals<Dim> Solver<Dim>::Impl::totals() const {
                                  dev.squaredNorm() / (4.0 * body.material->shear_modulus()));
     }
   }
-  t.contact_dissipation = contact_dissipation;
-  t.boundary_dissipation = boundary_dissipation;
-  t.external_work = external_work;
-  t.internal_work = internal_work;
-  t.plastic_dissipation = internal_work - (t.strain_energy - initial_strain_energy);
+  t.contact_dissipation = accumulated.contact_dissipation;
+  t.boundary_dissipation = accumulated.boundary_dissipation;
+  t.external_work = accumulated.external_work;
+  t.internal_work = accumulated.internal_work;
+  t.plastic_dissipation = accumulated.internal_work - (t.strain_energy - initial_strain_energy);
   if (heat) {
     for (std::size_t p = 0; p < particles.size(); ++p)
       t.thermal_energy += particles.heat_capacity[p] * particles.temperature[p];
-    t.external_heat = external_heat;
-    t.heat_through_faces = heat_through_faces;
+    t.external_heat = accumulated.external_heat;
+    t.heat_through_faces = accumulated.heat_through_faces;
   }
   return t;
 }
@@ -763,6 +758,37 @@ double Solver<Dim>::time() const {
 template <int Dim>
 std::size_t Solver<Dim>::step_count() const {
   return impl_->steps;
+}
+template <int Dim>
+void Solver<Dim>::save(SolverState<Dim>& state) const {
+  const Impl& s = *impl_;
+  state.particles_ = s.particles;
+  state.rigid_velocity_.resize(s.bodies.size());
+  state.contact_impulse_.resize(s.bodies.size());
+  for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+    state.rigid_velocity_[b] = s.bodies[b].rigid_velocity;
+    state.contact_impulse_[b] = s.bodies[b].contact_impulse;
+  }
+  state.time_ = s.time;
+  state.steps_ = s.steps;
+  state.accumulated_ = s.accumulated;
+  state.saved_ = true;
+}
+template <int Dim>
+void Solver<Dim>::restore(const SolverState<Dim>& state) {
+  Impl& s = *impl_;
+  if (!state.saved_ || state.particles_.size() != s.particles.size() ||
+      state.rigid_velocity_.size() != s.bodies.size())
+    throw cosim::Error(cosim::ExitCode::internal_error,
+                       "restoring a solver state that was not saved from this solver");
+  s.particles = state.particles_;
+  for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+    s.bodies[b].rigid_velocity = state.rigid_velocity_[b];
+    s.bodies[b].contact_impulse = state.contact_impulse_[b];
+  }
+  s.time = state.time_;
+  s.steps = state.steps_;
+  s.accumulated = state.accumulated_;
 }
 template <int Dim>
 void Solver<Dim>::add_particle_force_source(ParticleForceSource source) {

@@ -8,6 +8,7 @@
 #include "mpm/case/case_description.hpp"
 #include "mpm/grid/grid.hpp"
 #include "mpm/particles/particles.hpp"
+#include "mpm/solver/solver_state.hpp"
 
 namespace mpm {
 
@@ -56,6 +57,13 @@ class Solver {
 
   double time() const;
   std::size_t step_count() const;
+
+  // Copies the state the steps carry into `state` (see SolverState), and
+  // puts it back: the steps after restore() repeat those after save() bit
+  // for bit. Restoring a state never saved, or one of another solver's
+  // size, is an internal error.
+  void save(SolverState<Dim>& state) const;
+  void restore(const SolverState<Dim>& state);
 
   // Coupling and extra physics hook in here. Force sources run each step
   // after the surface loads and add their force [N] to
