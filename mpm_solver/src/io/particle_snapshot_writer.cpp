@@ -44,38 +44,81 @@ ParticleSnapshotWriter<Dim>::ParticleSnapshotWriter(const std::filesystem::path&
 
 template <int Dim>
 void ParticleSnapshotWriter<Dim>::write(const Solver<Dim>& solver) {
+  hold(solver);
+  write_held();
+}
+
+template <int Dim>
+void ParticleSnapshotWriter<Dim>::hold(const Solver<Dim>& solver) {
+  if (held_ == snapshots_.size()) snapshots_.emplace_back();
+  take(solver, snapshots_[held_]);
+  ++held_;
+}
+
+template <int Dim>
+void ParticleSnapshotWriter<Dim>::write_held() {
+  for (std::size_t k = 0; k < held_; ++k) write(snapshots_[k]);
+  held_ = 0;
+}
+
+template <int Dim>
+void ParticleSnapshotWriter<Dim>::take(const Solver<Dim>& solver, Snapshot& snapshot) const {
   const Particles<Dim>& p = solver.particles();
   const std::size_t n = p.size();
-  for (auto* buffer : {&velocity_, &displacement_, &stress_, &effective_stress_, &strain_, &body_})
-    buffer->clear();
-  for (std::size_t i = 0; i < n; ++i) {
-    append<Dim>(velocity_, p.velocity[i]);
-    append<Dim>(displacement_, Vec<Dim>(p.position[i] - initial_position_[i]));
-    append(stress_, to_voigt(solver.total_stress(i)));
-    append(effective_stress_, p.stress[i]);
-    append(strain_, to_voigt(logarithmic_strain(embed<Dim>(p.deformation_gradient[i], 1.0))));
-    body_.push_back(static_cast<double>(p.body[i]));
-  }
-  cosim::SnapshotFields fields{
-      {"velocity", {velocity_, Dim, "m/s"}},
-      {"displacement", {displacement_, Dim, "m"}},
-      {"stress", {stress_, 6, "Pa"}},
-      {"effective_stress", {effective_stress_, 6, "Pa"}},
-      {"strain", {strain_, 6, "1"}},
-      {"body", {body_, 1, "1"}},
-      {"mass", {p.mass, 1, Dim == 2 ? "kg/m" : "kg"}},
-      {"volume", {p.volume, 1, Dim == 2 ? "m^2" : "m^3"}},
+  snapshot.time = solver.time();
+  snapshot.position.clear();
+  for (const auto& x : p.position) append<Dim>(snapshot.position, x);
+  snapshot.volume = p.volume;
+  snapshot.field_count = 0;
+  // The next field's values, emptied; valid until the next call.
+  const auto field = [&](const char* name, int components, const char* unit) -> auto& {
+    if (snapshot.field_count == snapshot.fields.size()) snapshot.fields.emplace_back();
+    Field& f = snapshot.fields[snapshot.field_count++];
+    f.name = name;
+    f.components = components;
+    f.unit = unit;
+    f.values.clear();
+    return f.values;
   };
+  auto& velocity = field("velocity", Dim, "m/s");
+  for (std::size_t i = 0; i < n; ++i) append<Dim>(velocity, p.velocity[i]);
+  auto& displacement = field("displacement", Dim, "m");
+  for (std::size_t i = 0; i < n; ++i)
+    append<Dim>(displacement, Vec<Dim>(p.position[i] - initial_position_[i]));
+  auto& stress = field("stress", 6, "Pa");
+  for (std::size_t i = 0; i < n; ++i) append(stress, to_voigt(solver.total_stress(i)));
+  auto& effective_stress = field("effective_stress", 6, "Pa");
+  for (std::size_t i = 0; i < n; ++i) append(effective_stress, p.stress[i]);
+  auto& strain = field("strain", 6, "1");
+  for (std::size_t i = 0; i < n; ++i)
+    append(strain, to_voigt(logarithmic_strain(embed<Dim>(p.deformation_gradient[i], 1.0))));
+  auto& body = field("body", 1, "1");
+  for (std::size_t i = 0; i < n; ++i) body.push_back(static_cast<double>(p.body[i]));
+  field("mass", 1, Dim == 2 ? "kg/m" : "kg") = p.mass;
+  field("volume", 1, Dim == 2 ? "m^2" : "m^3") = p.volume;
   // Per-particle scalars the solver may leave unallocated.
   const auto scalar = [&](const char* name, const std::vector<double>& values, const char* unit) {
-    if (values.size() == n) fields.emplace(name, cosim::FieldView{values, 1, unit});
+    if (values.size() == n) field(name, 1, unit) = values;
   };
   scalar("plastic_strain", p.plastic_strain, "1");
   scalar("damage", p.damage, "1");
   scalar("porosity", p.porosity, "1");
   scalar("pore_pressure", p.pore_pressure, "Pa");
   if (solver.conducts_heat()) scalar("temperature", p.temperature, "K");
-  writer_.write(solver.time(), point_cloud(p), fields);
+}
+
+template <int Dim>
+void ParticleSnapshotWriter<Dim>::write(const Snapshot& snapshot) {
+  cosim::PointCloud cloud;
+  cloud.dim = Dim;
+  cloud.positions = snapshot.position;
+  cloud.volumes = snapshot.volume;
+  cosim::SnapshotFields fields;
+  for (std::size_t k = 0; k < snapshot.field_count; ++k) {
+    const Field& f = snapshot.fields[k];
+    fields.emplace(f.name, cosim::FieldView{f.values, f.components, f.unit});
+  }
+  writer_.write(snapshot.time, cosim::Mesh{"particles", std::move(cloud)}, fields);
 }
 
 template class ParticleSnapshotWriter<2>;

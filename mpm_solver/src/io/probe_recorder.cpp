@@ -1,5 +1,6 @@
 #include "mpm/io/probe_recorder.hpp"
 
+#include <span>
 #include <string>
 
 namespace mpm {
@@ -44,28 +45,40 @@ template <int Dim>
 ProbeRecorder<Dim>::ProbeRecorder(const std::filesystem::path& file, const Solver<Dim>& solver)
     : probes_(solver.description().probes),
       thermal_(solver.conducts_heat()),
-      writer_(file, columns(probes_, thermal_)) {
+      writer_(file, columns(probes_, thermal_)),
+      columns_(writer_.columns().size()) {
   for (const auto& probe : probes_)
     initial_position_.push_back(solver.particles().position[probe.particle]);
 }
 
 template <int Dim>
 void ProbeRecorder<Dim>::record(const Solver<Dim>& solver) {
+  hold(solver);
+  write_held();
+}
+
+template <int Dim>
+void ProbeRecorder<Dim>::write_held() {
+  for (std::size_t begin = 0; begin < held_.size(); begin += columns_)
+    writer_.append(std::span<const double>(held_).subspan(begin, columns_));
+  held_.clear();
+}
+
+template <int Dim>
+void ProbeRecorder<Dim>::hold(const Solver<Dim>& solver) {
   const Particles<Dim>& p = solver.particles();
-  row_.clear();
-  row_.push_back(solver.time());
+  held_.push_back(solver.time());
   for (std::size_t k = 0; k < probes_.size(); ++k) {
     const std::size_t i = probes_[k].particle;
     const Vec<Dim> u = p.position[i] - initial_position_[k];
-    for (int d = 0; d < Dim; ++d) row_.push_back(u[d]);
-    for (int d = 0; d < Dim; ++d) row_.push_back(p.velocity[i][d]);
+    for (int d = 0; d < Dim; ++d) held_.push_back(u[d]);
+    for (int d = 0; d < Dim; ++d) held_.push_back(p.velocity[i][d]);
     const Voigt sigma = to_voigt(solver.total_stress(i));
-    for (const std::size_t c : stress_components<Dim>()) row_.push_back(sigma[c]);
-    row_.push_back(i < p.pore_pressure.size() ? p.pore_pressure[i] : 0.0);
-    row_.push_back(i < p.plastic_strain.size() ? p.plastic_strain[i] : 0.0);
-    if (thermal_) row_.push_back(p.temperature[i]);
+    for (const std::size_t c : stress_components<Dim>()) held_.push_back(sigma[c]);
+    held_.push_back(i < p.pore_pressure.size() ? p.pore_pressure[i] : 0.0);
+    held_.push_back(i < p.plastic_strain.size() ? p.plastic_strain[i] : 0.0);
+    if (thermal_) held_.push_back(p.temperature[i]);
   }
-  writer_.append(row_);
 }
 
 template class ProbeRecorder<2>;

@@ -26,11 +26,24 @@ class GridSnapshotWriter {
   GridSnapshotWriter(const std::filesystem::path& directory, const Grid<Dim>& grid);
   void write(double time, const Grid<Dim>& grid);
 
+  // A snapshot taken now and kept in memory until write_held() writes it,
+  // or drop_held() forgets it (as ParticleSnapshotWriter).
+  void hold(double time, const Grid<Dim>& grid);
+  void write_held();
+  void drop_held() { held_ = 0; }
+  std::size_t held() const { return held_; }
+
   std::size_t snapshots_written() const { return writer_.snapshots_written(); }
 
  private:
+  struct Snapshot {
+    double time = 0.0;
+    std::vector<double> mass, velocity;
+  };
+
   cosim::SnapshotWriter writer_;
-  std::vector<double> mass_, velocity_;
+  std::vector<Snapshot> snapshots_;  // the first held_ are held
+  std::size_t held_ = 0;
 };
 
 extern template class GridSnapshotWriter<2>;

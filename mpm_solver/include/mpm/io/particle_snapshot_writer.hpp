@@ -25,14 +25,40 @@ class ParticleSnapshotWriter {
 
   void write(const Solver<Dim>& solver);
 
+  // A snapshot taken now and kept in memory until write_held() writes it,
+  // or drop_held() forgets it (the outputs of a coupling window that may
+  // run again). Snapshots are written in the order they were held; their
+  // buffers are kept for the next ones.
+  void hold(const Solver<Dim>& solver);
+  void write_held();
+  void drop_held() { held_ = 0; }
+  std::size_t held() const { return held_; }
+
   std::size_t snapshots_written() const { return writer_.snapshots_written(); }
   std::filesystem::path index_path() const { return writer_.index_path(); }
 
  private:
+  // What one snapshot writes: the point cloud and its fields, element-major.
+  struct Field {
+    const char* name = "";
+    int components = 1;
+    const char* unit = "";
+    std::vector<double> values;
+  };
+  struct Snapshot {
+    double time = 0.0;
+    std::vector<double> position;
+    std::vector<double> volume;
+    std::vector<Field> fields;  // the first field_count are this snapshot's
+    std::size_t field_count = 0;
+  };
+  void take(const Solver<Dim>& solver, Snapshot& snapshot) const;
+  void write(const Snapshot& snapshot);
+
   std::vector<Vec<Dim>> initial_position_;
   cosim::SnapshotWriter writer_;
-  // Buffers reused between snapshots.
-  std::vector<double> velocity_, displacement_, stress_, effective_stress_, strain_, body_;
+  std::vector<Snapshot> snapshots_;  // the first held_ are held
+  std::size_t held_ = 0;
 };
 
 // Hencky strain 1/2 ln(F F^T) of a deformation gradient (3 x 3, det F > 0).

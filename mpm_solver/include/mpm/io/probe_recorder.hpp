@@ -21,6 +21,14 @@ class ProbeRecorder {
   void record(const Solver<Dim>& solver);
   std::size_t rows_written() const { return writer_.rows_written(); }
 
+  // A row taken now and kept in memory until write_held() appends it, or
+  // drop_held() forgets it (the outputs of a coupling window that may run
+  // again). Rows are appended in the order they were held.
+  void hold(const Solver<Dim>& solver);
+  void write_held();
+  void drop_held() { held_.clear(); }
+  std::size_t held() const { return held_.size() / columns_; }
+
   static std::vector<std::string> columns(const std::vector<ProbeSpec>& probes,
                                           bool thermal = false);
 
@@ -29,7 +37,8 @@ class ProbeRecorder {
   bool thermal_;
   std::vector<Vec<Dim>> initial_position_;  // per probe
   cosim::TimeSeriesWriter writer_;
-  std::vector<double> row_;
+  std::size_t columns_;
+  std::vector<double> held_;  // held rows, one after the other
 };
 
 extern template class ProbeRecorder<2>;
