@@ -35,6 +35,7 @@ struct MpmCoupling<Dim>::State {
   std::optional<ExchangeGrid<Dim>> exchange;
   std::optional<SurfaceGrid<Dim>> surface;
   CouplingDiagnostics<Dim> diagnostics;
+  CouplingDiagnostics<Dim> saved_diagnostics;  // at the start of a window that may run again
 
   std::vector<double> cell_values;    // scratch for reads
   std::vector<Vec<Dim>> scratch;      // per particle
@@ -255,6 +256,16 @@ void MpmCoupling<Dim>::write_fields() {
     s.channel->write(n::bed_elevation,
                      bed_elevation(*s.surface, particles, s.roles, s.spec.surface->strips));
   ++s.diagnostics.writes;
+}
+
+template <int Dim>
+void MpmCoupling<Dim>::save_state() {
+  state_->saved_diagnostics = state_->diagnostics;
+}
+
+template <int Dim>
+void MpmCoupling<Dim>::restore_state() {
+  state_->diagnostics = state_->saved_diagnostics;
 }
 
 template <int Dim>

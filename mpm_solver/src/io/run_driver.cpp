@@ -91,6 +91,16 @@ nlohmann::json case_section(const CaseDescription& c) {
           {"end_time_s", c.time.end_time}};
 }
 
+// What the loop carries besides the solver: when the next outputs fall due,
+// the time of the last snapshot and the range of the stable time step.
+struct LoopProgress {
+  cosim::OutputSchedule snapshots;
+  cosim::OutputSchedule probe_times;
+  double last_snapshot = -infinity;
+  double min_stable = infinity;
+  double max_stable = 0.0;
+};
+
 template <int Dim>
 class CaseRun {
  public:
@@ -102,10 +112,11 @@ class CaseRun {
         solver_(description),
         end_time_(description.time.end_time),
         min_time_step_(description.time.min_time_step),
-        snapshots_(description.output.every, end_time_),
-        probe_times_(description.output.probe_every > 0.0 ? description.output.probe_every
-                                                          : description.output.every,
-                     end_time_),
+        progress_{cosim::OutputSchedule(description.output.every, end_time_),
+                  cosim::OutputSchedule(description.output.probe_every > 0.0
+                                            ? description.output.probe_every
+                                            : description.output.every,
+                                        end_time_)},
         tolerance_(1e-10 * end_time_) {}
 
   void run() {
@@ -117,8 +128,9 @@ class CaseRun {
       }
       record_conserved(summary_, solver_.totals(), solver_.conducts_heat(), true);
       solver_.check_state();
-      write_snapshot();
-      record_probes();
+      hold_snapshot();
+      hold_probes();
+      write_held_outputs();
       summary_.write();
       loop();
       finish_outputs();
@@ -163,6 +175,7 @@ class CaseRun {
       // A stop asked for by a signal ends the run here, between steps, as an
       // error does: the summary says why (coupled, the participant checks too).
       cosim::runtime::throw_if_stop_requested();
+      if (observer_ && observer_->must_save_state()) save_window_start();
       const double t = solver_.time();
       const double stable = solver_.stable_time_step();
       if (!(stable >= min_time_step_))
@@ -176,24 +189,32 @@ class CaseRun {
       } else {
         dt = std::min(dt, end_time_ - t);
       }
-      const double next_output = std::min(snapshots_.next(), probe_times_.next());
+      const double next_output = std::min(progress_.snapshots.next(), progress_.probe_times.next());
       if (next_output > t + tolerance_) dt = std::min(dt, next_output - t);
       {
         auto scope = summary_.phases().measure("advance");
         solver_.step(dt);
         if (observer_) observer_->after_step(solver_, dt);
       }
-      min_stable_ = std::min(min_stable_, stable);
-      max_stable_ = std::max(max_stable_, stable);
+      if (observer_ && observer_->must_restore_state()) {
+        restore_window_start();
+        continue;
+      }
+      progress_.min_stable = std::min(progress_.min_stable, stable);
+      progress_.max_stable = std::max(progress_.max_stable, stable);
 
       const double now = solver_.time();
-      const bool snapshot = snapshots_.due(now, tolerance_);
-      const bool probe = probe_times_.due(now, tolerance_);
+      const bool snapshot = progress_.snapshots.due(now, tolerance_);
+      const bool probe = progress_.probe_times.due(now, tolerance_);
       if (snapshot || probe ||
           solver_.step_count() % static_cast<std::size_t>(options_.check_every) == 0)
         solver_.check_state();
-      if (snapshot) write_snapshot();
-      if (probe) record_probes();
+      if (snapshot) hold_snapshot();
+      if (probe) hold_probes();
+      // Inside a window that may run again, outputs and progress wait for its end.
+      if (window_may_repeat_ && !observer_->is_window_complete()) continue;
+      window_may_repeat_ = false;
+      write_held_outputs();
 
       const auto wall = Clock::now();
       const double since = std::chrono::duration<double>(wall - last_progress).count();
@@ -210,28 +231,65 @@ class CaseRun {
     }
   }
 
-  void write_snapshot() {
-    auto scope = summary_.phases().measure("output");
-    particles_->write(solver_);
-    if (grid_) grid_->write(solver_.time(), solver_.grid());
-    last_snapshot_ = solver_.time();
-    snapshots_.passed(solver_.time(), tolerance_);
-    summary_.set_steps(static_cast<std::int64_t>(solver_.step_count()));
-    summary_.write();
+  // The start of a window the observer may run again: the solver's state and
+  // the loop's, in buffers that keep their capacity from window to window.
+  void save_window_start() {
+    auto scope = summary_.phases().measure("save_restore");
+    solver_.save(saved_solver_);
+    saved_progress_ = progress_;
+    window_may_repeat_ = true;
+    ++saves_;
   }
 
-  void record_probes() {
+  void restore_window_start() {
+    auto scope = summary_.phases().measure("save_restore");
+    if (!saved_progress_)
+      throw cosim::Error(cosim::ExitCode::internal_error,
+                         "asked to repeat a window whose start was not saved");
+    solver_.restore(saved_solver_);
+    progress_ = *saved_progress_;
+    particles_->drop_held();
+    if (grid_) grid_->drop_held();
+    if (probes_) probes_->drop_held();
+    ++restores_;
+  }
+
+  void hold_snapshot() {
+    auto scope = summary_.phases().measure("output");
+    particles_->hold(solver_);
+    if (grid_) grid_->hold(solver_.time(), solver_.grid());
+    progress_.last_snapshot = solver_.time();
+    progress_.snapshots.passed(solver_.time(), tolerance_);
+  }
+
+  void hold_probes() {
     if (probes_) {
       auto scope = summary_.phases().measure("output");
-      probes_->record(solver_);
+      probes_->hold(solver_);
     }
-    probe_times_.passed(solver_.time(), tolerance_);
+    progress_.probe_times.passed(solver_.time(), tolerance_);
+  }
+
+  void write_held_outputs() {
+    const bool snapshot = particles_->held() > 0;
+    if (!snapshot && !(probes_ && probes_->held() > 0)) return;
+    auto scope = summary_.phases().measure("output");
+    particles_->write_held();
+    if (grid_) grid_->write_held();
+    if (probes_) probes_->write_held();
+    if (snapshot) {
+      summary_.set_steps(static_cast<std::int64_t>(solver_.step_count()));
+      summary_.write();
+    }
   }
 
   // A coupled run may end before or after the case's end time.
   void finish_outputs() {
     solver_.check_state();
-    if (solver_.time() > last_snapshot_ + tolerance_) write_snapshot();
+    if (solver_.time() > progress_.last_snapshot + tolerance_) {
+      hold_snapshot();
+      write_held_outputs();
+    }
   }
 
   void record_end() noexcept {
@@ -247,11 +305,18 @@ class CaseRun {
       summary_.set_metric("particle_updates_per_second", advance > 0.0 ? updates / advance : 0.0,
                           "1/s");
       if (steps > 0) {
-        summary_.set_metric("stable_time_step_min", min_stable_, "s");
-        summary_.set_metric("stable_time_step_max", max_stable_, "s");
+        summary_.set_metric("stable_time_step_min", progress_.min_stable, "s");
+        summary_.set_metric("stable_time_step_max", progress_.max_stable, "s");
       }
       if (particles_)
         summary_.set_metric("snapshots", static_cast<double>(particles_->snapshots_written()), "1");
+      if (saves_ > 0) {
+        // Windows that may run again: the cost of going back to their start.
+        summary_.set_metric("state_saves", static_cast<double>(saves_), "1");
+        summary_.set_metric("state_restores", static_cast<double>(restores_), "1");
+        summary_.set_metric("save_restore_seconds", summary_.phases().seconds("save_restore"), "s");
+        summary_.set_metric("saved_state_bytes", saved_solver_.bytes(), "B");
+      }
       if (observer_) {
         auto coupling = observer_->summary();
         if (!coupling.is_null()) summary_.set_section("coupling", std::move(coupling));
@@ -267,15 +332,17 @@ class CaseRun {
   Solver<Dim> solver_;
   double end_time_;
   double min_time_step_;
-  cosim::OutputSchedule snapshots_;
-  cosim::OutputSchedule probe_times_;
+  LoopProgress progress_;
   double tolerance_;
-  double last_snapshot_ = -infinity;
-  double min_stable_ = infinity;
-  double max_stable_ = 0.0;
   std::optional<ParticleSnapshotWriter<Dim>> particles_;
   std::optional<GridSnapshotWriter<Dim>> grid_;
   std::optional<ProbeRecorder<Dim>> probes_;
+  // The start of the current window, when it may run again (observer_->must_save_state()).
+  SolverState<Dim> saved_solver_;
+  std::optional<LoopProgress> saved_progress_;
+  bool window_may_repeat_ = false;
+  std::size_t saves_ = 0;
+  std::size_t restores_ = 0;
 };
 
 template <int Dim>

@@ -94,6 +94,12 @@ class MpmCoupling {
   // Writes every declared field from the current particles.
   void write_fields();
 
+  // What the coupling carries from step to step (its diagnostics; the
+  // particles are the solver's to save): kept at a window's start, put
+  // back when the window runs again.
+  void save_state();
+  void restore_state();
+
   const ExchangeGrid<Dim>* exchange_grid() const;
   const SurfaceGrid<Dim>* surface() const;
   const std::vector<BodyRole>& roles() const;

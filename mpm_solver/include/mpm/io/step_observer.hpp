@@ -19,14 +19,24 @@ namespace mpm {
 //                                       the solver here, declare meshes and
 //                                       fields, connect
 //   while (is_ongoing()):               (standalone: while t < end_time)
+//     if must_save_state():             save the solver's state and the driver's
 //     dt = min(stable step, max_time_step(), time to the next output)
 //     solver.step(dt)
 //     after_step(solver, dt)            write fields, advance the window
+//     if must_restore_state():          restore both, run the window again
 //   finalize() | abort(reason)          at the end, or on any error
 //
 // While an observer is present its is_ongoing() alone decides when the run
 // ends (a coupled run's end time is the job's); outputs still follow the
 // case's output.every and time.end_time.
+//
+// Implicit coupling repeats a window until the exchanged fields converge
+// (architecture.md §13). An observer that may repeat windows says so with
+// must_save_state() at each window's start and must_restore_state() after
+// the after_step() that ended a window which must run again; it saves and
+// restores its own state itself (in after_step). Outputs that fall due
+// inside a window that may run again are held until is_window_complete(),
+// and dropped on a restore: a repeated window leaves no trace.
 template <int Dim>
 class StepObserver {
  public:
@@ -35,6 +45,9 @@ class StepObserver {
   virtual double max_time_step() const { return std::numeric_limits<double>::infinity(); }
   virtual void after_step(Solver<Dim>& solver, double dt) = 0;
   virtual bool is_ongoing() const = 0;
+  virtual bool must_save_state() const { return false; }
+  virtual bool must_restore_state() const { return false; }
+  virtual bool is_window_complete() const { return true; }
   virtual void finalize() {}
   virtual void abort(std::string_view reason) { (void)reason; }
   // Added to summary.json under "coupling" (timings, windows), when not null.
