@@ -25,9 +25,11 @@ int main(int argc, char** argv) {
              options.threads = line.threads;
              options.verbosity = line.verbosity;
              options.reuse = line.reuse;
-             // Coupled (an endpoint from `cosim run`): the coupling concept's
-             // observers drive a cosim::Participant alongside the time loop.
-             if (line.endpoint.is_standalone()) return mpm::run_case(options);
+             // Coupled (an endpoint from `cosim run`), or standalone in
+             // windows: the coupling concept's observers drive a
+             // cosim::Participant alongside the time loop.
+             if (line.endpoint.is_standalone())
+               return mpm::run_case(options, mpm::coupling::standalone_observers(line.endpoint));
              return mpm::run_case(options, mpm::coupling::coupling_observers(line.endpoint));
            },
        .validate =

@@ -36,7 +36,11 @@ Schema time_schema() {
       .optional("min_time_step", Schema::number().positive().unit("s").default_value("1e-12"),
                 "A stable time step below this ends the run as a numerical failure (exit 4).")
       .optional("max_time_step", Schema::number().positive().unit("s").default_note("none"),
-                "Upper bound of the time step.");
+                "Upper bound of the time step.")
+      .optional("window", Schema::number().positive().unit("s").default_note("none"),
+                "Standalone: run in coupling windows of this length through the participant "
+                "API, each ending on a step (--cosim-repeat-windows runs every window twice, "
+                "going back to its start once). Coupled, the job's window applies.");
   return time;
 }
 

@@ -168,6 +168,7 @@ class CaseReader {
     c_.time.min_time_step = time.get<double>("min_time_step");
     c_.time.max_time_step =
         time.get<double>("max_time_step", std::numeric_limits<double>::infinity());
+    c_.time.window = time.get<double>("window", 0.0);
     if (c_.time.min_time_step > c_.time.max_time_step)
       time["min_time_step"].fail("min_time_step exceeds max_time_step");
   }

@@ -25,15 +25,21 @@ CouplingSpec coupling_spec_of(const CaseDescription& description) {
 
 template <int Dim>
 CouplingObserver<Dim>::CouplingObserver(cosim::CouplingEndpoint endpoint, std::string name,
-                                        CouplingSpec spec)
-    : endpoint_(std::move(endpoint)), name_(std::move(name)), spec_(std::move(spec)) {}
+                                        CouplingSpec spec, double standalone_window)
+    : endpoint_(std::move(endpoint)),
+      name_(std::move(name)),
+      spec_(std::move(spec)),
+      standalone_window_(standalone_window) {}
 
 template <int Dim>
 void CouplingObserver<Dim>::initialize(Solver<Dim>& solver) {
   participant_ = std::make_unique<cosim::Participant>(endpoint_.name_or(name_), endpoint_);
+  participant_->declare_repeatable();
+  if (standalone_window_ > 0.0) participant_->set_standalone_window(standalone_window_);
   coupling_ = attach_coupling(solver, *participant_, spec_);
   coupling_->declare();
   participant_->initialize(solver.time(), solver.description().time.end_time);
+  if (participant_->must_save_state()) coupling_->save_state();
 }
 
 template <int Dim>
@@ -45,11 +51,28 @@ template <int Dim>
 void CouplingObserver<Dim>::after_step(Solver<Dim>& /*solver*/, double dt) {
   coupling_->after_step(dt);
   participant_->advance(dt);
+  if (participant_->must_restore_state()) coupling_->restore_state();
+  if (participant_->must_save_state()) coupling_->save_state();
 }
 
 template <int Dim>
 bool CouplingObserver<Dim>::is_ongoing() const {
   return participant_ && participant_->is_coupling_ongoing();
+}
+
+template <int Dim>
+bool CouplingObserver<Dim>::must_save_state() const {
+  return participant_ && participant_->must_save_state();
+}
+
+template <int Dim>
+bool CouplingObserver<Dim>::must_restore_state() const {
+  return participant_ && participant_->must_restore_state();
+}
+
+template <int Dim>
+bool CouplingObserver<Dim>::is_window_complete() const {
+  return participant_ && participant_->is_window_complete();
 }
 
 template <int Dim>
@@ -70,6 +93,7 @@ nlohmann::json CouplingObserver<Dim>::summary() const {
   return {{"participant", participant_->name()},
           {"coupled", participant_->is_coupled()},
           {"windows", t.windows},
+          {"iterations", t.iterations},
           {"waiting_s", t.waiting},
           {"transport_s", t.transport},
           {"writes", d.writes},
@@ -89,11 +113,34 @@ StepObservers coupling_observers(const cosim::CouplingEndpoint& endpoint,
   StepObservers observers;
   observers.for_2d = [endpoint,
                       default_name](const CaseDescription& d) -> std::unique_ptr<StepObserver<2>> {
-    return std::make_unique<CouplingObserver<2>>(endpoint, default_name, coupling_spec_of(d));
+    return std::make_unique<CouplingObserver<2>>(endpoint, default_name, coupling_spec_of(d),
+                                                 d.time.window);
   };
   observers.for_3d = [endpoint,
                       default_name](const CaseDescription& d) -> std::unique_ptr<StepObserver<3>> {
-    return std::make_unique<CouplingObserver<3>>(endpoint, default_name, coupling_spec_of(d));
+    return std::make_unique<CouplingObserver<3>>(endpoint, default_name, coupling_spec_of(d),
+                                                 d.time.window);
+  };
+  return observers;
+}
+
+StepObservers standalone_observers(const cosim::CouplingEndpoint& endpoint,
+                                   const std::string& default_name) {
+  const auto windowed = [endpoint](const CaseDescription& d) {
+    return d.time.window > 0.0 || endpoint.repeat_windows;
+  };
+  StepObservers observers;
+  observers.for_2d = [endpoint, default_name,
+                      windowed](const CaseDescription& d) -> std::unique_ptr<StepObserver<2>> {
+    if (!windowed(d)) return nullptr;
+    return std::make_unique<CouplingObserver<2>>(endpoint, default_name, CouplingSpec{},
+                                                 d.time.window);
+  };
+  observers.for_3d = [endpoint, default_name,
+                      windowed](const CaseDescription& d) -> std::unique_ptr<StepObserver<3>> {
+    if (!windowed(d)) return nullptr;
+    return std::make_unique<CouplingObserver<3>>(endpoint, default_name, CouplingSpec{},
+                                                 d.time.window);
   };
   return observers;
 }

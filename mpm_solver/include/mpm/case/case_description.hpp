@@ -168,6 +168,7 @@ struct TimeSpec {
   double safety_factor = 0.5;    // alpha of Zheng et al., eq. 23
   double min_time_step = 1e-12;  // a step below this ends the run (exit 4)
   double max_time_step = std::numeric_limits<double>::infinity();
+  double window = 0.0;  // standalone coupling window [s]; 0: none
 };
 
 struct OutputSpec {

@@ -12,22 +12,33 @@
 // that owns the cosim::Participant and the MpmCoupling and runs the call
 // order of mpm_coupling.hpp inside mpm::run_case:
 //
-//   initialize(solver)    participant, attach_coupling, declare, participant.initialize
+//   initialize(solver)    participant (repeatable), attach_coupling, declare,
+//                         participant.initialize
 //   max_time_step()       participant.max_time_step()
-//   after_step(dt)        coupling.after_step(dt), participant.advance(dt)
+//   after_step(dt)        coupling.after_step(dt), participant.advance(dt), then
+//                         the coupling's state restored (the window runs again)
+//                         or saved (a window that may run again starts)
 //   is_ongoing()          participant.is_coupling_ongoing()
 //   finalize() / abort()  participant.finalize() / abort(reason)
+//
+// Standalone (no endpoint) the participant runs the case in windows of
+// `standalone_window` (0: one window), each run twice with
+// --cosim-repeat-windows.
 namespace mpm::coupling {
 
 template <int Dim>
 class CouplingObserver final : public StepObserver<Dim> {
  public:
-  CouplingObserver(cosim::CouplingEndpoint endpoint, std::string name, CouplingSpec spec);
+  CouplingObserver(cosim::CouplingEndpoint endpoint, std::string name, CouplingSpec spec,
+                   double standalone_window = 0.0);
 
   void initialize(Solver<Dim>& solver) override;
   double max_time_step() const override;
   void after_step(Solver<Dim>& solver, double dt) override;
   bool is_ongoing() const override;
+  bool must_save_state() const override;
+  bool must_restore_state() const override;
+  bool is_window_complete() const override;
   void finalize() override;
   void abort(std::string_view reason) override;
   nlohmann::json summary() const override;
@@ -38,6 +49,7 @@ class CouplingObserver final : public StepObserver<Dim> {
   cosim::CouplingEndpoint endpoint_;
   std::string name_;
   CouplingSpec spec_;
+  double standalone_window_;
   std::unique_ptr<cosim::Participant> participant_;
   std::unique_ptr<MpmCoupling<Dim>> coupling_;
 };
@@ -47,6 +59,13 @@ class CouplingObserver final : public StepObserver<Dim> {
 // is declared) and joins the job as endpoint.name_or(default_name).
 StepObservers coupling_observers(const cosim::CouplingEndpoint& endpoint,
                                  const std::string& default_name = "mpm");
+
+// The observers of a standalone run (an endpoint without uri): none, unless
+// the case gives time.window or the command line --cosim-repeat-windows;
+// then a standalone participant runs the case in those windows (the
+// `coupling` block is ignored standalone: nothing is declared or read).
+StepObservers standalone_observers(const cosim::CouplingEndpoint& endpoint,
+                                   const std::string& default_name = "mpm");
 
 extern template class CouplingObserver<2>;
 extern template class CouplingObserver<3>;
