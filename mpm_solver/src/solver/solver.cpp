@@ -42,6 +42,7 @@ struct Solver<Dim>::Impl {
   std::vector<double> cell_sum;
   std::vector<double> cell_weight;
   std::vector<double> volumetric_increment;   // per particle, scratch
+  std::vector<double> stress_work;            // per particle, this step, scratch
   std::vector<Vec<Dim>> initial_half_length;  // for GimpDomain::deformed
   double time = 0.0;
   std::size_t steps = 0;
@@ -581,8 +582,8 @@ void Solver<Dim>::Impl::update_kinematics_and_stress(double dt, bool use_remappe
     });
   }
 
-  double work = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : work) if (worth_threads(particles.size()))
+  stress_work.assign(particles.size(), 0.0);
+#pragma omp parallel for schedule(static) if (worth_threads(particles.size()))
   for (std::ptrdiff_t q = 0; q < count; ++q) {
     const auto p = static_cast<std::size_t>(q);
     const auto& body = body_of(p);
@@ -610,9 +611,13 @@ void Solver<Dim>::Impl::update_kinematics_and_stress(double dt, bool use_remappe
       average.own = volumetric_increment[p];
       average.cell = cell_sum[cell] / cell_weight[cell];
     }
-    work += detail::update_point(*body.material, L, dt, average,
-                                 description.bodies[particles.body[p]].porous, p, particles);
+    stress_work[p] = detail::update_point(
+        *body.material, L, dt, average, description.bodies[particles.body[p]].porous, p, particles);
   }
+  // Summed in particle order, not by a reduction: the same bits whatever the
+  // thread count, and from one run to the next.
+  double work = 0.0;
+  for (const double w : stress_work) work += w;
   accumulated.internal_work += work;
 }
 
