@@ -52,6 +52,7 @@ void CouplingObserver<Dim>::after_step(Solver<Dim>& /*solver*/, double dt) {
   coupling_->after_step(dt);
   participant_->advance(dt);
   if (participant_->must_restore_state()) coupling_->restore_state();
+  if (participant_->is_window_complete()) coupling_->log_held_warnings();
   if (participant_->must_save_state()) coupling_->save_state();
 }
 

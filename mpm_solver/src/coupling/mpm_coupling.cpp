@@ -36,6 +36,7 @@ struct MpmCoupling<Dim>::State {
   std::optional<SurfaceGrid<Dim>> surface;
   CouplingDiagnostics<Dim> diagnostics;
   CouplingDiagnostics<Dim> saved_diagnostics;  // at the start of a window that may run again
+  std::vector<std::string> held_warnings;      // until the window is complete
 
   std::vector<double> cell_values;    // scratch for reads
   std::vector<Vec<Dim>> scratch;      // per particle
@@ -200,6 +201,7 @@ void MpmCoupling<Dim>::declare() {
       s.channel->declare_read(f::bed_traction.on(n::surface_mesh, Dim), 0.0);
   }
   write_fields();
+  log_held_warnings();
 }
 
 template <int Dim>
@@ -229,9 +231,9 @@ void MpmCoupling<Dim>::write_fields() {
     const PorousFields f =
         porous_fields(*s.exchange, particles, s.roles, held, g.held_density_factor);
     if (f.capped_cells > 0)
-      spdlog::warn(
+      s.held_warnings.push_back(fmt::format(
           "mpm coupling: solid fraction above 1 capped in {} exchange cell(s) at t = {:.6g} s",
-          f.capped_cells, s.solver.time());
+          f.capped_cells, s.solver.time()));
     s.diagnostics.capped_solid_fraction_cells += f.capped_cells;
     s.diagnostics.overfilled_cells += f.overfilled_cells;
     s.diagnostics.held_cells =
@@ -266,6 +268,13 @@ void MpmCoupling<Dim>::save_state() {
 template <int Dim>
 void MpmCoupling<Dim>::restore_state() {
   state_->diagnostics = state_->saved_diagnostics;
+  state_->held_warnings.clear();
+}
+
+template <int Dim>
+void MpmCoupling<Dim>::log_held_warnings() {
+  for (const std::string& warning : state_->held_warnings) spdlog::warn("{}", warning);
+  state_->held_warnings.clear();
 }
 
 template <int Dim>

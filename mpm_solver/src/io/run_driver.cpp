@@ -194,6 +194,7 @@ class CaseRun {
       {
         auto scope = summary_.phases().measure("advance");
         solver_.step(dt);
+        ++steps_taken_;
         if (observer_) observer_->after_step(solver_, dt);
       }
       if (observer_ && observer_->must_restore_state()) {
@@ -299,7 +300,7 @@ class CaseRun {
       summary_.set_steps(static_cast<std::int64_t>(steps));
       const double advance = summary_.phases().seconds("advance");
       const double updates =
-          static_cast<double>(steps) * static_cast<double>(solver_.particles().size());
+          static_cast<double>(steps_taken_) * static_cast<double>(solver_.particles().size());
       summary_.set_metric("simulated_time", solver_.time(), "s");
       summary_.set_metric("particles", static_cast<double>(solver_.particles().size()), "1");
       summary_.set_metric("particle_updates_per_second", advance > 0.0 ? updates / advance : 0.0,
@@ -341,6 +342,7 @@ class CaseRun {
   SolverState<Dim> saved_solver_;
   std::optional<LoopProgress> saved_progress_;
   bool window_may_repeat_ = false;
+  std::size_t steps_taken_ = 0;  // those of repeated windows too
   std::size_t saves_ = 0;
   std::size_t restores_ = 0;
 };

@@ -36,7 +36,12 @@ class Participant;
 //                                             // the step's share of the exchanged heat
 //     coupling->after_step(dt);               // writes, when this step ends the window
 //     participant.advance(dt);                // exchanges, when the window is complete
+//     if (participant.must_restore_state()) coupling->restore_state();
+//     if (participant.is_window_complete()) coupling->log_held_warnings();
+//     if (participant.must_save_state()) coupling->save_state();
 //   }
+//
+// (the solver's own state is saved and restored alongside, by run_case).
 //
 // Exchange grid (mesh "mpm_grid", cell-centred, Dim-D): writes solid_fraction,
 // solid_velocity, solid_bulk_density, permeability, grain_size (see
@@ -96,9 +101,11 @@ class MpmCoupling {
 
   // What the coupling carries from step to step (its diagnostics; the
   // particles are the solver's to save): kept at a window's start, put
-  // back when the window runs again.
+  // back when the window runs again, which also drops the warnings held.
   void save_state();
   void restore_state();
+  // The warnings of write_fields() wait for the window to be complete.
+  void log_held_warnings();
 
   const ExchangeGrid<Dim>* exchange_grid() const;
   const SurfaceGrid<Dim>* surface() const;

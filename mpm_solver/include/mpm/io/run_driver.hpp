@@ -29,6 +29,9 @@ struct RunOptions {
 // the process exit code: 0, 2 bad input, 4 numerical failure, 1 internal
 // error (or the code of any other cosim::Error); a refused output directory
 // throws its cosim::Error instead, nothing written.
+// An observer that repeats windows (step_observer.hpp) has the solver's
+// state and the loop's saved at each window's start and restored for a
+// repeat; outputs inside such a window are written once it is complete.
 int run_case(const RunOptions& options, const StepObservers& observers = {});
 
 }  // namespace mpm
