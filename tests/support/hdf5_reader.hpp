@@ -41,26 +41,6 @@ class Hdf5Reader {
     return d;
   }
 
-  // The path of every dataset in the file, in name order.
-  std::vector<std::string> datasets() const {
-    std::vector<std::string> links;
-    H5Lvisit(
-        file_, H5_INDEX_NAME, H5_ITER_INC,
-        [](hid_t, const char* name, const H5L_info_t*, void* found) -> herr_t {
-          static_cast<std::vector<std::string>*>(found)->push_back(name);
-          return 0;
-        },
-        &links);
-    std::vector<std::string> paths;
-    for (const std::string& link : links) {
-      const hid_t object = H5Oopen(file_, link.c_str(), H5P_DEFAULT);
-      if (object < 0) continue;
-      if (H5Iget_type(object) == H5I_DATASET) paths.push_back(link);
-      H5Oclose(object);
-    }
-    return paths;
-  }
-
   Dataset<double> doubles(const std::string& path) const {
     return read<double>(path, H5T_NATIVE_DOUBLE);
   }
