@@ -15,6 +15,7 @@
 #include "ice/pressure/pressure_solver.hpp"
 #include "ice/solver/fluid_material.hpp"
 #include "ice/solver/fluid_state.hpp"
+#include "ice/solver/saved_state.hpp"
 #include "ice/solver/side_condition.hpp"
 
 namespace ice {
@@ -164,6 +165,12 @@ class IceSolver {
 
   std::vector<MaterialTotals> totals() const;
 
+  // Copies everything the next steps read into `saved` (reusing its
+  // buffers) and back: after restore_state the solver steps exactly as it
+  // did after the save, bit for bit (a coupling window that runs again).
+  void save_state(SavedIceState<Dim>& saved) const;
+  void restore_state(const SavedIceState<Dim>& saved);
+
   // The last accepted step's face velocities of material m (U^{n+1}_FC)
   // and face pressures (eq. 54), for output and checks.
   const FaceField<Dim>& face_velocity(std::size_t material) const {
@@ -205,6 +212,8 @@ class IceSolver {
   std::size_t count() const { return materials_.size(); }
   bool has_exchange() const { return has_momentum_exchange_; }
 
+  // The members SavedIceState lists are carried from step to step; every
+  // other one is rewritten by a step before it is read.
   CellGrid<Dim> grid_;
   std::vector<FluidMaterial> materials_;
   std::vector<const EquationOfState*> eos_;
