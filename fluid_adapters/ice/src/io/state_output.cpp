@@ -112,6 +112,11 @@ GaugeRecorder<Dim>::GaugeRecorder(const std::filesystem::path& file,
 
 template <int Dim>
 void GaugeRecorder<Dim>::record(double time, const IceSolver<Dim>& solver) {
+  writer_.append(row(time, solver));
+}
+
+template <int Dim>
+std::span<const double> GaugeRecorder<Dim>::row(double time, const IceSolver<Dim>& solver) {
   const FluidState<Dim>& state = solver.state();
   std::size_t k = 0;
   row_[k++] = time;
@@ -128,7 +133,7 @@ void GaugeRecorder<Dim>::record(double time, const IceSolver<Dim>& solver) {
     }
     for (const MaterialState<Dim>& m : state.materials) row_[k++] = m.volume_fraction[c];
   }
-  writer_.append(row_);
+  return row_;
 }
 
 template cosim::Mesh cell_mesh<1>(const CellGrid<1>&, const std::string&);

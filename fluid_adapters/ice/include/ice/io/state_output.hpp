@@ -2,6 +2,7 @@
 
 #include <array>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,10 @@ class GaugeRecorder {
   GaugeRecorder(const std::filesystem::path& file, const std::vector<GaugePoint>& gauges,
                 const IceSolver<Dim>& solver);
   void record(double time, const IceSolver<Dim>& solver);
+  // The row record() appends, for a caller that writes it later
+  // (WindowOutputs); valid until the next call.
+  std::span<const double> row(double time, const IceSolver<Dim>& solver);
+  cosim::TimeSeriesWriter& writer() { return writer_; }
   std::size_t rows() const { return writer_.rows_written(); }
 
  private:
