@@ -74,6 +74,7 @@ TEST(IceCaseSchemaDefaults, ACaseWithoutTheOptionalKeysReadsTheSchemaDefaults) {
   EXPECT_EQ(c.coupling.drag_in_solver, schema_default<std::string>("coupling.drag") == "ice");
   EXPECT_EQ(c.coupling.minimum_porosity, schema_default<double>("coupling.minimum_porosity"));
   EXPECT_EQ(c.coupling.heat_exchange, schema_default<bool>("coupling.heat_exchange"));
+  EXPECT_EQ(c.coupling.standalone_window, schema_default<double>("coupling.standalone_window"));
 }
 
 TEST(IceCaseSchemaDefaults, TheDescriptionBuiltInCodeStartsFromTheSchemaDefaults) {
@@ -103,6 +104,7 @@ TEST(IceCaseSchemaDefaults, TheDescriptionBuiltInCodeStartsFromTheSchemaDefaults
   EXPECT_EQ(in_code.coupling.drag_in_solver, c.coupling.drag_in_solver);
   EXPECT_EQ(in_code.coupling.minimum_porosity, c.coupling.minimum_porosity);
   EXPECT_EQ(in_code.coupling.heat_exchange, c.coupling.heat_exchange);
+  EXPECT_EQ(in_code.coupling.standalone_window, c.coupling.standalone_window);
 }
 
 }  // namespace

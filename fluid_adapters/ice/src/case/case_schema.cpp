@@ -172,7 +172,7 @@ Schema coupling_schema() {
   Schema coupling =
       Schema::object(
           "How ice_fluid takes part in a coupled run with a porous solid on its mesh 'ice_cells' "
-          "(ignored standalone).")
+          "(ignored standalone, but for standalone_window).")
           .default_value("{}");
   coupling
       .optional("drag", Schema::one_of({"coupler", "ice"}).default_value("coupler"),
@@ -185,7 +185,12 @@ Schema coupling_schema() {
                 "Floor of the porosity n = 1 - solid_fraction received.")
       .optional("heat_exchange", Schema::boolean().default_value("false"),
                 "Take part in the coupler's energy exchange: write fluid_temperature and "
-                "fluid_heat_capacity, read heat_exchange_energy (Tran et al., MPMICE, eq. 23).");
+                "fluid_heat_capacity, read heat_exchange_energy (Tran et al., MPMICE, eq. 23).")
+      .optional("standalone_window", Schema::number().non_negative().unit("s").default_value("0"),
+                "Standalone: the run's coupling windows, as a job's (steps end on their ends; "
+                "with --cosim-repeat-windows each window runs twice, which checks the solver's "
+                "save and restore); 0: the whole run is one window. Coupled, the job's window "
+                "applies.");
   return coupling;
 }
 

@@ -55,6 +55,7 @@ class CaseReader {
     c.coupling.drag_in_solver = coupling.get<std::string>("drag") == "ice";
     c.coupling.minimum_porosity = coupling.get<double>("minimum_porosity");
     c.coupling.heat_exchange = coupling.get<bool>("heat_exchange");
+    c.coupling.standalone_window = coupling.get<double>("standalone_window");
     return c;
   }
 

@@ -59,7 +59,7 @@ struct NumericsDescription {
 };
 
 // How ice_fluid takes part in a coupled run with a porous solid (unused
-// standalone).
+// standalone, but for standalone_window).
 struct CouplingDescription {
   // true: the fluid-solid drag is solved in each step with the coupler's
   // drag_coefficient (`drag: ice`; the job's momentum_exchange.solved_by:
@@ -69,6 +69,8 @@ struct CouplingDescription {
   // true: write fluid_temperature and fluid_heat_capacity and read the heat
   // of the coupler's energy exchange (`heat_exchange_energy`).
   bool heat_exchange = false;
+  // Standalone: the length of the run's coupling windows [s]; 0: one window.
+  double standalone_window = 0.0;
 };
 
 struct CaseDescription {
