@@ -20,6 +20,8 @@
 #include "ice/case/make_solver.hpp"
 #include "ice/coupling/porous_coupling.hpp"
 #include "ice/io/state_output.hpp"
+#include "ice/io/window_outputs.hpp"
+#include "ice/solver/saved_state.hpp"
 
 namespace ice {
 
@@ -28,6 +30,21 @@ namespace {
 constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr const char* cells_mesh = "ice_cells";
 constexpr const char* axis_name[] = {"x", "y", "z"};
+
+// What the run carries from step to step besides the solver's state: the
+// output times still to come, the step the stability last allowed and the
+// summary's tallies. A window that runs again starts from a copy.
+struct RunBookkeeping {
+  cosim::OutputSchedule snapshots;
+  cosim::OutputSchedule gauge_times;
+  double free_dt = 0.0;  // the base of the step-growth limit
+  std::size_t steps = 0;
+  std::size_t rejected = 0;
+  long cg_iterations = 0;
+  int most_cg_iterations = 0;
+  double most_closure = 0.0;
+  double min_dt = infinity;
+};
 
 template <int Dim>
 class CaseRun {
@@ -41,8 +58,10 @@ class CaseRun {
         summary_(summary),
         participant_(endpoint.name_or(description.name), endpoint),
         coupling_(description.coupling),
-        snapshots_(description.output_every, description.end_time),
-        gauge_times_(description.gauge_every, description.end_time),
+        run_{.snapshots = {description.output_every, description.end_time},
+             .gauge_times = {description.gauge_every, description.end_time},
+             .free_dt = description.numerics.initial_time_step},
+        saved_run_(run_),
         tolerance_(1e-10 * description.end_time) {}
 
   void run() {
@@ -51,11 +70,14 @@ class CaseRun {
         auto scope = summary_.phases().measure("setup");
         build_solver();
         if (participant_.is_coupled()) coupling_.declare(participant_, *solver_);
+        participant_.declare_repeatable();
+        if (c_.coupling.standalone_window > 0.0)
+          participant_.set_standalone_window(c_.coupling.standalone_window);
         participant_.initialize(0.0, c_.end_time);
         // Coupled, the job's end time replaces the case's: the schedules end there.
         const double end = participant_.end_time();
-        snapshots_ = cosim::OutputSchedule(c_.output_every, end);
-        gauge_times_ = cosim::OutputSchedule(c_.gauge_every, end);
+        run_.snapshots = cosim::OutputSchedule(c_.output_every, end);
+        run_.gauge_times = cosim::OutputSchedule(c_.gauge_every, end);
         tolerance_ = 1e-10 * end;
         open_outputs();
       }
@@ -71,7 +93,7 @@ class CaseRun {
       throw;
     }
     spdlog::info("completed: t = {:.6g} s in {} steps ({} rejected), {} snapshots",
-                 participant_.time(), steps_, rejected_,
+                 participant_.time(), run_.steps, run_.rejected,
                  snapshot_writer_ ? snapshot_writer_->snapshots_written() : 0);
   }
 
@@ -111,54 +133,54 @@ class CaseRun {
                                  cosim::column_name("courant", "1")});
   }
 
+  // Each pass is one step; a window that must run again goes back to the
+  // state saved at its start, and its outputs wait until it completes.
   void loop() {
     using Clock = std::chrono::steady_clock;
     auto last_progress = Clock::now();
-    double dt = c_.numerics.initial_time_step;
-    double free_dt = dt;
     const bool coupled = participant_.is_coupled();
-    std::size_t window_read = 0;
     while (participant_.is_coupling_ongoing()) {
+      if (participant_.must_save_state()) save_window_start();
       const double t = participant_.time();
-      if (coupled && participant_.window_index() != window_read) {
+      if (coupled && participant_.window_index() != medium_window_) {
         auto scope = summary_.phases().measure("porous_medium");
-        window_read = participant_.window_index();
-        coupling_.read_medium(participant_, *solver_, window_read == 1);
+        medium_window_ = participant_.window_index();
+        coupling_.read_medium(participant_, *solver_, medium_window_ == 1);
         // The fluids laid into the pores are the run's starting totals.
-        if (window_read == 1) record_conserved(true);
+        if (medium_window_ == 1) record_conserved(true);
       }
       // The growth limit applies to the last step the stability allowed, not
       // to one cut short by a window end or an output time.
       double limit = solver_->stable_time_step(c_.numerics.cfl, c_.numerics.acoustic);
-      limit = std::min(limit, c_.numerics.max_step_growth * free_dt);
+      limit = std::min(limit, c_.numerics.max_step_growth * run_.free_dt);
       if (c_.numerics.max_time_step > 0.0) limit = std::min(limit, c_.numerics.max_time_step);
-      free_dt = limit;
+      run_.free_dt = limit;
       limit = std::min(limit, participant_.max_time_step());
-      const double next_output =
-          std::min(snapshots_.next(), c_.gauge_every > 0.0 ? gauge_times_.next() : infinity);
+      const double next_output = std::min(
+          run_.snapshots.next(), c_.gauge_every > 0.0 ? run_.gauge_times.next() : infinity);
       if (next_output > t + tolerance_) limit = std::min(limit, next_output - t);
-      dt = limit;
+      double dt = limit;
       StepReport report;
       for (;;) {
         if (!(dt >= c_.numerics.min_time_step)) {
           throw cosim::NumericalError(
               fmt::format("the time step {:.4g} s fell below numerics.min_time_step = {:.4g} s at "
                           "t = {:.9g} s (step {})",
-                          dt, c_.numerics.min_time_step, t, steps_));
+                          dt, c_.numerics.min_time_step, t, run_.steps));
         }
         auto scope = summary_.phases().measure("advance");
         report = solver_->advance(dt);
         if (report.accepted && coupled) coupling_.exchange_step(participant_, dt, *solver_);
         if (report.accepted) break;
-        ++rejected_;
+        ++run_.rejected;
         dt *= 0.5 * std::min(1.0, 1.0 / report.courant);
-        free_dt = std::min(free_dt, dt);
+        run_.free_dt = std::min(run_.free_dt, dt);
       }
-      ++steps_;
-      min_dt_ = std::min(min_dt_, dt);
-      cg_iterations_ += report.pressure_iterations;
-      most_cg_iterations_ = std::max(most_cg_iterations_, report.pressure_iterations);
-      most_closure_ = std::max(most_closure_, report.volume_closure);
+      ++run_.steps;
+      run_.min_dt = std::min(run_.min_dt, dt);
+      run_.cg_iterations += report.pressure_iterations;
+      run_.most_cg_iterations = std::max(run_.most_cg_iterations, report.pressure_iterations);
+      run_.most_closure = std::max(run_.most_closure, report.volume_closure);
       {
         auto scope = summary_.phases().measure("coupling");
         if (coupled && dt >= participant_.max_time_step() - tolerance_) {
@@ -166,31 +188,60 @@ class CaseRun {
         }
         participant_.advance(dt);
       }
+      if (participant_.must_restore_state()) {
+        restore_window_start();
+        continue;
+      }
       const double now = participant_.time();
       write_outputs(now, report, dt);
+      if (participant_.is_window_complete()) outputs_.release();
       if (Clock::now() - last_progress > std::chrono::seconds(5)) {
         last_progress = Clock::now();
         spdlog::info("t = {:.6g} s / {:.6g} s, step {}, dt = {:.3g} s, CG iterations {}", now,
-                     c_.end_time, steps_, dt, report.pressure_iterations);
-        summary_.set_steps(static_cast<std::int64_t>(steps_));
+                     c_.end_time, run_.steps, dt, report.pressure_iterations);
+        summary_.set_steps(static_cast<std::int64_t>(run_.steps));
         summary_.set_progress(now, c_.end_time);
         summary_.write();
       }
     }
   }
 
+  // At the start of a window that may run again: the solver's state and the
+  // run's own are saved, and the window's outputs held until it completes.
+  void save_window_start() {
+    auto scope = summary_.phases().measure("save_restore");
+    solver_->save_state(saved_solver_);
+    saved_run_ = run_;
+    outputs_.hold();
+    ++windows_saved_;
+  }
+
+  // The window runs again: from the saved state, without its outputs, and
+  // with the medium read again (the reads hold the coupler's next iterate).
+  void restore_window_start() {
+    auto scope = summary_.phases().measure("save_restore");
+    solver_->restore_state(saved_solver_);
+    run_ = saved_run_;
+    outputs_.drop();
+    medium_window_ = 0;
+  }
+
   void write_outputs(double t, const StepReport& report, double dt = 0.0) {
-    if (gauges_ && (t == 0.0 || c_.gauge_every <= 0.0 || gauge_times_.due(t, tolerance_))) {
-      gauges_->record(t, *solver_);
+    if (gauges_ && (t == 0.0 || c_.gauge_every <= 0.0 || run_.gauge_times.due(t, tolerance_))) {
+      outputs_.append(gauges_->writer(), gauges_->row(t, *solver_));
     }
-    if (t > 0.0) gauge_times_.passed(t, tolerance_);
-    if (t == 0.0 || snapshots_.due(t, tolerance_)) {
+    if (t > 0.0) run_.gauge_times.passed(t, tolerance_);
+    if (t == 0.0 || run_.snapshots.due(t, tolerance_)) {
       auto scope = summary_.phases().measure("output");
-      steps_csv_->append({t, dt, static_cast<double>(report.pressure_iterations),
-                          static_cast<double>(report.equilibration_iterations),
-                          report.volume_closure, report.courant});
-      if (snapshot_writer_) snapshot_writer_->write(t, fields_.fields(*solver_));
-      if (t > 0.0) snapshots_.passed(t, tolerance_);
+      const double row[] = {t,
+                            dt,
+                            static_cast<double>(report.pressure_iterations),
+                            static_cast<double>(report.equilibration_iterations),
+                            report.volume_closure,
+                            report.courant};
+      outputs_.append(*steps_csv_, row);
+      if (snapshot_writer_) outputs_.write(*snapshot_writer_, t, fields_.fields(*solver_));
+      if (t > 0.0) run_.snapshots.passed(t, tolerance_);
     }
   }
 
@@ -217,16 +268,33 @@ class CaseRun {
     }
     (void)line;
     if (!start) {
-      summary_.set_steps(static_cast<std::int64_t>(steps_));
+      summary_.set_steps(static_cast<std::int64_t>(run_.steps));
       summary_.set_windows(static_cast<std::int64_t>(participant_.window_index()));
-      if (steps_ > 0) {
-        summary_.set_metric("min_time_step", min_dt_, "s");
-        summary_.set_metric("mean_cg_iterations",
-                            static_cast<double>(cg_iterations_) / static_cast<double>(steps_), "1");
+      if (run_.steps > 0) {
+        summary_.set_metric("min_time_step", run_.min_dt, "s");
+        summary_.set_metric(
+            "mean_cg_iterations",
+            static_cast<double>(run_.cg_iterations) / static_cast<double>(run_.steps), "1");
       }
-      summary_.set_metric("max_cg_iterations", most_cg_iterations_, "1");
-      summary_.set_metric("rejected_steps", static_cast<double>(rejected_), "1");
-      summary_.set_metric("max_volume_closure", most_closure_, "1");
+      summary_.set_metric("max_cg_iterations", run_.most_cg_iterations, "1");
+      summary_.set_metric("rejected_steps", static_cast<double>(run_.rejected), "1");
+      summary_.set_metric("max_volume_closure", run_.most_closure, "1");
+      record_save_restore_cost();
+    }
+  }
+
+  // Windows that could run again: the wall time of their saves and restores,
+  // in all and per window against the solver's time per attempt at a window.
+  void record_save_restore_cost() {
+    if (windows_saved_ == 0) return;
+    const double seconds = summary_.phases().seconds("save_restore");
+    summary_.set_metric("save_restore_seconds", seconds, "s");
+    const double advance = summary_.phases().seconds("advance");
+    const auto attempts = static_cast<double>(participant_.timings().iterations);
+    if (advance > 0.0 && attempts > 0.0) {
+      summary_.set_metric("save_restore_share",
+                          seconds / static_cast<double>(windows_saved_) / (advance / attempts),
+                          "1");
     }
   }
 
@@ -236,16 +304,14 @@ class CaseRun {
   cosim::Participant participant_;
   std::unique_ptr<IceSolver<Dim>> solver_;
   PorousCoupling<Dim> coupling_;
-  cosim::OutputSchedule snapshots_;
-  cosim::OutputSchedule gauge_times_;
+  RunBookkeeping run_;
+  RunBookkeeping saved_run_;
+  SavedIceState<Dim> saved_solver_;
   double tolerance_;
-  std::size_t steps_ = 0;
-  std::size_t rejected_ = 0;
-  long cg_iterations_ = 0;
-  int most_cg_iterations_ = 0;
-  double most_closure_ = 0.0;
-  double min_dt_ = infinity;
+  std::size_t medium_window_ = 0;  // the window whose porous medium the solver holds
+  std::size_t windows_saved_ = 0;
   SnapshotFieldSet<Dim> fields_;
+  WindowOutputs outputs_;
   std::optional<cosim::SnapshotWriter> snapshot_writer_;
   std::optional<GaugeRecorder<Dim>> gauges_;
   std::optional<cosim::TimeSeriesWriter> steps_csv_;

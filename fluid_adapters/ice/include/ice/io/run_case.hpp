@@ -16,6 +16,9 @@ namespace ice {
 //   gauges.csv              pressure, velocity, volume fractions at points
 //   steps.csv               per snapshot: time, dt, CG iterations, most
 //                           equilibration iterations, volume closure
+// Windows may run again (implicit coupling, --cosim-repeat-windows): the
+// solver and the run's bookkeeping are saved at each window's start and
+// restored when it repeats; its outputs are written once it completes.
 // Returns the exit code.
 int run_case(const cosim::SolverCommandLine& line);
 
