@@ -19,8 +19,8 @@
 #include "ice/case/load_case.hpp"
 #include "ice/case/make_solver.hpp"
 #include "ice/coupling/porous_coupling.hpp"
+#include "ice/io/held_outputs.hpp"
 #include "ice/io/state_output.hpp"
-#include "ice/io/window_outputs.hpp"
 #include "ice/solver/saved_state.hpp"
 
 namespace ice {
@@ -209,7 +209,7 @@ class CaseRun {
   // At the start of a window that may run again: the solver's state and the
   // run's own are saved, and the window's outputs held until it completes.
   void save_window_start() {
-    auto scope = summary_.phases().measure("save_restore");
+    auto scope = summary_.phases().measure("save_state");
     solver_->save_state(saved_solver_);
     saved_run_ = run_;
     outputs_.hold();
@@ -219,10 +219,10 @@ class CaseRun {
   // The window runs again: from the saved state, without its outputs, and
   // with the medium read again (the reads hold the coupler's next iterate).
   void restore_window_start() {
-    auto scope = summary_.phases().measure("save_restore");
+    auto scope = summary_.phases().measure("restore_state");
     solver_->restore_state(saved_solver_);
     run_ = saved_run_;
-    outputs_.drop();
+    outputs_.discard();
     medium_window_ = 0;
   }
 
@@ -287,7 +287,8 @@ class CaseRun {
   // in all and per window against the solver's time per attempt at a window.
   void record_save_restore_cost() {
     if (windows_saved_ == 0) return;
-    const double seconds = summary_.phases().seconds("save_restore");
+    const double seconds =
+        summary_.phases().seconds("save_state") + summary_.phases().seconds("restore_state");
     summary_.set_metric("save_restore_seconds", seconds, "s");
     const double advance = summary_.phases().seconds("advance");
     const auto attempts = static_cast<double>(participant_.timings().iterations);
@@ -311,7 +312,7 @@ class CaseRun {
   std::size_t medium_window_ = 0;  // the window whose porous medium the solver holds
   std::size_t windows_saved_ = 0;
   SnapshotFieldSet<Dim> fields_;
-  WindowOutputs outputs_;
+  HeldOutputs outputs_;
   std::optional<cosim::SnapshotWriter> snapshot_writer_;
   std::optional<GaugeRecorder<Dim>> gauges_;
   std::optional<cosim::TimeSeriesWriter> steps_csv_;

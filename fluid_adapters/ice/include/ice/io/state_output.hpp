@@ -51,7 +51,7 @@ class GaugeRecorder {
                 const IceSolver<Dim>& solver);
   void record(double time, const IceSolver<Dim>& solver);
   // The row record() appends, for a caller that writes it later
-  // (WindowOutputs); valid until the next call.
+  // (HeldOutputs); valid until the next call.
   std::span<const double> row(double time, const IceSolver<Dim>& solver);
   cosim::TimeSeriesWriter& writer() { return writer_; }
   std::size_t rows() const { return writer_.rows_written(); }

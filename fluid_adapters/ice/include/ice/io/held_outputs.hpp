@@ -15,7 +15,7 @@ namespace ice {
 // order once it completes, dropped when it must run again, so that a
 // repeated window leaves no trace. Outside such a window they are written
 // straight through. The held copies' storage is kept from window to window.
-class WindowOutputs {
+class HeldOutputs {
  public:
   // At the start of a window that may run again.
   void hold() { holding_ = true; }
@@ -23,7 +23,7 @@ class WindowOutputs {
   // straight through until the next hold().
   void release();
   // The window runs again: what it held is forgotten; it still holds.
-  void drop();
+  void discard();
 
   void append(cosim::TimeSeriesWriter& writer, std::span<const double> row);
   void write(cosim::SnapshotWriter& writer, double time, const cosim::SnapshotFields& fields);

@@ -1,8 +1,8 @@
-#include "ice/io/window_outputs.hpp"
+#include "ice/io/held_outputs.hpp"
 
 namespace ice {
 
-void WindowOutputs::append(cosim::TimeSeriesWriter& writer, std::span<const double> row) {
+void HeldOutputs::append(cosim::TimeSeriesWriter& writer, std::span<const double> row) {
   if (!holding_) {
     writer.append(row);
     return;
@@ -13,8 +13,8 @@ void WindowOutputs::append(cosim::TimeSeriesWriter& writer, std::span<const doub
   held.values.assign(row.begin(), row.end());
 }
 
-void WindowOutputs::write(cosim::SnapshotWriter& writer, double time,
-                          const cosim::SnapshotFields& fields) {
+void HeldOutputs::write(cosim::SnapshotWriter& writer, double time,
+                        const cosim::SnapshotFields& fields) {
   if (!holding_) {
     writer.write(time, fields);
     return;
@@ -34,7 +34,7 @@ void WindowOutputs::write(cosim::SnapshotWriter& writer, double time,
   }
 }
 
-void WindowOutputs::release() {
+void HeldOutputs::release() {
   for (std::size_t r = 0; r < row_count_; ++r) rows_[r].writer->append(rows_[r].values);
   cosim::SnapshotFields fields;
   for (std::size_t s = 0; s < snapshot_count_; ++s) {
@@ -48,7 +48,7 @@ void WindowOutputs::release() {
   holding_ = false;
 }
 
-void WindowOutputs::drop() {
+void HeldOutputs::discard() {
   row_count_ = snapshot_count_ = 0;
 }
 
