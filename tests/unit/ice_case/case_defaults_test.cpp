@@ -67,6 +67,7 @@ TEST(IceCaseSchemaDefaults, ACaseWithoutTheOptionalKeysReadsTheSchemaDefaults) {
   EXPECT_EQ(n.equilibration.max_iterations,
             schema_default<int>("numerics.equilibration.max_iterations"));
   EXPECT_EQ(n.smagorinsky_constant, schema_default<double>("numerics.turbulence.constant"));
+  EXPECT_EQ(c.window, schema_default<double>("window"));
   EXPECT_EQ(c.output_every, schema_default<double>("output.every"));
   EXPECT_EQ(c.snapshots, schema_default<bool>("output.snapshots"));
   EXPECT_EQ(c.gauge_every, schema_default<double>("output.gauge_every"));
@@ -74,7 +75,6 @@ TEST(IceCaseSchemaDefaults, ACaseWithoutTheOptionalKeysReadsTheSchemaDefaults) {
   EXPECT_EQ(c.coupling.drag_in_solver, schema_default<std::string>("coupling.drag") == "ice");
   EXPECT_EQ(c.coupling.minimum_porosity, schema_default<double>("coupling.minimum_porosity"));
   EXPECT_EQ(c.coupling.heat_exchange, schema_default<bool>("coupling.heat_exchange"));
-  EXPECT_EQ(c.coupling.standalone_window, schema_default<double>("coupling.standalone_window"));
 }
 
 TEST(IceCaseSchemaDefaults, TheDescriptionBuiltInCodeStartsFromTheSchemaDefaults) {
@@ -97,6 +97,7 @@ TEST(IceCaseSchemaDefaults, TheDescriptionBuiltInCodeStartsFromTheSchemaDefaults
   EXPECT_EQ(n.equilibration.tolerance, c.numerics.equilibration.tolerance);
   EXPECT_EQ(n.equilibration.max_iterations, c.numerics.equilibration.max_iterations);
   const CaseDescription in_code;
+  EXPECT_EQ(in_code.window, c.window);
   EXPECT_EQ(in_code.output_every, c.output_every);
   EXPECT_EQ(in_code.snapshots, c.snapshots);
   EXPECT_EQ(in_code.gauge_every, c.gauge_every);
@@ -104,7 +105,6 @@ TEST(IceCaseSchemaDefaults, TheDescriptionBuiltInCodeStartsFromTheSchemaDefaults
   EXPECT_EQ(in_code.coupling.drag_in_solver, c.coupling.drag_in_solver);
   EXPECT_EQ(in_code.coupling.minimum_porosity, c.coupling.minimum_porosity);
   EXPECT_EQ(in_code.coupling.heat_exchange, c.coupling.heat_exchange);
-  EXPECT_EQ(in_code.coupling.standalone_window, c.coupling.standalone_window);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // What an ICE case may ask for: its size is stated before the solver
 // allocates anything and refused above limits.memory_gib (or beyond the
-// solver's int indices), and its output intervals must give a sane number
-// of outputs. Each refusal is located at the key.
+// solver's int indices), and its output intervals and standalone window must
+// give a sane number of outputs and windows. Each refusal is located at the key.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -80,6 +80,13 @@ TEST(IceCaseLimits, OutputIntervalsGivingMoreThanAMillionOutputsAreRefused) {
               HasSubstr("case.yaml:17:10: key 'output.every'"));
   EXPECT_THAT(error_of(replaced(tank, "gauge_every: 0.01", "gauge_every: 1.0e-8")),
               HasSubstr("key 'output.gauge_every'"));
+}
+
+TEST(IceCaseLimits, AWindowGivingMoreThanAMillionWindowsIsRefused) {
+  EXPECT_THAT(error_of(replaced(tank, "end_time: 0.5", "end_time: 0.5\nwindow: 1.0e-9")),
+              HasSubstr("case.yaml:7:9: key 'window': the window 1e-09 s gives 5e+08 windows"));
+  EXPECT_NO_THROW(
+      load_case_text(replaced(tank, "end_time: 0.5", "end_time: 0.5\nwindow: 0.01"), "case.yaml"));
 }
 
 }  // namespace

@@ -172,7 +172,7 @@ Schema coupling_schema() {
   Schema coupling =
       Schema::object(
           "How ice_fluid takes part in a coupled run with a porous solid on its mesh 'ice_cells' "
-          "(ignored standalone, but for standalone_window).")
+          "(ignored standalone).")
           .default_value("{}");
   coupling
       .optional("drag", Schema::one_of({"coupler", "ice"}).default_value("coupler"),
@@ -185,12 +185,7 @@ Schema coupling_schema() {
                 "Floor of the porosity n = 1 - solid_fraction received.")
       .optional("heat_exchange", Schema::boolean().default_value("false"),
                 "Take part in the coupler's energy exchange: write fluid_temperature and "
-                "fluid_heat_capacity, read heat_exchange_energy (Tran et al., MPMICE, eq. 23).")
-      .optional("standalone_window", Schema::number().non_negative().unit("s").default_value("0"),
-                "Standalone: the run's coupling windows, as a job's (steps end on their ends; "
-                "with --cosim-repeat-windows each window runs twice, which checks the solver's "
-                "save and restore); 0: the whole run is one window. Coupled, the job's window "
-                "applies.");
+                "fluid_heat_capacity, read heat_exchange_energy (Tran et al., MPMICE, eq. 23).");
   return coupling;
 }
 
@@ -208,6 +203,10 @@ Schema ice_case_schema() {
       .required("grid", grid, "The cells.")
       .optional("gravity", vector_schema("m/s^2").default_note("zero"), "Gravity vector.")
       .required("end_time", Schema::number().positive().unit("s"), "Simulated end time.")
+      .optional("window", Schema::number().non_negative().unit("s").default_value("0"),
+                "Standalone coupling window: steps end on window ends, and with "
+                "--cosim-repeat-windows every window runs twice (a check of save and restore). "
+                "0: the whole run is one window. Coupled, the job's window applies.")
       .required("materials", Schema::map_of(material_schema()),
                 "The fluid materials by name, in this order (at most 8).")
       .optional("exchange", Schema::sequence(exchange_schema()),

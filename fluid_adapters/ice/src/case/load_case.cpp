@@ -42,6 +42,7 @@ class CaseReader {
     read_grid(c);
     if (auto g = root_.find("gravity")) c.gravity = vector_of(*g);
     c.end_time = root_["end_time"].as<double>();
+    read_window(c);
     read_materials(c);
     c.size = run_size(dimension_, cell_count(c), static_cast<int>(c.materials.size()), root_);
     cosim::check_run_size(c.size, root_);
@@ -55,7 +56,6 @@ class CaseReader {
     c.coupling.drag_in_solver = coupling.get<std::string>("drag") == "ice";
     c.coupling.minimum_porosity = coupling.get<double>("minimum_porosity");
     c.coupling.heat_exchange = coupling.get<bool>("heat_exchange");
-    c.coupling.standalone_window = coupling.get<double>("standalone_window");
     return c;
   }
 
@@ -279,6 +279,15 @@ class CaseReader {
     if (auto t = node.find("turbulence"); t && !t->is_scalar()) {
       n.smagorinsky_constant = t->get<double>("constant");
     }
+  }
+
+  void read_window(CaseDescription& c) {
+    c.window = root_.get<double>("window");
+    if (c.window > 0.0 && c.end_time / c.window > cosim::max_output_count)
+      root_["window"].fail(
+          fmt::format("the window {:g} s gives {:.3g} windows over the run's {:g} "
+                      "s, more than {:g}; give a longer window",
+                      c.window, c.end_time / c.window, c.end_time, cosim::max_output_count));
   }
 
   void read_output(CaseDescription& c) {

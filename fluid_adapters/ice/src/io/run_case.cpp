@@ -71,8 +71,7 @@ class CaseRun {
         build_solver();
         if (participant_.is_coupled()) coupling_.declare(participant_, *solver_);
         participant_.declare_repeatable();
-        if (c_.coupling.standalone_window > 0.0)
-          participant_.set_standalone_window(c_.coupling.standalone_window);
+        if (c_.window > 0.0) participant_.set_standalone_window(c_.window);
         participant_.initialize(0.0, c_.end_time);
         // Coupled, the job's end time replaces the case's: the schedules end there.
         const double end = participant_.end_time();

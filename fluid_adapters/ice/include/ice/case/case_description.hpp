@@ -59,7 +59,7 @@ struct NumericsDescription {
 };
 
 // How ice_fluid takes part in a coupled run with a porous solid (unused
-// standalone, but for standalone_window).
+// standalone).
 struct CouplingDescription {
   // true: the fluid-solid drag is solved in each step with the coupler's
   // drag_coefficient (`drag: ice`; the job's momentum_exchange.solved_by:
@@ -69,8 +69,6 @@ struct CouplingDescription {
   // true: write fluid_temperature and fluid_heat_capacity and read the heat
   // of the coupler's energy exchange (`heat_exchange_energy`).
   bool heat_exchange = false;
-  // Standalone: the length of the run's coupling windows [s]; 0: one window.
-  double standalone_window = 0.0;
 };
 
 struct CaseDescription {
@@ -87,6 +85,7 @@ struct CaseDescription {
   std::vector<SideCondition> sides;  // 2 per dimension: x_min, x_max, y_min, ...
   NumericsDescription numerics;
   double end_time = 0.0;
+  double window = 0.0;        // the standalone coupling window [s]; 0: the whole run
   double output_every = 0.0;  // 0: start and end only
   bool snapshots = true;
   double gauge_every = 0.0;  // 0: every step
