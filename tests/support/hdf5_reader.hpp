@@ -31,25 +31,6 @@ class Hdf5Reader {
     return H5Lexists(file_, path.c_str(), H5P_DEFAULT) > 0;
   }
 
-  // The names of the links in a group, in name order.
-  std::vector<std::string> names(const std::string& group) const {
-    std::vector<std::string> result;
-    const hid_t g = H5Gopen2(file_, group.c_str(), H5P_DEFAULT);
-    if (g < 0) throw std::runtime_error("no group " + group);
-    H5G_info_t info;
-    H5Gget_info(g, &info);
-    for (hsize_t i = 0; i < info.nlinks; ++i) {
-      const ssize_t size =
-          H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
-      std::string name(static_cast<std::size_t>(size), '\0');
-      H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size() + 1,
-                         H5P_DEFAULT);
-      result.push_back(name);
-    }
-    H5Gclose(g);
-    return result;
-  }
-
   std::vector<hsize_t> dims(const std::string& path) const {
     const hid_t set = open(path);
     const hid_t space = H5Dget_space(set);
