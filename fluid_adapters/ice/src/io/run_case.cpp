@@ -194,6 +194,8 @@ class CaseRun {
       const double now = participant_.time();
       write_outputs(now, report, dt);
       if (participant_.is_window_complete()) outputs_.release();
+      // Inside a window that may run again, the progress line waits for its end.
+      if (outputs_.holding()) continue;
       if (Clock::now() - last_progress > std::chrono::seconds(5)) {
         last_progress = Clock::now();
         spdlog::info("t = {:.6g} s / {:.6g} s, step {}, dt = {:.3g} s, CG iterations {}", now,

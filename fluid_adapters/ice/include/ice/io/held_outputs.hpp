@@ -24,6 +24,7 @@ class HeldOutputs {
   void release();
   // The window runs again: what it held is forgotten; it still holds.
   void discard();
+  bool holding() const { return holding_; }
 
   void append(cosim::TimeSeriesWriter& writer, std::span<const double> row);
   void write(cosim::SnapshotWriter& writer, double time, const cosim::SnapshotFields& fields);
