@@ -14,6 +14,9 @@ namespace cosim::cplscheme {
 
 namespace {
 
+// A residual counts as diverging only above this fraction of ||H(x)||.
+constexpr double divergence_floor = 0.1;
+
 const std::vector<double>& values_of(const FieldsByPeer& fields, const job::SentField& f) {
   const auto peer = fields.find(f.participant);
   if (peer != fields.end()) {
@@ -117,8 +120,11 @@ WindowIteration::Verdict WindowIteration::judge(std::size_t window, double time,
       throw NumericalError(
           fmt::format("window {} (t = {:.6g} s), iteration {}: the residual of '{}' is not finite",
                       window, time, iteration_, m.spec->field.label()));
+    // Growth from a residual already at round-off or at the tolerance is
+    // not divergence: the iterate must also change by a tenth of itself.
     if (iteration_ >= 2 && m.previous_residual > 0.0 &&
-        m.residual > spec_.divergence_factor * m.previous_residual)
+        m.residual > spec_.divergence_factor * m.previous_residual &&
+        m.residual > divergence_floor * answer_norm)
       throw NumericalError(fmt::format(
           "window {} (t = {:.6g} s): the implicit coupling diverges: the residual of '{}' grew "
           "from {:.4g} to {:.4g} over iteration {} (more than coupling.divergence_factor = {:g} "

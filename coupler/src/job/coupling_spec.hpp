@@ -67,8 +67,8 @@ struct CouplingSpec {
   com::TimeInterpolation time_interpolation = com::TimeInterpolation::constant;
   std::size_t max_iterations = 0;
   OnMaxIterations on_max_iterations = OnMaxIterations::stop;
-  // A residual norm that grows by more than this factor over one iteration
-  // stops the run (exit 4).
+  // A residual norm that grows by more than this factor over one iteration,
+  // to more than a tenth of the field's norm, stops the run (exit 4).
   double divergence_factor = 0.0;
   std::vector<ConvergenceMeasure> convergence;
   acceleration::AccelerationSpec acceleration;

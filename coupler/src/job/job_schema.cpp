@@ -197,8 +197,8 @@ Schema coupling_schema() {
                 "continue: take the last iterate, warn, and count the window as not converged; "
                 "stop: end the run with exit 4 naming the window, the field and its residual.")
       .optional("divergence_factor", Schema::number().range(1.0, 1e300).default_value("1e3"),
-                "A residual that grows by more than this factor over one iteration ends the run "
-                "(exit 4).")
+                "A residual that grows by more than this factor over one iteration, to more than "
+                "a tenth of the field's norm, ends the run (exit 4).")
       .optional("convergence", Schema::sequence(convergence_measure_schema()),
                 "Implicit schemes: the convergence measures, at least one.")
       .optional("acceleration", acceleration_schema().default_value("{}"),
