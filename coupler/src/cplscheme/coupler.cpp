@@ -668,6 +668,12 @@ struct Coupler::Impl {
     applied_exchange_impulses = answered_exchange_impulses;
   }
 
+  // The summary's `coupling` section (its median sorts every window's count:
+  // made when the summary is written, not every window).
+  void record_coupling() {
+    if (iteration) summary.set_section("coupling", iteration->summary());
+  }
+
   void repeat_window(double t) {
     for (const auto& [name, peer] : peers) send(name, message(MessageType::window_repeat, t));
   }
@@ -824,16 +830,18 @@ void Coupler::run() {
         s.summary.set_metric("max_energy_exchange_balance_error", s.max_energy_balance_error, "1");
       progress.update(s.window, s.window_time(s.window),
                       s.iteration && s.window > 0 ? s.iteration->last_window_iterations() : 0);
-      if (s.iteration) s.summary.set_section("coupling", s.iteration->summary());
       s.summary.set_progress(s.window_time(s.window), s.job.end_time);
       const auto now = std::chrono::steady_clock::now();
       if (s.window % 100 == 0 || now - last_summary > std::chrono::seconds(2)) {
+        s.record_coupling();
         s.summary.write();
         last_summary = now;
       }
     }
     progress.finish();
+    s.record_coupling();
   } catch (const std::exception& e) {
+    s.record_coupling();
     progress.finish();
     s.abort_all(e.what());
     throw;
