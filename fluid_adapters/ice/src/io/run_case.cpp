@@ -12,6 +12,7 @@
 
 #include "cosim/error.hpp"
 #include "cosim/io/files.hpp"
+#include "cosim/io/held_outputs.hpp"
 #include "cosim/io/output_schedule.hpp"
 #include "cosim/io/run_summary.hpp"
 #include "cosim/io/snapshot_writer.hpp"
@@ -19,7 +20,6 @@
 #include "ice/case/load_case.hpp"
 #include "ice/case/make_solver.hpp"
 #include "ice/coupling/porous_coupling.hpp"
-#include "ice/io/held_outputs.hpp"
 #include "ice/io/state_output.hpp"
 #include "ice/solver/saved_state.hpp"
 
@@ -313,7 +313,7 @@ class CaseRun {
   std::size_t medium_window_ = 0;  // the window whose porous medium the solver holds
   std::size_t windows_saved_ = 0;
   SnapshotFieldSet<Dim> fields_;
-  HeldOutputs outputs_;
+  cosim::HeldOutputs outputs_;
   std::optional<cosim::SnapshotWriter> snapshot_writer_;
   std::optional<GaugeRecorder<Dim>> gauges_;
   std::optional<cosim::TimeSeriesWriter> steps_csv_;

@@ -25,7 +25,7 @@ GaugeRecorder::GaugeRecorder(const std::filesystem::path& file, const std::vecto
   row_.resize(1 + 3 * cells_.size());
 }
 
-void GaugeRecorder::record(double time, const Solver& solver, HeldOutputs& outputs) {
+void GaugeRecorder::record(double time, const Solver& solver, cosim::HeldOutputs& outputs) {
   const auto h = solver.depth();
   const auto bed = solver.bed();
   const auto qx = solver.discharge_x();

@@ -14,6 +14,7 @@
 #include "cosim/error.hpp"
 #include "cosim/fields.hpp"
 #include "cosim/io/files.hpp"
+#include "cosim/io/held_outputs.hpp"
 #include "cosim/io/output_schedule.hpp"
 #include "cosim/io/run_summary.hpp"
 #include "cosim/io/snapshot_writer.hpp"
@@ -21,7 +22,6 @@
 #include "swe/case/load_case.hpp"
 #include "swe/coupling/bed_traction.hpp"
 #include "swe/io/gauge_recorder.hpp"
-#include "swe/io/held_outputs.hpp"
 
 namespace swe {
 
@@ -334,7 +334,7 @@ class CaseRun {
   std::optional<RunProgress> saved_progress_;
   double tolerance_;
   double end_time_ = 0.0;
-  HeldOutputs outputs_;
+  cosim::HeldOutputs outputs_;
   std::optional<cosim::SnapshotWriter> snapshot_writer_;
   std::optional<GaugeRecorder> gauges_;
   std::optional<cosim::TimeSeriesWriter> water_;

@@ -3,9 +3,9 @@
 #include <filesystem>
 #include <vector>
 
+#include "cosim/io/held_outputs.hpp"
 #include "cosim/io/time_series_writer.hpp"
 #include "swe/case/case_description.hpp"
-#include "swe/io/held_outputs.hpp"
 #include "swe/solver.hpp"
 
 namespace swe {
@@ -19,7 +19,7 @@ class GaugeRecorder {
                 const Solver& solver);
   // Appends the row of `time` through `outputs` (held while its window may
   // run again).
-  void record(double time, const Solver& solver, HeldOutputs& outputs);
+  void record(double time, const Solver& solver, cosim::HeldOutputs& outputs);
   std::size_t rows() const { return writer_.rows_written(); }
 
  private:

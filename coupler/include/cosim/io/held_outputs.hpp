@@ -8,7 +8,7 @@
 #include "cosim/io/snapshot_writer.hpp"
 #include "cosim/io/time_series_writer.hpp"
 
-namespace swe {
+namespace cosim {
 
 // The outputs of a coupling window that may run again (implicit coupling,
 // --cosim-repeat-windows): held in memory from hold() until the window is
@@ -29,12 +29,12 @@ class HeldOutputs {
   void discard();
   bool holding() const { return holding_; }
 
-  void append(cosim::TimeSeriesWriter& writer, std::span<const double> row);
-  void write(cosim::SnapshotWriter& writer, double time, const cosim::SnapshotFields& fields);
+  void append(TimeSeriesWriter& writer, std::span<const double> row);
+  void write(SnapshotWriter& writer, double time, const SnapshotFields& fields);
 
  private:
   struct HeldRow {
-    cosim::TimeSeriesWriter* writer;
+    TimeSeriesWriter* writer;
     std::size_t begin, size;  // in row_values_
   };
   struct HeldField {
@@ -44,7 +44,7 @@ class HeldOutputs {
     std::vector<double> values;
   };
   struct HeldSnapshot {
-    cosim::SnapshotWriter* writer = nullptr;
+    SnapshotWriter* writer = nullptr;
     double time = 0.0;
     std::vector<HeldField> fields;
   };
@@ -56,4 +56,4 @@ class HeldOutputs {
   std::size_t held_snapshots_ = 0;
 };
 
-}  // namespace swe
+}  // namespace cosim

@@ -1,8 +1,8 @@
-#include "swe/io/held_outputs.hpp"
+#include "cosim/io/held_outputs.hpp"
 
-namespace swe {
+namespace cosim {
 
-void HeldOutputs::append(cosim::TimeSeriesWriter& writer, std::span<const double> row) {
+void HeldOutputs::append(TimeSeriesWriter& writer, std::span<const double> row) {
   if (!holding_) {
     writer.append(row);
     return;
@@ -11,8 +11,7 @@ void HeldOutputs::append(cosim::TimeSeriesWriter& writer, std::span<const double
   row_values_.insert(row_values_.end(), row.begin(), row.end());
 }
 
-void HeldOutputs::write(cosim::SnapshotWriter& writer, double time,
-                        const cosim::SnapshotFields& fields) {
+void HeldOutputs::write(SnapshotWriter& writer, double time, const SnapshotFields& fields) {
   if (!holding_) {
     writer.write(time, fields);
     return;
@@ -38,9 +37,9 @@ void HeldOutputs::release() {
     row.writer->append(std::span<const double>(row_values_).subspan(row.begin, row.size));
   for (std::size_t k = 0; k < held_snapshots_; ++k) {
     const HeldSnapshot& snapshot = snapshots_[k];
-    cosim::SnapshotFields fields;
+    SnapshotFields fields;
     for (const HeldField& f : snapshot.fields)
-      fields.emplace(f.name, cosim::FieldView{f.values, f.components, f.unit});
+      fields.emplace(f.name, FieldView{f.values, f.components, f.unit});
     snapshot.writer->write(snapshot.time, fields);
   }
   discard();
@@ -53,4 +52,4 @@ void HeldOutputs::discard() {
   held_snapshots_ = 0;
 }
 
-}  // namespace swe
+}  // namespace cosim
