@@ -6,8 +6,15 @@
 // (Martin & Moyce's geometry, K = 1e15), on 1e5 (316^2) and 1e6 (1000^2)
 // cells, one thread. Also reports the CG iterations per step. The state is
 // reset every 100 steps so the flow stays in its early, fast phase.
+//
+// BM_IceSaveRestore2d: going back to a coupling window's start (save_state
+// then restore_state, as an implicit window's iteration does) on the same
+// dam break; in_steps is its cost over the median of 5 steps timed just
+// before on the same solver.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
 #include <memory>
 #include <vector>
 
@@ -15,6 +22,7 @@
 #include "ice/eos/linear_water.hpp"
 #include "ice/solver/ice_solver.hpp"
 #include "ice/solver/initial_state.hpp"
+#include "ice/solver/saved_state.hpp"
 
 namespace {
 
@@ -86,6 +94,41 @@ BENCHMARK(BM_IceStep2d)
     ->Unit(benchmark::kMillisecond)
     ->MinTime(5.0)
     ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
+void BM_IceSaveRestore2d(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const DamBreak d = dam_break(n);
+  ice::ExchangeCoefficients exchange = ice::ExchangeCoefficients::none(2);
+  exchange.set(0, 1, 1.0e15, 0.0);
+  ice::IceSolver<2> solver(d.grid, d.materials, exchange, ice::IceSolver<2>::Sides{},
+                           Eigen::Vector2d(0.0, -9.81), d.state, ice::IceSolverOptions{});
+  const double dt = 0.4 * d.grid.spacing()[0] / 1.5;
+  std::vector<double> step_seconds;
+  for (int s = 0; s < 5; ++s) {
+    const auto start = std::chrono::steady_clock::now();
+    solver.advance(dt);
+    step_seconds.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::nth_element(step_seconds.begin(), step_seconds.begin() + 2, step_seconds.end());
+  ice::SavedIceState<2> saved;
+  solver.save_state(saved);  // the first save allocates
+  for (auto _ : state) {
+    solver.save_state(saved);
+    solver.restore_state(saved);
+    benchmark::ClobberMemory();
+  }
+  state.counters["in_steps"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * step_seconds[2],
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+BENCHMARK(BM_IceSaveRestore2d)
+    ->ArgNames({"cells_per_side"})
+    ->Arg(316)
+    ->Arg(1000)
+    ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
 }  // namespace

@@ -10,9 +10,16 @@
 // (their sum), yielded (fraction of points with plastic strain). After the
 // run a summary gives the median rates on 1 and 2 threads, the rate per
 // CPU-second (per busy core) and the 1 -> 2 thread speed-up.
+//
+// MpmSaveRestore: going back to a coupling window's start (Solver::save then
+// Solver::restore, as an implicit window's iteration does) on the 2D GIMP
+// column; counters: saved_MB and in_steps (save + restore over the median of
+// the steps timed just before, same solver).
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -24,6 +31,7 @@
 #include "cosim/config/document.hpp"
 #include "mpm/material/material_registry.hpp"
 #include "mpm/solver/solver.hpp"
+#include "mpm/solver/solver_state.hpp"
 
 namespace {
 
@@ -145,6 +153,32 @@ void run_steps(benchmark::State& state, const Setup& setup) {
   state.counters["yielded"] = static_cast<double>(yielded) / n;
 }
 
+void save_and_restore(benchmark::State& state, const Setup& setup) {
+  omp_set_num_threads(setup.threads);
+  mpm::Solver<2>& solver = solver_for<2>(setup);
+  std::vector<double> step_seconds;
+  for (int s = 0; s < 5; ++s) {
+    const auto start = std::chrono::steady_clock::now();
+    solver.step(solver.stable_time_step());
+    step_seconds.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::nth_element(step_seconds.begin(), step_seconds.begin() + 2, step_seconds.end());
+  const double step = step_seconds[2];
+  mpm::SolverState<2> saved;
+  solver.save(saved);  // the first save allocates
+  for (auto _ : state) {
+    solver.save(saved);
+    solver.restore(saved);
+    benchmark::ClobberMemory();
+  }
+  state.counters["particles"] = static_cast<double>(solver.particles().size());
+  state.counters["saved_MB"] = saved.bytes() / 1e6;
+  state.counters["in_steps"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * step,
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 std::string shape_name(ShapeKind shape) {
   return std::string(mpm::to_string(shape));
 }
@@ -173,6 +207,15 @@ void register_all() {
         b->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
       }
     }
+  }
+  for (const int wide : {112, 354}) {
+    const Setup setup{2, wide, ShapeKind::gimp, 1};
+    const std::string name =
+        std::string("MpmSaveRestore/2D/") + (wide < 200 ? "1e5" : "1e6") + "/gimp";
+    benchmark::RegisterBenchmark(name.c_str(),
+                                 [setup](benchmark::State& s) { save_and_restore(s, setup); })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
   }
 }
 

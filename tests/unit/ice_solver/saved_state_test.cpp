@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstring>
 #include <functional>
 #include <memory>
@@ -19,9 +18,12 @@
 #include "ice/case/make_solver.hpp"
 #include "ice/eos/linear_water.hpp"
 #include "ice/solver/ice_solver.hpp"
+#include "same_bits.hpp"
 
 namespace ice {
 namespace {
+
+using cosim::testing::same_bits;
 
 // A water column collapsing in air under a fixed-pressure top: the two-fluid
 // face exchange, viscosity, conduction, heat exchange and the multigrid
@@ -51,11 +53,6 @@ initial:
 boundaries:
   y_max: {type: fixed_pressure, pressure: 101325}
 )";
-
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() &&
-         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
-}
 
 // The fields of two saved states that differ in any bit, by name.
 template <int Dim>
@@ -283,32 +280,6 @@ TEST(IceSavedState, RepeatedWindowsThroughAMovingPorousSolidAreBitwiseAlike) {
                                        Window<2>{.read = read_medium(0.01), .take_impulse = false});
   const auto no_drag = [](IceSolver<2>& solver) { solver.set_solid_drag({}, {}); };
   expect_repeated_windows_reproduce<2>(make, Window<2>{}, Window<2>{.read = no_drag});
-}
-
-// What save_state and restore_state cost against a step, on the dam break
-// at 200 x 100 cells (timings on a shared machine: printed, not checked).
-TEST(IceSavedState, SaveAndRestoreCostLittleAgainstAStep) {
-  using Clock = std::chrono::steady_clock;
-  CaseDescription c = load_case_text(dam_break, "dam_break.yaml");
-  c.cells = {200, 100, 1};
-  const std::unique_ptr<IceSolver<2>> solver = make_solver<2>(c);
-  SavedIceState<2> saved;
-  solver->save_state(saved);  // the first save allocates
-  const int steps = 10, copies = 20;
-  const auto start = Clock::now();
-  run_window(*solver, steps, Window<2>{});
-  const double step = std::chrono::duration<double>(Clock::now() - start).count() / steps;
-  auto mark = Clock::now();
-  for (int k = 0; k < copies; ++k) solver->save_state(saved);
-  const double save = std::chrono::duration<double>(Clock::now() - mark).count() / copies;
-  mark = Clock::now();
-  for (int k = 0; k < copies; ++k) solver->restore_state(saved);
-  const double restore = std::chrono::duration<double>(Clock::now() - mark).count() / copies;
-  fmt::print(
-      "{} cells: save {:.3f} ms, restore {:.3f} ms, one step {:.3f} ms: save + restore = {:.3f} "
-      "steps\n",
-      solver->grid().cell_count(), 1e3 * save, 1e3 * restore, 1e3 * step, (save + restore) / step);
-  EXPECT_GT(step, 0.0);
 }
 
 }  // namespace

@@ -7,8 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -17,12 +15,14 @@
 #include "mpm/case/load_case.hpp"
 #include "mpm/solver/solver.hpp"
 #include "replaced_text.hpp"
+#include "same_bits.hpp"
 #include "scratch_directory.hpp"
 
 namespace mpm {
 namespace {
 
 using cosim::testing::replaced;
+using cosim::testing::same_bits;
 
 // A cohesive sand column that collapses under its weight and a ramped
 // pressure, a boulder (free rigid body) falling on it, a fixed floor, and
@@ -68,11 +68,6 @@ loads:
      ramp_time: 0.01}
 threads: 1
 )";
-
-template <class T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
-}
 
 // Every particle array, the grid of the last step and the totals.
 template <int Dim>
@@ -192,37 +187,6 @@ TEST(MpmSolverState, RestoringAStateNeverSavedIsAnInternalError) {
   } catch (const cosim::Error& e) {
     EXPECT_EQ(e.code(), cosim::ExitCode::internal_error);
   }
-}
-
-// The cost of going back to a window's start at about 1e4 particles, next to
-// the cost of a step (printed; the driver reports it as save_restore_seconds).
-TEST(MpmSolverState, SaveAndRestoreCostLittleNextToAStep) {
-  const cosim::testing::ScratchDirectory dir;
-  Solver<2> solver(load_case_text(finer(collapsing_column), dir / "case.yaml"));
-  using Clock = std::chrono::steady_clock;
-  const auto seconds = [](Clock::time_point since) {
-    return std::chrono::duration<double>(Clock::now() - since).count();
-  };
-  SolverState<2> state;
-  solver.save(state);  // the first save allocates
-  constexpr int repeats = 20;
-  auto start = Clock::now();
-  for (int k = 0; k < repeats; ++k) solver.save(state);
-  const double save = seconds(start) / repeats;
-  start = Clock::now();
-  for (int k = 0; k < repeats; ++k) solver.restore(state);
-  const double restore = seconds(start) / repeats;
-  start = Clock::now();
-  run_steps(solver, repeats);
-  const double step = seconds(start) / repeats;
-  std::printf(
-      "%zu particles, %.1f MB saved: save %.3g ms, restore %.3g ms, one step %.3g ms "
-      "(save + restore = %.2f steps)\n",
-      solver.particles().size(), state.bytes() / 1e6, 1e3 * save, 1e3 * restore, 1e3 * step,
-      (save + restore) / step);
-  EXPECT_GT(solver.particles().size(), 10000u);
-  // Copies of the arrays a step reads and writes several times over.
-  EXPECT_LT(save + restore, 2.0 * step);
 }
 
 }  // namespace

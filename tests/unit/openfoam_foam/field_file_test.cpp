@@ -3,10 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <bit>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <string>
@@ -395,9 +393,8 @@ TEST_F(OpenFoamFieldFile, PositionsHoldCoordinatesAndTheCellOfEachParcel) {
       std::invalid_argument);
 }
 
-// A quadratic slip (say, counting lines per value) would take seconds here;
-// the bound is loose for sanitizer and debug builds.
-TEST_F(OpenFoamFieldFile, ParsesTwentyThousandCellsQuickly) {
+// A large field, as the adapter reads every window, comes back bit for bit.
+TEST_F(OpenFoamFieldFile, ReadsTwentyThousandCellsBitForBit) {
   constexpr std::size_t cells = 20000;
   std::vector<double> values(3 * cells);
   for (std::size_t i = 0; i < values.size(); ++i)
@@ -414,17 +411,11 @@ TEST_F(OpenFoamFieldFile, ParsesTwentyThousandCellsQuickly) {
                    .dimensions = "[1 -1 -2 0 0 0 0]",
                    .values = {values.data(), cells},
                    .boundary_field = walls_zero_gradient});
-  const auto start = std::chrono::steady_clock::now();
   const std::vector<double> read_vectors = read_internal_field(file, FieldType::vector, cells);
-  const auto vectors_done = std::chrono::steady_clock::now();
   const std::vector<double> read_scalars = read_internal_field(p, FieldType::scalar, cells);
-  const auto scalars_done = std::chrono::steady_clock::now();
-  const auto ms = [](auto d) { return std::chrono::duration<double, std::milli>(d).count(); };
-  std::printf("20000-cell volVectorField: %.2f ms, volScalarField: %.2f ms\n",
-              ms(vectors_done - start), ms(scalars_done - vectors_done));
   EXPECT_EQ(bits_of(read_vectors), bits_of(values));
-  EXPECT_EQ(read_scalars.size(), cells);
-  EXPECT_LT(ms(scalars_done - start), 250.0);
+  EXPECT_EQ(bits_of(read_scalars),
+            bits_of(std::vector<double>(values.begin(), values.begin() + cells)));
 }
 
 }  // namespace

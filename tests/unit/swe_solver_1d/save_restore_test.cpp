@@ -1,13 +1,14 @@
 #include <gtest/gtest.h>
 
-#include <cstring>
-#include <span>
 #include <vector>
 
 #include "cosim/error.hpp"
+#include "same_bits.hpp"
 #include "solver_1d_cases.hpp"
 
 namespace {
+
+using cosim::testing::same_bits;
 
 // The state the solver shows and the steps it takes from it.
 struct Trajectory {
@@ -25,10 +26,6 @@ struct Trajectory {
     return t;
   }
 };
-
-bool same_bits(std::span<const double> a, std::span<const double> b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size_bytes()) == 0;
-}
 
 void expect_same_bits(const Trajectory& a, const Trajectory& b) {
   EXPECT_TRUE(same_bits(a.steps, b.steps));

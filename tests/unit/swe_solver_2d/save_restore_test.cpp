@@ -1,15 +1,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
-#include <span>
 #include <vector>
 
 #include "cosim/error.hpp"
+#include "same_bits.hpp"
 #include "solver_2d_fixture.hpp"
 #include "swe/solver_2d.hpp"
 
 namespace {
+
+using cosim::testing::same_bits;
 
 using swe_2d_test::all_sides;
 using swe_2d_test::sample;
@@ -31,10 +32,6 @@ struct Trajectory {
     return t;
   }
 };
-
-bool same_bits(std::span<const double> a, std::span<const double> b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size_bytes()) == 0;
-}
 
 void expect_same_bits(const Trajectory& a, const Trajectory& b) {
   EXPECT_TRUE(same_bits(a.steps, b.steps));
