@@ -133,6 +133,8 @@ WindowIteration::Verdict WindowIteration::judge(std::size_t window, double time,
           spec_.divergence_factor));
     all_hold = m.holds(iteration_, answer_norm) && all_hold;
   }
+  spdlog::debug("window {} (t = {:.6g} s), iteration {}: {}", window, time, iteration_,
+                residuals_text());
 
   std::vector<double> x = gather(sent_);
   std::vector<double> h = gather(answer);
@@ -150,7 +152,7 @@ WindowIteration::Verdict WindowIteration::judge(std::size_t window, double time,
     const std::string what = fmt::format(
         "window {} (t = {:.6g} s) has not converged in {} iterations (coupling.max_iterations): "
         "{}",
-        window, time, iteration_, worst_measure());
+        window, time, iteration_, residuals_text());
     if (spec_.on_max_iterations == job::OnMaxIterations::stop)
       throw NumericalError(what + " (coupling.on_max_iterations: continue takes the last iterate)");
     spdlog::warn("{}; the last iterate is taken (coupling.on_max_iterations: continue)", what);
@@ -167,7 +169,7 @@ WindowIteration::Verdict WindowIteration::judge(std::size_t window, double time,
   return Verdict::repeat;
 }
 
-std::string WindowIteration::worst_measure() const {
+std::string WindowIteration::residuals_text() const {
   std::string out;
   for (const Measure& m : measures_)
     out += fmt::format("{}'{}' residual {:.4g} (relative {:.4g})", out.empty() ? "" : ", ",

@@ -61,7 +61,7 @@ class WindowIteration {
   void window_done(bool converged, std::size_t window, double time);
   std::vector<double> gather(const FieldsByPeer& fields) const;
   void scatter(std::span<const double> values, FieldsByPeer& fields) const;
-  std::string worst_measure() const;
+  std::string residuals_text() const;
 
   const job::CouplingSpec& spec_;
   std::vector<Measure> measures_;
