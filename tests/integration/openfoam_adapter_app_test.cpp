@@ -1,8 +1,8 @@
 // openfoam_adapter end to end: its bad-input exits (which need no OpenFOAM),
 // then, with OpenFOAM installed, a small generated case run window by
-// window and a failing OpenFOAM run. Without OpenFOAM the executable exits
-// 77 after the first group, which CTest reports as not run
-// (SKIP_RETURN_CODE), printing why.
+// window, a failing OpenFOAM run and a coupled job whose windows repeat. Without OpenFOAM the
+// executable exits 77 after the first group, which CTest reports as not run (SKIP_RETURN_CODE),
+// printing why.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -13,8 +13,11 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cosim/error.hpp"
+#include "hdf5_contents.hpp"
 #include "openfoam/foam/installation.hpp"
 #include "openfoam/foam/time_directories.hpp"
 #include "openfoam/io/case_layout.hpp"
@@ -26,6 +29,7 @@ namespace {
 namespace fs = std::filesystem;
 using cosim::testing::binary;
 using cosim::testing::fresh_directory;
+using cosim::testing::hdf5_contents;
 using cosim::testing::read_text;
 using cosim::testing::write_text;
 
@@ -218,6 +222,71 @@ TEST_F(OpenFoamAdapterRun, AUsersCaseWithoutAFluidsDensityExitsTwoNamingFileAndE
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("constant/transportProperties"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("water/rho"), std::string::npos) << r.output;
+}
+
+// The Darcy column of configs/openfoam_coupled/darcy (OpenFOAM's water
+// through a held MPM column), four windows, explicit and then implicit with
+// no acceleration and a limit only an exact repetition meets: every window
+// runs twice, the second time from the start directory kept for it, and must
+// reproduce the first bit for bit (its residual 0). Only accepted windows
+// leave outputs, so both runs write the same files.
+TEST_F(OpenFoamAdapterRun, AWindowRunAgainFromItsStartRepeatsItBitForBit) {
+  const fs::path dir = fresh_directory("openfoam_adapter_repeat");
+  const fs::path case_dir = fs::path(COSIM_SOURCE_DIR) / "configs" / "openfoam_coupled" / "darcy";
+  std::string job = read_text(case_dir / "job.yaml");
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const auto at = job.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    job.replace(at, from.size(), to);
+  };
+  replace("end_time: 0.08", "end_time: 0.02");
+  replace("config: water.yaml", "config: " + (case_dir / "water.yaml").string());
+  replace("config: column.yaml", "config: " + (case_dir / "column.yaml").string());
+  write_text(dir / "explicit.yaml", job);
+  write_text(dir / "implicit.yaml", job + R"(coupling:
+  scheme: parallel-implicit
+  convergence:
+    - {field: column.pore_pressure, absolute: 1.0e-300}
+    - {field: water.solid_fraction, absolute: 1.0e-300}
+  acceleration: {method: none}
+)");
+  for (const char* scheme : {"explicit", "implicit"}) {
+    const auto r = cosim::testing::run(
+        {binary("cosim").string(), "run", (dir / (std::string(scheme) + ".yaml")).string(),
+         "--output", (dir / scheme).string()},
+        std::chrono::seconds(300));
+    ASSERT_EQ(r.exit_code, 0) << scheme << ":\n" << r.output;
+  }
+  const auto coupling =
+      nlohmann::json::parse(read_text(dir / "implicit" / "summary.json"))["coupling"];
+  EXPECT_EQ(coupling["windows"], 4);
+  EXPECT_EQ(coupling["iterations"], 8);  // each window twice: the second repeats the first
+  EXPECT_EQ(coupling["windows_not_converged"], 0);
+  const auto water = nlohmann::json::parse(read_text(dir / "implicit" / "water" / "summary.json"));
+  EXPECT_EQ(water["metrics"]["state_restores"]["value"], 4.0);
+
+  for (const char* file : {"water/gauges.csv", "water/soil_exchange.csv", "column/probes.csv"}) {
+    if (!fs::exists(dir / "explicit" / file)) continue;
+    EXPECT_EQ(read_text(dir / "explicit" / file), read_text(dir / "implicit" / file)) << file;
+  }
+  std::size_t snapshots = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "explicit" / "water")) {
+    if (entry.path().extension() != ".h5") continue;
+    ++snapshots;
+    EXPECT_EQ(hdf5_contents(entry.path()),
+              hdf5_contents(dir / "implicit" / "water" / entry.path().filename()))
+        << entry.path().filename();
+  }
+  EXPECT_GE(snapshots, 2u);
+  // The case keeps the times a plain run keeps: no window's start is left.
+  std::vector<std::string> explicit_times, implicit_times;
+  for (const auto& [times, scheme] :
+       {std::pair{&explicit_times, "explicit"}, std::pair{&implicit_times, "implicit"}})
+    for (const auto& entry : fs::directory_iterator(dir / scheme / "water" / "case"))
+      times->push_back(entry.path().filename().string());
+  std::sort(explicit_times.begin(), explicit_times.end());
+  std::sort(implicit_times.begin(), implicit_times.end());
+  EXPECT_EQ(explicit_times, implicit_times);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
+#include <vector>
 
 #include "cosim/error.hpp"
 #include "cosim/io/files.hpp"
@@ -211,6 +212,7 @@ class CaseRun {
   FoamFields start_coupling(cosim::Participant& participant, SoilCoupling& coupling) {
     coupled_ = true;
     coupling.declare(participant);
+    participant.declare_repeatable();
     FoamFields fields = read_fields("0");
     coupling.write(participant, fields, c_.time_step, 0);
     participant.initialize(0.0, c_.end_time);
@@ -236,16 +238,55 @@ class CaseRun {
 
   // One coupling window, in order: the soil into OpenFOAM's start, OpenFOAM
   // over the window, the water's fields to the soil, then the window's
-  // record and outputs.
+  // record and outputs. A window that must run again (implicit coupling)
+  // starts over from its start directory, which is kept until the window is
+  // complete, and leaves no record or output.
   void exchange_window(cosim::Participant& participant, SoilCoupling& coupling,
                        FoamFields& fields) {
+    if (participant.must_save_state()) save_window_start(coupling);
     const double start = participant.time();
     const double end = start + participant.max_time_step();
     write_soil(participant, coupling, fields);
-    fields = run_window(start, end);
-    const auto check = send_water(participant, coupling, fields, end - start);
+    FoamFields end_fields = run_window(start, end, window_start_.has_value());
+    const auto check = send_water(participant, coupling, end_fields, end - start);
+    if (participant.must_restore_state()) {
+      restore_window_start(coupling, end);
+      return;
+    }
+    fields = std::move(end_fields);
+    if (window_start_ && !c_.keep_time_directories && window_start_->directory != "0")
+      layout_->remove_time(window_start_->directory);
     soil_record_->record(check, end - start, end, parcels_);
     finish_window(end, fields, !participant.is_coupling_ongoing());
+  }
+
+  // The state a repeated window starts over from: the case's time
+  // directories up to the window's start (kept by run_window), the
+  // coupling's carried velocity, and the tallies of the windows run.
+  struct WindowStart {
+    std::string directory;
+    std::vector<double> coupling;
+    long steps = 0;
+    std::size_t windows = 0;
+  };
+
+  void save_window_start(const SoilCoupling& coupling) {
+    window_start_ =
+        WindowStart{layout_->latest()->name, coupling.carried_state(), steps_, windows_.size()};
+  }
+
+  // The window's end directory goes, so that OpenFOAM starts again from the
+  // window's start directory.
+  void restore_window_start(SoilCoupling& coupling, double end) {
+    if (!window_start_)
+      throw cosim::Error(cosim::ExitCode::internal_error,
+                         "openfoam_adapter: asked to repeat a window whose start was not saved");
+    if (const auto written = layout_->at(end, tolerance_)) layout_->remove_time(written->name);
+    coupling.restore(window_start_->coupling);
+    steps_ = window_start_->steps;
+    windows_.resize(window_start_->windows);
+    ++state_restores_;
+    summary_.set_metric("state_restores", static_cast<double>(state_restores_), "1");
   }
 
   // The soil as MPPICInterFoam's parcels in the start directory, or as the
@@ -348,7 +389,7 @@ class CaseRun {
   // (with MPPICInterFoam, coupled, the means of the window's steps; the next
   // start's inertia), then the time directories no longer needed and the
   // window's costs.
-  FoamFields run_window(double start, double end) {
+  FoamFields run_window(double start, double end, bool may_repeat = false) {
     const std::string start_name = layout_->latest()->name;
     const long steps = steps_in(end - start);
     WindowTiming timing;
@@ -366,7 +407,9 @@ class CaseRun {
     }
     timing.read = seconds_since(phase);
     if (!c_.keep_time_directories) {
-      const std::array<std::string, 2> keep{"0", written.name};
+      // A window that may run again keeps its start directory.
+      std::vector<std::string> keep{"0", written.name};
+      if (may_repeat) keep.push_back(start_name);
       layout_->remove_times_except(keep);
     }
     steps_ += steps;
@@ -499,7 +542,9 @@ class CaseRun {
   bool coupled_ = false;
   std::optional<GaugeRecorder> gauges_;
   std::optional<SoilExchangeRecord> soil_record_;  // coupled
-  std::size_t parcels_ = 0;                        // or the porosity zones' cells
+  std::optional<WindowStart> window_start_;        // implicit coupling
+  std::size_t state_restores_ = 0;
+  std::size_t parcels_ = 0;  // or the porosity zones' cells
 };
 
 // --overwrite clears the output directory: it must not hold the user's own

@@ -81,6 +81,12 @@ class SoilCoupling {
   };
   MomentumCheck write(cosim::Participant& participant, FoamFields& end, double window, long steps);
 
+  // What the coupling carries from one window to the next (the water's
+  // velocity at the last window's end, which sizes the parcels): saved at a
+  // window's start, put back when the window must run again.
+  std::vector<double> carried_state() const { return fluid_velocity_; }
+  void restore(std::vector<double> carried) { fluid_velocity_ = std::move(carried); }
+
   static constexpr const char* mesh_name = "openfoam_cells";
 
  private:
