@@ -1,5 +1,7 @@
 #include "hdf5_file.hpp"
 
+#include <algorithm>
+
 #include "cosim/error.hpp"
 
 namespace cosim::hdf5 {
@@ -56,14 +58,16 @@ void OutputFile::write_raw(const std::string& dataset, std::span<const hsize_t> 
   if (expected != count)
     throw Error(ExitCode::bad_input, "HDF5: " + where + ": " + std::to_string(count) +
                                          " values for a dataspace of " + std::to_string(expected));
-  const PropertyListHandle link_properties(H5Pcreate(H5P_LINK_CREATE),
-                                           "link properties for " + where);
-  if (H5Pset_create_intermediate_group(link_properties.get(), 1) < 0)
-    fail("intermediate groups for " + where);
+  create_groups_above(dataset, where);
+  // Without creation times, the same data written twice gives the same
+  // bytes (a repeated or restarted run compares its files with cmp).
+  const PropertyListHandle dataset_properties(H5Pcreate(H5P_DATASET_CREATE),
+                                              "dataset properties for " + where);
+  if (H5Pset_obj_track_times(dataset_properties.get(), 0) < 0) fail("untracked times for " + where);
   const DataspaceHandle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
                               "dataspace for " + where);
   const DatasetHandle set(H5Dcreate2(file_.get(), dataset.c_str(), file_type, space.get(),
-                                     link_properties.get(), H5P_DEFAULT, H5P_DEFAULT),
+                                     H5P_DEFAULT, dataset_properties.get(), H5P_DEFAULT),
                           "cannot create dataset " + where);
   if (count > 0 && H5Dwrite(set.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) < 0)
     fail("cannot write dataset " + where);
@@ -75,12 +79,38 @@ void OutputFile::write_raw(const std::string& dataset, std::span<const hsize_t> 
   }
 }
 
+void OutputFile::create_groups_above(const std::string& dataset, const std::string& where) {
+  for (std::size_t slash = dataset.find('/', 1); slash != std::string::npos;
+       slash = dataset.find('/', slash + 1)) {
+    const std::string group = dataset.substr(0, slash);
+    const htri_t exists = H5Lexists(file_.get(), group.c_str(), H5P_DEFAULT);
+    if (exists < 0) fail("cannot look up group '" + group + "' for " + where);
+    if (exists > 0) continue;
+    const PropertyListHandle group_properties(H5Pcreate(H5P_GROUP_CREATE),
+                                              "group properties for " + where);
+    if (H5Pset_obj_track_times(group_properties.get(), 0) < 0)
+      fail("untracked times for group '" + group + "'");
+    const GroupHandle created(
+        H5Gcreate2(file_.get(), group.c_str(), H5P_DEFAULT, group_properties.get(), H5P_DEFAULT),
+        "cannot create group '" + group + "' for " + where);
+  }
+}
+
 void OutputFile::set_attribute(const std::string& name, double value) {
   set_scalar_attribute(file_.get(), name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value);
 }
 
 void OutputFile::set_attribute(const std::string& name, std::int64_t value) {
   set_scalar_attribute(file_.get(), name, H5T_STD_I64LE, H5T_NATIVE_INT64, &value);
+}
+
+void OutputFile::set_attribute(const std::string& name, std::string_view value) {
+  const std::string where = "attribute '" + name + "' in '" + path_ + "'";
+  const DatatypeHandle text(H5Tcopy(H5T_C_S1), "string type for " + where);
+  if (H5Tset_size(text.get(), std::max<std::size_t>(value.size(), 1)) < 0)
+    fail("string size for " + where);
+  const std::string copy(value);
+  set_scalar_attribute(file_.get(), name, text.get(), text.get(), copy.c_str());
 }
 
 void OutputFile::set_scalar_attribute(hid_t object, const std::string& name, hid_t file_type,
@@ -95,6 +125,85 @@ void OutputFile::set_scalar_attribute(hid_t object, const std::string& name, hid
 
 void OutputFile::close() {
   file_.close("cannot close '" + path_ + "'");
+}
+
+InputFile::InputFile(const std::filesystem::path& path)
+    : path_(path.string()),
+      file_(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "cannot open '" + path_ + "'") {}
+
+bool InputFile::has(const std::string& dataset) const {
+  const htri_t exists = H5Lexists(file_.get(), dataset.c_str(), H5P_DEFAULT);
+  if (exists < 0) fail("cannot look up '" + path_ + ":/" + dataset + "'");
+  return exists > 0;
+}
+
+std::vector<hsize_t> InputFile::dims(const std::string& dataset) const {
+  const std::string where = "'" + path_ + ":/" + dataset + "'";
+  const DatasetHandle set(H5Dopen2(file_.get(), dataset.c_str(), H5P_DEFAULT),
+                          "no dataset " + where);
+  const DataspaceHandle space(H5Dget_space(set.get()), "dataspace of " + where);
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  if (rank < 0) fail("rank of " + where);
+  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
+  if (H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) < 0) fail("dims of " + where);
+  return dims;
+}
+
+namespace {
+
+std::size_t element_count(const std::vector<hsize_t>& dims) {
+  std::size_t n = 1;
+  for (const hsize_t d : dims) n *= static_cast<std::size_t>(d);
+  return n;
+}
+
+}  // namespace
+
+std::vector<double> InputFile::read_doubles(const std::string& dataset) const {
+  std::vector<double> values(element_count(dims(dataset)));
+  read_raw(dataset, H5T_NATIVE_DOUBLE, values.data(), values.size());
+  return values;
+}
+
+std::vector<std::int64_t> InputFile::read_integers(const std::string& dataset) const {
+  std::vector<std::int64_t> values(element_count(dims(dataset)));
+  read_raw(dataset, H5T_NATIVE_INT64, values.data(), values.size());
+  return values;
+}
+
+void InputFile::read_raw(const std::string& dataset, hid_t memory_type, void* values,
+                         std::size_t count) const {
+  const std::string where = "'" + path_ + ":/" + dataset + "'";
+  const DatasetHandle set(H5Dopen2(file_.get(), dataset.c_str(), H5P_DEFAULT),
+                          "no dataset " + where);
+  const DatatypeHandle type(H5Dget_type(set.get()), "type of " + where);
+  if (H5Tget_class(type.get()) != H5Tget_class(memory_type))
+    throw Error(ExitCode::bad_input, "HDF5: " + where + " holds another type of number");
+  if (count > 0 && H5Dread(set.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) < 0)
+    fail("cannot read " + where);
+}
+
+std::string InputFile::string_attribute(const std::string& name) const {
+  const std::string where = "attribute '" + name + "' of '" + path_ + "'";
+  const AttributeHandle attribute(H5Aopen(file_.get(), name.c_str(), H5P_DEFAULT), "no " + where);
+  const DatatypeHandle type(H5Aget_type(attribute.get()), "type of " + where);
+  if (H5Tget_class(type.get()) != H5T_STRING)
+    throw Error(ExitCode::bad_input, "HDF5: " + where + " is not text");
+  std::string value(H5Tget_size(type.get()), '\0');
+  if (H5Aread(attribute.get(), type.get(), value.data()) < 0) fail("cannot read " + where);
+  value.resize(value.find('\0') == std::string::npos ? value.size() : value.find('\0'));
+  return value;
+}
+
+std::int64_t InputFile::integer_attribute(const std::string& name) const {
+  const std::string where = "attribute '" + name + "' of '" + path_ + "'";
+  const AttributeHandle attribute(H5Aopen(file_.get(), name.c_str(), H5P_DEFAULT), "no " + where);
+  const DatatypeHandle type(H5Aget_type(attribute.get()), "type of " + where);
+  if (H5Tget_class(type.get()) != H5T_INTEGER)
+    throw Error(ExitCode::bad_input, "HDF5: " + where + " is not an integer");
+  std::int64_t value = 0;
+  if (H5Aread(attribute.get(), H5T_NATIVE_INT64, &value) < 0) fail("cannot read " + where);
+  return value;
 }
 
 }  // namespace cosim::hdf5

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 // Thin RAII layer over the HDF5 C API for the snapshot writer: every handle
 // closes itself, every failure becomes cosim::Error with HDF5's own message.
@@ -60,6 +61,7 @@ using DataspaceHandle = Handle<H5Sclose>;
 using DatatypeHandle = Handle<H5Tclose>;
 using AttributeHandle = Handle<H5Aclose>;
 using PropertyListHandle = Handle<H5Pclose>;
+using GroupHandle = Handle<H5Gclose>;
 
 // A new HDF5 file (an existing one is truncated) to which datasets and
 // attributes are added by path; intermediate groups are created as needed.
@@ -73,14 +75,41 @@ class OutputFile {
              std::span<const std::int64_t> values);
   void set_attribute(const std::string& name, double value);
   void set_attribute(const std::string& name, std::int64_t value);
+  void set_attribute(const std::string& name, std::string_view value);
   // Closes and flushes the file; throws if that fails.
   void close();
 
  private:
+  // The groups of a dataset's path that do not exist yet, without times.
+  void create_groups_above(const std::string& dataset, const std::string& where);
   void write_raw(const std::string& dataset, std::span<const hsize_t> dims, hid_t file_type,
                  hid_t memory_type, const void* values, std::size_t count, std::string_view unit);
   void set_scalar_attribute(hid_t object, const std::string& name, hid_t file_type,
                             hid_t memory_type, const void* value);
+
+  std::string path_;
+  FileHandle file_;
+};
+
+// An HDF5 file opened to read; every failure (no such file or dataset, a
+// truncated file, another type) is an Error naming the file and the dataset.
+class InputFile {
+ public:
+  explicit InputFile(const std::filesystem::path& path);
+
+  bool has(const std::string& dataset) const;
+  std::vector<hsize_t> dims(const std::string& dataset) const;
+  std::vector<double> read_doubles(const std::string& dataset) const;
+  std::vector<std::int64_t> read_integers(const std::string& dataset) const;
+  // The file's own attributes; nullopt-free: a missing one is an Error.
+  std::string string_attribute(const std::string& name) const;
+  std::int64_t integer_attribute(const std::string& name) const;
+
+  const std::string& path() const { return path_; }
+
+ private:
+  void read_raw(const std::string& dataset, hid_t memory_type, void* values,
+                std::size_t count) const;
 
   std::string path_;
   FileHandle file_;
