@@ -54,6 +54,11 @@ void expect_every_window_converged(const fs::path& run, double most_median_itera
               c.at("max_iterations_per_window").get<int>());
   EXPECT_EQ(c.at("windows_not_converged").get<int>(), 0);
   EXPECT_LE(c.at("median_iterations_per_window").get<double>(), most_median_iterations);
+  // Each participant counts the windows it completed, not its attempts.
+  for (const char* participant : {"soil", "water"}) {
+    const auto summary = nlohmann::json::parse(read_text(run / participant / "summary.json"));
+    EXPECT_EQ(summary.at("windows"), c.at("windows")) << participant;
+  }
 }
 
 TEST(ImplicitPairings, ClayColumnOnShallowWaterMatchesTheExplicitRun) {

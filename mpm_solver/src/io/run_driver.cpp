@@ -319,7 +319,9 @@ class CaseRun {
         summary_.set_metric("saved_state_bytes", saved_solver_.bytes(), "B");
       }
       if (observer_) {
-        auto coupling = observer_->summary();
+        nlohmann::json coupling = observer_->summary();
+        if (coupling.contains("windows"))
+          summary_.set_windows(coupling["windows"].get<std::int64_t>());
         if (!coupling.is_null()) summary_.set_section("coupling", std::move(coupling));
       }
     } catch (const std::exception& e) {

@@ -270,7 +270,7 @@ class CaseRun {
     (void)line;
     if (!start) {
       summary_.set_steps(static_cast<std::int64_t>(run_.steps));
-      summary_.set_windows(static_cast<std::int64_t>(participant_.window_index()));
+      summary_.set_windows(static_cast<std::int64_t>(participant_.timings().windows));
       if (run_.steps > 0) {
         summary_.set_metric("min_time_step", run_.min_dt, "s");
         summary_.set_metric(

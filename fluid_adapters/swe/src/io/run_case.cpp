@@ -316,7 +316,7 @@ class CaseRun {
     if (!line) set("momentum_y", c_.physics.density * totals.momentum_y, "kg m/s");
     if (!start) {
       summary_.set_steps(static_cast<std::int64_t>(progress_.steps));
-      summary_.set_windows(static_cast<std::int64_t>(participant_.window_index()));
+      summary_.set_windows(static_cast<std::int64_t>(participant_.timings().windows));
       summary_.set_metric("max_free_surface", progress_.eta_max, "m");
       if (progress_.steps > 0) summary_.set_metric("min_time_step", progress_.min_dt, "s");
       const auto& timings = participant_.timings();
