@@ -58,8 +58,23 @@ std::optional<double> coupling_share(const PlannedRun& run) {
   }
 }
 
+// A coupled run's median iterations per window: its summary's `coupling`
+// section under an implicit scheme, 1 under an explicit one.
+std::optional<double> iterations_per_window(const PlannedRun& run) {
+  if (!run.coupled) return std::nullopt;
+  std::ifstream in(run.output() / "summary.json");
+  if (!in) return std::nullopt;
+  try {
+    const auto j = nlohmann::json::parse(in);
+    if (!j.contains("coupling")) return 1.0;
+    return j.at("coupling").at("median_iterations_per_window").get<double>();
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
 RunResult evaluate_run(const PlannedRun& run, const RunRecord& record) {
-  RunResult result{&run, record, coupling_share(run), {}};
+  RunResult result{&run, record, coupling_share(run), {}, iterations_per_window(run)};
   const RunLayout layout{run.backend->backend, run.coupled, run.directory / "input", run.output()};
   for (const auto& m : run.scenario->metrics) {
     if (!record.completed()) {

@@ -158,21 +158,21 @@ std::vector<std::string> convergence_notes(const Scenario& s,
 void write_results_csv(const fs::path& file, const std::vector<RunResult>& results) {
   std::string out =
       "scenario,backend,level,cells,metric,unit,value,reference,reference_label,error,"
-      "tolerance,verdict,wall_time_s,coupling_share,run_state,note\n";
+      "tolerance,verdict,wall_time_s,coupling_share,iterations_per_window,run_state,note\n";
   for (const auto& r : results) {
     const PlannedRun& run = *r.run;
     const auto row = [&](const std::string& metric, const std::string& unit,
                          const MetricResult* x) {
       std::string note = x != nullptr ? x->note : std::string();
       if (!r.record.completed()) note = failure_line(r.record.message);
-      out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+      out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
                          cell(run.scenario->name), run.backend_name(), cell(run.level_label()),
                          run.level != nullptr ? number(run.level->cells) : "", cell(metric),
                          cell(unit), x ? number(x->value) : "", x ? number(x->reference) : "",
                          x ? cell(x->reference_label) : "", x ? number(x->error) : "",
                          x ? number(x->tolerance) : "", x ? to_string(x->verdict) : "",
-                         number(r.record.wall_time_s), number(r.coupling_share), r.record.state,
-                         cell(note));
+                         number(r.record.wall_time_s), number(r.coupling_share),
+                         number(r.iterations_per_window), r.record.state, cell(note));
     };
     if (run.scenario->metrics.empty()) row("", "", nullptr);
     for (std::size_t i = 0; i < run.scenario->metrics.size(); ++i)
@@ -415,6 +415,10 @@ void write_report(const fs::path& file, const Suite& suite, const std::vector<Ru
     md << "\n| coupling share | |";
     for (const RunResult* r : runs)
       md << " " << (r->coupling_share ? fmt::format("{:.1f} %", 100.0 * *r->coupling_share) : "–")
+         << " |";
+    md << "\n| iterations per window (median) | |";
+    for (const RunResult* r : runs)
+      md << " " << (r->iterations_per_window ? fmt::format("{:g}", *r->iterations_per_window) : "–")
          << " |";
     md << "\n\n";
     std::vector<std::string> notes;

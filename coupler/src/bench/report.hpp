@@ -17,6 +17,8 @@ struct RunResult {
   RunRecord record;
   std::optional<double> coupling_share;  // the coupler's own share of a coupled run's wall time
   std::vector<MetricResult> metrics;     // one per metric of the scenario, in its order
+  // A coupled run's median attempts per window (1 with an explicit scheme).
+  std::optional<double> iterations_per_window = std::nullopt;
 };
 
 struct ReportContext {

@@ -60,6 +60,8 @@ struct TwoBackends {
     results = {result(0.01, 30.0, Verdict::pass), result(0.2, 3.0, Verdict::fail)};
     results[0].run = &runs[0];
     results[1].run = &runs[1];
+    results[0].iterations_per_window = 4.5;  // implicit
+    results[1].iterations_per_window = 1.0;  // explicit
   }
 };
 
@@ -74,6 +76,8 @@ TEST(Report, OneCsvRowPerRunAndMetric) {
   EXPECT_DOUBLE_EQ(t.row(0)[t.index("error")], 0.01);
   EXPECT_DOUBLE_EQ(t.row(1)[t.index("wall_time_s")], 3.0);
   EXPECT_EQ(t.text(0, t.index("reference_label")), "exact (eq. 1, \"a\")");  // quoted in the file
+  EXPECT_DOUBLE_EQ(t.row(0)[t.index("iterations_per_window")], 4.5);
+  EXPECT_DOUBLE_EQ(t.row(1)[t.index("iterations_per_window")], 1.0);
 }
 
 TEST(Report, SaysWhichPairingWasClosestAndWhichCheapest) {
@@ -97,6 +101,11 @@ TEST(Report, TheMarkdownTableKeepsItsColumns) {
   EXPECT_NE(row.find("speed \\|u\\|"), std::string::npos) << row;  // the label's bars escaped
   EXPECT_EQ(std::count(row.begin(), row.end(), '|') - std::count(row.begin(), row.end(), '\\'), 5)
       << row;
+  std::ifstream again(dir.path() / "report.md");
+  std::string iterations;
+  while (std::getline(again, line))
+    if (line.rfind("| iterations per window", 0) == 0) iterations = line;
+  EXPECT_EQ(iterations, "| iterations per window (median) | | 4.5 | 1 |");
 }
 
 }  // namespace
