@@ -39,18 +39,26 @@ std::string machine_description() {
                      std::thread::hardware_concurrency());
 }
 
-// The coupler's own share of a coupled run's wall time: transport, mapping,
-// exchange and output, against the total (the rest is waiting for the
-// participants to compute).
-std::optional<double> coupling_share(const PlannedRun& run) {
+// The coupler's summary.json of a coupled run, if it reads.
+std::optional<nlohmann::json> coupler_summary(const PlannedRun& run) {
   if (!run.coupled) return std::nullopt;
   std::ifstream in(run.output() / "summary.json");
   if (!in) return std::nullopt;
   try {
-    const auto j = nlohmann::json::parse(in);
-    const double total = j.at("wall_time_s").at("total").get<double>();
+    return nlohmann::json::parse(in);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+// The coupler's own share of a coupled run's wall time: transport, mapping,
+// exchange and output, against the total (the rest is waiting for the
+// participants to compute).
+std::optional<double> coupling_share(const nlohmann::json& summary) {
+  try {
+    const double total = summary.at("wall_time_s").at("total").get<double>();
     double own = 0.0;
-    for (const auto& [phase, seconds] : j.at("wall_time_s").at("phases").items())
+    for (const auto& [phase, seconds] : summary.at("wall_time_s").at("phases").items())
       if (phase != "waiting") own += seconds.get<double>();
     return total > 0.0 ? std::optional<double>(own / total) : std::nullopt;
   } catch (const std::exception&) {
@@ -60,21 +68,21 @@ std::optional<double> coupling_share(const PlannedRun& run) {
 
 // A coupled run's median iterations per window: its summary's `coupling`
 // section under an implicit scheme, 1 under an explicit one.
-std::optional<double> iterations_per_window(const PlannedRun& run) {
-  if (!run.coupled) return std::nullopt;
-  std::ifstream in(run.output() / "summary.json");
-  if (!in) return std::nullopt;
+std::optional<double> iterations_per_window(const nlohmann::json& summary) {
   try {
-    const auto j = nlohmann::json::parse(in);
-    if (!j.contains("coupling")) return 1.0;
-    return j.at("coupling").at("median_iterations_per_window").get<double>();
+    if (!summary.contains("coupling")) return 1.0;
+    return summary.at("coupling").at("median_iterations_per_window").get<double>();
   } catch (const std::exception&) {
     return std::nullopt;
   }
 }
 
 RunResult evaluate_run(const PlannedRun& run, const RunRecord& record) {
-  RunResult result{&run, record, coupling_share(run), {}, iterations_per_window(run)};
+  RunResult result{&run, record, std::nullopt, {}, std::nullopt};
+  if (const auto summary = coupler_summary(run)) {
+    result.coupling_share = coupling_share(*summary);
+    result.iterations_per_window = iterations_per_window(*summary);
+  }
   const RunLayout layout{run.backend->backend, run.coupled, run.directory / "input", run.output()};
   for (const auto& m : run.scenario->metrics) {
     if (!record.completed()) {
