@@ -55,6 +55,16 @@ int main(int argc, char** argv) {
           },
           "SECONDS in [0.1, 1e6]"));
   run_cmd->add_option("--job-id", run_options.job_id, "job id (set by the MPI launch)");
+  run_cmd->add_option("--checkpoint-every", run_options.checkpoint_every,
+                      "write a checkpoint of the coupled run every N windows (500) or every T "
+                      "simulated seconds (0.5s) under <output>/checkpoints/");
+  run_cmd
+      ->add_option("--checkpoints-kept", run_options.checkpoints_kept,
+                   "how many of the latest checkpoints to keep (default 2)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1000000}));
+  run_cmd->add_option("--restart", run_options.restart,
+                      "continue from this checkpoint directory (<run>/checkpoints/window_<n>) "
+                      "into a new --output directory");
 
   std::string validate_file;
   auto* validate_cmd = app.add_subcommand("validate", "Check a job file without running it");

@@ -12,6 +12,7 @@
 #include <random>
 #include <string_view>
 
+#include "checkpoint/manifest.hpp"
 #include "com/mpi_transport.hpp"
 #include "com/zmq_transport.hpp"
 #include "cosim/error.hpp"
@@ -80,6 +81,42 @@ void end_participants(runtime::Supervisor& supervisor, const fs::path& output) {
           fmt::format("participant '{}' {} (recorded by cosim)", e.name, e.describe()));
 }
 
+// --checkpoint-every and --restart, checked before any process starts: a
+// checkpoint of another job or version, or one with a file missing or
+// changed, is refused (exit 2) saying which.
+void check_checkpoint_options(const job::Job& job, const RunOptions& o) {
+  if (o.checkpoint_every.empty() && o.restart.empty()) return;
+  if (!o.checkpoint_every.empty()) (void)checkpoint::Schedule::parse(o.checkpoint_every);
+  const char* option = o.restart.empty() ? "--checkpoint-every" : "--restart";
+  if (job.coupling.is_serial())
+    throw InputError(
+        fmt::format("{}: job '{}' couples serially (coupling.scheme: serial-...), "
+                    "whose checkpoints are not built yet; use a parallel scheme",
+                    option, job.name));
+  if (job.transport == job::TransportKind::mpi)
+    throw InputError(
+        fmt::format("{}: job '{}' uses transport 'mpi', whose checkpoints are not "
+                    "built yet; use transport: zmq",
+                    option, job.name));
+  if (o.restart.empty()) return;
+  const checkpoint::Manifest m = checkpoint::read_manifest(o.restart);
+  checkpoint::check_same_job(m, o.restart, job.name, job.config_hash);
+  if (o.overwrite && is_inside(o.restart, o.output))
+    throw InputError(
+        fmt::format("--restart {} lies inside --output {}, which --overwrite would "
+                    "delete; restart into another directory",
+                    o.restart, o.output));
+}
+
+void set_checkpoint_options(const RunOptions& o, cplscheme::CouplerOptions& options) {
+  if (!o.checkpoint_every.empty())
+    options.checkpoint_every = checkpoint::Schedule::parse(o.checkpoint_every);
+  options.checkpoints_kept = o.checkpoints_kept;
+  if (o.restart.empty()) return;
+  options.restart = fs::absolute(o.restart);
+  options.restart_window = checkpoint::read_manifest(o.restart).window;
+}
+
 // The participants run as children of this process, talking over ZeroMQ.
 void run_with_zmq(const job::Job& job, const RunOptions& o, RunSummary& summary) {
   com::ZmqHubOptions hub_options;
@@ -105,6 +142,9 @@ void run_with_zmq(const job::Job& job, const RunOptions& o, RunSummary& summary)
     child.executable = executables[i];
     child.args = runtime::participant_arguments(p, output, hub.endpoint(), o.job_id,
                                                 job.config_hash, o.connect_timeout_s);
+    if (!o.restart.empty())
+      child.args.insert(child.args.end(),
+                        {"--cosim-restart", (fs::absolute(o.restart) / p.name).string()});
     options.tokens[p.name] = new_run_token();
     child.environment = {{"COSIM_TOKEN", options.tokens[p.name]}};
     create_output_directory(output / p.name);
@@ -124,6 +164,7 @@ void run_with_zmq(const job::Job& job, const RunOptions& o, RunSummary& summary)
   options.connect_timeout_s = o.connect_timeout_s;
   options.progress_on_terminal = ::isatty(STDERR_FILENO) != 0;
   options.interrupted = &runtime::stop_flag();
+  set_checkpoint_options(o, options);
   cplscheme::Coupler coupler(job, hub, &supervisor, summary, options);
   try {
     coupler.run();
@@ -131,10 +172,12 @@ void run_with_zmq(const job::Job& job, const RunOptions& o, RunSummary& summary)
     end_participants(supervisor, output);
     throw;
   }
-  // After `finish`, each participant writes its output and exits by itself.
+  // After `finish`, each participant writes its output and exits by itself;
+  // so it does after its part of a checkpoint the run stops at.
   const auto window_timeout = milliseconds(static_cast<long>(job.window_timeout_s * 1000.0));
-  const auto exits = supervisor.wait_all(window_timeout, &runtime::stop_flag());
-  if (runtime::stop_requested()) {
+  const bool stopped = coupler.stopped_at_checkpoint();
+  const auto exits = supervisor.wait_all(window_timeout, stopped ? nullptr : &runtime::stop_flag());
+  if (runtime::stop_requested() && !stopped) {
     end_participants(supervisor, output);
     throw Error(
         ExitCode::participant_failed,
@@ -154,6 +197,12 @@ void run_with_zmq(const job::Job& job, const RunOptions& o, RunSummary& summary)
                             "the end of the run",
                             names, job.window_timeout_s));
   }
+  if (stopped)
+    throw Error(ExitCode::stopped_at_checkpoint,
+                fmt::format("{}: stopped at the checkpoint of window {} ({}); `cosim run {} "
+                            "--restart <that checkpoint> --output <a new directory>` continues",
+                            runtime::describe_stop(), summary.windows(),
+                            (output / "checkpoints").string(), o.job_file));
 }
 
 // Under mpirun: this process is world rank 0, the participants are the other
@@ -220,6 +269,7 @@ int run_job(const RunOptions& o) {
     begin_summary(job, opts);
     return launch_mpirun(job, opts);
   }
+  check_checkpoint_options(job, opts);
   if (o.print_mpi_command)
     throw InputError(
         fmt::format("{}: job '{}' uses transport '{}'; --print-mpi-command "

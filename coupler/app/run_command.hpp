@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 // `cosim run <job.yaml> --output <dir>`: starts the job's participants,
@@ -20,6 +21,9 @@ struct RunOptions {
   bool print_mpi_command = false;
   bool overwrite = false;  // clear the earlier run a non-empty --output holds
   double connect_timeout_s = 120.0;
+  std::string checkpoint_every;  // empty: no checkpoints
+  std::size_t checkpoints_kept = 2;
+  std::string restart;  // a checkpoint directory to continue from
 };
 
 // Returns the process exit code (architecture.md §6).

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "model_jobs.hpp"
 #include "run_process.hpp"
 #include "text_files.hpp"
 
@@ -24,49 +25,6 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 constexpr double a_exact = 0.8, b_exact = -0.4;
-
-std::string participant_config(const char* writes, const char* reads, double constant,
-                               double coefficient) {
-  return fmt::format(R"(kind: test_participant
-dt: 4.0e-3
-mesh: {{dim: 1, origin: [0.0], spacing: [0.25], cells: [4]}}
-writes:
-  - {{name: {0}, function: [{2}, 0, 0, 0, 0], response: {{read: {1}, coefficient: {3}}}}}
-reads:
-  - {{name: {1}}}
-)",
-                     writes, reads, constant, coefficient);
-}
-
-// `coupling` is the job's coupling block (YAML, indented by two).
-void write_case(const fs::path& dir, const std::string& coupling, double a_gain = 0.5,
-                double b_gain = -3.0, const std::string& b_args = "[]") {
-  write_text(dir / "job.yaml", fmt::format(R"(kind: job
-name: fixed_point
-end_time: 0.1
-window: 1.0e-2
-participants:
-  left:
-    executable: cosim_test_participant
-    config: left.yaml
-    meshes: {{grid: {{kind: uniform_grid, dim: 1}}}}
-    writes: {{a: grid}}
-    reads: {{b: grid}}
-  right:
-    executable: cosim_test_participant
-    config: right.yaml
-    args: {1}
-    meshes: {{grid: {{kind: uniform_grid, dim: 1}}}}
-    writes: {{b: grid}}
-    reads: {{a: grid}}
-exchange:
-  - {{field: a, from: left, to: right, mapping: consistent}}
-  - {{field: b, from: right, to: left, mapping: consistent}}
-{0})",
-                                           coupling, b_args));
-  write_text(dir / "left.yaml", participant_config("a", "b", 1.0, a_gain));
-  write_text(dir / "right.yaml", participant_config("b", "a", 2.0, b_gain));
-}
 
 const std::string implicit_iqn = R"(coupling:
   scheme: parallel-implicit
@@ -91,7 +49,7 @@ std::vector<double> reads_per_window(const fs::path& file) {
 
 TEST(ImplicitCoupling, ConvergesToTheFixedPointInEveryWindowAndWritesOnce) {
   const fs::path dir = fresh_directory("e2e_implicit");
-  write_case(dir, implicit_iqn);
+  write_fixed_point_case(dir, implicit_iqn);
   const auto r = cosim_run(dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
 
@@ -126,7 +84,7 @@ TEST(ImplicitCoupling, ConvergesToTheFixedPointInEveryWindowAndWritesOnce) {
 
 TEST(ImplicitCoupling, ExplicitCouplingOfTheSameProblemDiverges) {
   const fs::path dir = fresh_directory("e2e_implicit_explicit");
-  write_case(dir, "");
+  write_fixed_point_case(dir, "");
   const auto r = cosim_run(dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto a_read = reads_per_window(dir / "run" / "right" / "a_read.csv");
@@ -145,14 +103,14 @@ TEST(ImplicitCoupling, ConstantAndQuasiNewtonConvergeAndAitkenIsReported) {
   for (const char* method : {"constant", "aitken", "iqn-ils"}) {
     const bool asserted = std::string(method) != "aitken";
     const fs::path dir = fresh_directory(std::string("e2e_implicit_") + method);
-    write_case(dir, fmt::format(R"(coupling:
+    write_fixed_point_case(dir, fmt::format(R"(coupling:
   scheme: parallel-implicit
   max_iterations: 200
   on_max_iterations: continue
   convergence: [{{field: right.a, relative: 1.0e-8}}, {{field: left.b, relative: 1.0e-8}}]
   acceleration: {{method: {}, relaxation: 0.3}}
 )",
-                                method));
+                                            method));
     const auto r = cosim_run(dir);
     ASSERT_EQ(r.exit_code, 0) << method << "\n" << r.output;
     const auto summary = nlohmann::json::parse(read_text(dir / "run" / "summary.json"));
@@ -168,7 +126,7 @@ TEST(ImplicitCoupling, ConstantAndQuasiNewtonConvergeAndAitkenIsReported) {
 
 TEST(ImplicitCoupling, TimeInterpolationOfAConstantFixedPointChangesNothing) {
   const fs::path dir = fresh_directory("e2e_implicit_linear");
-  write_case(dir, implicit_iqn + "  time_interpolation: linear\n");
+  write_fixed_point_case(dir, implicit_iqn + "  time_interpolation: linear\n");
   const auto r = cosim_run(dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto a_read = reads_per_window(dir / "run" / "right" / "a_read.csv");
@@ -177,7 +135,7 @@ TEST(ImplicitCoupling, TimeInterpolationOfAConstantFixedPointChangesNothing) {
 
 TEST(ImplicitCoupling, AParticipantThatCannotRepeatIsRefusedAtTheScheme) {
   const fs::path dir = fresh_directory("e2e_implicit_not_repeatable");
-  write_case(dir, implicit_iqn, 0.5, -3.0, "[--not-repeatable]");
+  write_fixed_point_case(dir, implicit_iqn, 0.5, -3.0, "[--not-repeatable]");
   const auto r = cosim_run(dir);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_THAT(r.output, HasSubstr("job.yaml:23:11: key 'coupling.scheme'"));
@@ -196,7 +154,7 @@ TEST(ImplicitCoupling, MaxIterationsStopsWithTheWindowAndTheFieldOrContinues) {
     const fs::path dir = fresh_directory("e2e_implicit_stop");
     std::string c = limited;
     c.replace(c.find("ON_MAX"), 6, "stop");
-    write_case(dir, c);
+    write_fixed_point_case(dir, c);
     const auto r = cosim_run(dir);
     EXPECT_EQ(r.exit_code, 4) << r.output;
     EXPECT_THAT(r.output, HasSubstr("window 1 (t = 0.01 s) has not converged in 3 iterations"));
@@ -207,7 +165,7 @@ TEST(ImplicitCoupling, MaxIterationsStopsWithTheWindowAndTheFieldOrContinues) {
     const fs::path dir = fresh_directory("e2e_implicit_continue");
     std::string c = limited;
     c.replace(c.find("ON_MAX"), 6, "continue");
-    write_case(dir, c);
+    write_fixed_point_case(dir, c);
     const auto r = cosim_run(dir);
     EXPECT_EQ(r.exit_code, 0) << r.output;
     const auto summary = nlohmann::json::parse(read_text(dir / "run" / "summary.json"));
@@ -218,13 +176,13 @@ TEST(ImplicitCoupling, MaxIterationsStopsWithTheWindowAndTheFieldOrContinues) {
 
 TEST(ImplicitCoupling, ADivergingResidualStopsTheRun) {
   const fs::path dir = fresh_directory("e2e_implicit_diverging");
-  write_case(dir, R"(coupling:
+  write_fixed_point_case(dir, R"(coupling:
   scheme: parallel-implicit
   divergence_factor: 10
   convergence: [{field: right.a, relative: 1.0e-10}]
   acceleration: {method: none}
 )",
-             40.0, -40.0);
+                         40.0, -40.0);
   const auto r = cosim_run(dir);
   EXPECT_EQ(r.exit_code, 4) << r.output;
   EXPECT_THAT(r.output, HasSubstr("window 1 (t = 0.01 s): the implicit coupling diverges: the "
@@ -239,58 +197,6 @@ TEST(ImplicitCoupling, ADivergingResidualStopsTheRun) {
 // momentum rho_f u_f + rho_s u_s = f t. The implicit scheme's exchange on the
 // window's predicted velocities gives w within 1 % at a window 1e4 tau; the
 // explicit exchange, lagged a window, leaves w = a dt (shown, not asserted).
-constexpr double model_window = 1.0e-2, model_rho_f = 600.0, model_rho_s = 1590.0;
-constexpr double model_force = 6000.0, model_tau = 1.0e-6;
-const double model_drag = 1.0 / (model_tau * (1.0 / model_rho_f + 1.0 / model_rho_s));
-
-void write_drag_case(const fs::path& dir, const std::string& coupling) {
-  write_text(dir / "job.yaml", fmt::format(R"(kind: job
-name: stiff_drag
-end_time: 0.1
-window: {}
-participants:
-  water:
-    executable: cosim_test_participant
-    config: water.yaml
-    meshes: {{grid: {{kind: uniform_grid, dim: 1}}}}
-    writes: {{fluid_velocity: grid, fluid_bulk_density: grid}}
-    reads: {{momentum_exchange_impulse: grid}}
-  soil:
-    executable: cosim_test_participant
-    config: soil.yaml
-    meshes: {{grid: {{kind: uniform_grid, dim: 1}}}}
-    writes: {{solid_fraction: grid, solid_velocity: grid, solid_bulk_density: grid}}
-    reads: {{momentum_exchange_impulse: grid}}
-momentum_exchange:
-  fluid: water
-  solid: soil
-  mesh: water.grid
-  drag: {{law: constant, coefficient: {:.17g}}}
-{})",
-                                           model_window, model_drag, coupling));
-  const std::string grid = "mesh: {dim: 1, origin: [0.0], spacing: [0.25], cells: [4]}\n";
-  const std::string impulse =
-      "  - {name: momentum_exchange_impulse, unit: kg m/s, quantity: extensive, time: "
-      "integral}\n";
-  write_text(dir / "water.yaml",
-             "kind: test_participant\ndt: 1.0e-3\n" + grid +
-                 "writes:\n  - {name: fluid_velocity, unit: m/s}\n"
-                 "  - {name: fluid_bulk_density, unit: kg/m^3, function: [600.0, 0, 0, 0, 0]}\n"
-                 "reads:\n" +
-                 impulse +
-                 "dynamics: {velocity: fluid_velocity, impulse: momentum_exchange_impulse, "
-                 "bulk_density: 600.0, body_force: [6000.0]}\n");
-  write_text(dir / "soil.yaml",
-             "kind: test_participant\ndt: 7.0e-4\n" + grid +
-                 "writes:\n  - {name: solid_fraction, function: [0.4, 0, 0, 0, 0]}\n"
-                 "  - {name: solid_velocity, unit: m/s}\n"
-                 "  - {name: solid_bulk_density, unit: kg/m^3, function: [1590.0, 0, 0, 0, 0]}\n"
-                 "reads:\n" +
-                 impulse +
-                 "dynamics: {velocity: solid_velocity, impulse: momentum_exchange_impulse, "
-                 "bulk_density: 1590.0, body_force: [0.0]}\n");
-}
-
 struct DragRun {
   double worst_relative_velocity_error = 0.0;  // |w - w_exact| / w_exact over windows
   double worst_momentum_error = 0.0;           // |p - f t| / (f t)
@@ -320,7 +226,7 @@ DragRun drag_run(const fs::path& dir) {
 
 TEST(ImplicitCoupling, StiffDragMatchesTheExactSolutionAtAWindowOf1e4RelaxationTimes) {
   const fs::path dir = fresh_directory("e2e_implicit_drag");
-  write_drag_case(dir, R"(coupling:
+  write_stiff_drag_case(dir, R"(coupling:
   scheme: parallel-implicit
   convergence:
     - {field: water.momentum_exchange_impulse, relative: 1.0e-8}
@@ -333,7 +239,7 @@ TEST(ImplicitCoupling, StiffDragMatchesTheExactSolutionAtAWindowOf1e4RelaxationT
   const double median = summary["coupling"]["median_iterations_per_window"].get<double>();
 
   const fs::path explicit_dir = fresh_directory("e2e_explicit_drag");
-  write_drag_case(explicit_dir, "");
+  write_stiff_drag_case(explicit_dir, "");
   ASSERT_EQ(cosim_run(explicit_dir).exit_code, 0);
   const DragRun explicit_run = drag_run(explicit_dir);
   std::printf(
@@ -426,7 +332,7 @@ TEST(ImplicitCoupling, LinearTimeInterpolationIsSecondOrderInTheWindow) {
 TEST(ImplicitCoupling, SerialExplicitDivergesAndSerialImplicitConverges) {
   {
     const fs::path dir = fresh_directory("e2e_serial_explicit");
-    write_case(dir, "coupling: {scheme: serial-explicit, first: left}\n");
+    write_fixed_point_case(dir, "coupling: {scheme: serial-explicit, first: left}\n");
     const auto r = cosim_run(dir);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const auto a_read = reads_per_window(dir / "run" / "right" / "a_read.csv");
@@ -440,13 +346,13 @@ TEST(ImplicitCoupling, SerialExplicitDivergesAndSerialImplicitConverges) {
   }
   for (const char* method : {"aitken", "iqn-ils"}) {
     const fs::path dir = fresh_directory(std::string("e2e_serial_implicit_") + method);
-    write_case(dir, fmt::format(R"(coupling:
+    write_fixed_point_case(dir, fmt::format(R"(coupling:
   scheme: serial-implicit
   first: left
   convergence: [{{field: left.b, relative: 1.0e-10}}, {{field: right.a, relative: 1.0e-10}}]
   acceleration: {{method: {}}}
 )",
-                                method));
+                                            method));
     const auto r = cosim_run(dir);
     ASSERT_EQ(r.exit_code, 0) << method << "\n" << r.output;
     const auto a_read = reads_per_window(dir / "run" / "right" / "a_read.csv");
@@ -498,7 +404,7 @@ TEST(ImplicitCoupling, BadCouplingBlocksAreRefusedAtTheirKeys) {
   };
   for (const BadCoupling& c : cases) {
     const fs::path dir = fresh_directory("e2e_implicit_bad");
-    write_case(dir, c.coupling);
+    write_fixed_point_case(dir, c.coupling);
     const auto r = run({binary("cosim").string(), "validate", (dir / "job.yaml").string()},
                        std::chrono::seconds(30));
     EXPECT_EQ(r.exit_code, 2) << c.coupling << r.output;

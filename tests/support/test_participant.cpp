@@ -26,6 +26,7 @@
 #include "cosim/error.hpp"
 #include "cosim/io/files.hpp"
 #include "cosim/io/run_summary.hpp"
+#include "cosim/io/state_file.hpp"
 #include "cosim/io/time_series_writer.hpp"
 #include "cosim/participant.hpp"
 #include "cosim/runtime/stop_request.hpp"
@@ -232,8 +233,24 @@ int signal_number(const std::string& name) {
   throw cosim::InputError("--raise: unknown signal '" + name + "'");
 }
 
+struct Capabilities {
+  bool repeatable = true;
+  bool checkpointable = true;
+};
+
+// Fault injection: what the participant does besides its fields.
+struct Faults {
+  long crash_at_window = 0;
+  long hang_at_window = 0;
+  double window_delay_s = 0.0;  // a slow solver: sleeps at every window's start
+  RaisedSignal raised;
+};
+
 int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std::string& output,
-        long crash_at_window, long hang_at_window, const RaisedSignal& raised, bool repeatable) {
+        const Faults& faults, Capabilities capabilities) {
+  const long crash_at_window = faults.crash_at_window;
+  const long hang_at_window = faults.hang_at_window;
+  const RaisedSignal& raised = faults.raised;
   cosim::create_output_directory(output);
   std::ofstream(std::filesystem::path(output) / "pid") << ::getpid() << "\n";
   // One CSV per field and direction: <output>/<field>_<sent|applied|read>.csv;
@@ -266,7 +283,8 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
   participant.declare_mesh(config.mesh);
   for (const auto& w : config.writes) participant.declare_write(w.spec);
   for (const auto& r : config.reads) participant.declare_read(r.spec);
-  if (repeatable) participant.declare_repeatable();
+  if (capabilities.repeatable) participant.declare_repeatable();
+  if (capabilities.checkpointable) participant.declare_checkpointable();
 
   const cosim::Mesh& mesh = config.mesh;
   auto values_of = [&](const FieldConfig& f, double t) {
@@ -356,7 +374,23 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
     std::vector<double> velocity, ode_state;
     std::map<std::string, std::vector<double>> sent_integral, received_integral;
   } saved;
+  // The same state in a checkpoint (the integrals are zero at a window's end).
+  constexpr const char* state_kind = "cosim_test_participant";
+  auto write_checkpoint = [&] {
+    cosim::StateFileWriter out(participant.checkpoint_directory() / "state.h5", state_kind, 1);
+    out.numbers("velocity", velocity);
+    out.numbers("ode_state", ode_state);
+    out.commit();
+    participant.checkpoint_written();
+  };
+  if (!participant.restart_directory().empty()) {
+    const cosim::StateFileReader in(participant.restart_directory() / "state.h5", state_kind, 1);
+    in.numbers("velocity", velocity.size(), velocity);
+    in.numbers("ode_state", ode_state.size(), ode_state);
+  }
   auto begin_window = [&] {
+    if (faults.window_delay_s > 0.0)
+      std::this_thread::sleep_for(std::chrono::duration<double>(faults.window_delay_s));
     if (participant.must_save_state())
       saved = {velocity, ode_state, sent_integral, received_integral};
     check_reads(false);
@@ -449,6 +483,7 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
           log(config.ode->state, "window_end", static_cast<double>(window), participant.time(),
               total(ode_state) / static_cast<double>(ode_state.size()), 0.0);
         write_rows();
+        if (participant.must_write_checkpoint()) write_checkpoint();
         if (participant.is_coupling_ongoing()) begin_window();
       }
     }
@@ -467,19 +502,22 @@ int main(int argc, char** argv) {
   cosim::runtime::install_stop_handlers();
   CLI::App app{"cosim_test_participant: analytic fields for the coupler's tests"};
   std::string config_file, output, raise_signal;
-  long crash_at_window = 0, hang_at_window = 0;
-  bool validate = false, not_repeatable = false;
-  RaisedSignal raised;
+  bool validate = false, not_repeatable = false, not_checkpointable = false;
+  Faults faults;
   cosim::CouplingEndpoint endpoint;
   app.add_option("--config", config_file, "test_participant YAML")->required();
   app.add_option("--output", output, "output directory");
   app.add_flag("--validate", validate, "check the config and exit");
-  app.add_option("--crash-at-window", crash_at_window, "fail at the start of this window");
-  app.add_option("--hang-at-window", hang_at_window, "stop answering at this window");
+  app.add_option("--crash-at-window", faults.crash_at_window, "fail at the start of this window");
+  app.add_option("--hang-at-window", faults.hang_at_window, "stop answering at this window");
+  app.add_option("--window-delay", faults.window_delay_s, "seconds to sleep at every window start")
+      ->check(CLI::Range(0.0, 10.0));
   app.add_option("--raise", raise_signal, "send itself this signal (SIGKILL, SIGSTOP, SIGSEGV...)");
-  app.add_option("--raise-at", raised.phase, "when: startup | window:<N> | end");
+  app.add_option("--raise-at", faults.raised.phase, "when: startup | window:<N> | end");
   app.add_flag("--not-repeatable", not_repeatable,
                "do not declare that windows can be repeated (implicit schemes refuse it)");
+  app.add_flag("--not-checkpointable", not_checkpointable,
+               "do not declare that it can write and read checkpoints");
   cosim::add_coupling_options(app, endpoint);
   try {
     app.parse(argc, argv);
@@ -494,12 +532,13 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (output.empty()) throw cosim::InputError("--output is required");
-    if (!raise_signal.empty()) raised.signal = signal_number(raise_signal);
+    if (!raise_signal.empty()) faults.raised.signal = signal_number(raise_signal);
     cosim::create_output_directory(output);
     cosim::RunSummary summary(output, "cosim_test_participant");
     summary.write();
     return cosim::run_and_finish(summary, [&] {
-      run(config, endpoint, output, crash_at_window, hang_at_window, raised, !not_repeatable);
+      run(config, endpoint, output, faults,
+          {.repeatable = !not_repeatable, .checkpointable = !not_checkpointable});
     });
   } catch (const cosim::Error& e) {
     std::cerr << "cosim_test_participant: error: " << e.what() << "\n";

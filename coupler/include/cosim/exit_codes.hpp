@@ -7,10 +7,11 @@ namespace cosim {
 
 enum class ExitCode : int {
   success = 0,
-  internal_error = 1,      // a bug in cosim itself: please report it
-  bad_input = 2,           // config, mesh, arguments: the message names file, key and line
-  participant_failed = 3,  // a coupled participant died or broke the protocol
-  numerical_failure = 4,   // NaN, or a CFL violation adaptive stepping could not recover
+  internal_error = 1,         // a bug in cosim itself: please report it
+  bad_input = 2,              // config, mesh, arguments: the message names file, key and line
+  participant_failed = 3,     // a coupled participant died or broke the protocol
+  numerical_failure = 4,      // NaN, or a CFL violation adaptive stepping could not recover
+  stopped_at_checkpoint = 5,  // asked to stop (SIGTERM), it wrote a checkpoint and stopped
 };
 
 constexpr int to_int(ExitCode code) {
@@ -31,6 +32,8 @@ constexpr const char* to_string(ExitCode code) {
       return "participant_failed";
     case ExitCode::numerical_failure:
       return "numerical_failure";
+    case ExitCode::stopped_at_checkpoint:
+      return "stopped_at_checkpoint";
   }
   return "unknown";
 }
@@ -38,7 +41,7 @@ constexpr const char* to_string(ExitCode code) {
 // The code named by to_string, or internal_error for any other text.
 constexpr ExitCode exit_code_from_string(std::string_view name) {
   for (ExitCode code : {ExitCode::success, ExitCode::bad_input, ExitCode::participant_failed,
-                        ExitCode::numerical_failure})
+                        ExitCode::numerical_failure, ExitCode::stopped_at_checkpoint})
     if (name == to_string(code)) return code;
   return ExitCode::internal_error;
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <chrono>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <span>
@@ -50,6 +51,21 @@ class App;
 //
 // Outputs are written only when is_window_complete(): a window that is
 // repeated must not leave a trace.
+//
+// A coupled run can be checkpointed and restarted (architecture.md §14). A
+// solver that can write its state and start again from it declares it:
+//
+//   p.declare_checkpointable();                      // before initialize
+//   if (!p.restart_directory().empty()) state = read_state(p.restart_directory());
+//   ...
+//     p.advance(dt);
+//     if (p.must_write_checkpoint()) {               // after a completed window
+//       write_state(p.checkpoint_directory());
+//       p.checkpoint_written();
+//     }
+//
+// A restarted participant begins at the window after the checkpoint's, with
+// the fields it had received then; it writes no initial data.
 namespace cosim {
 
 // Where to reach the coupler; given to a participant on its command line by
@@ -71,6 +87,9 @@ struct CouplingEndpoint {
   // (--cosim-repeat-windows): checks a solver's save and restore, since the
   // repeated run must give exactly the results of a plain one.
   bool repeat_windows = false;
+  // The participant's directory of a checkpoint to start from
+  // (--cosim-restart); empty for a fresh start.
+  std::filesystem::path restart = {};
 
   bool is_standalone() const { return uri.empty(); }
   // The job's name for this participant, or the solver's own when standalone.
@@ -78,8 +97,8 @@ struct CouplingEndpoint {
 };
 
 // Adds --cosim-endpoint, --cosim-name, --cosim-job, --cosim-config-hash,
-// --cosim-connect-timeout and --cosim-repeat-windows to a solver's command
-// line.
+// --cosim-connect-timeout, --cosim-repeat-windows and --cosim-restart to a
+// solver's command line.
 void add_coupling_options(CLI::App& app, CouplingEndpoint& endpoint);
 
 // Wall time a participant spent in the coupling, by phase [s].
@@ -110,6 +129,13 @@ class Participant {
   // must_restore_state(): an implicit job can repeat its windows. A job with
   // an implicit scheme refuses a participant that does not declare this.
   void declare_repeatable();
+  // The solver writes its state when must_write_checkpoint() and starts from
+  // restart_directory() when it is not empty: a job run with
+  // --checkpoint-every refuses a participant that does not declare this.
+  void declare_checkpointable();
+  // Where the solver reads its state instead of its initial conditions, when
+  // it was started from a checkpoint (known from construction on).
+  const std::filesystem::path& restart_directory() const;
 
   // Connects to the coupler (handshake: protocol version, job id, config
   // hash), exchanges the initial data (fields written before initialize),
@@ -154,6 +180,14 @@ class Participant {
   // an explicit scheme, a converged one of an implicit scheme): outputs due
   // may be written.
   bool is_window_complete() const;
+  // After an advance() that completed a window at whose end the job takes a
+  // checkpoint: write the solver's state (everything its in-memory save
+  // holds, e.g. with cosim/io/state_file.hpp) into checkpoint_directory(),
+  // then call checkpoint_written(), which adds this library's own state and
+  // tells the coupler.
+  bool must_write_checkpoint() const;
+  const std::filesystem::path& checkpoint_directory() const;
+  void checkpoint_written();
 
   // State fields: the latest received values at time() + relative_time
   // (0 <= relative_time <= max_time_step()). Explicit schemes: linearly

@@ -90,7 +90,9 @@ std::string to_json(const Hello& h) {
          {"meshes", json::array()},
          {"writes", json::array()},
          {"reads", json::array()},
-         {"repeatable", h.repeatable}};
+         {"repeatable", h.repeatable},
+         {"checkpointable", h.checkpointable},
+         {"restart_window", h.restart_window}};
   for (const auto& m : h.meshes)
     j["meshes"].push_back({{"name", m.name}, {"kind", to_string(m.kind)}, {"dim", m.dim}});
   for (const auto& f : h.writes) j["writes"].push_back(field_to_json(f));
@@ -128,6 +130,9 @@ Hello parse_hello(const std::string& text, const std::string& peer) {
     for (const auto& f : j.at("writes")) h.writes.push_back(field_from_json(f));
     for (const auto& f : j.at("reads")) h.reads.push_back(field_from_json(f));
     h.repeatable = j.at("repeatable").get<bool>();
+    h.checkpointable = j.at("checkpointable").get<bool>();
+    h.restart_window = static_cast<std::uint64_t>(whole_number(
+        j.at("restart_window"), 0, std::numeric_limits<std::int64_t>::max(), "restart_window"));
     return h;
   } catch (const std::exception& e) {
     throw ProtocolError(peer, std::string("malformed hello: ") + e.what());

@@ -32,6 +32,11 @@ struct Hello {
   // The solver saves its state at a window's start and can run the window
   // again from it (Participant::declare_repeatable); implicit schemes need it.
   bool repeatable = false;
+  // It can write its state into a checkpoint and start again from one
+  // (Participant::declare_checkpointable).
+  bool checkpointable = false;
+  // Started from a checkpoint: the last window it holds (0: a fresh start).
+  std::uint64_t restart_window = 0;
 };
 
 enum class Extrapolation { constant, linear };

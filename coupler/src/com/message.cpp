@@ -182,6 +182,8 @@ const char* to_string(MessageType type) {
       return "abort";
     case MessageType::window_repeat:
       return "window_repeat";
+    case MessageType::checkpoint_done:
+      return "checkpoint_done";
   }
   return "unknown";
 }
@@ -215,7 +217,7 @@ Header decode_header(std::span<const std::byte> bytes, const std::string& peer) 
                                           h.version, protocol_version));
   const auto type = r.get<std::uint8_t>("type");
   if (type < static_cast<std::uint8_t>(MessageType::hello) ||
-      type > static_cast<std::uint8_t>(MessageType::window_repeat))
+      type > static_cast<std::uint8_t>(MessageType::checkpoint_done))
     throw ProtocolError(peer, fmt::format("unknown message type {}", type));
   h.type = static_cast<MessageType>(type);
   const auto element = r.get<std::uint8_t>("element type");

@@ -13,20 +13,24 @@ namespace cosim::com {
 
 // 2: implicit coupling (window_repeat; hello's `repeatable`, welcome's
 // `implicit` and `time_interpolation`).
-inline constexpr std::uint16_t protocol_version = 2;
+// 3: checkpoints (checkpoint_done; window_begin's payload naming the
+// checkpoint directory; hello's `checkpointable` and `restart_window`).
+inline constexpr std::uint16_t protocol_version = 3;
 
 enum class MessageType : std::uint8_t {
-  hello = 1,      // participant -> coupler: name, job, declarations (JSON payload)
-  welcome,        // coupler -> participant: schedule and the fields it will receive (JSON)
-  refuse,         // coupler -> participant: why it is not admitted (text)
-  mesh,           // participant -> coupler: a mesh's geometry (float64 payload)
-  field,          // either way: one field's values on a mesh (float64 payload)
-  window_end,     // participant -> coupler: all fields of this window are sent
-  window_begin,   // coupler -> participant: all fields are sent; next window (JSON)
-  finish,         // coupler -> participant: the run is over
-  abort,          // either way: a fatal error; the payload says why (text)
-  window_repeat,  // coupler -> participant: the window did not converge; run it again from its
-                  // start with the fields just sent (implicit schemes)
+  hello = 1,        // participant -> coupler: name, job, declarations (JSON payload)
+  welcome,          // coupler -> participant: schedule and the fields it will receive (JSON)
+  refuse,           // coupler -> participant: why it is not admitted (text)
+  mesh,             // participant -> coupler: a mesh's geometry (float64 payload)
+  field,            // either way: one field's values on a mesh (float64 payload)
+  window_end,       // participant -> coupler: all fields of this window are sent
+  window_begin,     // coupler -> participant: all fields are sent; next window (JSON)
+  finish,           // coupler -> participant: the run is over
+  abort,            // either way: a fatal error; the payload says why (text)
+  window_repeat,    // coupler -> participant: the window did not converge; run it again from its
+                    // start with the fields just sent (implicit schemes)
+  checkpoint_done,  // participant -> coupler: its part of the checkpoint the last window_begin
+                    // asked for is written (architecture.md §14)
 };
 
 enum class ElementType : std::uint8_t { none = 0, float64 = 1, text = 2 };

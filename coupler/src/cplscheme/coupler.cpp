@@ -5,15 +5,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <nlohmann/json.hpp>
 #include <numeric>
+#include <set>
 #include <thread>
 
 #include "admission.hpp"
+#include "checkpoint/manifest.hpp"
+#include "checkpoint/mesh_state.hpp"
+#include "checkpoint/store.hpp"
 #include "com/handshake.hpp"
 #include "cosim/error.hpp"
 #include "cosim/fields.hpp"
 #include "cosim/io/snapshot_writer.hpp"
+#include "cosim/io/state_file.hpp"
 #include "cosim/io/tail_lines.hpp"
 #include "energy_exchange_step.hpp"
 #include "fields_by_peer.hpp"
@@ -35,6 +41,10 @@ constexpr auto poll_slice = std::chrono::milliseconds(50);
 // Window ends reported by participants agree with the coupler's to this
 // fraction of a window.
 constexpr double time_tolerance = 1e-9;
+// The coupler's own part of a checkpoint (architecture.md §14).
+constexpr const char* coupler_state_file = "coupler.h5";
+constexpr const char* coupler_state_kind = "cosim_coupler";
+constexpr std::int64_t coupler_state_version = 1;
 
 struct Peer {
   const job::ParticipantSpec* spec = nullptr;
@@ -107,9 +117,17 @@ struct Coupler::Impl {
   // Implicit schemes: the momentum per exchange cell in the fields last sent
   // (the iterate the participants run), and in the last answer.
   ExchangeCellImpulses applied_exchange_impulses, answered_exchange_impulses;
+  std::optional<checkpoint::Store> checkpoints;
+  std::size_t checkpoints_written = 0;
+  bool stop_at_next_window = false;  // asked to stop (SIGTERM) while checkpointing
+  bool stopped_at_checkpoint = false;
+  // Participants' messages of the next window that arrived while the coupler
+  // waited for a checkpoint: handled first when that window is collected.
+  std::deque<com::Received> deferred;
 
   Impl(const job::Job& j, com::Hub& t, runtime::Supervisor* s, RunSummary& sum, CouplerOptions o)
       : job(j), transport(t), supervisor(s), summary(sum), options(std::move(o)) {
+    if (options.checkpoint_every) checkpoints.emplace(options.output_dir, options.checkpoints_kept);
     for (const auto& p : job.participants) peers[p.name].spec = &p;
     if (job.momentum_exchange) momentum_exchange.emplace(*job.momentum_exchange, job.file.string());
     if (job.energy_exchange) energy_exchange.emplace(*job.energy_exchange, job.file.string());
@@ -122,8 +140,15 @@ struct Coupler::Impl {
   // Fails the run when a participant process ended before the coupler said
   // the run is over.
   void check_processes() {
-    if (options.interrupted && options.interrupted->load())
-      throw Error(ExitCode::participant_failed, "interrupted by a signal; participants stopped");
+    if (options.interrupted && options.interrupted->load()) {
+      // A checkpointing run stops at its next window end, with a checkpoint.
+      if (!options.checkpoint_every)
+        throw Error(ExitCode::participant_failed, "interrupted by a signal; participants stopped");
+      if (!stop_at_next_window)
+        spdlog::warn("asked to stop: a checkpoint at the end of window {}, then the run stops",
+                     window);
+      stop_at_next_window = true;
+    }
     if (!supervisor) return;
     for (const runtime::ChildExit& e : supervisor->reap())
       throw Error(e.coupled_exit_code(),
@@ -169,7 +194,13 @@ struct Coupler::Impl {
 
   // One message, or nothing within a poll slice; participants' deaths and
   // the deadline are checked between slices.
-  std::optional<com::Received> receive(Clock::time_point deadline, const std::string& waiting_for) {
+  std::optional<com::Received> receive(Clock::time_point deadline, const std::string& waiting_for,
+                                       bool take_deferred = true) {
+    if (take_deferred && !deferred.empty()) {
+      com::Received r = std::move(deferred.front());
+      deferred.pop_front();
+      return r;
+    }
     for (;;) {
       check_processes();
       std::optional<com::Received> r;
@@ -240,6 +271,17 @@ struct Coupler::Impl {
                       "its state), which the implicit scheme needs; use scheme: "
                       "parallel-explicit",
                       h.sender, hello.program));
+    const bool checkpointing = options.checkpoint_every || !options.restart.empty();
+    if (checkpointing && !hello.checkpointable)
+      throw InputError(fmt::format(
+          "participant '{}' ({}) cannot write its state into a checkpoint or start from one; "
+          "run the job without --checkpoint-every and --restart",
+          h.sender, hello.program));
+    if (hello.restart_window != options.restart_window)
+      throw InputError(fmt::format(
+          "participant '{}' started from window {}, the coupler from "
+          "window {} of {}",
+          h.sender, hello.restart_window, options.restart_window, options.restart.string()));
     spdlog::info("participant '{}' connected ({}, pid {})", h.sender, hello.program, hello.pid);
   }
 
@@ -414,6 +456,19 @@ struct Coupler::Impl {
     }
   }
 
+  // A message during the run from a connection that is not a participant.
+  void drop_stranger(const com::Received& r) {
+    if (r.malformed) {
+      strangers.dropped(r.peer, "a malformed message");
+    } else if (r.message.header.type == MessageType::hello) {
+      strangers.dropped(r.peer, fmt::format("a late hello as '{}'", r.message.header.sender));
+      refuse(r.peer, "the run has started; late or unknown participants are refused");
+    } else {
+      strangers.dropped(r.peer,
+                        fmt::format("a '{}' message", com::to_string(r.message.header.type)));
+    }
+  }
+
   // Every participant's end of the window, or (serial schemes) one's.
   void collect_window(const std::string* only = nullptr) {
     auto expected = [&](const std::string& name) { return !only || name == *only; };
@@ -433,15 +488,7 @@ struct Coupler::Impl {
       auto r = receive(deadline, fmt::format("window {} from {} (window_timeout {} s)", window,
                                              pending(), job.window_timeout_s));
       if (!r->admitted) {
-        if (r->malformed) {
-          strangers.dropped(r->peer, "a malformed message");
-        } else if (r->message.header.type == MessageType::hello) {
-          strangers.dropped(r->peer, fmt::format("a late hello as '{}'", r->message.header.sender));
-          refuse(r->peer, "the run has started; late or unknown participants are refused");
-        } else {
-          strangers.dropped(r->peer,
-                            fmt::format("a '{}' message", com::to_string(r->message.header.type)));
-        }
+        drop_stranger(*r);
         continue;
       }
       const bool was_done = peers.at(r->peer).window_done;
@@ -741,14 +788,151 @@ struct Coupler::Impl {
     }
   }
 
-  // window_begin of the next window, or finish after the last.
+  // window_begin of the next window, or finish after the last; at a
+  // checkpoint's window end the window_begin names where each participant
+  // writes its state, and the checkpoint is completed before going on.
   void begin_next_window(double t) {
     const bool last = window >= job.windows();
+    if (!last && options.checkpoint_every &&
+        (stop_at_next_window || options.checkpoint_every->due(window, job.window))) {
+      write_checkpoint(t, stop_at_next_window);
+      stopped_at_checkpoint = stop_at_next_window;
+      return;
+    }
     for (const auto& [name, peer] : peers) {
       com::Message m = message(last ? MessageType::finish : MessageType::window_begin, t);
       m.header.window = window + 1;
       send(name, m);
     }
+  }
+
+  // Every participant writes its part into the checkpoint's partial
+  // directory, the coupler its own (coupler.h5) and the manifest, and the
+  // directory is renamed into place (architecture.md §14).
+  void write_checkpoint(double t, bool then_stop) {
+    auto scope = summary.phases().measure("checkpoint");
+    const std::filesystem::path dir = checkpoints->begin(window);
+    for (const auto& [name, peer] : peers) {
+      std::filesystem::create_directories(dir / name);
+      const nlohmann::json request{{"checkpoint_directory", (dir / name).string()},
+                                   {"then_stop", then_stop}};
+      send(name, com::make_text_message(MessageType::window_begin, options.job_id,
+                                        com::coupler_peer, window + 1, t, request.dump()));
+    }
+    await_checkpoint_parts();
+    write_coupler_state(dir / coupler_state_file, t);
+    checkpoint::Manifest manifest;
+    manifest.cosim_version = COSIM_VERSION;
+    manifest.job_name = job.name;
+    manifest.config_hash = job.config_hash;
+    for (const auto& [name, peer] : peers) manifest.participants.push_back(name);
+    manifest.scheme = job.coupling.is_implicit() ? "implicit" : "explicit";
+    manifest.window = window;
+    manifest.time = t;
+    checkpoint::write_manifest(dir, manifest);
+    const auto final_dir = checkpoints->commit(window);
+    ++checkpoints_written;
+    summary.set_section("checkpoints", {{"written", checkpoints_written},
+                                        {"last", final_dir.string()},
+                                        {"last_window", window},
+                                        {"last_time_s", t},
+                                        {"kept", options.checkpoints_kept}});
+    spdlog::info("checkpoint of window {} (t = {:.6g} s) written: {}", window, t,
+                 final_dir.string());
+  }
+
+  // Waits for every participant's checkpoint_done; what a participant sends
+  // for the next window meanwhile is kept for it.
+  void await_checkpoint_parts() {
+    std::set<std::string> done;
+    const auto deadline =
+        Clock::now() + std::chrono::milliseconds(static_cast<long>(job.window_timeout_s * 1e3));
+    while (done.size() < peers.size()) {
+      auto r = receive(deadline,
+                       fmt::format("the checkpoint of window {} (window_timeout {} s)", window,
+                                   job.window_timeout_s),
+                       false);
+      if (!r->admitted) {
+        drop_stranger(*r);
+        continue;
+      }
+      const com::Header& h = r->message.header;
+      check_signature(r->peer, h);
+      if (h.type == MessageType::abort) throw participant_abort(r->peer, r->message);
+      if (h.type != MessageType::checkpoint_done) {
+        if (!done.count(r->peer))
+          throw ProtocolError(r->peer, fmt::format("sent '{}' before its part of the checkpoint "
+                                                   "of window {}",
+                                                   com::to_string(h.type), window));
+        deferred.push_back(std::move(*r));
+        continue;
+      }
+      if (h.window != window + 1 || done.count(r->peer))
+        throw ProtocolError(r->peer, fmt::format("sent checkpoint_done for window {} during the "
+                                                 "checkpoint of window {}",
+                                                 h.window, window));
+      done.insert(r->peer);
+    }
+  }
+
+  // The coupler's state between windows: where the run is, the meshes it
+  // maps between, the output schedule, the metrics, and (implicit schemes)
+  // the window iteration's state.
+  void write_coupler_state(const std::filesystem::path& file, double t) const {
+    StateFileWriter out(file, coupler_state_kind, coupler_state_version);
+    out.integer("window", static_cast<std::int64_t>(window));
+    out.number("time", t);
+    out.number("next_output_time", next_output_time);
+    out.number("max_conservation_error", max_conservation_error);
+    out.number("max_momentum_balance_error", max_momentum_balance_error);
+    out.number("max_energy_balance_error", max_energy_balance_error);
+    for (const auto& [name, peer] : peers)
+      for (const auto& [mesh_name, mesh] : peer.meshes)
+        checkpoint::write_mesh(out, "mesh." + name + "." + mesh_name, mesh);
+    if (iteration) {
+      iteration->save(out);
+      out.numbers("exchange.applied.fluid", applied_exchange_impulses.fluid);
+      out.numbers("exchange.applied.solid", applied_exchange_impulses.solid);
+    }
+    out.commit();
+  }
+
+  // Continues from a checkpoint: the state write_coupler_state() left.
+  void restore_coupler_state() {
+    const StateFileReader in(options.restart / coupler_state_file, coupler_state_kind,
+                             coupler_state_version);
+    if (static_cast<std::size_t>(in.integer("window")) != options.restart_window)
+      throw InputError(fmt::format("{}: holds window {}, its manifest says {}", in.file().string(),
+                                   in.integer("window"), options.restart_window));
+    next_output_time = in.number("next_output_time");
+    max_conservation_error = in.number("max_conservation_error");
+    max_momentum_balance_error = in.number("max_momentum_balance_error");
+    max_energy_balance_error = in.number("max_energy_balance_error");
+    for (auto& [name, peer] : peers)
+      for (const com::MeshDeclaration& d : peer.hello.meshes) {
+        const std::string key = "mesh." + name + "." + d.name;
+        if (!in.has(key + ".kind")) continue;
+        peer.meshes[d.name] = checkpoint::read_mesh(in, key, d.name);
+        peer.mesh_version[d.name] = 1;
+      }
+    if (iteration) {
+      std::vector<std::pair<std::string, std::string>> sent;
+      for (const job::ExchangeSpec& x : job.exchanges) sent.emplace_back(x.to, x.field);
+      if (job.momentum_exchange) {
+        sent.emplace_back(job.momentum_exchange->fluid, fields::drag_coefficient.name);
+        sent.emplace_back(job.momentum_exchange->fluid, fields::momentum_exchange_impulse.name);
+        sent.emplace_back(job.momentum_exchange->solid, fields::momentum_exchange_impulse.name);
+      }
+      iteration->restore(in, sent);
+      applied_exchange_impulses.fluid = in.numbers("exchange.applied.fluid");
+      applied_exchange_impulses.solid = in.numbers("exchange.applied.solid");
+    }
+    summary.set_section("restart", {{"from", options.restart.string()},
+                                    {"window", options.restart_window},
+                                    {"time_s", window_time(options.restart_window)}});
+    spdlog::info("continuing from the checkpoint of window {} (t = {:.6g} s): {}",
+                 options.restart_window, window_time(options.restart_window),
+                 options.restart.string());
   }
 
   void write_snapshots(double t, const FieldsByPeer& data) {
@@ -794,6 +978,10 @@ Coupler::Coupler(const job::Job& job, com::Hub& transport, runtime::Supervisor* 
 
 Coupler::~Coupler() = default;
 
+bool Coupler::stopped_at_checkpoint() const {
+  return impl_->stopped_at_checkpoint;
+}
+
 void Coupler::run() {
   Impl& s = *impl_;
   const std::size_t windows = s.job.windows();
@@ -804,8 +992,13 @@ void Coupler::run() {
     spdlog::info("all {} participants connected; {} windows of {} s from t = {} s to {} s",
                  s.peers.size(), windows, s.job.window, s.job.start_time, s.job.end_time);
     s.next_output_time = s.job.start_time;
+    std::size_t first_window = 0;
+    if (!s.options.restart.empty()) {
+      s.restore_coupler_state();
+      first_window = s.options.restart_window + 1;
+    }
     auto last_summary = std::chrono::steady_clock::now();
-    for (s.window = 0; s.window <= windows; ++s.window) {
+    for (s.window = first_window; s.window <= windows; ++s.window) {
       if (s.window == 0) {
         s.collect_window();
         s.check_explicit_stability();
@@ -822,6 +1015,7 @@ void Coupler::run() {
         s.map_and_send();
       }
       s.summary.set_windows(static_cast<std::int64_t>(s.window));
+      if (s.stopped_at_checkpoint) break;
       s.summary.set_metric("max_conservative_mapping_error", s.max_conservation_error, "1");
       if (s.momentum_exchange)
         s.summary.set_metric("max_momentum_exchange_balance_error", s.max_momentum_balance_error,

@@ -5,8 +5,10 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "checkpoint/schedule.hpp"
 #include "com/transport.hpp"
 #include "cosim/io/run_summary.hpp"
 #include "cosim/runtime/supervisor.hpp"
@@ -30,6 +32,13 @@ struct CouplerOptions {
   // How long a participant that reported its own failure may take to finish
   // its record (summary.json, log) and exit, before the run is stopped.
   std::chrono::milliseconds failure_grace{5000};
+  // Checkpoints of the coupled run (architecture.md §14): when, how many kept.
+  std::optional<checkpoint::Schedule> checkpoint_every;
+  std::size_t checkpoints_kept = 2;
+  // A checkpoint (its manifest already checked) to continue from, and the
+  // window it holds.
+  std::filesystem::path restart;
+  std::size_t restart_window = 0;
 };
 
 class Coupler {
@@ -45,6 +54,9 @@ class Coupler {
   // Runs to the job's end time. Throws cosim::Error (with its exit code) on
   // failure, after telling every connected participant to abort.
   void run();
+  // Whether run() ended early at a checkpoint because a stop was requested
+  // (the participants finish by themselves after writing their parts).
+  bool stopped_at_checkpoint() const;
 
  private:
   struct Impl;

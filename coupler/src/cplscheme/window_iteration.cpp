@@ -207,3 +207,63 @@ nlohmann::json WindowIteration::summary() const {
 }
 
 }  // namespace cosim::cplscheme
+
+namespace cosim::cplscheme {
+
+void WindowIteration::save(StateFileWriter& out) const {
+  for (const auto& [participant, fields] : sent_)
+    for (const auto& [field, values] : fields)
+      out.numbers("iteration.sent." + participant + "." + field, *values);
+  std::vector<std::int64_t> counts(iterations_per_window_.begin(), iterations_per_window_.end());
+  out.integers("iteration.iterations_per_window", counts);
+  out.integer("iteration.windows_not_converged", static_cast<std::int64_t>(not_converged_));
+  out.integer("iteration.last_window_iterations", static_cast<std::int64_t>(last_iterations_));
+  if (!accelerator_) return;
+  std::vector<std::int64_t> sizes;
+  for (const acceleration::Block& b : blocks_) sizes.push_back(static_cast<std::int64_t>(b.size));
+  out.integers("iteration.accelerator.block_sizes", sizes);
+  const acceleration::AcceleratorState state = accelerator_->state();
+  out.numbers("iteration.accelerator.scalars", state.scalars);
+  out.integer("iteration.accelerator.vectors", static_cast<std::int64_t>(state.vectors.size()));
+  for (std::size_t i = 0; i < state.vectors.size(); ++i)
+    out.numbers(fmt::format("iteration.accelerator.vector.{}", i), state.vectors[i]);
+}
+
+void WindowIteration::restore(const StateFileReader& in,
+                              const std::vector<std::pair<std::string, std::string>>& sent_fields) {
+  sent_.clear();
+  for (const auto& [participant, field] : sent_fields) {
+    const std::string key = "iteration.sent." + participant + "." + field;
+    if (in.has(key))
+      sent_[participant][field] = std::make_shared<const std::vector<double>>(in.numbers(key));
+  }
+  iterations_per_window_.clear();
+  for (std::int64_t n : in.integers("iteration.iterations_per_window"))
+    iterations_per_window_.push_back(static_cast<std::size_t>(n));
+  not_converged_ = static_cast<std::size_t>(in.integer("iteration.windows_not_converged"));
+  last_iterations_ = static_cast<std::size_t>(in.integer("iteration.last_window_iterations"));
+  iteration_ = 0;
+  if (!in.has("iteration.accelerator.block_sizes")) return;
+  const std::vector<std::int64_t> sizes = in.integers("iteration.accelerator.block_sizes");
+  if (sizes.size() != spec_.accelerated.size())
+    throw Error(ExitCode::bad_input,
+                fmt::format("{}: the accelerator had {} fields, the job accelerates {}",
+                            in.file().string(), sizes.size(), spec_.accelerated.size()));
+  blocks_.clear();
+  for (std::size_t b = 0; b < sizes.size(); ++b)
+    blocks_.push_back({spec_.accelerated[b].label(), static_cast<std::size_t>(sizes[b])});
+  accelerator_ = acceleration::make_accelerator(spec_.acceleration, blocks_);
+  acceleration::AcceleratorState state;
+  state.scalars = in.numbers("iteration.accelerator.scalars");
+  const auto vectors = in.integer("iteration.accelerator.vectors");
+  for (std::int64_t i = 0; i < vectors; ++i)
+    state.vectors.push_back(in.numbers(fmt::format("iteration.accelerator.vector.{}", i)));
+  try {
+    accelerator_->restore(state);
+  } catch (const std::invalid_argument& e) {
+    throw Error(ExitCode::bad_input, fmt::format("{}: the accelerator's state does not fit: {}",
+                                                 in.file().string(), e.what()));
+  }
+}
+
+}  // namespace cosim::cplscheme

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "acceleration/accelerator.hpp"
+#include "cosim/io/state_file.hpp"
 #include "cosim/io/time_series_writer.hpp"
 #include "fields_by_peer.hpp"
 #include "job/coupling_spec.hpp"
@@ -55,6 +56,14 @@ class WindowIteration {
   // The `coupling` section of summary.json: iterations per window (total,
   // median, max), windows not converged, the last residuals.
   nlohmann::json summary() const;
+
+  // A checkpoint's part of the iteration, between windows: the last iterate
+  // sent (the next window's first), the accelerator's history and the
+  // tallies. `sent_fields` lists every (participant, field) the coupler
+  // sends, as the restore needs the names.
+  void save(StateFileWriter& out) const;
+  void restore(const StateFileReader& in,
+               const std::vector<std::pair<std::string, std::string>>& sent_fields);
 
  private:
   struct Measure;

@@ -11,11 +11,13 @@
 #include <csignal>
 #include <cstdlib>
 #include <limits>
+#include <nlohmann/json.hpp>
 
 #include "com/handshake.hpp"
 #include "com/mpi_transport.hpp"
 #include "com/zmq_transport.hpp"
 #include "cosim/error.hpp"
+#include "cosim/io/state_file.hpp"
 #include "cosim/runtime/stop_request.hpp"
 
 namespace cosim {
@@ -55,6 +57,8 @@ void add_coupling_options(CLI::App& app, CouplingEndpoint& endpoint) {
   group->add_flag("--cosim-repeat-windows", endpoint.repeat_windows,
                   "standalone: run every window twice, going back to its start once (checks "
                   "the solver's save and restore)");
+  group->add_option("--cosim-restart", endpoint.restart,
+                    "this participant's directory of the checkpoint to start from");
 }
 
 struct WriteBuffer {
@@ -102,6 +106,10 @@ struct Participant::Impl {
   bool restore_state = false;
   bool window_complete = false;
   bool repeat_requested = false;  // the coupler's window_repeat
+  bool checkpointable = false;
+  std::filesystem::path checkpoint_directory;  // asked for by the last window_begin
+  bool stop_after_checkpoint = false;
+  bool write_checkpoint = false;
 
   std::size_t size_of(const FieldSpec& f) const {
     return meshes.at(f.mesh).mesh.size() * static_cast<std::size_t>(f.components);
@@ -221,6 +229,12 @@ struct Participant::Impl {
             throw ProtocolError(com::coupler_peer, fmt::format("began window {} after window {}",
                                                                m.header.window, window));
           for (auto& [field_name, r] : reads) r.start = r.current;
+          read_checkpoint_request(m);
+          if (!checkpoint_directory.empty() && !checkpointable)
+            throw ProtocolError(com::coupler_peer,
+                                fmt::format("asked participant '{}', which did not declare it "
+                                            "can, for a checkpoint",
+                                            name));
           return;
         case MessageType::window_repeat:
           if (!schedule.implicit || m.header.window != window || window == 0)
@@ -263,6 +277,85 @@ struct Participant::Impl {
     m.payload.copy_doubles_to(r.current);
     r.received_at = m.header.time;
     std::fill(r.delivered.begin(), r.delivered.end(), 0.0);
+  }
+
+  // A window_begin that asks for a checkpoint names its directory, and
+  // whether the run stops after it (the coupler was asked to stop).
+  void read_checkpoint_request(const com::Message& m) {
+    checkpoint_directory.clear();
+    stop_after_checkpoint = false;
+    if (m.payload.size() == 0) return;
+    try {
+      const auto request = nlohmann::json::parse(m.payload.text());
+      checkpoint_directory = request.at("checkpoint_directory").get<std::string>();
+      stop_after_checkpoint = request.at("then_stop").get<bool>();
+    } catch (const nlohmann::json::exception& e) {
+      throw ProtocolError(com::coupler_peer,
+                          fmt::format("sent a malformed checkpoint request: {}", e.what()));
+    }
+  }
+
+  // This library's part of a checkpoint (architecture.md §14): where the
+  // run is, and every field buffer as it stands at a window's start.
+  static constexpr const char* state_file_name = "participant.h5";
+  static constexpr const char* state_kind = "cosim_participant";
+  static constexpr std::int64_t state_version = 1;
+
+  void write_state(const std::filesystem::path& directory) const {
+    StateFileWriter out(directory / state_file_name, state_kind, state_version);
+    out.integer("window", static_cast<std::int64_t>(window));
+    out.number("time", time);
+    out.integer("windows_completed", static_cast<std::int64_t>(timings.windows));
+    out.integer("window_attempts", static_cast<std::int64_t>(timings.iterations));
+    for (const auto& [field, r] : reads) {
+      const std::string key = "read." + field + ".";
+      out.numbers(key + "current", r.current);
+      out.numbers(key + "previous", r.previous);
+      out.numbers(key + "start", r.start);
+      out.number(key + "received_at", r.received_at);
+      out.number(key + "previous_at", r.previous_at);
+      out.integer(key + "has_previous", r.has_previous ? 1 : 0);
+    }
+    for (const auto& [field, w] : writes) {
+      const std::string key = "write." + field + ".";
+      out.numbers(key + "values", w.values);
+      out.numbers(key + "integral", w.integral);
+      out.integer(key + "written", w.written ? 1 : 0);
+    }
+    out.commit();
+  }
+
+  // Reads the state write_state() left; returns the last window it holds.
+  std::size_t read_state(const std::filesystem::path& directory) {
+    const StateFileReader in(directory / state_file_name, state_kind, state_version);
+    const std::int64_t next_window = in.integer("window");
+    if (next_window < 2)
+      throw Error(ExitCode::bad_input, fmt::format("{}: window {} cannot follow a checkpoint",
+                                                   in.file().string(), next_window));
+    window = static_cast<std::size_t>(next_window);
+    time = in.number("time");
+    timings.windows = static_cast<std::size_t>(in.integer("windows_completed"));
+    timings.iterations = static_cast<std::size_t>(in.integer("window_attempts"));
+    for (auto& [field, r] : reads) {
+      const std::string key = "read." + field + ".";
+      const std::size_t n = r.current.size();
+      in.numbers(key + "current", n, r.current);
+      in.numbers(key + "previous", n, r.previous);
+      in.numbers(key + "start", n, r.start);
+      r.received_at = in.number(key + "received_at");
+      r.previous_at = in.number(key + "previous_at");
+      r.has_previous = in.integer(key + "has_previous") != 0;
+      std::fill(r.delivered.begin(), r.delivered.end(), 0.0);
+    }
+    for (auto& [field, w] : writes) {
+      const std::string key = "write." + field + ".";
+      in.numbers(key + "values", w.values.size(), w.values);
+      in.numbers(key + "integral", w.integral.size(), w.integral);
+      w.written = in.integer(key + "written") != 0;
+    }
+    // The coupler's checkpoint holds the meshes as they were.
+    for (auto& [mesh_name, entry] : meshes) entry.changed = false;
+    return window - 1;
   }
 
   void check_declaration(const FieldSpec& f) const {
@@ -348,6 +441,16 @@ void Participant::declare_repeatable() {
   impl_->repeatable = true;
 }
 
+void Participant::declare_checkpointable() {
+  if (impl_->initialized)
+    usage_error(impl_->name, "declare_checkpointable() comes before initialize()");
+  impl_->checkpointable = true;
+}
+
+const std::filesystem::path& Participant::restart_directory() const {
+  return impl_->endpoint.restart;
+}
+
 void Participant::set_standalone_window(double window) {
   if (!(window > 0.0)) usage_error(impl_->name, "the standalone window must be positive");
   impl_->standalone_window = window;
@@ -360,6 +463,11 @@ void Participant::initialize(double start_time, double end_time) {
     usage_error(s.name, fmt::format("end time {} is before start time {}", end_time, start_time));
   s.initialized = true;
   s.window = 1;
+  const bool restarts = !s.endpoint.restart.empty();
+  if (restarts && !s.checkpointable)
+    usage_error(s.name, "--cosim-restart needs a solver that declares it is checkpointable");
+  if (restarts && !is_coupled())
+    usage_error(s.name, "--cosim-restart is for participants started by `cosim run --restart`");
   if (!is_coupled()) {
     s.schedule.start_time = start_time;
     s.schedule.end_time = end_time;
@@ -389,6 +497,11 @@ void Participant::initialize(double start_time, double end_time) {
   for (const auto& [field_name, w] : s.writes) hello.writes.push_back(w.spec);
   for (const auto& [field_name, r] : s.reads) hello.reads.push_back(r.spec);
   hello.repeatable = s.repeatable;
+  hello.checkpointable = s.checkpointable;
+  std::size_t restart_window = 0;
+  if (restarts) restart_window = s.read_state(s.endpoint.restart);
+  hello.restart_window = restart_window;
+  const double restart_time = s.time;
   s.window = 0;
   s.send(com::make_text_message(MessageType::hello, s.endpoint.job_id, s.name, 0, start_time,
                                 com::to_json(hello)));
@@ -408,6 +521,18 @@ void Participant::initialize(double start_time, double end_time) {
         "participant '{}': the job's schedule [{}, {}] s replaces the solver's own [{}, "
         "{}] s",
         s.name, s.schedule.start_time, s.schedule.end_time, start_time, end_time);
+  if (restarts) {
+    // The fields received at the checkpoint's window end are those read now.
+    s.window = restart_window + 1;
+    s.time = s.window_start();
+    if (s.time != restart_time)
+      throw Error(ExitCode::bad_input,
+                  fmt::format("{}: the checkpoint is at t = {:.17g} s, the job's window {} ends at "
+                              "t = {:.17g} s",
+                              s.endpoint.restart.string(), restart_time, restart_window, s.time));
+    s.save_state = s.repeats_windows() && is_coupling_ongoing();
+    return;
+  }
   s.time = s.schedule.start_time;
   for (auto& [field_name, r] : s.reads) r.received_at = r.previous_at = s.time;
 
@@ -473,6 +598,8 @@ void Participant::advance(double dt) {
   Impl& s = *impl_;
   if (!s.initialized) usage_error(s.name, "advance() before initialize()");
   if (!is_coupling_ongoing()) usage_error(s.name, "advance() after the end of the coupling");
+  if (s.write_checkpoint)
+    usage_error(s.name, "advance() before checkpoint_written(): the coupler waits for it");
   runtime::throw_if_stop_requested();
   const double remaining = s.window_end() - s.time;
   const double tolerance = window_end_tolerance * s.schedule.window;
@@ -511,6 +638,7 @@ void Participant::advance(double dt) {
   s.iteration = 1;
   s.window_complete = true;
   s.save_state = s.repeats_windows() && is_coupling_ongoing();
+  s.write_checkpoint = !s.finished && !s.checkpoint_directory.empty();
 }
 
 bool Participant::must_save_state() const {
@@ -521,6 +649,26 @@ bool Participant::must_restore_state() const {
 }
 bool Participant::is_window_complete() const {
   return impl_->window_complete;
+}
+bool Participant::must_write_checkpoint() const {
+  return impl_->write_checkpoint;
+}
+const std::filesystem::path& Participant::checkpoint_directory() const {
+  return impl_->checkpoint_directory;
+}
+
+void Participant::checkpoint_written() {
+  Impl& s = *impl_;
+  if (!s.write_checkpoint) usage_error(s.name, "checkpoint_written() without a checkpoint due");
+  s.write_state(s.checkpoint_directory);
+  s.write_checkpoint = false;
+  s.checkpoint_directory.clear();
+  s.send(s.header_only(MessageType::checkpoint_done));
+  // The run stops here; a restart from the checkpoint continues it.
+  if (s.stop_after_checkpoint) {
+    s.finished = true;
+    s.save_state = false;
+  }
 }
 
 void Participant::read(std::string_view field, std::span<double> values,

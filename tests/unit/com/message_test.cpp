@@ -161,7 +161,9 @@ TEST(Handshake, AHelloWithNumbersOutOfRangeIsMalformed) {
     f.replace(f.find("COMPONENTS"), 10, components);
     return R"({"participant": "s", "config_hash": "0", "program": "x", "pid": )" + pid +
            R"(, "meshes": [{"name": "m", "kind": "uniform_grid", "dim": )" + dim +
-           R"(}], "writes": [)" + f + R"(], "reads": [], "repeatable": false})";
+           R"(}], "writes": [)" + f +
+           R"(], "reads": [], "repeatable": false, "checkpointable": false, )"
+           R"("restart_window": 0})";
   };
   EXPECT_NO_THROW(parse_hello(hello("12", "2", "1"), "s"));
   for (const auto& [pid, dim, components] :
@@ -208,6 +210,10 @@ TEST(Handshake, HelloAndWelcomeRoundTrip) {
   EXPECT_THROW(parse_hello("{\"participant\": 3}", "soil"), ProtocolError);
   h.repeatable = true;
   EXPECT_TRUE(parse_hello(to_json(h), "soil").repeatable);
+  h.checkpointable = true;
+  h.restart_window = 500;
+  EXPECT_TRUE(parse_hello(to_json(h), "soil").checkpointable);
+  EXPECT_EQ(parse_hello(to_json(h), "soil").restart_window, 500u);
   Welcome w{.config_hash = "00ff",
             .start_time = 0.0,
             .end_time = 1.0,

@@ -35,6 +35,7 @@ class RunSummary {
   void set_config(const std::filesystem::path& config_path, std::uint64_t config_hash);
   void set_steps(std::int64_t steps) { steps_ = steps; }
   void set_windows(std::int64_t windows) { windows_ = windows; }
+  std::int64_t windows() const { return windows_; }
   // How far the simulation has got, for whoever watches the run (`cosim bench`).
   void set_progress(double simulated_time, double end_time) {
     simulated_time_ = simulated_time;

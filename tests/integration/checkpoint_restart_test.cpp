@@ -1,0 +1,301 @@
+// Checkpoint and restart of a coupled run (architecture.md §14) on test
+// participants: `cosim run --checkpoint-every` writes whole checkpoints and
+// keeps the last ones; `cosim run --restart` continues from one, and what
+// the continued run writes equals, row for row and bit for bit, what the
+// uninterrupted run wrote after the checkpoint, for an explicit scheme with
+// linear extrapolation, an implicit scheme whose IQN-ILS reuses earlier
+// windows' columns, and a stiff momentum exchange. A checkpoint of another
+// job, with a truncated or missing file, or a participant that cannot take
+// part, is refused with exit 2 saying which.
+
+#include <fmt/format.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "demo_job.hpp"
+#include "model_jobs.hpp"
+#include "run_process.hpp"
+#include "text_files.hpp"
+
+namespace cosim::testing {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+constexpr int exit_bad_input = 2;
+
+ProcessResult run_job(const fs::path& job, const fs::path& output,
+                      const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> args{binary("cosim").string(), "run", job.string(), "--output",
+                                output.string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return run(args, std::chrono::seconds(180));
+}
+
+std::vector<std::string> lines_of(const fs::path& file) {
+  std::istringstream in(read_text(file));
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+// The rows of a CSV whose first column (the window) is after `window`.
+std::vector<std::string> rows_after(const fs::path& file, std::size_t window) {
+  std::vector<std::string> rows;
+  const auto lines = lines_of(file);
+  for (std::size_t i = 1; i < lines.size(); ++i)
+    if (std::stod(lines[i].substr(0, lines[i].find(','))) > static_cast<double>(window))
+      rows.push_back(lines[i]);
+  return rows;
+}
+
+// Every CSV the uninterrupted run wrote, in the run directory and its
+// participants' directories, against the continued run's: the same header,
+// and the rows after the checkpoint's window the same text. Returns how
+// many rows were compared.
+std::size_t expect_same_continuation(const fs::path& whole, const fs::path& continued,
+                                     std::size_t window) {
+  std::size_t compared = 0, files = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(whole)) {
+    if (entry.path().extension() != ".csv") continue;
+    const fs::path relative = fs::relative(entry.path(), whole);
+    if (relative.string().find("checkpoints") == 0) continue;
+    const fs::path other = continued / relative;
+    ++files;
+    if (!fs::exists(other)) {
+      ADD_FAILURE() << "the continued run has no " << relative;
+      continue;
+    }
+    EXPECT_EQ(lines_of(entry.path()).front(), lines_of(other).front()) << relative;
+    const auto expected = rows_after(entry.path(), window);
+    const auto got = rows_after(other, window);
+    EXPECT_EQ(got, expected) << relative;
+    EXPECT_EQ(lines_of(other).size(), expected.size() + 1)
+        << relative << ": the continued run wrote rows of windows before the checkpoint";
+    compared += expected.size();
+  }
+  EXPECT_GT(files, 0u);
+  return compared;
+}
+
+fs::path checkpoint_of(const fs::path& run, std::size_t window) {
+  return run / "checkpoints" / fmt::format("window_{:09d}", window);
+}
+
+std::vector<std::string> checkpoints_in(const fs::path& run) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(run / "checkpoints"))
+    names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// Runs the job whole with checkpoints every `every` windows, then again from
+// the checkpoint of `window`; compares what both wrote after it.
+void expect_restart_continues(const fs::path& dir, const fs::path& job, const std::string& every,
+                              std::size_t window) {
+  const auto whole =
+      run_job(job, dir / "whole", {"--checkpoint-every", every, "--checkpoints-kept", "100"});
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  const auto continued =
+      run_job(job, dir / "continued", {"--restart", checkpoint_of(dir / "whole", window).string()});
+  ASSERT_EQ(continued.exit_code, 0) << continued.output;
+  const std::size_t rows = expect_same_continuation(dir / "whole", dir / "continued", window);
+  std::printf("%s: restarted after window %zu, %zu rows after it equal the uninterrupted run's\n",
+              job.parent_path().filename().c_str(), window, rows);
+  EXPECT_GT(rows, 0u);
+  const auto summary = nlohmann::json::parse(read_text(dir / "continued" / "summary.json"));
+  EXPECT_EQ(summary["restart"]["window"].get<std::size_t>(), window);
+  EXPECT_EQ(summary["status"]["exit_code"].get<int>(), 0);
+}
+
+TEST(CheckpointRestart, AnExplicitRunWithLinearExtrapolationContinuesBitForBit) {
+  const fs::path dir = fresh_directory("checkpoint_explicit");
+  JobOptions o;
+  o.extrapolation = "linear";
+  const fs::path job = write_job(dir, o);
+  expect_restart_continues(dir, job, "6", 12);
+}
+
+TEST(CheckpointRestart, AnImplicitRunWithReusedQuasiNewtonColumnsContinuesBitForBit) {
+  const fs::path dir = fresh_directory("checkpoint_implicit");
+  write_fixed_point_case(dir, R"(coupling:
+  scheme: parallel-implicit
+  convergence:
+    - {field: right.a, relative: 1.0e-10}
+    - {field: left.b, relative: 1.0e-10}
+  acceleration: {method: iqn-ils, reuse_windows: 4}
+)");
+  expect_restart_continues(dir, dir / "job.yaml", "3", 6);
+  const auto whole = nlohmann::json::parse(read_text(dir / "whole" / "summary.json"));
+  const auto continued = nlohmann::json::parse(read_text(dir / "continued" / "summary.json"));
+  EXPECT_EQ(continued["coupling"]["windows"], whole["coupling"]["windows"]);
+  EXPECT_EQ(continued["coupling"]["iterations"], whole["coupling"]["iterations"]);
+}
+
+TEST(CheckpointRestart, AStiffMomentumExchangeContinuesBitForBitExplicitAndImplicit) {
+  const fs::path explicit_dir = fresh_directory("checkpoint_drag_explicit");
+  write_stiff_drag_case(explicit_dir, "");
+  expect_restart_continues(explicit_dir, explicit_dir / "job.yaml", "0.03s", 3);
+  const fs::path implicit_dir = fresh_directory("checkpoint_drag_implicit");
+  write_stiff_drag_case(implicit_dir, R"(coupling:
+  scheme: parallel-implicit
+  convergence:
+    - {field: water.momentum_exchange_impulse, relative: 1.0e-8}
+    - {field: soil.momentum_exchange_impulse, relative: 1.0e-8}
+)");
+  expect_restart_continues(implicit_dir, implicit_dir / "job.yaml", "4", 4);
+}
+
+TEST(CheckpointRestart, OnlyTheLastCheckpointsAreKeptAndEachIsComplete) {
+  const fs::path dir = fresh_directory("checkpoint_kept");
+  const fs::path job = write_job(dir, JobOptions{});
+  const auto r = run_job(job, dir / "run", {"--checkpoint-every", "4"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // 20 windows: checkpoints after windows 4, 8, 12 and 16; the default keeps 2.
+  EXPECT_EQ(checkpoints_in(dir / "run"),
+            (std::vector<std::string>{"window_000000012", "window_000000016"}));
+  const auto manifest =
+      nlohmann::json::parse(read_text(checkpoint_of(dir / "run", 16) / "manifest.json"));
+  EXPECT_EQ(manifest["kind"], "cosim_checkpoint");
+  EXPECT_EQ(manifest["window"].get<int>(), 16);
+  std::vector<std::string> files;
+  for (const auto& f : manifest["files"]) files.push_back(f["path"].get<std::string>());
+  EXPECT_EQ(files, (std::vector<std::string>{"coupler.h5", "left/participant.h5", "left/state.h5",
+                                             "right/participant.h5", "right/state.h5"}));
+  const auto summary = nlohmann::json::parse(read_text(dir / "run" / "summary.json"));
+  EXPECT_EQ(summary["checkpoints"]["written"].get<int>(), 4);
+}
+
+// A batch system's wall-time limit: SIGTERM to `cosim run` makes it write a
+// checkpoint at the next window end and stop (exit 5) with the participants
+// ended normally; the run restarted from that checkpoint ends as an
+// uninterrupted one.
+TEST(CheckpointRestart, SigtermStopsAtTheNextWindowEndWithACheckpointThatContinuesTheRun) {
+  const fs::path dir = fresh_directory("checkpoint_sigterm");
+  JobOptions o;
+  o.end_time = 2.0;  // 800 windows of at least 5 ms: still running when the signal comes
+  o.extrapolation = "linear";
+  o.left_args = "[--window-delay, 0.005]";
+  const fs::path job = write_job(dir, o);
+  const pid_t pid = spawn({binary("cosim").string(), "run", job.string(), "--output",
+                           (dir / "stopped").string(), "--checkpoint-every", "100000"},
+                          dir / "stopped.log");
+  (void)wait_for_pid_file(dir / "stopped" / "right" / "pid", std::chrono::seconds(60));
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  ::kill(pid, SIGTERM);
+  const auto stopped = wait_for(pid, dir / "stopped.log", std::chrono::seconds(120));
+  ASSERT_EQ(stopped.exit_code, 5) << stopped.output;
+  EXPECT_THAT(stopped.output, HasSubstr("stopped at the checkpoint of window"));
+  const auto names = checkpoints_in(dir / "stopped");
+  ASSERT_EQ(names.size(), 1u);
+  const std::size_t window = std::stoul(names[0].substr(std::string("window_").size()));
+  for (const char* participant : {"left", "right"}) {
+    const auto summary =
+        nlohmann::json::parse(read_text(dir / "stopped" / participant / "summary.json"));
+    EXPECT_EQ(summary["status"]["exit_code"].get<int>(), 0) << participant;
+  }
+  const auto summary = nlohmann::json::parse(read_text(dir / "stopped" / "summary.json"));
+  EXPECT_EQ(summary["status"]["exit_code"].get<int>(), 5);
+
+  const auto whole = run_job(job, dir / "whole");
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  const auto continued = run_job(job, dir / "continued",
+                                 {"--restart", checkpoint_of(dir / "stopped", window).string()});
+  ASSERT_EQ(continued.exit_code, 0) << continued.output;
+  const std::size_t rows = expect_same_continuation(dir / "whole", dir / "continued", window);
+  std::printf(
+      "SIGTERM: stopped after window %zu of 800; %zu rows after it equal the "
+      "uninterrupted run's\n",
+      window, rows);
+  EXPECT_LT(window, 800u);
+}
+
+class RefusedCheckpoint : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fresh_directory(std::string("checkpoint_refused_") +
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    job_ = write_job(dir_, JobOptions{});
+    const auto r = run_job(job_, dir_ / "run", {"--checkpoint-every", "10"});
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    checkpoint_ = checkpoint_of(dir_ / "run", 10);
+  }
+  ProcessResult restart(const fs::path& job) {
+    return run_job(job, dir_ / "continued", {"--restart", checkpoint_.string()});
+  }
+  fs::path dir_, job_, checkpoint_;
+};
+
+TEST_F(RefusedCheckpoint, ACheckpointOfAnotherJobIsRefused) {
+  JobOptions other;
+  other.end_time = 0.06;
+  const fs::path other_dir = dir_ / "other";
+  fs::create_directories(other_dir);
+  const auto r = restart(write_job(other_dir, other));
+  EXPECT_EQ(r.exit_code, exit_bad_input) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("it belongs to job 'e2e' with config hash"));
+  EXPECT_FALSE(fs::exists(dir_ / "continued" / "left")) << "a participant was started";
+}
+
+TEST_F(RefusedCheckpoint, ATruncatedFileIsRefused) {
+  const fs::path state = checkpoint_ / "left" / "state.h5";
+  fs::resize_file(state, fs::file_size(state) / 2);
+  const auto r = restart(job_);
+  EXPECT_EQ(r.exit_code, exit_bad_input) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("left/state.h5 has"));
+  EXPECT_THAT(r.output, HasSubstr("(truncated?)"));
+}
+
+TEST_F(RefusedCheckpoint, AMissingFileOrManifestIsRefused) {
+  fs::remove(checkpoint_ / "coupler.h5");
+  auto r = restart(job_);
+  EXPECT_EQ(r.exit_code, exit_bad_input) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("coupler.h5 is missing"));
+  fs::remove(checkpoint_ / "manifest.json");
+  r = restart(job_);
+  EXPECT_EQ(r.exit_code, exit_bad_input) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("it has no manifest.json"));
+}
+
+TEST_F(RefusedCheckpoint, AChangedFileIsRefused) {
+  const fs::path state = checkpoint_ / "right" / "participant.h5";
+  std::string bytes = read_text(state);
+  bytes[bytes.size() - 1] = static_cast<char>(bytes[bytes.size() - 1] ^ 0x5a);
+  std::ofstream(state, std::ios::binary | std::ios::trunc) << bytes;
+  const auto r = restart(job_);
+  EXPECT_EQ(r.exit_code, exit_bad_input) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("right/participant.h5 has changed since it was written"));
+}
+
+TEST(CheckpointRestart, BadOptionsAndParticipantsThatCannotTakePartAreRefused) {
+  const fs::path dir = fresh_directory("checkpoint_bad_options");
+  for (const std::string every : {"0", "abc", "-3s", "1.5"}) {
+    const auto r = run_job(write_job(dir, JobOptions{}), dir / ("run_" + every),
+                           {"--checkpoint-every", every});
+    EXPECT_EQ(r.exit_code, exit_bad_input) << every << ": " << r.output;
+    EXPECT_THAT(r.output, HasSubstr("--checkpoint-every '" + every + "'"));
+  }
+  JobOptions o;
+  o.right_args = "[--not-checkpointable]";
+  const auto r =
+      run_job(write_job(dir, o), dir / "run_not_checkpointable", {"--checkpoint-every", "5"});
+  EXPECT_EQ(r.exit_code, exit_bad_input) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("participant 'right' (cosim participant"));
+  EXPECT_THAT(r.output, HasSubstr("cannot write its state into a checkpoint"));
+  const fs::path serial = fresh_directory("checkpoint_serial");
+  write_fixed_point_case(serial, "coupling: {scheme: serial-explicit, first: left}\n");
+  const auto s = run_job(serial / "job.yaml", serial / "run", {"--checkpoint-every", "2"});
+  EXPECT_EQ(s.exit_code, exit_bad_input) << s.output;
+  EXPECT_THAT(s.output, HasSubstr("couples serially"));
+}
+
+}  // namespace
+}  // namespace cosim::testing

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+// Two model problems of the coupler's tests, on test participants
+// (cosim_test_participant), written as a job and its participants' configs
+// into a directory.
+namespace cosim::testing {
+
+// A fixed point across the interface: `left` writes a = 1 + a_gain b and
+// `right` writes b = 2 + b_gain a per cell (4 cells, windows of 0.01 s to
+// 0.1 s). With the default gains the fixed point is a = 0.8, b = -0.4, and
+// explicit coupling's Jacobi iteration over windows diverges
+// (|0.5 * 3| > 1). `coupling` is the job's coupling block (YAML).
+void write_fixed_point_case(const std::filesystem::path& dir, const std::string& coupling,
+                            double a_gain = 0.5, double b_gain = -3.0,
+                            const std::string& b_args = "[]");
+
+// A fluid (rho_bar_f = 600 kg/m^3, pushed by f = 6000 N/m^3) dragging a
+// porous solid (rho_bar_s = 1590 kg/m^3) through a constant K whose
+// relaxation time tau = 1 / (K (1/rho_f + 1/rho_s)) = 1e-6 s is 1e-4 of the
+// 0.01 s window, to 0.1 s; participants `water` and `soil`, the exchange by
+// the coupler's momentum_exchange.
+inline constexpr double model_window = 1.0e-2, model_rho_f = 600.0, model_rho_s = 1590.0;
+inline constexpr double model_force = 6000.0, model_tau = 1.0e-6;
+inline const double model_drag = 1.0 / (model_tau * (1.0 / model_rho_f + 1.0 / model_rho_s));
+void write_stiff_drag_case(const std::filesystem::path& dir, const std::string& coupling);
+
+}  // namespace cosim::testing
