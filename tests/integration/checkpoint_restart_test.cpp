@@ -46,13 +46,16 @@ std::vector<std::string> lines_of(const fs::path& file) {
   return lines;
 }
 
-// The rows of a CSV whose first column (the window) is after `window`.
-std::vector<std::string> rows_after(const fs::path& file, std::size_t window) {
+// The rows of a CSV after the checkpoint: those whose first column, the
+// window or the time, is past the checkpoint's.
+std::vector<std::string> rows_after(const fs::path& file, std::size_t window, double time) {
   std::vector<std::string> rows;
   const auto lines = lines_of(file);
+  if (lines.empty()) return rows;
+  const bool by_window = lines[0].rfind("window", 0) == 0;
+  const double after = by_window ? static_cast<double>(window) : time * (1.0 + 1e-12);
   for (std::size_t i = 1; i < lines.size(); ++i)
-    if (std::stod(lines[i].substr(0, lines[i].find(','))) > static_cast<double>(window))
-      rows.push_back(lines[i]);
+    if (std::stod(lines[i].substr(0, lines[i].find(','))) > after) rows.push_back(lines[i]);
   return rows;
 }
 
@@ -61,7 +64,7 @@ std::vector<std::string> rows_after(const fs::path& file, std::size_t window) {
 // and the rows after the checkpoint's window the same text. Returns how
 // many rows were compared.
 std::size_t expect_same_continuation(const fs::path& whole, const fs::path& continued,
-                                     std::size_t window) {
+                                     std::size_t window, double time) {
   std::size_t compared = 0, files = 0;
   for (const auto& entry : fs::recursive_directory_iterator(whole)) {
     if (entry.path().extension() != ".csv") continue;
@@ -74,8 +77,8 @@ std::size_t expect_same_continuation(const fs::path& whole, const fs::path& cont
       continue;
     }
     EXPECT_EQ(lines_of(entry.path()).front(), lines_of(other).front()) << relative;
-    const auto expected = rows_after(entry.path(), window);
-    const auto got = rows_after(other, window);
+    const auto expected = rows_after(entry.path(), window, time);
+    const auto got = rows_after(other, window, time);
     EXPECT_EQ(got, expected) << relative;
     EXPECT_EQ(lines_of(other).size(), expected.size() + 1)
         << relative << ": the continued run wrote rows of windows before the checkpoint";
@@ -107,7 +110,10 @@ void expect_restart_continues(const fs::path& dir, const fs::path& job, const st
   const auto continued =
       run_job(job, dir / "continued", {"--restart", checkpoint_of(dir / "whole", window).string()});
   ASSERT_EQ(continued.exit_code, 0) << continued.output;
-  const std::size_t rows = expect_same_continuation(dir / "whole", dir / "continued", window);
+  const double time = nlohmann::json::parse(read_text(checkpoint_of(dir / "whole", window) /
+                                                      "manifest.json"))["time_s"]
+                          .get<double>();
+  const std::size_t rows = expect_same_continuation(dir / "whole", dir / "continued", window, time);
   std::printf("%s: restarted after window %zu, %zu rows after it equal the uninterrupted run's\n",
               job.parent_path().filename().c_str(), window, rows);
   EXPECT_GT(rows, 0u);
@@ -152,6 +158,59 @@ TEST(CheckpointRestart, AStiffMomentumExchangeContinuesBitForBitExplicitAndImpli
     - {field: soil.momentum_exchange_impulse, relative: 1.0e-8}
 )");
   expect_restart_continues(implicit_dir, implicit_dir / "job.yaml", "4", 4);
+}
+
+// swe_fluid over a bed a test participant raises: its solver state, output
+// schedules and gauges continue from the checkpoint.
+TEST(CheckpointRestart, ShallowWaterOverARisingBedContinuesBitForBit) {
+  const fs::path dir = fresh_directory("checkpoint_swe");
+  write_text(dir / "job.yaml", R"(kind: job
+name: rising_bed
+end_time: 0.4
+window: 1.0e-2
+participants:
+  bed:
+    executable: cosim_test_participant
+    config: bed.yaml
+    meshes: {grid: {kind: uniform_grid, dim: 1}}
+    writes: {bed_elevation: grid}
+    reads: {bed_traction: grid}
+  water:
+    executable: swe_fluid
+    config: water.yaml
+    meshes: {swe_cells: {kind: nonuniform_line, dim: 1}}
+    writes: {bed_traction: swe_cells}
+    reads: {bed_elevation: swe_cells}
+exchange:
+  - {from: bed, to: water, field: bed_elevation, mapping: consistent}
+  - {from: water, to: bed, field: bed_traction, mapping: consistent}
+)");
+  write_text(dir / "bed.yaml", R"(kind: test_participant
+dt: 4.0e-3
+mesh: {dim: 1, origin: [0.0], spacing: [0.1], cells: [40]}
+writes:
+  - {name: bed_elevation, unit: m, function: [0.2, -0.04, 0.0, 0.0, 0.5]}
+reads:
+  - {name: bed_traction, unit: Pa, components: 2}
+)");
+  write_text(dir / "water.yaml", R"(kind: swe_case
+name: tank
+dimension: 1
+mesh: {from: 0.0, to: 4.0, cells: 80}
+physics: {manning: 0.01}
+scheme: {flux: roe, limiter: van_leer, courant: 0.5}
+initial: {free_surface: 0.5}
+boundaries: {left: wall, right: wall}
+time: {end_time: 0.4}
+output:
+  every: 0.05
+  gauge_every: 0.01
+  gauges:
+    - {name: left, x: 0.5}
+    - {name: right, x: 3.5}
+coupling: {reads: [bed_elevation], writes: [bed_traction], bed_pressure: excess}
+)");
+  expect_restart_continues(dir, dir / "job.yaml", "10", 20);
 }
 
 TEST(CheckpointRestart, OnlyTheLastCheckpointsAreKeptAndEachIsComplete) {
@@ -210,7 +269,8 @@ TEST(CheckpointRestart, SigtermStopsAtTheNextWindowEndWithACheckpointThatContinu
   const auto continued = run_job(job, dir / "continued",
                                  {"--restart", checkpoint_of(dir / "stopped", window).string()});
   ASSERT_EQ(continued.exit_code, 0) << continued.output;
-  const std::size_t rows = expect_same_continuation(dir / "whole", dir / "continued", window);
+  const std::size_t rows = expect_same_continuation(dir / "whole", dir / "continued", window,
+                                                    2.5e-3 * static_cast<double>(window));
   std::printf(
       "SIGTERM: stopped after window %zu of 800; %zu rows after it equal the "
       "uninterrupted run's\n",

@@ -75,6 +75,18 @@ class OutputSchedule {
     k_ = std::max(k_, k);
   }
 
+  // Where the schedule stands, for a checkpoint: the next multiple k of the
+  // interval and whether the end is passed; resume() puts it back.
+  struct Position {
+    double k = 1.0;
+    bool done = false;
+  };
+  Position position() const { return {k_, done_}; }
+  void resume(Position p) {
+    k_ = p.k;
+    done_ = p.done;
+  }
+
  private:
   double interval_;
   double end_;

@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 
+#include "cosim/io/state_file.hpp"
 #include "cosim/mesh.hpp"
 #include "swe/physics.hpp"
 #include "swe/scheme.hpp"
@@ -68,6 +69,10 @@ class Solver {
   virtual void save_state() = 0;
   // Throws cosim::Error (internal_error) when no state was saved.
   virtual void restore_state() = 0;
+  // The same state in a checkpoint's state file (architecture.md §14), read
+  // back bit for bit; read_state() refuses (exit 2) arrays of another grid.
+  virtual void write_state(cosim::StateFileWriter& out) const = 0;
+  virtual void read_state(const cosim::StateFileReader& in) = 0;
 
   virtual std::span<const double> depth() const = 0;
   virtual std::span<const double> discharge_x() const = 0;

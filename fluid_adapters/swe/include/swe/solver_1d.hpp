@@ -68,6 +68,8 @@ class Solver1d final : public Solver {
   void step(double dt) override;
   void save_state() override;
   void restore_state() override;
+  void write_state(cosim::StateFileWriter& out) const override;
+  void read_state(const cosim::StateFileReader& in) override;
 
   std::span<const double> depth() const override;
   std::span<const double> discharge_x() const override;

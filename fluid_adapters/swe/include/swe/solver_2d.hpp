@@ -58,6 +58,8 @@ class Solver2d final : public Solver {
   void step(double dt) override;
   void save_state() override;
   void restore_state() override;
+  void write_state(cosim::StateFileWriter& out) const override;
+  void read_state(const cosim::StateFileReader& in) override;
 
   // Views of unpadded copies of the state, refreshed by the first call after
   // a step (the same storage for the solver's life).

@@ -17,7 +17,9 @@
 #include "cosim/io/held_outputs.hpp"
 #include "cosim/io/output_schedule.hpp"
 #include "cosim/io/run_summary.hpp"
+#include "cosim/io/schedule_state.hpp"
 #include "cosim/io/snapshot_writer.hpp"
+#include "cosim/io/state_file.hpp"
 #include "cosim/io/time_series_writer.hpp"
 #include "swe/case/load_case.hpp"
 #include "swe/coupling/bed_traction.hpp"
@@ -96,19 +98,22 @@ class CaseRun {
         summary_.set_section("case", case_section(c_, *solver_));
         declare_coupling();
         participant_.declare_repeatable();
+        participant_.declare_checkpointable();
         if (c_.window > 0.0) participant_.set_standalone_window(c_.window);
         participant_.initialize(0.0, c_.end_time);
-        if (participant_.is_coupled() && c_.coupling.reads_bed) lay_water_over_received_bed();
+        if (!restarts() && participant_.is_coupled() && c_.coupling.reads_bed)
+          lay_water_over_received_bed();
         record_initial_surface();
         end_time_ = participant_.end_time();
         progress_.gauge_times.emplace(c_.gauge_every, end_time_);
         progress_.snapshots = cosim::OutputSchedule(c_.output_every, end_time_);
         tolerance_ = 1e-10 * end_time_;
+        if (restarts()) read_checkpoint();
         open_outputs();
       }
       const Totals start = solver_->totals();
       record_conserved(start, true);
-      write_outputs(0.0);
+      if (!restarts()) write_outputs(0.0);
       summary_.write();
       loop();
       record_conserved(solver_->totals(), false);
@@ -217,6 +222,7 @@ class CaseRun {
       const double now = participant_.time();
       if (progress_.steps % 64 == 0 || progress_.snapshots.due(now, tolerance_)) check_state(now);
       write_outputs(now);
+      if (participant_.must_write_checkpoint()) write_checkpoint();
       if (Clock::now() - last_progress > std::chrono::seconds(5)) {
         last_progress = Clock::now();
         const WaterStats s = water_stats(*solver_);
@@ -245,6 +251,45 @@ class CaseRun {
     solver_->restore_state();
     progress_ = *saved_progress_;
     outputs_.discard();
+  }
+
+  bool restarts() const { return !participant_.restart_directory().empty(); }
+
+  // The run's part of a coupled checkpoint (architecture.md §14): what
+  // save_window_start() copies, and the initial surface the bed pressure's
+  // `excess` refers to.
+  static constexpr const char* state_file = "state.h5";
+  static constexpr const char* state_kind = "swe_fluid";
+  static constexpr std::int64_t state_version = 1;
+
+  void write_checkpoint() {
+    auto scope = summary_.phases().measure("checkpoint");
+    cosim::StateFileWriter out(participant_.checkpoint_directory() / state_file, state_kind,
+                               state_version);
+    solver_->write_state(out);
+    out.integer("run.steps", static_cast<std::int64_t>(progress_.steps));
+    out.number("run.min_dt", progress_.min_dt);
+    out.number("run.eta_max", progress_.eta_max);
+    cosim::write_schedule(out, "run.snapshots", progress_.snapshots);
+    cosim::write_schedule(out, "run.gauge_times", *progress_.gauge_times);
+    out.numbers("coupling.initial_surface", coupling_.initial_surface);
+    out.commit();
+    participant_.checkpoint_written();
+  }
+
+  void read_checkpoint() {
+    const cosim::StateFileReader in(participant_.restart_directory() / state_file, state_kind,
+                                    state_version);
+    solver_->read_state(in);
+    progress_.steps = static_cast<std::size_t>(in.integer("run.steps"));
+    progress_.min_dt = in.number("run.min_dt");
+    progress_.eta_max = in.number("run.eta_max");
+    cosim::read_schedule(in, "run.snapshots", progress_.snapshots);
+    cosim::read_schedule(in, "run.gauge_times", *progress_.gauge_times);
+    in.numbers("coupling.initial_surface", coupling_.initial_surface.size(),
+               coupling_.initial_surface);
+    spdlog::info("restarted from {} at t = {:.9g} s (step {})",
+                 participant_.restart_directory().string(), participant_.time(), progress_.steps);
   }
 
   void check_state(double t) const {

@@ -234,6 +234,20 @@ void Solver1d::restore_state() {
   s.bed = s.saved_bed;
 }
 
+void Solver1d::write_state(cosim::StateFileWriter& out) const {
+  const Impl& s = *impl_;
+  out.numbers("h", s.h);
+  out.numbers("q", s.q);
+  out.numbers("bed", s.bed);
+}
+
+void Solver1d::read_state(const cosim::StateFileReader& in) {
+  Impl& s = *impl_;
+  in.numbers("h", s.h.size(), s.h);
+  in.numbers("q", s.q.size(), s.q);
+  in.numbers("bed", s.bed.size(), s.bed);
+}
+
 std::span<const double> Solver1d::depth() const {
   return std::span<const double>(impl_->h).subspan(ghost_layers, impl_->n());
 }

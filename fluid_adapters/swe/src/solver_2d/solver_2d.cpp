@@ -300,6 +300,33 @@ void Solver2d::restore_state() {
   m.cells_current = false;
 }
 
+void Solver2d::write_state(cosim::StateFileWriter& out) const {
+  const Impl& m = *impl_;
+  for (const auto& [name, values] : {std::pair{"h", &m.state.h},
+                                     {"hu", &m.state.hu},
+                                     {"hv", &m.state.hv},
+                                     {"eta", &m.state.eta},
+                                     {"u", &m.state.u},
+                                     {"v", &m.state.v},
+                                     {"bed", &m.bed},
+                                     {"bed_cells", &m.bed_cells}})
+    out.numbers(name, *values);
+}
+
+void Solver2d::read_state(const cosim::StateFileReader& in) {
+  Impl& m = *impl_;
+  for (const auto& [name, values] : {std::pair{"h", &m.state.h},
+                                     {"hu", &m.state.hu},
+                                     {"hv", &m.state.hv},
+                                     {"eta", &m.state.eta},
+                                     {"u", &m.state.u},
+                                     {"v", &m.state.v},
+                                     {"bed", &m.bed},
+                                     {"bed_cells", &m.bed_cells}})
+    in.numbers(name, values->size(), *values);
+  m.cells_current = false;
+}
+
 std::span<const double> Solver2d::depth() const {
   impl_->copy_cells();
   return impl_->h_cells;
