@@ -14,12 +14,16 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 #include <thread>
 
 #include "demo_job.hpp"
+#include "hdf5_contents.hpp"
 #include "model_jobs.hpp"
+#include "replaced_text.hpp"
 #include "run_process.hpp"
 #include "text_files.hpp"
 
@@ -88,6 +92,50 @@ std::size_t expect_same_continuation(const fs::path& whole, const fs::path& cont
   return compared;
 }
 
+// The last snapshot file (`<base>_<step>.h5`) of every snapshot series under
+// a run directory, by its directory and base name.
+std::map<std::string, fs::path> last_snapshots(const fs::path& run) {
+  static const std::regex numbered(R"((.*)_(\d{6})\.h5)");
+  std::map<std::string, fs::path> last;
+  for (const auto& entry : fs::recursive_directory_iterator(run)) {
+    const fs::path relative = fs::relative(entry.path(), run);
+    std::smatch m;
+    const std::string name = entry.path().filename().string();
+    if (relative.string().find("checkpoints") == 0 || !std::regex_match(name, m, numbered))
+      continue;
+    const std::string key = (relative.parent_path() / m[1].str()).string();
+    if (!last.count(key) || last[key].filename() < entry.path().filename())
+      last[key] = entry.path();
+  }
+  return last;
+}
+
+// The last snapshot of every series the continued run wrote holds what the
+// uninterrupted run's does, every dataset and attribute bit for bit but the
+// snapshot's index in its series (a restarted series counts from 0).
+std::size_t expect_same_last_snapshots(const fs::path& whole, const fs::path& continued) {
+  const auto expected = last_snapshots(whole);
+  std::size_t compared = 0;
+  for (const auto& [series, file] : last_snapshots(continued)) {
+    if (!expected.count(series)) {
+      ADD_FAILURE() << "the uninterrupted run has no snapshots " << series;
+      continue;
+    }
+    auto got = hdf5_contents(file);
+    auto want = hdf5_contents(expected.at(series));
+    got.erase("@step");
+    want.erase("@step");
+    std::vector<std::string> differing;
+    for (const auto& [object, bytes] : want)
+      if (!got.count(object) || got.at(object) != bytes) differing.push_back(object);
+    EXPECT_TRUE(differing.empty() && got.size() == want.size())
+        << series << ": " << differing.size() << " objects differ, e.g. "
+        << (differing.empty() ? std::string("(extra objects)") : differing.front());
+    ++compared;
+  }
+  return compared;
+}
+
 fs::path checkpoint_of(const fs::path& run, std::size_t window) {
   return run / "checkpoints" / fmt::format("window_{:09d}", window);
 }
@@ -114,8 +162,11 @@ void expect_restart_continues(const fs::path& dir, const fs::path& job, const st
                                                       "manifest.json"))["time_s"]
                           .get<double>();
   const std::size_t rows = expect_same_continuation(dir / "whole", dir / "continued", window, time);
-  std::printf("%s: restarted after window %zu, %zu rows after it equal the uninterrupted run's\n",
-              job.parent_path().filename().c_str(), window, rows);
+  const std::size_t snapshots = expect_same_last_snapshots(dir / "whole", dir / "continued");
+  std::printf(
+      "%s: restarted after window %zu; %zu rows after it and the last snapshot of %zu series "
+      "equal the uninterrupted run's\n",
+      job.parent_path().filename().c_str(), window, rows, snapshots);
   EXPECT_GT(rows, 0u);
   const auto summary = nlohmann::json::parse(read_text(dir / "continued" / "summary.json"));
   EXPECT_EQ(summary["restart"]["window"].get<std::size_t>(), window);
@@ -211,6 +262,23 @@ output:
 coupling: {reads: [bed_elevation], writes: [bed_traction], bed_pressure: excess}
 )");
   expect_restart_continues(dir, dir / "job.yaml", "10", 20);
+}
+
+// Zheng et al.'s clay column (configs/clay_still_water_Rws1.0*.yaml, to
+// 0.06 s): mpm_solver and swe_fluid continue from a checkpoint, explicit
+// and implicit (IQN-ILS reusing earlier windows' columns).
+TEST(CheckpointRestart, TheClayColumnOnShallowWaterContinuesBitForBit) {
+  const fs::path configs = fs::path(COSIM_SOURCE_DIR) / "configs";
+  for (const char* file :
+       {"clay_still_water_Rws1.0.yaml", "clay_still_water_Rws1.0_implicit.yaml"}) {
+    const fs::path dir = fresh_directory(std::string("checkpoint_clay_") + file);
+    std::string text = read_text(configs / file);
+    text = replaced(text, "end_time: 5.0", "end_time: 0.06");
+    text = replaced(text, "config: mpm/", fmt::format("config: {}/mpm/", configs.string()));
+    text = replaced(text, "config: swe/", fmt::format("config: {}/swe/", configs.string()));
+    write_text(dir / "job.yaml", text);
+    expect_restart_continues(dir, dir / "job.yaml", "25", 25);
+  }
 }
 
 TEST(CheckpointRestart, OnlyTheLastCheckpointsAreKeptAndEachIsComplete) {

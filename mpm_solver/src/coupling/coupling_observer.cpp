@@ -35,6 +35,7 @@ template <int Dim>
 void CouplingObserver<Dim>::initialize(Solver<Dim>& solver) {
   participant_ = std::make_unique<cosim::Participant>(endpoint_.name_or(name_), endpoint_);
   participant_->declare_repeatable();
+  participant_->declare_checkpointable();
   if (standalone_window_ > 0.0) participant_->set_standalone_window(standalone_window_);
   coupling_ = attach_coupling(solver, *participant_, spec_);
   coupling_->declare();
@@ -74,6 +75,26 @@ bool CouplingObserver<Dim>::must_restore_state() const {
 template <int Dim>
 bool CouplingObserver<Dim>::is_window_complete() const {
   return participant_ && participant_->is_window_complete();
+}
+
+template <int Dim>
+std::filesystem::path CouplingObserver<Dim>::restart_directory() const {
+  return endpoint_.restart;
+}
+
+template <int Dim>
+bool CouplingObserver<Dim>::must_write_checkpoint() const {
+  return participant_ && participant_->must_write_checkpoint();
+}
+
+template <int Dim>
+std::filesystem::path CouplingObserver<Dim>::checkpoint_directory() const {
+  return participant_ ? participant_->checkpoint_directory() : std::filesystem::path();
+}
+
+template <int Dim>
+void CouplingObserver<Dim>::checkpoint_written() {
+  participant_->checkpoint_written();
 }
 
 template <int Dim>

@@ -16,6 +16,8 @@
 #include "cosim/io/logging.hpp"
 #include "cosim/io/output_schedule.hpp"
 #include "cosim/io/run_summary.hpp"
+#include "cosim/io/schedule_state.hpp"
+#include "cosim/io/state_file.hpp"
 #include "cosim/runtime/stop_request.hpp"
 #include "mpm/case/load_case.hpp"
 #include "mpm/io/grid_snapshot_writer.hpp"
@@ -124,13 +126,17 @@ class CaseRun {
       {
         auto scope = summary_.phases().measure("setup");
         if (observer_) observer_->initialize(solver_);
+        // The snapshots' displacements are from the case's initial positions.
         open_outputs();
+        if (restarts()) read_checkpoint();
       }
       record_conserved(summary_, solver_.totals(), solver_.conducts_heat(), true);
       solver_.check_state();
-      hold_snapshot();
-      hold_probes();
-      write_held_outputs();
+      if (!restarts()) {
+        hold_snapshot();
+        hold_probes();
+        write_held_outputs();
+      }
       summary_.write();
       loop();
       finish_outputs();
@@ -216,6 +222,7 @@ class CaseRun {
       if (window_may_repeat_ && !observer_->is_window_complete()) continue;
       window_may_repeat_ = false;
       write_held_outputs();
+      if (observer_ && observer_->must_write_checkpoint()) write_checkpoint();
 
       const auto wall = Clock::now();
       const double since = std::chrono::duration<double>(wall - last_progress).count();
@@ -230,6 +237,46 @@ class CaseRun {
         summary_.write();
       }
     }
+  }
+
+  bool restarts() const { return observer_ && !observer_->restart_directory().empty(); }
+
+  // The run's part of a coupled checkpoint (architecture.md §14): the
+  // solver's state and the loop's progress, as save_window_start() copies
+  // them.
+  static constexpr const char* state_file = "state.h5";
+  static constexpr const char* state_kind = "mpm_solver";
+  static constexpr std::int64_t state_version = 1;
+
+  void write_checkpoint() {
+    auto scope = summary_.phases().measure("checkpoint");
+    cosim::StateFileWriter out(observer_->checkpoint_directory() / state_file, state_kind,
+                               state_version);
+    out.integer("dimension", Dim);
+    solver_.write_state(out);
+    cosim::write_schedule(out, "run.snapshots", progress_.snapshots);
+    cosim::write_schedule(out, "run.probe_times", progress_.probe_times);
+    out.number("run.last_snapshot", progress_.last_snapshot);
+    out.number("run.min_stable", progress_.min_stable);
+    out.number("run.max_stable", progress_.max_stable);
+    out.commit();
+    observer_->checkpoint_written();
+  }
+
+  void read_checkpoint() {
+    const cosim::StateFileReader in(observer_->restart_directory() / state_file, state_kind,
+                                    state_version);
+    if (in.integer("dimension") != Dim)
+      throw cosim::InputError(fmt::format("{}: a {}D state, the case is {}D", in.file().string(),
+                                          in.integer("dimension"), Dim));
+    solver_.read_state(in);
+    cosim::read_schedule(in, "run.snapshots", progress_.snapshots);
+    cosim::read_schedule(in, "run.probe_times", progress_.probe_times);
+    progress_.last_snapshot = in.number("run.last_snapshot");
+    progress_.min_stable = in.number("run.min_stable");
+    progress_.max_stable = in.number("run.max_stable");
+    spdlog::info("restarted from {} at t = {:.9g} s (step {})",
+                 observer_->restart_directory().string(), solver_.time(), solver_.step_count());
   }
 
   // The start of a window the observer may run again: the solver's state and

@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -14,6 +15,7 @@
 #include "grid_boundaries.hpp"
 #include "grid_contact.hpp"
 #include "heat_conduction.hpp"
+#include "mpm/particles/particle_state_file.hpp"
 #include "mpm/shape/grid_geometry.hpp"
 #include "mpm/shape/shape_dispatch.hpp"
 #include "mpm/shape/stencil.hpp"
@@ -794,6 +796,41 @@ void Solver<Dim>::restore(const SolverState<Dim>& state) {
   s.time = state.time_;
   s.steps = state.steps_;
   s.accumulated = state.accumulated_;
+}
+template <int Dim>
+void Solver<Dim>::write_state(cosim::StateFileWriter& out) const {
+  const Impl& s = *impl_;
+  write_particles(out, s.particles);
+  std::vector<Vec<Dim>> rigid_velocity, contact_impulse;
+  for (const auto& body : s.bodies) {
+    rigid_velocity.push_back(body.rigid_velocity);
+    contact_impulse.push_back(body.contact_impulse);
+  }
+  out.rows("bodies.rigid_velocity", rigid_velocity);
+  out.rows("bodies.contact_impulse", contact_impulse);
+  out.number("time", s.time);
+  out.integer("steps", static_cast<std::int64_t>(s.steps));
+  const AccumulatedEnergy& e = s.accumulated;
+  out.numbers("accumulated_energy",
+              std::array{e.contact_dissipation, e.boundary_dissipation, e.external_work,
+                         e.internal_work, e.external_heat, e.heat_through_faces});
+}
+template <int Dim>
+void Solver<Dim>::read_state(const cosim::StateFileReader& in) {
+  Impl& s = *impl_;
+  read_particles(in, s.particles);
+  std::vector<Vec<Dim>> rigid_velocity, contact_impulse;
+  in.rows("bodies.rigid_velocity", s.bodies.size(), rigid_velocity);
+  in.rows("bodies.contact_impulse", s.bodies.size(), contact_impulse);
+  for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+    s.bodies[b].rigid_velocity = rigid_velocity[b];
+    s.bodies[b].contact_impulse = contact_impulse[b];
+  }
+  s.time = in.number("time");
+  s.steps = static_cast<std::size_t>(in.integer("steps"));
+  std::vector<double> e;
+  in.numbers("accumulated_energy", 6, e);
+  s.accumulated = {e[0], e[1], e[2], e[3], e[4], e[5]};
 }
 template <int Dim>
 void Solver<Dim>::add_particle_force_source(ParticleForceSource source) {

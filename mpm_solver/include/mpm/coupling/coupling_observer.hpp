@@ -42,6 +42,10 @@ class CouplingObserver final : public StepObserver<Dim> {
   void finalize() override;
   void abort(std::string_view reason) override;
   nlohmann::json summary() const override;
+  std::filesystem::path restart_directory() const override;
+  bool must_write_checkpoint() const override;
+  std::filesystem::path checkpoint_directory() const override;
+  void checkpoint_written() override;
 
   const MpmCoupling<Dim>* coupling() const { return coupling_.get(); }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -52,6 +53,16 @@ class StepObserver {
   virtual void abort(std::string_view reason) { (void)reason; }
   // Added to summary.json under "coupling" (timings, windows), when not null.
   virtual nlohmann::json summary() const { return nullptr; }
+
+  // Checkpoints of a coupled run (architecture.md §14): the driver reads the
+  // solver's and its own state from restart_directory() after initialize()
+  // when it is not empty, and after the after_step() that completed a window
+  // with must_write_checkpoint() writes them into checkpoint_directory(),
+  // then calls checkpoint_written().
+  virtual std::filesystem::path restart_directory() const { return {}; }
+  virtual bool must_write_checkpoint() const { return false; }
+  virtual std::filesystem::path checkpoint_directory() const { return {}; }
+  virtual void checkpoint_written() {}
 };
 
 template <int Dim>

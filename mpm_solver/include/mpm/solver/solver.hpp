@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "cosim/io/state_file.hpp"
 #include "mpm/case/case_description.hpp"
 #include "mpm/grid/grid.hpp"
 #include "mpm/particles/particles.hpp"
@@ -64,6 +65,10 @@ class Solver {
   // size, is an internal error.
   void save(SolverState<Dim>& state) const;
   void restore(const SolverState<Dim>& state);
+  // The same state in a checkpoint's state file (architecture.md §14), read
+  // back bit for bit into a solver built from the same case.
+  void write_state(cosim::StateFileWriter& out) const;
+  void read_state(const cosim::StateFileReader& in);
 
   // Coupling and extra physics hook in here. Force sources run each step
   // after the surface loads and add their force [N] to
