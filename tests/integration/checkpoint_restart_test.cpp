@@ -281,6 +281,32 @@ TEST(CheckpointRestart, TheClayColumnOnShallowWaterContinuesBitForBit) {
   }
 }
 
+// Terzaghi's column on ICE (configs/ice_coupled/terzaghi, while the load
+// ramps up): ice_fluid and mpm_solver continue from a checkpoint, explicit
+// and implicit.
+TEST(CheckpointRestart, TheTerzaghiColumnOnIceContinuesBitForBit) {
+  const fs::path case_dir = fs::path(COSIM_SOURCE_DIR) / "configs" / "ice_coupled" / "terzaghi";
+  std::string text = read_text(case_dir / "job.yaml");
+  text = replaced(text, "config: water.yaml", "config: " + (case_dir / "water.yaml").string());
+  text = replaced(text, "config: soil.yaml", "config: " + (case_dir / "soil.yaml").string());
+  const fs::path explicit_dir = fresh_directory("checkpoint_terzaghi_explicit");
+  write_text(explicit_dir / "job.yaml", replaced(text, "end_time: 0.75", "end_time: 0.002"));
+  expect_restart_continues(explicit_dir, explicit_dir / "job.yaml", "100", 100);
+  const fs::path implicit_dir = fresh_directory("checkpoint_terzaghi_implicit");
+  write_text(implicit_dir / "job.yaml",
+             replaced(text, "end_time: 0.75", "end_time: 0.0006") + R"(coupling:
+  scheme: parallel-implicit
+  max_iterations: 30
+  convergence:
+    - {field: water.solid_fraction, relative: 1.0e-5}
+    - {field: water.solid_velocity, relative: 1.0e-5, absolute: 1.0e-9}
+    - {field: soil.pore_pressure, relative: 1.0e-5}
+    - {field: soil.pore_pressure_force, relative: 1.0e-5, absolute: 1.0e-5}
+  acceleration: {method: iqn-ils, reuse_windows: 4}
+)");
+  expect_restart_continues(implicit_dir, implicit_dir / "job.yaml", "30", 30);
+}
+
 TEST(CheckpointRestart, OnlyTheLastCheckpointsAreKeptAndEachIsComplete) {
   const fs::path dir = fresh_directory("checkpoint_kept");
   const fs::path job = write_job(dir, JobOptions{});

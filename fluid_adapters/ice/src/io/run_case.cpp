@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -15,13 +16,16 @@
 #include "cosim/io/held_outputs.hpp"
 #include "cosim/io/output_schedule.hpp"
 #include "cosim/io/run_summary.hpp"
+#include "cosim/io/schedule_state.hpp"
 #include "cosim/io/snapshot_writer.hpp"
+#include "cosim/io/state_file.hpp"
 #include "cosim/io/time_series_writer.hpp"
 #include "ice/case/load_case.hpp"
 #include "ice/case/make_solver.hpp"
 #include "ice/coupling/porous_coupling.hpp"
 #include "ice/io/state_output.hpp"
 #include "ice/solver/saved_state.hpp"
+#include "ice/solver/saved_state_file.hpp"
 
 namespace ice {
 
@@ -71,6 +75,7 @@ class CaseRun {
         build_solver();
         if (participant_.is_coupled()) coupling_.declare(participant_, *solver_);
         participant_.declare_repeatable();
+        participant_.declare_checkpointable();
         if (c_.window > 0.0) participant_.set_standalone_window(c_.window);
         participant_.initialize(0.0, c_.end_time);
         // Coupled, the job's end time replaces the case's: the schedules end there.
@@ -78,10 +83,11 @@ class CaseRun {
         run_.snapshots = cosim::OutputSchedule(c_.output_every, end);
         run_.gauge_times = cosim::OutputSchedule(c_.gauge_every, end);
         tolerance_ = 1e-10 * end;
+        if (restarts()) read_checkpoint();
         open_outputs();
       }
       record_conserved(true);
-      write_outputs(0.0, {});
+      if (!restarts()) write_outputs(0.0, {});
       summary_.write();
       loop();
       record_conserved(false);
@@ -194,6 +200,7 @@ class CaseRun {
       const double now = participant_.time();
       write_outputs(now, report, dt);
       if (participant_.is_window_complete()) outputs_.release();
+      if (participant_.must_write_checkpoint()) write_checkpoint();
       // Inside a window that may run again, the progress line waits for its end.
       if (outputs_.holding()) continue;
       if (Clock::now() - last_progress > std::chrono::seconds(5)) {
@@ -205,6 +212,54 @@ class CaseRun {
         summary_.write();
       }
     }
+  }
+
+  bool restarts() const { return !participant_.restart_directory().empty(); }
+
+  // The run's part of a coupled checkpoint (architecture.md §14): the
+  // solver's state as save_state() copies it (into the buffer of the window
+  // just accepted, which is not needed again) and the run's bookkeeping.
+  static constexpr const char* state_file = "state.h5";
+  static constexpr const char* state_kind = "ice_fluid";
+  static constexpr std::int64_t state_version = 1;
+
+  void write_checkpoint() {
+    auto scope = summary_.phases().measure("checkpoint");
+    cosim::StateFileWriter out(participant_.checkpoint_directory() / state_file, state_kind,
+                               state_version);
+    solver_->save_state(saved_solver_);
+    write_saved_state(out, saved_solver_);
+    cosim::write_schedule(out, "run.snapshots", run_.snapshots);
+    cosim::write_schedule(out, "run.gauge_times", run_.gauge_times);
+    out.number("run.free_dt", run_.free_dt);
+    out.integers("run.tallies",
+                 std::array<std::int64_t, 4>{static_cast<std::int64_t>(run_.steps),
+                                             static_cast<std::int64_t>(run_.rejected),
+                                             run_.cg_iterations, run_.most_cg_iterations});
+    out.number("run.most_closure", run_.most_closure);
+    out.number("run.min_dt", run_.min_dt);
+    out.commit();
+    participant_.checkpoint_written();
+  }
+
+  void read_checkpoint() {
+    const cosim::StateFileReader in(participant_.restart_directory() / state_file, state_kind,
+                                    state_version);
+    read_saved_state(in, static_cast<std::size_t>(solver_->grid().cell_count()), saved_solver_);
+    solver_->restore_state(saved_solver_);
+    cosim::read_schedule(in, "run.snapshots", run_.snapshots);
+    cosim::read_schedule(in, "run.gauge_times", run_.gauge_times);
+    run_.free_dt = in.number("run.free_dt");
+    std::vector<std::int64_t> tallies;
+    in.integers("run.tallies", 4, tallies);
+    run_.steps = static_cast<std::size_t>(tallies[0]);
+    run_.rejected = static_cast<std::size_t>(tallies[1]);
+    run_.cg_iterations = static_cast<long>(tallies[2]);
+    run_.most_cg_iterations = static_cast<int>(tallies[3]);
+    run_.most_closure = in.number("run.most_closure");
+    run_.min_dt = in.number("run.min_dt");
+    spdlog::info("restarted from {} at t = {:.9g} s (step {})",
+                 participant_.restart_directory().string(), participant_.time(), run_.steps);
   }
 
   // At the start of a window that may run again: the solver's state and the
