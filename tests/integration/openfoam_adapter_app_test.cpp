@@ -21,6 +21,8 @@
 #include "openfoam/foam/installation.hpp"
 #include "openfoam/foam/time_directories.hpp"
 #include "openfoam/io/case_layout.hpp"
+#include "replaced_text.hpp"
+#include "restart_continuation.hpp"
 #include "run_process.hpp"
 #include "text_files.hpp"
 
@@ -28,9 +30,11 @@ namespace {
 
 namespace fs = std::filesystem;
 using cosim::testing::binary;
+using cosim::testing::expect_restart_continues;
 using cosim::testing::fresh_directory;
 using cosim::testing::hdf5_contents;
 using cosim::testing::read_text;
+using cosim::testing::replaced;
 using cosim::testing::write_text;
 
 bool openfoam_installed = false;
@@ -287,6 +291,45 @@ TEST_F(OpenFoamAdapterRun, AWindowRunAgainFromItsStartRepeatsItBitForBit) {
   std::sort(explicit_times.begin(), explicit_times.end());
   std::sort(implicit_times.begin(), implicit_times.end());
   EXPECT_EQ(explicit_times, implicit_times);
+}
+
+// The Darcy pairing (porosity zones) continued from a checkpoint after its
+// second window: the case's time directory, the fields and the coupling's
+// carried state come back, and what the adapter and the soil write after
+// the checkpoint equals the uninterrupted run's bit for bit, explicit and
+// implicit.
+TEST_F(OpenFoamAdapterRun, ACoupledRunContinuesFromACheckpointBitForBit) {
+  const fs::path case_dir = fs::path(COSIM_SOURCE_DIR) / "configs" / "openfoam_coupled" / "darcy";
+  std::string job = read_text(case_dir / "job.yaml");
+  job = replaced(job, "end_time: 0.08", "end_time: 0.02");
+  job = replaced(job, "config: water.yaml", "config: " + (case_dir / "water.yaml").string());
+  job = replaced(job, "config: column.yaml", "config: " + (case_dir / "column.yaml").string());
+  const fs::path explicit_dir = fresh_directory("openfoam_checkpoint_explicit");
+  write_text(explicit_dir / "job.yaml", job);
+  expect_restart_continues(explicit_dir, explicit_dir / "job.yaml", "2", 2);
+  const fs::path implicit_dir = fresh_directory("openfoam_checkpoint_implicit");
+  write_text(implicit_dir / "job.yaml", job + R"(coupling:
+  scheme: parallel-implicit
+  convergence:
+    - {field: column.pore_pressure, relative: 1.0e-6}
+    - {field: water.solid_fraction, relative: 1.0e-6}
+)");
+  expect_restart_continues(implicit_dir, implicit_dir / "job.yaml", "2", 2);
+}
+
+// Pan et al.'s underwater granular collapse (MPPICInterFoam, the soil as
+// parcels), six windows: the restart also brings back the parcels' cloud,
+// the fluid fraction and the next start's inertia the end directory holds.
+TEST_F(OpenFoamAdapterRun, AParcelCoupledRunContinuesFromACheckpointBitForBit) {
+  const fs::path case_dir =
+      fs::path(COSIM_SOURCE_DIR) / "configs" / "openfoam_coupled" / "granular_collapse";
+  std::string job = read_text(case_dir / "job.yaml");
+  job = replaced(job, "end_time: 2.0", "end_time: 6.0e-4");
+  job = replaced(job, "config: water.yaml", "config: " + (case_dir / "water.yaml").string());
+  job = replaced(job, "config: soil.yaml", "config: " + (case_dir / "soil.yaml").string());
+  const fs::path dir = fresh_directory("openfoam_checkpoint_parcels");
+  write_text(dir / "job.yaml", job);
+  expect_restart_continues(dir, dir / "job.yaml", "3", 3);
 }
 
 }  // namespace

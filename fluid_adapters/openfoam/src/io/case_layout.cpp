@@ -68,6 +68,28 @@ std::vector<fs::path> CaseLayout::roots() const {
   return r;
 }
 
+void CaseLayout::copy_time_out(const std::string& name, const fs::path& into) const {
+  for (const fs::path& root : roots()) {
+    const fs::path target = into / fs::relative(root, case_dir_) / name;
+    fs::create_directories(target.parent_path());
+    fs::copy(root / name, target, fs::copy_options::recursive);
+  }
+}
+
+void CaseLayout::copy_times_in(const fs::path& from) const {
+  for (const fs::path& root : roots()) {
+    const fs::path source = from / fs::relative(root, case_dir_);
+    if (!fs::is_directory(source))
+      throw cosim::InputError(
+          fmt::format("{}: the checkpoint has no time directory of {} (a "
+                      "case decomposed otherwise?)",
+                      from.string(), fs::relative(root, case_dir_).string()));
+    for (const auto& time : fs::directory_iterator(source))
+      fs::copy(time.path(), root / time.path().filename(),
+               fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+  }
+}
+
 std::optional<TimeDirectory> CaseLayout::latest() const {
   return latest_time_directory(roots().front());
 }

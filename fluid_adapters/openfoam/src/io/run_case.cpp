@@ -17,7 +17,9 @@
 #include "cosim/io/logging.hpp"
 #include "cosim/io/output_schedule.hpp"
 #include "cosim/io/run_summary.hpp"
+#include "cosim/io/schedule_state.hpp"
 #include "cosim/io/snapshot_writer.hpp"
+#include "cosim/io/state_file.hpp"
 #include "cosim/io/time_series_writer.hpp"
 #include "cosim/participant.hpp"
 #include "openfoam/case/case_properties.hpp"
@@ -213,10 +215,16 @@ class CaseRun {
     coupled_ = true;
     coupling.declare(participant);
     participant.declare_repeatable();
+    participant.declare_checkpointable();
     FoamFields fields = read_fields("0");
     coupling.write(participant, fields, c_.time_step, 0);
     participant.initialize(0.0, c_.end_time);
     check_window(participant.window_size());
+    if (!participant.restart_directory().empty()) {
+      read_checkpoint(participant.restart_directory(), coupling, fields);
+      soil_record_.emplace(options_.output / "soil_exchange.csv");
+      return fields;
+    }
     if (c_.soil.model != SoilModel::porosity_zones) {
       fields.alphac = coupling.fluid_fraction(participant);
       write_start_fluid_fraction(fields.alphac);
@@ -258,7 +266,65 @@ class CaseRun {
       layout_->remove_time(window_start_->directory);
     soil_record_->record(check, end - start, end, parcels_);
     finish_window(end, fields, !participant.is_coupling_ongoing());
+    if (participant.must_write_checkpoint()) write_checkpoint(participant, coupling, fields);
   }
+
+  // The adapter's part of a coupled checkpoint (architecture.md §14): the
+  // case's time directory at the window's end (every processor's), the
+  // fields read from it as the next window uses them (the step means), the
+  // coupling's carried state, and the run's tallies and output schedule.
+  static constexpr const char* state_file = "state.h5";
+  static constexpr const char* state_kind = "openfoam_adapter";
+  static constexpr std::int64_t state_version = 1;
+
+  // The fields' arrays by name (pointers, const when `f` is).
+  template <class Fields>
+  static auto field_arrays(Fields& f) {
+    using Array = std::conditional_t<std::is_const_v<Fields>, const std::vector<double>*,
+                                     std::vector<double>*>;
+    return std::array<std::pair<const char*, Array>, 6>{{{"alpha_water", &f.alpha_water},
+                                                         {"p_rgh", &f.p_rgh},
+                                                         {"p", &f.p},
+                                                         {"velocity", &f.velocity},
+                                                         {"alphac", &f.alphac},
+                                                         {"cloud_momentum", &f.cloud_momentum}}};
+  }
+
+  void write_checkpoint(cosim::Participant& participant, const SoilCoupling& coupling,
+                        const FoamFields& fields) {
+    auto scope = summary_.phases().measure("checkpoint");
+    const fs::path dir = participant.checkpoint_directory();
+    layout_->copy_time_out(layout_->latest()->name, dir / "time");
+    cosim::StateFileWriter out(dir / state_file, state_kind, state_version);
+    for (const auto& [name, values] : field_arrays(fields))
+      if (!values->empty()) out.numbers(std::string("fields.") + name, *values);
+    if (const auto carried = coupling.carried_state(); !carried.empty())
+      out.numbers("coupling.carried", carried);
+    out.integer("run.steps", steps_);
+    out.integer("run.windows", static_cast<std::int64_t>(windows_done()));
+    out.integer("run.parcels", static_cast<std::int64_t>(parcels_));
+    cosim::write_schedule(out, "run.snapshots", snapshots_);
+    out.commit();
+    participant.checkpoint_written();
+  }
+
+  void read_checkpoint(const fs::path& dir, SoilCoupling& coupling, FoamFields& fields) {
+    const cosim::StateFileReader in(dir / state_file, state_kind, state_version);
+    layout_->copy_times_in(dir / "time");
+    for (const auto& [name, values] : field_arrays(fields))
+      *values = in.has(std::string("fields.") + name) ? in.numbers(std::string("fields.") + name)
+                                                      : std::vector<double>{};
+    coupling.restore(in.has("coupling.carried") ? in.numbers("coupling.carried")
+                                                : std::vector<double>{});
+    steps_ = in.integer("run.steps");
+    windows_before_restart_ = static_cast<std::size_t>(in.integer("run.windows"));
+    parcels_ = static_cast<std::size_t>(in.integer("run.parcels"));
+    cosim::read_schedule(in, "run.snapshots", snapshots_);
+    spdlog::info("restarted from {} at t = {:.9g} s (time directory {})", dir.string(),
+                 layout_->latest()->time, layout_->latest()->name);
+  }
+
+  std::size_t windows_done() const { return windows_before_restart_ + windows_.size(); }
 
   // The state a repeated window starts over from: the case's time
   // directories up to the window's start (kept by run_window), the
@@ -339,7 +405,7 @@ class CaseRun {
   void finish_window(double t, const FoamFields& fields, bool last) {
     write_outputs(t, fields, last);
     if (last) record_water(fields, false);
-    summary_.set_windows(static_cast<std::int64_t>(windows_.size()));
+    summary_.set_windows(static_cast<std::int64_t>(windows_done()));
     summary_.set_steps(steps_);
     summary_.set_section("openfoam_windows", windows_json(windows_, steps_in(c_.window)));
     if (soil_record_) soil_record_->set_metrics(summary_);
@@ -544,7 +610,8 @@ class CaseRun {
   std::optional<SoilExchangeRecord> soil_record_;  // coupled
   std::optional<WindowStart> window_start_;        // implicit coupling
   std::size_t state_restores_ = 0;
-  std::size_t parcels_ = 0;  // or the porosity zones' cells
+  std::size_t parcels_ = 0;                 // or the porosity zones' cells
+  std::size_t windows_before_restart_ = 0;  // the windows a checkpoint's run had completed
 };
 
 // --overwrite clears the output directory: it must not hold the user's own

@@ -52,6 +52,11 @@ class CaseLayout {
   void remove_time(const std::string& name) const;
   // Removes every time directory but `keep`.
   void remove_times_except(std::span<const std::string> keep) const;
+  // Time `name` of every processor copied into `into`, as
+  // <into>/<root>/<name> (root "." serial, processor<N> decomposed): a
+  // checkpoint's copy of the case; copy_times_in() puts such a copy back.
+  void copy_time_out(const std::string& name, const std::filesystem::path& into) const;
+  void copy_times_in(const std::filesystem::path& from) const;
 
  private:
   std::vector<std::filesystem::path> roots() const;
