@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <memory>
 #include <vector>
 
 #include "cosim/error.hpp"
@@ -65,6 +67,45 @@ TEST(Solver1dSaveRestore, ARestoredSolverRepeatsItsStepsBitForBit) {
     expect_same_bits(Trajectory::of(s, 0), saved);
     expect_same_bits(Trajectory::of(s, 30), first);
   }
+}
+
+// A checkpoint: the state written to a state file and read by a solver
+// built afresh (a restarted run) takes the same steps bit for bit; a file of
+// another grid is refused.
+TEST(Solver1dSaveRestore, AStateFileReadByAFreshSolverContinuesBitForBit) {
+  const std::size_t n = 80;
+  const auto edges = swe_test::uneven_edges(n, 0.0, 1.0);
+  const auto make = [&](std::size_t cells) {
+    swe::Physics physics;
+    physics.manning = 0.02;
+    auto s = std::make_unique<swe::Solver1d>(
+        cells == n ? edges : swe_test::uneven_edges(cells, 0.0, 1.0), physics, swe::Scheme{},
+        swe::Boundaries1d{{swe::BoundaryKind::inflow_discharge, 0.1},
+                          {swe::BoundaryKind::wall, 0.0}});
+    std::vector<double> h(cells), bed(cells);
+    for (std::size_t i = 0; i < cells; ++i) {
+      h[i] = i < cells / 3 ? 0.8 : 0.1;
+      bed[i] = 0.05 * std::sin(20.0 * static_cast<double>(i) / static_cast<double>(cells));
+    }
+    s->set_bed(bed);
+    s->set_state(h, std::vector<double>(cells, 0.0), {});
+    return s;
+  };
+  auto first = make(n);
+  Trajectory::of(*first, 25);
+  const auto file = std::filesystem::path(COSIM_BINARY_DIR) / "test_runs" / "swe_1d_state.h5";
+  std::filesystem::create_directories(file.parent_path());
+  {
+    cosim::StateFileWriter out(file, "swe_1d_test", 1);
+    first->write_state(out);
+    out.commit();
+  }
+  auto restarted = make(n);
+  restarted->read_state(cosim::StateFileReader(file, "swe_1d_test", 1));
+  expect_same_bits(Trajectory::of(*restarted, 0), Trajectory::of(*first, 0));
+  expect_same_bits(Trajectory::of(*restarted, 40), Trajectory::of(*first, 40));
+  EXPECT_THROW(make(n + 1)->read_state(cosim::StateFileReader(file, "swe_1d_test", 1)),
+               cosim::Error);
 }
 
 TEST(Solver1dSaveRestore, RefusesToRestoreWhatWasNeverSaved) {

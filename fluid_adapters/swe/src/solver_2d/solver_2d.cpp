@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -101,6 +102,15 @@ struct Solver2d::Impl {
   PaddedFields saved_state;
   std::vector<double> saved_bed, saved_bed_cells;
   bool has_saved_state = false;
+
+  // The arrays save_state() copies, by name (a checkpoint's state file).
+  template <class Self>
+  static auto state_arrays(Self& m) {
+    return std::array{std::pair{"h", &m.state.h},   std::pair{"hu", &m.state.hu},
+                      std::pair{"hv", &m.state.hv}, std::pair{"eta", &m.state.eta},
+                      std::pair{"u", &m.state.u},   std::pair{"v", &m.state.v},
+                      std::pair{"bed", &m.bed},     std::pair{"bed_cells", &m.bed_cells}};
+  }
 
   Impl(Grid2d g, Physics p, Scheme s, Boundaries2d b)
       : grid(g),
@@ -301,30 +311,13 @@ void Solver2d::restore_state() {
 }
 
 void Solver2d::write_state(cosim::StateFileWriter& out) const {
-  const Impl& m = *impl_;
-  for (const auto& [name, values] : {std::pair{"h", &m.state.h},
-                                     {"hu", &m.state.hu},
-                                     {"hv", &m.state.hv},
-                                     {"eta", &m.state.eta},
-                                     {"u", &m.state.u},
-                                     {"v", &m.state.v},
-                                     {"bed", &m.bed},
-                                     {"bed_cells", &m.bed_cells}})
-    out.numbers(name, *values);
+  for (const auto& [name, values] : Impl::state_arrays(*impl_)) out.numbers(name, *values);
 }
 
 void Solver2d::read_state(const cosim::StateFileReader& in) {
-  Impl& m = *impl_;
-  for (const auto& [name, values] : {std::pair{"h", &m.state.h},
-                                     {"hu", &m.state.hu},
-                                     {"hv", &m.state.hv},
-                                     {"eta", &m.state.eta},
-                                     {"u", &m.state.u},
-                                     {"v", &m.state.v},
-                                     {"bed", &m.bed},
-                                     {"bed_cells", &m.bed_cells}})
+  for (const auto& [name, values] : Impl::state_arrays(*impl_))
     in.numbers(name, values->size(), *values);
-  m.cells_current = false;
+  impl_->cells_current = false;
 }
 
 std::span<const double> Solver2d::depth() const {
