@@ -81,6 +81,19 @@ TEST(IceCase, ReadsEveryKeyAndTheDefaults) {
   EXPECT_DOUBLE_EQ(c.initial.minimum_volume_fraction, 1e-6);
   ASSERT_EQ(c.gauges.size(), 1u);
   EXPECT_NE(c.config_hash, 0u);
+  // A wave gauge's vertical is the axis gravity lies along; its material water.
+  const CaseDescription waves =
+      load_case_text(replaced(dam_break, "gauges: [{name: g1, point: [0.2, 0.01]}]",
+                              "wave_gauges: [{name: w, point: [0.2, 0.5]}]"),
+                     "case.yaml");
+  ASSERT_EQ(waves.wave_gauges.size(), 1u);
+  EXPECT_EQ(waves.wave_gauges[0].vertical, 1);
+  EXPECT_EQ(waves.wave_gauges[0].material, "water");
+  EXPECT_NE(error_of(replaced(replaced(dam_break, "gravity: [0.0, -9.81]\n", ""),
+                              "gauges: [{name: g1, point: [0.2, 0.01]}]",
+                              "wave_gauges: [{name: w, point: [0.2, 0.5]}]"))
+                .find("needs gravity along an axis"),
+            std::string::npos);
   EXPECT_TRUE(c.coupling.drag_in_solver);
   EXPECT_DOUBLE_EQ(c.coupling.minimum_porosity, 0.1);
   EXPECT_TRUE(c.coupling.heat_exchange);
@@ -118,6 +131,10 @@ TEST(IceCase, ErrorsNameTheKeyAndTheLine) {
       {"fill: water, velocity", "fill: water, pressure: 2.0e5, velocity", "hydrostatic"},
       {"drag: ice", "drag: solid", "coupling.drag"},
       {"minimum_porosity: 0.1", "minimum_porosity: 0.0", "coupling.minimum_porosity"},
+      {"gauges: [{name: g1, point: [0.2, 0.01]}]",
+       "wave_gauges: [{name: w, point: [0.2, 0.0], material: oil}]", "no material 'oil'"},
+      {"gauges: [{name: g1, point: [0.2, 0.01]}]", "wave_gauges: [{name: w, point: [0.5, 0.0]}]",
+       "outside the domain along x"},
   };
   for (const auto& c : cases) {
     const std::string message = error_of(replaced(dam_break, c.from, c.to));

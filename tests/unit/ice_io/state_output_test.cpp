@@ -69,5 +69,28 @@ TEST(IceOutput, GaugesRecordTheCellHoldingThePoint) {
   EXPECT_THROW(GaugeRecorder<2>(file, {{"far", {2.5, 0.1, 0.0}}}, solver), cosim::InputError);
 }
 
+// A wave gauge sums a material's volume fraction up the column through its
+// point: b fills 0.75 of each cell, so its surface stands at 0.75 of the
+// 0.5 m high column.
+TEST(IceOutput, WaveGaugesRecordTheSurfaceOverTheirColumn) {
+  const IceSolver<2> solver = two_gas_box();
+  const cosim::testing::ScratchDirectory scratch;
+  const std::filesystem::path file = scratch / "gauges.csv";
+  {
+    GaugeRecorder<2> gauges(file, {}, solver, {{"w", {1.1, 0.49, 0.0}, "b", 1}});
+    const auto row = gauges.row(0.5, solver);
+    ASSERT_EQ(row.size(), 2u);
+    EXPECT_DOUBLE_EQ(row[1], 0.75 * 0.5);
+  }
+  std::ifstream in(file);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, "time [s],eta_w [m]");
+  EXPECT_THROW(GaugeRecorder<2>(file, {}, solver, {{"w", {1.1, 0.0, 0.0}, "water", 1}}),
+               cosim::InputError);
+  EXPECT_THROW(GaugeRecorder<2>(file, {}, solver, {{"w", {2.6, 0.0, 0.0}, "b", 1}}),
+               cosim::InputError);
+}
+
 }  // namespace
 }  // namespace ice

@@ -157,6 +157,14 @@ Schema output_schema() {
   Schema gauge = Schema::object("A gauge: pressure, velocity and volume fractions at a point.");
   gauge.required("name", Schema::string().non_empty(), "Column suffix in gauges.csv.")
       .required("point", vector_schema("m"), "Position.");
+  Schema wave_gauge = Schema::object(
+      "A wave gauge: the height of a material's free surface over the vertical column of cells "
+      "through a point (the vertical: the axis gravity lies along; pores count whole).");
+  wave_gauge.required("name", Schema::string().non_empty(), "Column eta_<name> in gauges.csv.")
+      .required("point", vector_schema("m"),
+                "A point of the column (its vertical coordinate is ignored).")
+      .optional("material", Schema::string().non_empty().default_value("water"),
+                "The material whose surface it measures.");
   Schema output = Schema::object("What the run writes.").default_value("{}");
   output
       .optional("every", Schema::number().non_negative().unit("s").default_value("0"),
@@ -164,7 +172,9 @@ Schema output_schema() {
       .optional("snapshots", Schema::boolean().default_value("true"), "HDF5 + XDMF snapshots.")
       .optional("gauge_every", Schema::number().non_negative().unit("s").default_value("0"),
                 "Gauge interval; 0: every step.")
-      .optional("gauges", Schema::sequence(gauge), "Gauges (gauges.csv).");
+      .optional("gauges", Schema::sequence(gauge), "Gauges (gauges.csv).")
+      .optional("wave_gauges", Schema::sequence(wave_gauge),
+                "Free-surface gauges (gauges.csv, eta_<name> [m]).");
   return output;
 }
 

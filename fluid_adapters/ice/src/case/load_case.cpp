@@ -310,6 +310,39 @@ class CaseReader {
         c.gauges.push_back(std::move(p));
       }
     }
+    if (auto gauges = node.find("wave_gauges")) {
+      const int vertical = vertical_axis(c);
+      for (const Node& g : gauges->items()) {
+        if (vertical < 0)
+          g.fail("a wave gauge needs gravity along an axis, which gives the vertical");
+        WaveGauge w{g["name"].as<std::string>(), vector_of(g["point"]),
+                    g.get<std::string>("material", "water"), vertical};
+        if (std::none_of(c.materials.begin(), c.materials.end(),
+                         [&](const FluidMaterial& m) { return m.name == w.material; }))
+          g["material"].fail(fmt::format("no material '{}' in this case", w.material));
+        for (int d = 0; d < dimension_; ++d) {
+          const auto k = static_cast<std::size_t>(d);
+          if (d != vertical && (w.point[k] < c.origin[k] || w.point[k] > c.upper[k]))
+            g["point"].fail(fmt::format("wave gauge '{}' lies outside the domain along {}", w.name,
+                                        axis_names[d]));
+        }
+        c.wave_gauges.push_back(std::move(w));
+      }
+    }
+  }
+
+  // The axis gravity lies along (its largest component), or -1 without gravity.
+  int vertical_axis(const CaseDescription& c) const {
+    int axis = -1;
+    double largest = 0.0;
+    for (int d = 0; d < dimension_; ++d) {
+      const double g = std::abs(c.gravity[static_cast<std::size_t>(d)]);
+      if (g > largest) {
+        largest = g;
+        axis = d;
+      }
+    }
+    return axis;
   }
 
   const cosim::config::Document& document_;

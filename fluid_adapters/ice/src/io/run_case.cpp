@@ -128,7 +128,8 @@ class CaseRun {
     if (c_.snapshots) {
       snapshot_writer_.emplace(options_.output, "ice", cell_mesh(solver_->grid(), cells_mesh));
     }
-    if (!c_.gauges.empty()) gauges_.emplace(options_.output / "gauges.csv", c_.gauges, *solver_);
+    if (!c_.gauges.empty() || !c_.wave_gauges.empty())
+      gauges_.emplace(options_.output / "gauges.csv", c_.gauges, *solver_, c_.wave_gauges);
     steps_csv_.emplace(
         options_.output / "steps.csv",
         std::vector<std::string>{cosim::column_name("time", "s"), cosim::column_name("dt", "s"),

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "cosim/error.hpp"
@@ -14,6 +15,7 @@ constexpr const char* axis_name[] = {"x", "y", "z"};
 
 template <int Dim>
 std::vector<std::string> gauge_columns(const std::vector<GaugePoint>& gauges,
+                                       const std::vector<WaveGauge>& wave_gauges,
                                        const IceSolver<Dim>& solver) {
   std::vector<std::string> columns{cosim::column_name("time", "s")};
   for (const GaugePoint& g : gauges) {
@@ -25,6 +27,8 @@ std::vector<std::string> gauge_columns(const std::vector<GaugePoint>& gauges,
       columns.push_back(cosim::column_name(fmt::format("{}_fraction_{}", m.name, g.name), "1"));
     }
   }
+  for (const WaveGauge& g : wave_gauges)
+    columns.push_back(cosim::column_name("eta_" + g.name, "m"));
   return columns;
 }
 
@@ -104,9 +108,34 @@ const cosim::SnapshotFields& SnapshotFieldSet<Dim>::fields(const IceSolver<Dim>&
 template <int Dim>
 GaugeRecorder<Dim>::GaugeRecorder(const std::filesystem::path& file,
                                   const std::vector<GaugePoint>& gauges,
-                                  const IceSolver<Dim>& solver)
-    : writer_(file, gauge_columns(gauges, solver)) {
-  for (const GaugePoint& g : gauges) cells_.push_back(cell_holding(solver.grid(), g));
+                                  const IceSolver<Dim>& solver,
+                                  const std::vector<WaveGauge>& wave_gauges)
+    : writer_(file, gauge_columns(gauges, wave_gauges, solver)) {
+  const CellGrid<Dim>& grid = solver.grid();
+  for (const GaugePoint& g : gauges) cells_.push_back(cell_holding(grid, g));
+  for (const WaveGauge& g : wave_gauges) {
+    const auto& materials = solver.materials();
+    const auto material =
+        std::find_if(materials.begin(), materials.end(),
+                     [&](const FluidMaterial& m) { return m.name == g.material; });
+    if (material == materials.end())
+      throw cosim::InputError(fmt::format("wave gauge '{}': no material '{}'", g.name, g.material));
+    if (g.vertical < 0 || g.vertical >= Dim)
+      throw cosim::InputError(fmt::format("wave gauge '{}': a {}D case has no vertical axis {}",
+                                          g.name, Dim,
+                                          g.vertical < 3 ? axis_name[g.vertical] : "?"));
+    // The column's bottom cell: the point moved down to the grid's floor.
+    GaugePoint bottom{g.name, g.point};
+    bottom.point[static_cast<std::size_t>(g.vertical)] = grid.origin()[g.vertical];
+    const int first = cell_holding(grid, bottom);
+    Column column{{},
+                  static_cast<std::size_t>(material - materials.begin()),
+                  grid.origin()[g.vertical],
+                  grid.spacing()[g.vertical]};
+    for (int j = 0; j < grid.cells()[static_cast<std::size_t>(g.vertical)]; ++j)
+      column.cells.push_back(first + j * grid.stride(g.vertical));
+    columns_.push_back(std::move(column));
+  }
   row_.resize(writer_.columns().size());
 }
 
@@ -132,6 +161,17 @@ std::span<const double> GaugeRecorder<Dim>::row(double time, const IceSolver<Dim
       row_[k++] = momentum / mass;
     }
     for (const MaterialState<Dim>& m : state.materials) row_[k++] = m.volume_fraction[c];
+  }
+  for (const Column& column : columns_) {
+    const CellField& fraction = state.materials[column.material].volume_fraction;
+    double height = column.bottom;
+    for (const int cell : column.cells) {
+      const auto c = static_cast<std::size_t>(cell);
+      // A cell the solid fills counts as the saturated soil's cells do: whole.
+      const double pores = state.porosity.empty() ? 1.0 : state.porosity[c];
+      height += (pores > 1e-9 ? fraction[c] / pores : 1.0) * column.cell_height;
+    }
+    row_[k++] = height;
   }
   return row_;
 }

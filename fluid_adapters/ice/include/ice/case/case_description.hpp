@@ -90,6 +90,7 @@ struct CaseDescription {
   bool snapshots = true;
   double gauge_every = 0.0;  // 0: every step
   std::vector<GaugePoint> gauges;
+  std::vector<WaveGauge> wave_gauges;
   int threads = 0;
   CouplingDescription coupling;
   cosim::RunSize size;  // its cells and their memory (set by the loader)

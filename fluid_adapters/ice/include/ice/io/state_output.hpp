@@ -39,16 +39,28 @@ struct GaugePoint {
   std::array<double, 3> point{};
 };
 
+// A wave gauge: the height of a material's free surface over the column of
+// cells through `point` along the vertical axis (the one gravity lies
+// along): bottom + sum over the column of phi_m / n dx_v, n the porosity,
+// so that a saturated soil's cells count whole as in the other backends.
+struct WaveGauge {
+  std::string name;
+  std::array<double, 3> point{};  // its coordinate along the vertical is ignored
+  std::string material = "water";
+  int vertical = 1;  // the axis gravity lies along
+};
+
 // gauges.csv: `time [s]`, then per gauge the pressure, the mixture velocity
 // components and each material's volume fraction in the cell holding the
 // point, as `<quantity>_<gauge> [unit]` (p, ux, uy, uz, <material>_fraction),
-// the columns every backend writes. Throws cosim::InputError for a point
-// outside the grid.
+// then per wave gauge `eta_<gauge> [m]`: the columns every backend writes.
+// Throws cosim::InputError for a point outside the grid or a wave gauge's
+// unknown material.
 template <int Dim>
 class GaugeRecorder {
  public:
   GaugeRecorder(const std::filesystem::path& file, const std::vector<GaugePoint>& gauges,
-                const IceSolver<Dim>& solver);
+                const IceSolver<Dim>& solver, const std::vector<WaveGauge>& wave_gauges = {});
   void record(double time, const IceSolver<Dim>& solver);
   // The row record() appends, for a caller that writes it later
   // (HeldOutputs); valid until the next call.
@@ -57,7 +69,14 @@ class GaugeRecorder {
   std::size_t rows() const { return writer_.rows_written(); }
 
  private:
+  struct Column {
+    std::vector<int> cells;  // bottom to top
+    std::size_t material = 0;
+    double bottom = 0.0;
+    double cell_height = 0.0;
+  };
   std::vector<int> cells_;
+  std::vector<Column> columns_;
   cosim::TimeSeriesWriter writer_;
   std::vector<double> row_;
 };
