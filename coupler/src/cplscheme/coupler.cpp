@@ -676,13 +676,16 @@ struct Coupler::Impl {
   }
 
   // Window 0 of a serial scheme: the first participant begins window 1 on
-  // the second's initial fields; the second waits for the first's answer.
+  // the second's initial fields; the second gets the first's, the start of
+  // what it reads over window 1, and waits for the first's answer.
   void serial_start() {
     const double t = window_time(0);
     const std::string& first = job.coupling.first;
     FieldsByPeer initial = map_exchanged_fields(&first);
     send_fields(t, initial);
-    initial.merge(map_exchanged_fields(&job.coupling.second));
+    FieldsByPeer to_second = map_exchanged_fields(&job.coupling.second);
+    send_fields(t, to_second);
+    initial.merge(std::move(to_second));
     record_iterate(initial);
     write_snapshots(t, initial);
     tell(first, MessageType::window_begin, 1, t);

@@ -188,9 +188,11 @@ Schema coupling_schema() {
                 "one listed).")
       .optional("time_interpolation",
                 Schema::one_of({"constant", "linear"}).default_value("constant"),
-                "Implicit schemes: what a participant reads inside a window: the current iterate "
-                "of the window-end values, or values linear in time between the window's "
-                "converged start and that iterate (waveform relaxation).")
+                "Implicit and serial schemes: what a participant reads inside a window from "
+                "window-end values it holds (an implicit scheme's iterate, or, serially, the "
+                "first participant's new values read by the second): those values, or values "
+                "linear in time between the window's accepted start and them (waveform "
+                "relaxation).")
       .optional("max_iterations", Schema::integer().range(1, 100000).default_value("50"),
                 "Implicit schemes: the most iterations of a window.")
       .optional("on_max_iterations", Schema::one_of({"continue", "stop"}).default_value("stop"),

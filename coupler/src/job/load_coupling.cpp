@@ -131,19 +131,20 @@ CouplingSpec read_coupling(const Job& job, const config::Node& c,
                                : OnMaxIterations::stop;
   spec.divergence_factor = c.get<double>("divergence_factor");
 
+  if (spec.scheme == Scheme::parallel_explicit && written.count("time_interpolation"))
+    c["time_interpolation"].fail_at_key(
+        "'time_interpolation' reads a partner's window-end values inside the window, which a "
+        "parallel-explicit scheme does not have yet (use serial-explicit, an implicit scheme, "
+        "or the job's 'extrapolation: linear')");
   if (!spec.is_implicit()) {
-    for (const char* key : {"convergence", "acceleration", "time_interpolation", "max_iterations",
-                            "on_max_iterations", "divergence_factor"})
+    for (const char* key : {"convergence", "acceleration", "max_iterations", "on_max_iterations",
+                            "divergence_factor"})
       if (written.count(key))
         c[key].fail_at_key(
             fmt::format("'{}' applies to implicit schemes; this job's scheme is {}", key, scheme));
     return spec;
   }
   check_exchanges_repeatable(job, c["scheme"]);
-  if (spec.is_serial() && spec.time_interpolation == com::TimeInterpolation::linear)
-    c["time_interpolation"].fail(
-        "linear time interpolation is for parallel schemes (in a serial one the second "
-        "participant reads the first's new values; interpolating them is planned)");
 
   const auto measures = c.find("convergence");
   if (!measures || measures->size() == 0)

@@ -72,7 +72,7 @@ struct ReadBuffer {
   FieldSpec spec;
   std::vector<double> current;
   std::vector<double> previous;  // for linear extrapolation
-  std::vector<double> start;     // implicit schemes: the converged values at the window's start
+  std::vector<double> start;     // the accepted values at the window's start time
   double received_at = 0.0;
   double previous_at = 0.0;
   bool has_previous = false;
@@ -228,7 +228,12 @@ struct Participant::Impl {
           if (m.header.window != window + 1)
             throw ProtocolError(com::coupler_peer, fmt::format("began window {} after window {}",
                                                                m.header.window, window));
-          for (auto& [field_name, r] : reads) r.start = r.current;
+          // Values of the new window's start time start its interpolation;
+          // values ahead of it (a serial scheme's second participant reads
+          // the first's window end) keep the start store_field() gave them.
+          for (auto& [field_name, r] : reads)
+            if (r.received_at <= window_end() + window_end_tolerance * schedule.window)
+              r.start = r.current;
           read_checkpoint_request(m);
           if (!checkpoint_directory.empty() && !checkpointable)
             throw ProtocolError(com::coupler_peer,
@@ -271,6 +276,7 @@ struct Participant::Impl {
                                       m.header.field, m.header.count, m.header.components,
                                       m.header.mesh, r.current.size(), r.spec.mesh));
     com::validate_payload(m, com::coupler_peer, r.spec.allow_nonfinite);
+    if (m.header.time > r.received_at) r.start = r.current;
     r.previous.swap(r.current);
     r.previous_at = r.received_at;
     r.has_previous = r.spec.time == TimeTreatment::state && r.received_at < m.header.time;
@@ -683,7 +689,9 @@ void Participant::read(std::string_view field, std::span<double> values,
     usage_error(s.name,
                 fmt::format("reads '{}' {} s ahead, outside the window", field, relative_time));
   const double t = s.time + relative_time;
-  if (s.schedule.implicit && r.spec.time == TimeTreatment::state &&
+  const bool holds_window_end =
+      r.received_at > s.window_start() + window_end_tolerance * s.schedule.window;
+  if (holds_window_end && r.spec.time == TimeTreatment::state &&
       s.schedule.time_interpolation == com::TimeInterpolation::linear) {
     // Waveform relaxation: linear in time between the window's two ends.
     const double share = (t - s.window_start()) / (s.window_end() - s.window_start());
