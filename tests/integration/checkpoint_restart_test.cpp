@@ -40,20 +40,24 @@ TEST(CheckpointRestart, AnExplicitRunWithLinearExtrapolationContinuesBitForBit) 
   expect_restart_continues(dir, job, "6", 12);
 }
 
-TEST(CheckpointRestart, AnImplicitRunWithReusedQuasiNewtonColumnsContinuesBitForBit) {
-  const fs::path dir = fresh_directory("checkpoint_implicit");
-  write_fixed_point_case(dir, R"(coupling:
+// IQN-ILS carries reused columns over the checkpoint, IQN-IMVJ its Jacobian.
+TEST(CheckpointRestart, AnImplicitRunWithQuasiNewtonHistoryContinuesBitForBit) {
+  for (const std::string method : {"iqn-ils", "iqn-imvj"}) {
+    const fs::path dir = fresh_directory("checkpoint_implicit_" + method);
+    write_fixed_point_case(dir, R"(coupling:
   scheme: parallel-implicit
   convergence:
     - {field: right.a, relative: 1.0e-10}
     - {field: left.b, relative: 1.0e-10}
-  acceleration: {method: iqn-ils, reuse_windows: 4}
+  acceleration: {method: )" + method +
+                                    R"(, reuse_windows: 4}
 )");
-  expect_restart_continues(dir, dir / "job.yaml", "3", 6);
-  const auto whole = nlohmann::json::parse(read_text(dir / "whole" / "summary.json"));
-  const auto continued = nlohmann::json::parse(read_text(dir / "continued" / "summary.json"));
-  EXPECT_EQ(continued["coupling"]["windows"], whole["coupling"]["windows"]);
-  EXPECT_EQ(continued["coupling"]["iterations"], whole["coupling"]["iterations"]);
+    expect_restart_continues(dir, dir / "job.yaml", "3", 6);
+    const auto whole = nlohmann::json::parse(read_text(dir / "whole" / "summary.json"));
+    const auto continued = nlohmann::json::parse(read_text(dir / "continued" / "summary.json"));
+    EXPECT_EQ(continued["coupling"]["windows"], whole["coupling"]["windows"]) << method;
+    EXPECT_EQ(continued["coupling"]["iterations"], whole["coupling"]["iterations"]) << method;
+  }
 }
 
 TEST(CheckpointRestart, AStiffMomentumExchangeContinuesBitForBitExplicitAndImplicit) {

@@ -100,7 +100,7 @@ TEST(ImplicitCoupling, ExplicitCouplingOfTheSameProblemDiverges) {
 // and Aitken stalls where constant relaxation (|1 - w + i w sqrt(1.5)| < 1
 // for w < 0.8) and IQN-ILS converge. Aitken is reported, not asserted.
 TEST(ImplicitCoupling, ConstantAndQuasiNewtonConvergeAndAitkenIsReported) {
-  for (const char* method : {"constant", "aitken", "iqn-ils"}) {
+  for (const char* method : {"constant", "aitken", "iqn-ils", "iqn-imvj"}) {
     const bool asserted = std::string(method) != "aitken";
     const fs::path dir = fresh_directory(std::string("e2e_implicit_") + method);
     write_fixed_point_case(dir, fmt::format(R"(coupling:

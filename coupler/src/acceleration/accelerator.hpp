@@ -19,7 +19,7 @@ struct Block {
   std::size_t size;
 };
 
-enum class Method { constant, aitken, iqn_ils };
+enum class Method { constant, aitken, iqn_ils, iqn_imvj };
 
 // How IQN-ILS removes (nearly) linearly dependent columns from its least
 // squares system (qr_filter.hpp).
@@ -37,7 +37,8 @@ struct AccelerationSpec {
   // IQN-ILS: most columns kept in V and W, the oldest dropped first.
   std::size_t max_columns = 100;
   // IQN-ILS: the columns of the last N converged windows are kept for the next
-  // windows (0: each window starts without columns).
+  // windows (0: each window starts without columns); IQN-IMVJ: the Jacobian
+  // updates of the last N converged windows (multi_vector_jacobian.hpp).
   std::size_t reuse_windows = 8;
   Filter filter = Filter::qr2;
   // The filter's threshold, in (0, 1); unused with Filter::none.

@@ -36,7 +36,7 @@ void check_relaxation(double relaxation, double upper, const char* range) {
 
 void check_iqn_ils(const AccelerationSpec& spec) {
   check_relaxation(spec.relaxation, 1.0, "(0, 1]");
-  if (spec.max_columns == 0) reject("max_columns", "IQN-ILS needs at least one column");
+  if (spec.max_columns == 0) reject("max_columns", "IQN needs at least one column");
   if (spec.filter != Filter::none && !(spec.filter_limit > 0.0 && spec.filter_limit < 1.0))
     reject("filter_limit", fmt::format("{}", spec.filter_limit) + " is not in (0, 1)");
 }
@@ -54,6 +54,7 @@ std::unique_ptr<Accelerator> make_accelerator(const AccelerationSpec& spec,
       check_relaxation(spec.relaxation, 1.0, "(0, 1]");
       return std::make_unique<Aitken>(spec.relaxation, total_size(blocks));
     case Method::iqn_ils:
+    case Method::iqn_imvj:
       check_iqn_ils(spec);
       return std::make_unique<IqnIls>(spec, std::move(blocks));
   }

@@ -12,7 +12,8 @@
 namespace cosim::acceleration {
 
 IqnIls::IqnIls(const AccelerationSpec& spec, std::vector<Block> blocks)
-    : relaxation_(spec.relaxation),
+    : method_(spec.method),
+      relaxation_(spec.relaxation),
       max_columns_(spec.max_columns),
       reuse_windows_(spec.reuse_windows),
       filter_(spec.filter),
@@ -20,7 +21,8 @@ IqnIls::IqnIls(const AccelerationSpec& spec, std::vector<Block> blocks)
       size_(total_size(blocks)),
       weights_(spec.preconditioner, std::move(blocks), spec.freeze_preconditioner_after),
       previous_residual_(Eigen::VectorXd::Zero(static_cast<Eigen::Index>(size_))),
-      previous_output_(Eigen::VectorXd::Zero(static_cast<Eigen::Index>(size_))) {}
+      previous_output_(Eigen::VectorXd::Zero(static_cast<Eigen::Index>(size_))),
+      jacobian_(spec.method == Method::iqn_imvj ? spec.reuse_windows : 0, size_) {}
 
 void IqnIls::add_pair(const Eigen::VectorXd& r, const Eigen::VectorXd& h) {
   if (window_has_pair_) {
@@ -63,11 +65,17 @@ void IqnIls::accelerate(std::span<const double> x, std::span<const double> h,
   if (!columns_.empty()) coefficients = least_squares_coefficients(residual);
   Eigen::VectorXd next_iterate;
   if (columns_.empty()) {
-    next_iterate = detail::as_eigen(x) + relaxation_ * residual;
+    next_iterate = jacobian_.empty() ? Eigen::VectorXd(detail::as_eigen(x) + relaxation_ * residual)
+                                     : Eigen::VectorXd(output - jacobian_.times(residual));
   } else {
     next_iterate = output;
-    for (std::size_t j = 0; j < columns_.size(); ++j)
-      next_iterate += coefficients(static_cast<Eigen::Index>(j)) * columns_[j].output_difference;
+    Eigen::VectorXd unexplained_residual = residual;
+    for (std::size_t j = 0; j < columns_.size(); ++j) {
+      const double c = coefficients(static_cast<Eigen::Index>(j));
+      next_iterate += c * columns_[j].output_difference;
+      unexplained_residual += c * columns_[j].residual_difference;
+    }
+    if (!jacobian_.empty()) next_iterate -= jacobian_.times(unexplained_residual);
   }
   detail::as_eigen(next) = next_iterate;
 }
@@ -77,6 +85,7 @@ void IqnIls::window_converged(std::span<const double> x, std::span<const double>
   detail::require_size(h, size_, "H(x)");
   const Eigen::VectorXd output = detail::as_eigen(h);
   add_pair(output - detail::as_eigen(x), output);
+  if (method_ == Method::iqn_imvj) move_columns_into_jacobian();
   weights_.window_converged();
   window_has_pair_ = false;
   ++window_;
@@ -84,8 +93,31 @@ void IqnIls::window_converged(std::span<const double> x, std::span<const double>
     columns_.pop_back();
 }
 
+void IqnIls::move_columns_into_jacobian() {
+  const auto rows = static_cast<Eigen::Index>(size_);
+  Eigen::MatrixXd weighted_v(rows, static_cast<Eigen::Index>(columns_.size()));
+  for (std::size_t c = 0; c < columns_.size(); ++c)
+    weighted_v.col(static_cast<Eigen::Index>(c)) = columns_[c].residual_difference;
+  weights_.apply(weighted_v);
+  const FilteredQr qr = filtered_qr(weighted_v, filter_, filter_limit_);
+  const auto kept = static_cast<Eigen::Index>(qr.kept.size());
+  Eigen::MatrixXd v(rows, kept);
+  Eigen::MatrixXd w(rows, kept);
+  for (Eigen::Index c = 0; c < kept; ++c) {
+    const Column& column = columns_[qr.kept[static_cast<std::size_t>(c)]];
+    v.col(c) = column.residual_difference;
+    w.col(c) = column.output_difference;
+  }
+  // Z^T = P Q R^-T, so that Z y = R^-1 Q^T P y = argmin_c ||P (V c - y)||.
+  Eigen::MatrixXd z_transposed =
+      qr.r.triangularView<Eigen::Upper>().solve(qr.q.transpose()).transpose();
+  weights_.apply(z_transposed);
+  jacobian_.update(v, w, std::move(z_transposed));
+  columns_.clear();
+}
+
 AcceleratorState IqnIls::state() const {
-  detail::StateWriter writer(Method::iqn_ils, size_);
+  detail::StateWriter writer(method_, size_);
   writer.count(window_);
   writer.flag(window_has_pair_);
   writer.vector(previous_residual_);
@@ -97,11 +129,12 @@ AcceleratorState IqnIls::state() const {
     writer.vector(column.output_difference);
   }
   weights_.write(writer);
+  if (method_ == Method::iqn_imvj) jacobian_.write(writer);
   return writer.take();
 }
 
 void IqnIls::restore(const AcceleratorState& s) {
-  detail::StateReader reader(s, Method::iqn_ils, size_);
+  detail::StateReader reader(s, method_, size_);
   const std::size_t window = reader.count("window count");
   const bool window_has_pair = reader.flag("window-has-pair flag");
   Eigen::VectorXd previous_residual = reader.vector("previous residual", size_);
@@ -121,6 +154,8 @@ void IqnIls::restore(const AcceleratorState& s) {
   }
   PreconditionerWeights weights = weights_;
   weights.read(reader);
+  MultiVectorJacobian jacobian = jacobian_;
+  if (method_ == Method::iqn_imvj) jacobian.read(reader);
   reader.finish();
 
   window_ = window;
@@ -129,6 +164,7 @@ void IqnIls::restore(const AcceleratorState& s) {
   previous_output_ = std::move(previous_output);
   columns_ = std::move(columns);
   weights_ = std::move(weights);
+  jacobian_ = std::move(jacobian);
 }
 
 }  // namespace cosim::acceleration

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "acceleration/accelerator.hpp"
+#include "multi_vector_jacobian.hpp"
 #include "preconditioner.hpp"
 
 namespace cosim::acceleration {
@@ -27,6 +28,13 @@ namespace cosim::acceleration {
 // converged windows are kept for the next ones (preCICE's reused time
 // windows). At most `max_columns` are kept, the oldest
 // dropped first.
+//
+// IQN-IMVJ (Method::iqn_imvj; Lindner et al. 2015) carries the history as a
+// Jacobian J instead (multi_vector_jacobian.hpp): a window's columns are its
+// own, each converged window updates J with them, and
+//   x^{k+1} = h^k + W c - J (r^k + V c),
+// which is x^{k+1} = h^k - J_n r^k with J_n = J + (W - J V) Z. Without
+// columns, x^{k+1} = h^k - J r^k, or the relaxation while J is still zero.
 class IqnIls final : public Accelerator {
  public:
   IqnIls(const AccelerationSpec& spec, std::vector<Block> blocks);
@@ -37,6 +45,8 @@ class IqnIls final : public Accelerator {
   AcceleratorState state() const override;
   void restore(const AcceleratorState& s) override;
   std::size_t columns() const override { return columns_.size(); }
+  // IQN-IMVJ: the windows whose updates J holds.
+  std::size_t jacobian_updates() const { return jacobian_.updates(); }
 
   const PreconditionerWeights& preconditioner() const { return weights_; }
 
@@ -52,7 +62,10 @@ class IqnIls final : public Accelerator {
   void add_pair(const Eigen::VectorXd& r, const Eigen::VectorXd& h);
   // c of min ||P (V c + r)||; drops the columns the filter leaves out.
   Eigen::VectorXd least_squares_coefficients(const Eigen::VectorXd& r);
+  // IQN-IMVJ: the window's columns update J and leave.
+  void move_columns_into_jacobian();
 
+  Method method_;
   double relaxation_;
   std::size_t max_columns_;
   std::size_t reuse_windows_;
@@ -65,6 +78,7 @@ class IqnIls final : public Accelerator {
   bool window_has_pair_ = false;
   Eigen::VectorXd previous_residual_;
   Eigen::VectorXd previous_output_;
+  MultiVectorJacobian jacobian_;
 };
 
 }  // namespace cosim::acceleration

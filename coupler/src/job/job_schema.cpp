@@ -142,21 +142,26 @@ Schema acceleration_schema() {
       "How the next iterate of an implicit window is made from the last one, x, and the "
       "participants' answer to it, H(x).");
   s.optional("method",
-             Schema::one_of({"none", "constant", "aitken", "iqn-ils"}).default_value("iqn-ils"),
+             Schema::one_of({"none", "constant", "aitken", "iqn-ils", "iqn-imvj"})
+                 .default_value("iqn-ils"),
              "none: x = H(x); constant: under-relaxation by `relaxation`; aitken: dynamic "
              "relaxation (Kuettler & Wall 2008); iqn-ils: interface quasi-Newton with an inverse "
-             "least-squares Jacobian (Degroote et al. 2009).")
-      .optional("relaxation", Schema::number().range(1e-6, 1.0).default_value("0.5"),
-                "constant: the factor; aitken: the first iteration's; iqn-ils: the factor of an "
-                "iteration with no column yet.")
+             "least-squares Jacobian (Degroote et al. 2009); iqn-imvj: the same with the "
+             "Jacobian carried from window to window as low-rank updates (Lindner et al. "
+             "2015).")
+      .optional(
+          "relaxation", Schema::number().range(1e-6, 1.0).default_value("0.5"),
+          "constant: the factor; aitken: the first iteration's; iqn-ils, iqn-imvj: the factor "
+          "of an iteration with no column (nor Jacobian) yet.")
       .optional("max_columns", Schema::integer().range(1, 10000).default_value("100"),
-                "iqn-ils: most columns kept in its least-squares system.")
+                "iqn-ils, iqn-imvj: most columns kept in the least-squares system.")
       .optional("reuse_windows", Schema::integer().range(0, 1000).default_value("8"),
-                "iqn-ils: keep the columns of this many converged windows for the next.")
+                "iqn-ils: keep the columns of this many converged windows for the next; iqn-imvj: "
+                "the Jacobian updates of this many.")
       .optional("filter", Schema::one_of({"none", "qr1", "qr2"}).default_value("qr2"),
-                "iqn-ils: drop (nearly) dependent columns (Haelterman et al. 2016).")
+                "iqn-ils, iqn-imvj: drop (nearly) dependent columns (Haelterman et al. 2016).")
       .optional("filter_limit", Schema::number().range(1e-16, 0.5).default_value("1e-2"),
-                "iqn-ils: the filter's threshold.")
+                "iqn-ils, iqn-imvj: the filter's threshold.")
       .optional("preconditioner",
                 Schema::one_of({"none", "value", "residual-sum"}).default_value("residual-sum"),
                 "Scaling of each field's part of the quasi-Newton system, so fields in Pa and "

@@ -41,9 +41,10 @@ acceleration::AccelerationSpec read_acceleration(const config::Node& a,
   using namespace acceleration;
   AccelerationSpec spec;
   const auto method = a.get<std::string>("method");
-  spec.method = method == "iqn-ils"  ? Method::iqn_ils
-                : method == "aitken" ? Method::aitken
-                                     : Method::constant;
+  spec.method = method == "iqn-ils"    ? Method::iqn_ils
+                : method == "iqn-imvj" ? Method::iqn_imvj
+                : method == "aitken"   ? Method::aitken
+                                       : Method::constant;
   spec.relaxation = method == "none" ? 1.0 : a.get<double>("relaxation");
   if (method == "none" && written.count("acceleration.relaxation"))
     a["relaxation"].fail("method none takes H(x) as it is; a relaxation needs method constant");

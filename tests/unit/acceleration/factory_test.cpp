@@ -26,7 +26,7 @@ std::string rejection(const AccelerationSpec& spec, std::vector<Block> with_bloc
 }
 
 TEST(MakeAccelerator, AcceptsTheDefaultsOfEveryMethod) {
-  for (const Method method : {Method::constant, Method::aitken, Method::iqn_ils})
+  for (const Method method : {Method::constant, Method::aitken, Method::iqn_ils, Method::iqn_imvj})
     EXPECT_EQ(rejection({.method = method}), "");
   EXPECT_EQ(rejection({.method = Method::constant, .relaxation = 1.5}), "");
   EXPECT_EQ(rejection({.method = Method::iqn_ils, .filter = Filter::none, .filter_limit = 0.0}),
@@ -39,7 +39,7 @@ TEST(MakeAccelerator, RejectsARelaxationOutsideTheMethodsRange) {
     EXPECT_THAT(rejection({.method = Method::constant, .relaxation = omega}),
                 ::testing::HasSubstr("relaxation"))
         << omega;
-  for (const Method method : {Method::aitken, Method::iqn_ils})
+  for (const Method method : {Method::aitken, Method::iqn_ils, Method::iqn_imvj})
     for (const double omega : {0.0, 1.5, nan})
       EXPECT_THAT(rejection({.method = method, .relaxation = omega}),
                   ::testing::HasSubstr("relaxation: "))
@@ -63,7 +63,8 @@ TEST(MakeAccelerator, RejectsEmptyZeroSizedOrRepeatedBlocks) {
 }
 
 TEST(MakeAccelerator, AcceleratorsRejectVectorsOfTheWrongSize) {
-  for (const Method method : {Method::constant, Method::aitken, Method::iqn_ils}) {
+  for (const Method method :
+       {Method::constant, Method::aitken, Method::iqn_ils, Method::iqn_imvj}) {
     auto accelerator = make_accelerator({.method = method}, blocks);
     const std::vector<double> five(5, 1.0);
     const std::vector<double> four(4, 1.0);
@@ -75,7 +76,8 @@ TEST(MakeAccelerator, AcceleratorsRejectVectorsOfTheWrongSize) {
 }
 
 TEST(MakeAccelerator, AcceleratorsAllowTheNextIterateInTheMemoryOfX) {
-  for (const Method method : {Method::constant, Method::aitken, Method::iqn_ils}) {
+  for (const Method method :
+       {Method::constant, Method::aitken, Method::iqn_ils, Method::iqn_imvj}) {
     auto separate = make_accelerator({.method = method}, blocks);
     auto in_place = make_accelerator({.method = method}, blocks);
     std::vector<double> x{1e5, 2e5, 3e5, 0.01, 0.02};

@@ -62,7 +62,7 @@ TEST_P(StateRoundTrip, RestoredAcceleratorContinuesBitForBit) {
   const auto saved = original->state();
   const Eigen::VectorXd resume_from = run.x;
   run.iterate(2);
-  if (GetParam() == Method::iqn_ils) {
+  if (GetParam() == Method::iqn_ils || GetParam() == Method::iqn_imvj) {
     EXPECT_GT(original->columns(), 0u);
   }
 
@@ -78,7 +78,8 @@ TEST_P(StateRoundTrip, RestoredAcceleratorContinuesBitForBit) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, StateRoundTrip,
-                         ::testing::Values(Method::constant, Method::aitken, Method::iqn_ils),
+                         ::testing::Values(Method::constant, Method::aitken, Method::iqn_ils,
+                                           Method::iqn_imvj),
                          [](const auto& test_info) {
                            switch (test_info.param) {
                              case Method::constant:
@@ -87,6 +88,8 @@ INSTANTIATE_TEST_SUITE_P(Methods, StateRoundTrip,
                                return "aitken";
                              case Method::iqn_ils:
                                return "iqn_ils";
+                             case Method::iqn_imvj:
+                               return "iqn_imvj";
                            }
                            return "unknown";
                          });
@@ -95,6 +98,8 @@ TEST(StateRestore, RejectsTheStateOfAnotherMethodOrOtherBlocks) {
   auto aitken = make_accelerator({.method = Method::aitken}, blocks);
   auto iqn = make_accelerator({.method = Method::iqn_ils}, blocks);
   EXPECT_THROW(iqn->restore(aitken->state()), std::invalid_argument);
+  auto imvj = make_accelerator({.method = Method::iqn_imvj}, blocks);
+  EXPECT_THROW(imvj->restore(iqn->state()), std::invalid_argument);
   auto larger = make_accelerator({.method = Method::iqn_ils}, {{"p", 4}, {"u", 2}});
   EXPECT_THROW(larger->restore(iqn->state()), std::invalid_argument);
   auto truncated = iqn->state();
