@@ -78,6 +78,10 @@ TEST(ImplicitCoupling, ConvergesToTheFixedPointInEveryWindowAndWritesOnce) {
   EXPECT_LE(counts[counts.size() / 2], 5.0);
   EXPECT_EQ(summary["coupling"]["windows"].get<int>(), 10);
   EXPECT_EQ(summary["coupling"]["windows_not_converged"].get<int>(), 0);
+  for (const char* participant : {"left", "right"}) {
+    const auto own = nlohmann::json::parse(read_text(dir / "run" / participant / "summary.json"));
+    EXPECT_EQ(own["windows"].get<int>(), 10) << participant;
+  }
   EXPECT_THAT(read_text(dir / "run" / "coupling_iterations.csv"),
               HasSubstr("right.a relative residual [1]"));
 }

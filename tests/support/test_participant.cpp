@@ -247,7 +247,7 @@ struct Faults {
 };
 
 int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std::string& output,
-        const Faults& faults, Capabilities capabilities) {
+        const Faults& faults, Capabilities capabilities, cosim::RunSummary& summary) {
   const long crash_at_window = faults.crash_at_window;
   const long hang_at_window = faults.hang_at_window;
   const RaisedSignal& raised = faults.raised;
@@ -492,6 +492,7 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
     throw;
   }
   raised.at("end");
+  summary.set_windows(static_cast<std::int64_t>(participant.timings().windows));
   participant.finalize();
   return 0;
 }
@@ -538,7 +539,7 @@ int main(int argc, char** argv) {
     summary.write();
     return cosim::run_and_finish(summary, [&] {
       run(config, endpoint, output, faults,
-          {.repeatable = !not_repeatable, .checkpointable = !not_checkpointable});
+          {.repeatable = !not_repeatable, .checkpointable = !not_checkpointable}, summary);
     });
   } catch (const cosim::Error& e) {
     std::cerr << "cosim_test_participant: error: " << e.what() << "\n";
