@@ -117,6 +117,7 @@ struct Coupler::Impl {
   // Implicit schemes: the momentum per exchange cell in the fields last sent
   // (the iterate the participants run), and in the last answer.
   ExchangeCellImpulses applied_exchange_impulses, answered_exchange_impulses;
+  ExchangeCellHeat applied_exchange_heat, answered_exchange_heat;
   std::optional<checkpoint::Store> checkpoints;
   std::size_t checkpoints_written = 0;
   bool stop_at_next_window = false;  // asked to stop (SIGTERM) while checkpointing
@@ -604,7 +605,9 @@ struct Coupler::Impl {
     auto scope = summary.phases().measure("exchange");
     const job::EnergyExchangeSpec& spec = *job.energy_exchange;
     const double dt = window == 0 ? 0.0 : job.window;
-    auto heat = energy_exchange->run(dt, side_of(spec.fluid), side_of(spec.solid), operators);
+    auto heat = energy_exchange->run(dt, side_of(spec.fluid), side_of(spec.solid), operators,
+                                     iteration && window > 0 ? &applied_exchange_heat : nullptr);
+    answered_exchange_heat = std::move(heat.on_exchange_mesh);
     max_energy_balance_error = std::max(max_energy_balance_error, heat.energy_balance_error);
     out[spec.fluid][fields::heat_exchange_energy.name] =
         std::make_shared<const std::vector<double>>(std::move(heat.fluid));
@@ -716,6 +719,7 @@ struct Coupler::Impl {
     if (!iteration) return;
     iteration->sent(x);
     applied_exchange_impulses = answered_exchange_impulses;
+    applied_exchange_heat = answered_exchange_heat;
   }
 
   // The summary's `coupling` section (its median sorts every window's count:
@@ -896,6 +900,10 @@ struct Coupler::Impl {
       iteration->save(out);
       out.numbers("exchange.applied.fluid", applied_exchange_impulses.fluid);
       out.numbers("exchange.applied.solid", applied_exchange_impulses.solid);
+      if (energy_exchange) {
+        out.numbers("exchange.heat_applied.fluid", applied_exchange_heat.fluid);
+        out.numbers("exchange.heat_applied.solid", applied_exchange_heat.solid);
+      }
     }
     out.commit();
   }
@@ -926,9 +934,17 @@ struct Coupler::Impl {
         sent.emplace_back(job.momentum_exchange->fluid, fields::momentum_exchange_impulse.name);
         sent.emplace_back(job.momentum_exchange->solid, fields::momentum_exchange_impulse.name);
       }
+      if (job.energy_exchange) {
+        sent.emplace_back(job.energy_exchange->fluid, fields::heat_exchange_energy.name);
+        sent.emplace_back(job.energy_exchange->solid, fields::heat_exchange_energy.name);
+      }
       iteration->restore(in, sent);
       applied_exchange_impulses.fluid = in.numbers("exchange.applied.fluid");
       applied_exchange_impulses.solid = in.numbers("exchange.applied.solid");
+      if (energy_exchange) {
+        applied_exchange_heat.fluid = in.numbers("exchange.heat_applied.fluid");
+        applied_exchange_heat.solid = in.numbers("exchange.heat_applied.solid");
+      }
     }
     summary.set_section("restart", {{"from", options.restart.string()},
                                     {"window", options.restart_window},

@@ -45,8 +45,8 @@ void EnergyExchangeStep::check_declarations(const job::Job&, const com::Hello& f
 }
 
 EnergyExchangeStep::Heat EnergyExchangeStep::run(double window, const PhaseSide& fluid,
-                                                 const PhaseSide& solid,
-                                                 OperatorCache& operators) const {
+                                                 const PhaseSide& solid, OperatorCache& operators,
+                                                 const ExchangeCellHeat* applied) const {
   const PhaseSide& owner = spec_.mesh_owner == spec_.fluid ? fluid : solid;
   const Mesh& exchange_mesh = owner.mesh(spec_.mesh);
   const std::size_t exchange_version = owner.version(spec_.mesh);
@@ -61,9 +61,9 @@ EnergyExchangeStep::Heat EnergyExchangeStep::run(double window, const PhaseSide&
     return operators.get(key, side.mesh(mesh), side.version(mesh), exchange_mesh, exchange_version)
         .apply(side.written->at(field), 1);
   };
-  const auto t_f = on_exchange_mesh(fluid, f::fluid_temperature.name);
+  auto t_f = on_exchange_mesh(fluid, f::fluid_temperature.name);
   const auto c_f = on_exchange_mesh(fluid, f::fluid_heat_capacity.name);
-  const auto t_s = on_exchange_mesh(solid, f::solid_temperature.name);
+  auto t_s = on_exchange_mesh(solid, f::solid_temperature.name);
   const auto c_s = on_exchange_mesh(solid, f::solid_heat_capacity.name);
   std::vector<double> q_f(cells), q_s(cells);
   for (std::size_t c = 0; c < cells; ++c) {
@@ -76,6 +76,11 @@ EnergyExchangeStep::Heat EnergyExchangeStep::run(double window, const PhaseSide&
     const bool present = c_f[c] > 0.0 && c_s[c] > 0.0;
     if (present && (!(t_f[c] > 0.0) || !std::isfinite(t_f[c]))) bad("fluid temperature", t_f[c]);
     if (present && (!(t_s[c] > 0.0) || !std::isfinite(t_s[c]))) bad("solid temperature", t_s[c]);
+    if (present && applied && applied->fluid.size() == cells) {
+      const double volume = exchange_mesh.control_volume(c);
+      t_f[c] -= applied->fluid[c] / (c_f[c] * volume);
+      t_s[c] -= applied->solid[c] / (c_s[c] * volume);
+    }
     // Tran et al., MPMICE, eq. 23 in closed form: the heat per unit volume
     // the fluid receives; zero where either phase is absent.
     const double q = present ? exchange::two_material_impulse(c_f[c], c_s[c], t_f[c], t_s[c],
@@ -96,6 +101,7 @@ EnergyExchangeStep::Heat EnergyExchangeStep::run(double window, const PhaseSide&
   Heat out;
   out.fluid = to_side(fluid, q_f);
   out.solid = to_side(solid, q_s);
+  out.on_exchange_mesh = {std::move(q_f), std::move(q_s)};
   double net = 0.0, scale = 0.0;
   for (double q : out.fluid) {
     net += q;

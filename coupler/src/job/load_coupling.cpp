@@ -61,20 +61,13 @@ acceleration::AccelerationSpec read_acceleration(const config::Node& a,
   return spec;
 }
 
-// The coupler's energy exchange computes a window's heat from its end
-// temperatures; repeated, it would see its own result in them.
-void check_exchanges_repeatable(const Job& job, const config::Node& scheme) {
-  if (job.energy_exchange)
-    scheme.fail(
-        "the energy exchange is explicit only (the coupler solves it once per window from the "
-        "window-end temperatures); use scheme: parallel-explicit");
-}
-
-// The momentum the coupler's exchange gives each phase is its answer to the
-// window's predicted velocities, not an iterate to accelerate.
+// The momentum and the heat the coupler's exchanges give each phase are
+// their answers to the window's predicted velocities and temperatures, not
+// iterates to accelerate.
 bool computed_by_exchange(const Job& job, const SentField& f) {
-  return job.momentum_exchange && job.momentum_exchange->solved_by == ExchangeSolver::coupler &&
-         f.field == fields::momentum_exchange_impulse.name;
+  return (job.momentum_exchange && job.momentum_exchange->solved_by == ExchangeSolver::coupler &&
+          f.field == fields::momentum_exchange_impulse.name) ||
+         (job.energy_exchange && f.field == fields::heat_exchange_energy.name);
 }
 
 // Serial schemes run two participants one after the other; the exchange
@@ -145,8 +138,6 @@ CouplingSpec read_coupling(const Job& job, const config::Node& c,
             fmt::format("'{}' applies to implicit schemes; this job's scheme is {}", key, scheme));
     return spec;
   }
-  check_exchanges_repeatable(job, c["scheme"]);
-
   const auto measures = c.find("convergence");
   if (!measures || measures->size() == 0)
     c.fail_at_key(
@@ -175,8 +166,9 @@ CouplingSpec read_coupling(const Job& job, const config::Node& c,
       SentField field = sent_field(job, f);
       if (computed_by_exchange(job, field))
         f.fail(
-            fmt::format("'{}' is the momentum exchange's answer to the predicted velocities "
-                        "(architecture.md §13), never accelerated; measure it, do not list it",
+            fmt::format("'{}' is an exchange's answer to the predicted velocities or "
+                        "temperatures (architecture.md §13), never accelerated; measure it, do "
+                        "not list it",
                         field.label()));
       for (const SentField& other : spec.accelerated)
         if (other.label() == field.label())
