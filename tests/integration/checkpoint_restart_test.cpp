@@ -74,6 +74,19 @@ TEST(CheckpointRestart, AStiffMomentumExchangeContinuesBitForBitExplicitAndImpli
   expect_restart_continues(implicit_dir, implicit_dir / "job.yaml", "4", 4);
 }
 
+// The implicit energy exchange carries the heat applied in the last iterate
+// over the checkpoint, as the momentum exchange its momentum.
+TEST(CheckpointRestart, AStiffEnergyExchangeContinuesBitForBitImplicit) {
+  const fs::path dir = fresh_directory("checkpoint_heat_implicit");
+  write_stiff_heat_case(dir, R"(coupling:
+  scheme: parallel-implicit
+  convergence:
+    - {field: water.heat_exchange_energy, relative: 1.0e-8}
+    - {field: rock.heat_exchange_energy, relative: 1.0e-8}
+)");
+  expect_restart_continues(dir, dir / "job.yaml", "4", 4);
+}
+
 // swe_fluid over a bed a test participant raises: its solver state, output
 // schedules and gauges continue from the checkpoint.
 TEST(CheckpointRestart, ShallowWaterOverARisingBedContinuesBitForBit) {

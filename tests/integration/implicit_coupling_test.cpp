@@ -267,49 +267,6 @@ TEST(ImplicitCoupling, StiffDragMatchesTheExactSolutionAtAWindowOf1e4RelaxationT
 // The implicit scheme's exchange on the window's predicted temperatures,
 // T* = T - Q / (C V), gives theta within 1 %; the explicit one, lagged a
 // window, leaves theta = S dt / C_f (shown, not asserted).
-constexpr double heat_c_f = 1.67e6, heat_c_s = 1.25e6, heat_source = 1.0e6, heat_t0 = 300.0;
-constexpr double heat_tau = 1.0e-6, heat_window = 1.0e-2;
-
-void write_stiff_heat_case(const fs::path& dir, const std::string& coupling) {
-  const double coefficient = 1.0 / (heat_tau * (1.0 / heat_c_f + 1.0 / heat_c_s));
-  write_text(dir / "job.yaml", fmt::format(R"(kind: job
-name: stiff_heat
-end_time: 0.1
-window: {}
-participants:
-  water:
-    executable: cosim_test_participant
-    config: water.yaml
-    meshes: {{grid: {{kind: uniform_grid, dim: 1}}}}
-    writes: {{fluid_temperature: grid, fluid_heat_capacity: grid}}
-    reads: {{heat_exchange_energy: grid}}
-  rock:
-    executable: cosim_test_participant
-    config: rock.yaml
-    meshes: {{grid: {{kind: uniform_grid, dim: 1}}}}
-    writes: {{solid_temperature: grid, solid_heat_capacity: grid}}
-    reads: {{heat_exchange_energy: grid}}
-energy_exchange:
-  fluid: water
-  solid: rock
-  mesh: water.grid
-  coefficient: {:.17g}
-{})",
-                                           heat_window, coefficient, coupling));
-  const auto side = [&](const char* phase, double capacity, double source, const char* dt) {
-    return fmt::format(
-        "kind: test_participant\ndt: {}\nmesh: {{dim: 1, origin: [0.0], spacing: [0.25], cells: "
-        "[4]}}\nwrites:\n  - {{name: {}_temperature, unit: K, function: [{}, 0, 0, 0, 0]}}\n"
-        "  - {{name: {}_heat_capacity, unit: J/(m^3 K), function: [{}, 0, 0, 0, 0]}}\n"
-        "reads:\n  - {{name: heat_exchange_energy, unit: J, quantity: extensive, time: "
-        "integral}}\ndynamics: {{velocity: {}_temperature, impulse: heat_exchange_energy, "
-        "bulk_density: {}, body_force: [{}]}}\n",
-        dt, phase, heat_t0, phase, capacity, phase, capacity, source);
-  };
-  write_text(dir / "water.yaml", side("fluid", heat_c_f, heat_source, "1.0e-3"));
-  write_text(dir / "rock.yaml", side("solid", heat_c_s, 0.0, "7.0e-4"));
-}
-
 struct HeatRun {
   double worst_difference_error = 0.0;  // |theta - theta_exact| / theta_exact over windows
   double worst_energy_error = 0.0;      // |E - E_exact| / (S t)

@@ -102,4 +102,44 @@ momentum_exchange:
                  "bulk_density: 1590.0, body_force: [0.0]}\n");
 }
 
+void write_stiff_heat_case(const fs::path& dir, const std::string& coupling) {
+  const double coefficient = 1.0 / (heat_tau * (1.0 / heat_c_f + 1.0 / heat_c_s));
+  write_text(dir / "job.yaml", fmt::format(R"(kind: job
+name: stiff_heat
+end_time: 0.1
+window: {}
+participants:
+  water:
+    executable: cosim_test_participant
+    config: water.yaml
+    meshes: {{grid: {{kind: uniform_grid, dim: 1}}}}
+    writes: {{fluid_temperature: grid, fluid_heat_capacity: grid}}
+    reads: {{heat_exchange_energy: grid}}
+  rock:
+    executable: cosim_test_participant
+    config: rock.yaml
+    meshes: {{grid: {{kind: uniform_grid, dim: 1}}}}
+    writes: {{solid_temperature: grid, solid_heat_capacity: grid}}
+    reads: {{heat_exchange_energy: grid}}
+energy_exchange:
+  fluid: water
+  solid: rock
+  mesh: water.grid
+  coefficient: {:.17g}
+{})",
+                                           heat_window, coefficient, coupling));
+  const auto side = [&](const char* phase, double capacity, double source, const char* dt) {
+    return fmt::format(
+        "kind: test_participant\ndt: {}\nmesh: {{dim: 1, origin: [0.0], spacing: [0.25], cells: "
+        "[4]}}\nwrites:\n  - {{name: {}_temperature, unit: K, function: [{}, 0, 0, 0, 0]}}\n"
+        "  - {{name: {}_heat_capacity, unit: J/(m^3 K), function: [{}, 0, 0, 0, 0]}}\n"
+        "reads:\n  - {{name: heat_exchange_energy, unit: J, quantity: extensive, time: "
+        "integral}}\ndynamics: {{velocity: {}_temperature, impulse: heat_exchange_energy, "
+        "bulk_density: {}, body_force: [{}]}}\n",
+        dt, phase, heat_t0, phase, capacity, phase, capacity, source);
+  };
+  write_text(dir / "water.yaml", side("fluid", heat_c_f, heat_source, "1.0e-3"));
+  write_text(dir / "rock.yaml", side("solid", heat_c_s, 0.0, "7.0e-4"));
+}
+
 }  // namespace cosim::testing

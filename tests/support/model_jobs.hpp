@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-// Two model problems of the coupler's tests, on test participants
+// Model problems of the coupler's tests, on test participants
 // (cosim_test_participant), written as a job and its participants' configs
 // into a directory.
 namespace cosim::testing {
@@ -26,5 +26,15 @@ inline constexpr double model_window = 1.0e-2, model_rho_f = 600.0, model_rho_s 
 inline constexpr double model_force = 6000.0, model_tau = 1.0e-6;
 inline const double model_drag = 1.0 / (model_tau * (1.0 / model_rho_f + 1.0 / model_rho_s));
 void write_stiff_drag_case(const std::filesystem::path& dir, const std::string& coupling);
+
+// The energy exchange's counterpart: a heated fluid (C_f = 1.67e6 J/(m^3 K),
+// S = 1e6 W/m^3) and a solid (C_s = 1.25e6 J/(m^3 K)), both at 300 K at
+// first, exchanging heat at a coefficient H whose relaxation time
+// tau = 1 / (H (1/C_f + 1/C_s)) = 1e-6 s is 1e-4 of the 0.01 s window, to
+// 0.1 s; participants `water` and `rock`, the exchange by the coupler's
+// energy_exchange.
+inline constexpr double heat_c_f = 1.67e6, heat_c_s = 1.25e6, heat_source = 1.0e6;
+inline constexpr double heat_t0 = 300.0, heat_tau = 1.0e-6, heat_window = 1.0e-2;
+void write_stiff_heat_case(const std::filesystem::path& dir, const std::string& coupling);
 
 }  // namespace cosim::testing
