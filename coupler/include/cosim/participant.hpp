@@ -198,6 +198,11 @@ class Participant {
   // received for the current window.
   void read(std::string_view field, std::span<double> values, double relative_time = 0.0) const;
   std::vector<double> read(std::string_view field) const;
+  // Whether read() of a state field depends on relative_time within a window
+  // (time_interpolation: linear). A solver then reads at each step, at the
+  // step's middle, not once a window at its start (where it would get the
+  // window's start values, whatever the partner's iterate).
+  bool reads_vary_within_window() const;
   // Integral fields: the share of the window's integral for a step of dt;
   // over a window the shares add up exactly to the integral received.
   void read_increment(std::string_view field, double dt, std::span<double> values);

@@ -653,6 +653,9 @@ bool Participant::must_save_state() const {
 bool Participant::must_restore_state() const {
   return impl_->restore_state;
 }
+bool Participant::reads_vary_within_window() const {
+  return impl_->schedule.time_interpolation == com::TimeInterpolation::linear;
+}
 bool Participant::is_window_complete() const {
   return impl_->window_complete;
 }

@@ -87,7 +87,7 @@ void MpmCoupling<Dim>::State::apply(double dt, Particles<Dim>& particles) {
   const bool cell_pressure_force = exchange_reads(n::pore_pressure_force);
   if (exchange_reads(n::pore_pressure)) {
     cell_values.resize(exchange->size());
-    channel->read(n::pore_pressure, cell_values);
+    channel->read(n::pore_pressure, dt, cell_values);
     const Vec<Dim> total = pore_pressure_force(*exchange, cell_values, particles, roles, scratch);
     if (!cell_pressure_force) {
       diagnostics.pore_pressure_force = total;
@@ -96,7 +96,7 @@ void MpmCoupling<Dim>::State::apply(double dt, Particles<Dim>& particles) {
   }
   if (cell_pressure_force) {
     cell_values.resize(exchange->size() * static_cast<std::size_t>(Dim));
-    channel->read(n::pore_pressure_force, cell_values);
+    channel->read(n::pore_pressure_force, dt, cell_values);
     diagnostics.pore_pressure_force =
         split_impulse(*exchange, cell_values, particles, roles, scratch, SplitWeight::solid_volume)
             .applied;
@@ -114,7 +114,7 @@ void MpmCoupling<Dim>::State::apply(double dt, Particles<Dim>& particles) {
   }
   if (surface_reads(n::bed_traction)) {
     cell_values.resize(surface->size() * static_cast<std::size_t>(Dim));
-    channel->read(n::bed_traction, cell_values);
+    channel->read(n::bed_traction, dt, cell_values);
     diagnostics.traction_step = surface_traction(*surface, cell_values, particles, roles, scratch);
     add_to_force(scratch, 1.0);
   }

@@ -15,8 +15,8 @@ void ParticipantChannel::declare_read(cosim::FieldSpec field, double default_val
 void ParticipantChannel::write(std::string_view field, std::span<const double> values) {
   participant_.write(field, values);
 }
-void ParticipantChannel::read(std::string_view field, std::span<double> values) {
-  participant_.read(field, values);
+void ParticipantChannel::read(std::string_view field, double dt, std::span<double> values) {
+  participant_.read(field, values, participant_.reads_vary_within_window() ? 0.5 * dt : 0.0);
 }
 void ParticipantChannel::read_increment(std::string_view field, double dt,
                                         std::span<double> values) {

@@ -49,7 +49,7 @@ class MockChannel final : public coupling::CouplingChannel {
     written[name].assign(values.begin(), values.end());
     ++write_count[name];
   }
-  void read(std::string_view field, std::span<double> values) override {
+  void read(std::string_view field, double, std::span<double> values) override {
     const Read& r = reads.at(std::string(field));
     if (values.size() != r.values.size()) throw std::logic_error("wrong read size");
     std::copy(r.values.begin(), r.values.end(), values.begin());

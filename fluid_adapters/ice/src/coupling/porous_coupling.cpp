@@ -52,15 +52,15 @@ void PorousCoupling<Dim>::declare(cosim::Participant& participant, IceSolver<Dim
 
 template <int Dim>
 void PorousCoupling<Dim>::read_medium(const cosim::Participant& participant, IceSolver<Dim>& solver,
-                                      bool first_window) {
+                                      bool first_window, double relative_time) {
   const auto cells = static_cast<std::size_t>(solver.grid().cell_count());
   const auto dim = static_cast<std::size_t>(Dim);
   buffer_.resize(cells * dim);
   porosity_.resize(cells);
-  participant.read(f::solid_fraction.name, std::span<double>(buffer_.data(), cells));
+  participant.read(f::solid_fraction.name, std::span<double>(buffer_.data(), cells), relative_time);
   for (std::size_t c = 0; c < cells; ++c)
     porosity_[c] = std::clamp(1.0 - buffer_[c], description_.minimum_porosity, 1.0);
-  participant.read(f::solid_velocity.name, buffer_);
+  participant.read(f::solid_velocity.name, buffer_, relative_time);
   for (std::size_t d = 0; d < dim; ++d) {
     solid_velocity_[d].resize(cells);
     for (std::size_t c = 0; c < cells; ++c) solid_velocity_[d][c] = buffer_[c * dim + d];
@@ -68,8 +68,8 @@ void PorousCoupling<Dim>::read_medium(const cosim::Participant& participant, Ice
   if (description_.drag_in_solver) {
     drag_.resize(cells);
     solid_density_.resize(cells);
-    participant.read(f::drag_coefficient.name, drag_);
-    participant.read(f::solid_bulk_density.name, solid_density_);
+    participant.read(f::drag_coefficient.name, drag_, relative_time);
+    participant.read(f::solid_bulk_density.name, solid_density_, relative_time);
   }
   solver.set_porous_medium(porosity_, solid_velocity_,
                            first_window ? PorosityChange::fill_pores : PorosityChange::compress);

@@ -166,6 +166,12 @@ class CaseRun {
           run_.snapshots.next(), c_.gauge_every > 0.0 ? run_.gauge_times.next() : infinity);
       if (next_output > t + tolerance_) limit = std::min(limit, next_output - t);
       double dt = limit;
+      // Fields that vary within the window (time_interpolation: linear):
+      // the medium at the step's middle.
+      if (coupled && participant_.reads_vary_within_window()) {
+        auto scope = summary_.phases().measure("porous_medium");
+        coupling_.read_medium(participant_, *solver_, false, 0.5 * dt);
+      }
       StepReport report;
       for (;;) {
         if (!(dt >= c_.numerics.min_time_step)) {

@@ -62,15 +62,20 @@ void SoilCoupling::read_soil(const cosim::Participant& participant) {
   solid_fraction_.resize(cells);
   solid_velocity_.resize(cells * static_cast<std::size_t>(dim_));
   drag_.resize(cells);
-  participant.read(f::solid_fraction.name, solid_fraction_);
-  participant.read(f::solid_velocity.name, solid_velocity_);
-  participant.read(f::drag_coefficient.name, drag_);
+  // OpenFOAM runs the window on one soil: when the fields vary within the
+  // window (time_interpolation: linear), their window mean, the values at
+  // its middle.
+  const double at =
+      participant.reads_vary_within_window() ? 0.5 * participant.max_time_step() : 0.0;
+  participant.read(f::solid_fraction.name, solid_fraction_, at);
+  participant.read(f::solid_velocity.name, solid_velocity_, at);
+  participant.read(f::drag_coefficient.name, drag_, at);
   solid_density_.resize(cells);
-  participant.read(f::solid_bulk_density.name, solid_density_);
+  participant.read(f::solid_bulk_density.name, solid_density_, at);
   const auto dim = static_cast<std::size_t>(dim_);
   volume_flux_.resize(cells * dim);
   if (participant.is_sent(f::solid_volume_flux.name)) {
-    participant.read(f::solid_volume_flux.name, volume_flux_);
+    participant.read(f::solid_volume_flux.name, volume_flux_, at);
   } else {
     for (std::size_t c = 0; c < cells; ++c) {
       const double phi_s = 1.0 - pore_fraction(c);

@@ -24,8 +24,10 @@ class CouplingChannel {
   virtual void declare_read(cosim::FieldSpec field, double default_value) = 0;
 
   virtual void write(std::string_view field, std::span<const double> values) = 0;
-  // State fields: the latest values received.
-  virtual void read(std::string_view field, std::span<double> values) = 0;
+  // State fields, for a step of dt from now: the latest values received, or,
+  // when they vary within the window (time_interpolation: linear), their
+  // values at the step's middle.
+  virtual void read(std::string_view field, double dt, std::span<double> values) = 0;
   // Integral fields: the share of the window's integral for a step of dt.
   virtual void read_increment(std::string_view field, double dt, std::span<double> values) = 0;
 
@@ -43,7 +45,7 @@ class ParticipantChannel final : public CouplingChannel {
   void declare_write(cosim::FieldSpec field) override;
   void declare_read(cosim::FieldSpec field, double default_value) override;
   void write(std::string_view field, std::span<const double> values) override;
-  void read(std::string_view field, std::span<double> values) override;
+  void read(std::string_view field, double dt, std::span<double> values) override;
   void read_increment(std::string_view field, double dt, std::span<double> values) override;
   double max_time_step() const override;
   double window_size() const override;

@@ -44,12 +44,14 @@ class PorousCoupling {
 
   // Declares the mesh and fields, then writes the initial fields.
   void declare(cosim::Participant& participant, IceSolver<Dim>& solver);
-  // At a window start: the received porosity and solid velocity (and with
-  // drag: ice the drag coefficient and solid bulk density). On the first
-  // window the fluids are laid into the pores (bulk densities scaled by n,
-  // pressures kept), later ones compress or expand them.
-  void read_medium(const cosim::Participant& participant, IceSolver<Dim>& solver,
-                   bool first_window);
+  // At a window start (and, when the fields vary within the window, at each
+  // step's middle, relative_time after now): the received porosity and solid
+  // velocity (and with drag: ice the drag coefficient and solid bulk
+  // density). On the first window the fluids are laid into the pores (bulk
+  // densities scaled by n, pressures kept), later ones compress or expand
+  // them.
+  void read_medium(const cosim::Participant& participant, IceSolver<Dim>& solver, bool first_window,
+                   double relative_time = 0.0);
   // After each accepted step: with drag: coupler the step's share of the
   // window's exchange impulse is added to the fluids; with drag: ice the
   // momentum the solid received in the step is written (as the rate of the
