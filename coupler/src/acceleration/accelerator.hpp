@@ -17,6 +17,12 @@ namespace cosim::acceleration {
 struct Block {
   std::string name;
   std::size_t size;
+  // The block's convergence limits (0: not given), for the `convergence`
+  // preconditioner: converged when ||r_b|| <= relative ||H_b||, or <= absolute,
+  // or <= residual_relative times the window's first ||r_b||.
+  double relative = 0.0;
+  double absolute = 0.0;
+  double residual_relative = 0.0;
 };
 
 enum class Method { constant, aitken, iqn_ils, iqn_imvj };
@@ -27,7 +33,7 @@ enum class Filter { none, qr1, qr2 };
 
 // Per-block weights of the residuals in IQN-ILS's least squares system
 // (preconditioner.hpp).
-enum class Preconditioner { none, value, residual_sum };
+enum class Preconditioner { none, value, residual_sum, convergence };
 
 struct AccelerationSpec {
   Method method = Method::iqn_ils;

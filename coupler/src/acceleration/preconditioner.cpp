@@ -1,5 +1,6 @@
 #include "preconditioner.hpp"
 
+#include <algorithm>
 #include <utility>
 
 namespace cosim::acceleration {
@@ -52,6 +53,21 @@ void PreconditionerWeights::update(const Eigen::Ref<const Eigen::VectorXd>& x,
       for (std::size_t b = 0; b < blocks_.size(); ++b) {
         residual_sums_[b] += norms[b] / residual_norm;
         if (residual_sums_[b] > 0.0) weights_[b] = 1.0 / residual_sums_[b];
+      }
+      break;
+    }
+    case Preconditioner::convergence: {
+      const std::vector<double> residual_norms = block_norms(blocks_, r);
+      const std::vector<double> answer_norms = block_norms(blocks_, x + r);
+      if (first_iteration) first_residual_norms_ = residual_norms;
+      for (std::size_t b = 0; b < blocks_.size(); ++b) {
+        const Block& block = blocks_[b];
+        const double tolerance = std::max({block.relative * answer_norms[b], block.absolute,
+                                           block.residual_relative * first_residual_norms_[b]});
+        if (tolerance > 0.0)
+          weights_[b] = 1.0 / tolerance;
+        else if (answer_norms[b] > 0.0)
+          weights_[b] = 1.0 / answer_norms[b];
       }
       break;
     }

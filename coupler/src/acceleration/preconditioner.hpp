@@ -48,6 +48,7 @@ class PreconditionerWeights {
   std::size_t freeze_after_;
   std::vector<double> weights_;
   std::vector<double> residual_sums_;
+  std::vector<double> first_residual_norms_;
   std::size_t iterations_in_window_ = 0;
   std::size_t converged_windows_ = 0;
 };

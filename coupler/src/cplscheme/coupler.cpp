@@ -733,14 +733,20 @@ struct Coupler::Impl {
   }
 
   // Implicit schemes: the iteration's measures, in the units the
-  // participants declared for the fields they read.
+  // participants declared for the fields they read, and the bounds they
+  // declared for the accelerated ones.
   void start_window_iteration() {
     if (!job.coupling.is_implicit()) return;
     std::map<std::string, std::string> units;
     for (const job::ConvergenceMeasure& m : job.coupling.convergence)
       units[m.field.label()] =
           declared(peers.at(m.field.participant).hello.reads, m.field.field).unit;
-    iteration.emplace(job.coupling, units, options.output_dir / "coupling_iterations.csv");
+    std::map<std::string, WindowIteration::Bounds> bounds;
+    for (const job::SentField& f : job.coupling.accelerated) {
+      const FieldSpec& spec = declared(peers.at(f.participant).hello.reads, f.field);
+      bounds[f.label()] = {spec.lower_bound, spec.upper_bound};
+    }
+    iteration.emplace(job.coupling, units, bounds, options.output_dir / "coupling_iterations.csv");
   }
 
   // The exchanges' fields mapped to their readers, or (serial schemes) to one.

@@ -68,12 +68,24 @@ struct WindowIteration::Measure {
 
 WindowIteration::WindowIteration(const job::CouplingSpec& spec,
                                  const std::map<std::string, std::string>& units,
+                                 const std::map<std::string, Bounds>& bounds,
                                  const std::filesystem::path& csv)
-    : spec_(spec), csv_(csv, csv_columns(spec, units)) {
+    : spec_(spec), bounds_(bounds), csv_(csv, csv_columns(spec, units)) {
   for (const job::ConvergenceMeasure& m : spec.convergence) measures_.push_back(Measure{&m});
 }
 
 WindowIteration::~WindowIteration() = default;
+
+acceleration::Block WindowIteration::block_of(const job::SentField& f, std::size_t size) const {
+  acceleration::Block block{f.label(), size};
+  for (const job::ConvergenceMeasure& m : spec_.convergence) {
+    if (m.field.label() != block.name) continue;
+    block.relative = m.relative.value_or(0.0);
+    block.absolute = m.absolute.value_or(0.0);
+    block.residual_relative = m.residual_relative.value_or(0.0);
+  }
+  return block;
+}
 
 void WindowIteration::sent(const FieldsByPeer& x) {
   for (const auto& [participant, fields] : x)
@@ -94,8 +106,13 @@ void WindowIteration::scatter(std::span<const double> values, FieldsByPeer& fiel
   for (std::size_t b = 0; b < blocks_.size(); ++b) {
     const job::SentField& f = spec_.accelerated[b];
     const auto first = values.begin() + static_cast<std::ptrdiff_t>(offset);
-    fields[f.participant][f.field] = std::make_shared<const std::vector<double>>(
+    auto field = std::make_shared<std::vector<double>>(
         first, first + static_cast<std::ptrdiff_t>(blocks_[b].size));
+    // A quasi-Newton step may overshoot a bound (a density below zero): the
+    // iterate is held within it, as a mapped field is.
+    if (const auto bounds = bounds_.find(f.label()); bounds != bounds_.end())
+      for (double& v : *field) v = std::clamp(v, bounds->second.first, bounds->second.second);
+    fields[f.participant][f.field] = std::move(field);
     offset += blocks_[b].size;
   }
 }
@@ -140,7 +157,7 @@ WindowIteration::Verdict WindowIteration::judge(std::size_t window, double time,
   std::vector<double> h = gather(answer);
   if (!accelerator_ && !spec_.accelerated.empty()) {
     for (const job::SentField& f : spec_.accelerated)
-      blocks_.push_back({f.label(), values_of(answer, f).size()});
+      blocks_.push_back(block_of(f, values_of(answer, f).size()));
     accelerator_ = acceleration::make_accelerator(spec_.acceleration, blocks_);
   }
   if (all_hold) {
@@ -251,7 +268,7 @@ void WindowIteration::restore(const StateFileReader& in,
                             in.file().string(), sizes.size(), spec_.accelerated.size()));
   blocks_.clear();
   for (std::size_t b = 0; b < sizes.size(); ++b)
-    blocks_.push_back({spec_.accelerated[b].label(), static_cast<std::size_t>(sizes[b])});
+    blocks_.push_back(block_of(spec_.accelerated[b], static_cast<std::size_t>(sizes[b])));
   accelerator_ = acceleration::make_accelerator(spec_.acceleration, blocks_);
   acceleration::AcceleratorState state;
   state.scalars = in.numbers("iteration.accelerator.scalars");

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "acceleration/accelerator.hpp"
@@ -29,9 +30,13 @@ namespace cosim::cplscheme {
 // residual ||r|| [unit] and relative residual ||r|| / ||H(x)|| [1].
 class WindowIteration {
  public:
-  // `units`: each measured field's unit, by `<participant>.<field>`.
+  // The bounds the reader declared for a field (FieldSpec's lower and upper).
+  using Bounds = std::pair<double, double>;
+  // `units`: each measured field's unit, by `<participant>.<field>`;
+  // `bounds`: each accelerated field's, by the same label (an accelerated
+  // iterate is held within them, as a mapped field is).
   WindowIteration(const job::CouplingSpec& spec, const std::map<std::string, std::string>& units,
-                  const std::filesystem::path& csv);
+                  const std::map<std::string, Bounds>& bounds, const std::filesystem::path& csv);
   ~WindowIteration();
 
   // The iterate the participants run the window with next (what the coupler
@@ -67,6 +72,7 @@ class WindowIteration {
 
  private:
   struct Measure;
+  acceleration::Block block_of(const job::SentField& f, std::size_t size) const;
   void window_done(bool converged, std::size_t window, double time);
   std::vector<double> gather(const FieldsByPeer& fields) const;
   void scatter(std::span<const double> values, FieldsByPeer& fields) const;
@@ -75,6 +81,7 @@ class WindowIteration {
   const job::CouplingSpec& spec_;
   std::vector<Measure> measures_;
   std::vector<acceleration::Block> blocks_;  // the accelerated fields, in spec order
+  std::map<std::string, Bounds> bounds_;
   std::unique_ptr<acceleration::Accelerator> accelerator_;
   TimeSeriesWriter csv_;
   FieldsByPeer sent_, next_;

@@ -163,9 +163,12 @@ Schema acceleration_schema() {
       .optional("filter_limit", Schema::number().range(1e-16, 0.5).default_value("1e-2"),
                 "iqn-ils, iqn-imvj: the filter's threshold.")
       .optional("preconditioner",
-                Schema::one_of({"none", "value", "residual-sum"}).default_value("residual-sum"),
+                Schema::one_of({"none", "value", "residual-sum", "convergence"})
+                    .default_value("residual-sum"),
                 "Scaling of each field's part of the quasi-Newton system, so fields in Pa and "
-                "m/s converge together (preCICE's preconditioners).")
+                "m/s converge together: value, residual-sum (preCICE's preconditioners), "
+                "convergence (each field by the inverse of the residual its convergence measure "
+                "accepts, every iteration).")
       .optional("freeze_preconditioner_after",
                 Schema::integer().range(0, 1000000).default_value("0"),
                 "Windows after which the scaling stops changing (0: never).")

@@ -56,6 +56,7 @@ acceleration::AccelerationSpec read_acceleration(const config::Node& a,
   const auto preconditioner = a.get<std::string>("preconditioner");
   spec.preconditioner = preconditioner == "value"          ? Preconditioner::value
                         : preconditioner == "residual-sum" ? Preconditioner::residual_sum
+                        : preconditioner == "convergence"  ? Preconditioner::convergence
                                                            : Preconditioner::none;
   spec.freeze_preconditioner_after = a.get<std::size_t>("freeze_preconditioner_after");
   return spec;

@@ -63,6 +63,41 @@ TEST(PreconditionerWeights, ResidualSumWeightsByHand) {
   EXPECT_DOUBLE_EQ(weights.block_weights()[1], 1.0 / (0.2 / norm2));
 }
 
+// Each block weighed by the inverse of the residual its convergence measure
+// accepts, so that the least squares system minimises the residual in the
+// measure the window is judged by.
+TEST(PreconditionerWeights, ConvergenceWeightsAreTheInverseTolerances) {
+  std::vector<Block> measured{{"p", 2}, {"u", 3}, {"f", 1}};
+  measured[0].relative = 1e-3;  // ||r_p|| <= 1e-3 ||H_p||
+  measured[1].relative = 1e-5;  // or, for u, the larger of
+  measured[1].absolute = 1e-6;  // 1e-5 ||H_u|| and 1e-6
+  PreconditionerWeights weights(Preconditioner::convergence, measured, 0);
+  const Eigen::VectorXd x = vector_of({3e5, 4e5, 0.0, 0.3, 0.4, 2.0});
+  const Eigen::VectorXd r = vector_of({0.0, 0.0, 0.0, 0.0, 0.0, 1.0});  // H_f = 3
+  weights.update(x, r);
+  EXPECT_DOUBLE_EQ(weights.block_weights()[0], 1.0 / (1e-3 * 5e5));
+  EXPECT_DOUBLE_EQ(weights.block_weights()[1], 1.0 / (1e-5 * 0.5));
+  // An unmeasured block: the inverse norm of its answer.
+  EXPECT_DOUBLE_EQ(weights.block_weights()[2], 1.0 / 3.0);
+
+  // Every iteration: the absolute floor takes over when u is small.
+  weights.update(vector_of({3e5, 4e5, 0.0, 0.003, 0.004, 2.0}), r);
+  EXPECT_DOUBLE_EQ(weights.block_weights()[1], 1.0 / 1e-6);
+}
+
+TEST(PreconditionerWeights, ConvergenceWeightsWithAResidualRelativeLimit) {
+  std::vector<Block> measured{{"p", 1}};
+  measured[0].residual_relative = 1e-2;  // ||r|| <= 1e-2 ||r|| of the window's first iteration
+  PreconditionerWeights weights(Preconditioner::convergence, measured, 0);
+  weights.update(vector_of({1.0}), vector_of({4.0}));
+  EXPECT_DOUBLE_EQ(weights.block_weights()[0], 1.0 / 0.04);
+  weights.update(vector_of({1.0}), vector_of({0.5}));
+  EXPECT_DOUBLE_EQ(weights.block_weights()[0], 1.0 / 0.04);
+  weights.window_converged();
+  weights.update(vector_of({1.0}), vector_of({2.0}));
+  EXPECT_DOUBLE_EQ(weights.block_weights()[0], 1.0 / 0.02);
+}
+
 TEST(PreconditionerWeights, FrozenWeightsNoLongerChange) {
   PreconditionerWeights weights(Preconditioner::residual_sum, blocks, 1);
   const Eigen::VectorXd x = Eigen::VectorXd::Ones(5);
