@@ -162,9 +162,9 @@ TEST(ImplicitPairings, TerzaghiColumnOnIceMatchesTheExplicitRun) {
 // the participants read the iterate linearly in time over the window, at each
 // step's middle (read once at a window's start, they would get its start
 // values and the window would "converge" at once to the explicit scheme's
-// unstable answer); every exchanged field is accelerated (an unaccelerated
-// one lags an iteration and the least squares system learns from
-// inconsistent pairs), held within its bounds, and weighted by its
+// unstable answer); every exchanged field is accelerated (the default: an
+// unaccelerated one lags an iteration and the least squares system learns
+// from inconsistent pairs), held within its bounds, and weighted by its
 // convergence limit.
 TEST(ImplicitPairings, TerzaghiColumnOnIceConvergesAboveTheExplicitBound) {
   expect_terzaghi_on_ice_as_explicit("implicit_pairing_ice_long_window",
@@ -182,8 +182,6 @@ coupling:
     method: iqn-ils
     reuse_windows: 4
     preconditioner: convergence
-    fields: [water.solid_fraction, water.solid_velocity, water.solid_bulk_density,
-             water.drag_coefficient, soil.pore_pressure, soil.pore_pressure_force]
 )",
                                      "5.0e-5", 10.0);
 }

@@ -73,7 +73,8 @@ struct CouplingSpec {
   std::vector<ConvergenceMeasure> convergence;
   acceleration::AccelerationSpec acceleration;
   // The fields the accelerator updates, in this order; the others take
-  // H(x) as it is. Default: the convergence measures' fields.
+  // H(x) as it is. Default: every field the coupler sends (serial schemes:
+  // sends `first`) but an exchange's answers.
   std::vector<SentField> accelerated;
   // Serial schemes: the participant that runs each window first, and the other.
   std::string first;

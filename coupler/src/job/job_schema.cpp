@@ -174,7 +174,9 @@ Schema acceleration_schema() {
                 "Windows after which the scaling stops changing (0: never).")
       .optional("fields", Schema::sequence(Schema::string().non_empty()),
                 "<participant>.<field> the accelerator updates; the others take H(x). Default: "
-                "the convergence measures' fields.");
+                "every field the coupler sends (serial schemes: sends `first`), but an "
+                "exchange's answers (momentum_exchange_impulse solved by the coupler, "
+                "heat_exchange_energy).");
   return s;
 }
 

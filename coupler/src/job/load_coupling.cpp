@@ -178,10 +178,15 @@ CouplingSpec read_coupling(const Job& job, const config::Node& c,
     }
     if (spec.accelerated.empty()) fields->fail("list at least one field, or leave the key out");
   } else {
-    for (const ConvergenceMeasure& m : spec.convergence)
-      if (!computed_by_exchange(job, m.field) &&
-          (!spec.is_serial() || m.field.participant == spec.first))
-        spec.accelerated.push_back(m.field);
+    // Every field the iteration sends: one left out would answer the previous
+    // iteration, so H would be no function of x alone and the quasi-Newton
+    // pairs would contradict each other (architecture.md §13).
+    for (const ParticipantSpec& p : job.participants)
+      for (const auto& [field, mesh] : p.reads) {
+        SentField f{p.name, field};
+        if (!computed_by_exchange(job, f) && (!spec.is_serial() || p.name == spec.first))
+          spec.accelerated.push_back(std::move(f));
+      }
   }
   if (spec.is_serial())
     for (const SentField& f : spec.accelerated)

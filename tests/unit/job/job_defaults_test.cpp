@@ -95,8 +95,10 @@ TEST(JobSchemaDefaults, AnImplicitJobReadsTheCouplingAndAccelerationDefaults) {
       schema_default<std::string>("coupling.acceleration.preconditioner"));
   EXPECT_EQ(a.freeze_preconditioner_after,
             schema_default<std::size_t>("coupling.acceleration.freeze_preconditioner_after"));
-  ASSERT_EQ(c.accelerated.size(), 1u);  // the measured field
-  EXPECT_EQ(c.accelerated[0].label(), "b.p");
+  // Every field the coupler sends, measured or not, in participant order.
+  ASSERT_EQ(c.accelerated.size(), 2u);
+  EXPECT_EQ(c.accelerated[0].label(), "a.q");
+  EXPECT_EQ(c.accelerated[1].label(), "b.p");
 }
 
 }  // namespace
