@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "cosim/io/csv_table.hpp"
+#include "model_jobs.hpp"
 #include "replaced_text.hpp"
 #include "run_process.hpp"
 #include "text_files.hpp"
@@ -144,16 +145,12 @@ void expect_terzaghi_on_ice_as_explicit(const std::string& name, const std::stri
 }
 
 TEST(ImplicitPairings, TerzaghiColumnOnIceMatchesTheExplicitRun) {
-  expect_terzaghi_on_ice_as_explicit("implicit_pairing_ice", R"(coupling:
-  scheme: parallel-implicit
-  max_iterations: 30
-  convergence:
-    - {field: water.solid_fraction, relative: 1.0e-5}
-    - {field: water.solid_velocity, relative: 1.0e-5, absolute: 1.0e-9}
-    - {field: soil.pore_pressure, relative: 1.0e-5}
-    - {field: soil.pore_pressure_force, relative: 1.0e-5, absolute: 1.0e-5}
-  acceleration: {method: iqn-ils, reuse_windows: 4}
-)",
+  expect_terzaghi_on_ice_as_explicit("implicit_pairing_ice",
+                                     std::string("coupling:\n"
+                                                 "  scheme: parallel-implicit\n"
+                                                 "  max_iterations: 30\n") +
+                                         terzaghi_convergence +
+                                         "  acceleration: {method: iqn-ils, reuse_windows: 4}\n",
                                      "1.0e-5", 10.0);
 }
 
@@ -168,21 +165,14 @@ TEST(ImplicitPairings, TerzaghiColumnOnIceMatchesTheExplicitRun) {
 // convergence limit.
 TEST(ImplicitPairings, TerzaghiColumnOnIceConvergesAboveTheExplicitBound) {
   expect_terzaghi_on_ice_as_explicit("implicit_pairing_ice_long_window",
-                                     R"(stability_check: {accept_unstable: true}
-coupling:
-  scheme: parallel-implicit
-  time_interpolation: linear
-  max_iterations: 50
-  convergence:
-    - {field: water.solid_fraction, relative: 1.0e-5}
-    - {field: water.solid_velocity, relative: 1.0e-5, absolute: 1.0e-9}
-    - {field: soil.pore_pressure, relative: 1.0e-5}
-    - {field: soil.pore_pressure_force, relative: 1.0e-5, absolute: 1.0e-5}
-  acceleration:
-    method: iqn-ils
-    reuse_windows: 4
-    preconditioner: convergence
-)",
+                                     std::string("stability_check: {accept_unstable: true}\n"
+                                                 "coupling:\n"
+                                                 "  scheme: parallel-implicit\n"
+                                                 "  time_interpolation: linear\n"
+                                                 "  max_iterations: 50\n") +
+                                         terzaghi_convergence +
+                                         "  acceleration: {method: iqn-ils, reuse_windows: 4, "
+                                         "preconditioner: convergence}\n",
                                      "5.0e-5", 10.0);
 }
 

@@ -37,4 +37,16 @@ inline constexpr double heat_c_f = 1.67e6, heat_c_s = 1.25e6, heat_source = 1.0e
 inline constexpr double heat_t0 = 300.0, heat_tau = 1.0e-6, heat_window = 1.0e-2;
 void write_stiff_heat_case(const std::filesystem::path& dir, const std::string& coupling);
 
+// The convergence measures of the Terzaghi column's implicit jobs
+// (configs/ice_coupled/terzaghi), a `convergence:` list in a coupling block:
+// relative limits, with absolute floors on the solid's velocity and the pore
+// pressure's force, which start from zero (a relative limit on a field at
+// round-off never holds).
+inline constexpr const char* terzaghi_convergence = R"(  convergence:
+    - {field: water.solid_fraction, relative: 1.0e-5}
+    - {field: water.solid_velocity, relative: 1.0e-5, absolute: 1.0e-9}
+    - {field: soil.pore_pressure, relative: 1.0e-5}
+    - {field: soil.pore_pressure_force, relative: 1.0e-5, absolute: 1.0e-5}
+)";
+
 }  // namespace cosim::testing
