@@ -145,15 +145,21 @@ class CaseRun {
     using Clock = std::chrono::steady_clock;
     auto last_progress = Clock::now();
     const bool coupled = participant_.is_coupled();
+    // A medium that varies within the window (time_interpolation: linear) is
+    // read once a step, at its middle (below); only the first window's start
+    // reads it too, to lay the fluids into the pores.
+    const bool medium_each_step = coupled && participant_.reads_vary_within_window();
     while (participant_.is_coupling_ongoing()) {
       if (participant_.must_save_state()) save_window_start();
       const double t = participant_.time();
       if (coupled && participant_.window_index() != medium_window_) {
-        auto scope = summary_.phases().measure("porous_medium");
         medium_window_ = participant_.window_index();
-        coupling_.read_medium(participant_, *solver_, medium_window_ == 1);
-        // The fluids laid into the pores are the run's starting totals.
-        if (medium_window_ == 1) record_conserved(true);
+        if (medium_window_ == 1 || !medium_each_step) {
+          auto scope = summary_.phases().measure("porous_medium");
+          coupling_.read_medium(participant_, *solver_, medium_window_ == 1);
+          // The fluids laid into the pores are the run's starting totals.
+          if (medium_window_ == 1) record_conserved(true);
+        }
       }
       // The growth limit applies to the last step the stability allowed, not
       // to one cut short by a window end or an output time.
@@ -166,9 +172,7 @@ class CaseRun {
           run_.snapshots.next(), c_.gauge_every > 0.0 ? run_.gauge_times.next() : infinity);
       if (next_output > t + tolerance_) limit = std::min(limit, next_output - t);
       double dt = limit;
-      // Fields that vary within the window (time_interpolation: linear):
-      // the medium at the step's middle.
-      if (coupled && participant_.reads_vary_within_window()) {
+      if (medium_each_step) {
         auto scope = summary_.phases().measure("porous_medium");
         coupling_.read_medium(participant_, *solver_, false, 0.5 * dt);
       }
