@@ -145,6 +145,44 @@ TEST(PressureSolver, CorrectedVelocitiesSatisfyTheDiscreteVolumeBalance) {
   }
 }
 
+// A volume source stands for the divergence of the face velocities it
+// replaces: the same increment to round-off, and a non-finite or missized
+// source is refused.
+TEST(PressureSolver, AVolumeSourceActsAsTheDivergenceItStandsFor) {
+  const std::array<PressureBoundary, 4> sides{wall, fixed, wall, wall};
+  const auto grid = box_grid<2>({12, 9}, 0.3);
+  const auto p = random_problem<2>(grid, sides, 5u);
+  ice::PressureSolverOptions options;
+  options.tolerance = 1e-12;
+  ice::PressureSolver<2> solver(grid, sides, options);
+  const auto cells = static_cast<std::size_t>(grid.cell_count());
+  std::vector<double> from_faces(cells, 0.0), from_source(cells, 0.0), source(cells);
+  solver.solve(p.kappa, p.density, p.velocity, p.dt, from_faces);
+  // The velocities on open faces stay (they are the boundary's), the
+  // interior ones become the source.
+  auto boundary_only = p.velocity;
+  for (int d = 0; d < 2; ++d)
+    for (int f = 0; f < grid.face_count(d); ++f)
+      if (grid.lower_cell(d, f) >= 0 && grid.upper_cell(d, f) >= 0) boundary_only[d][f] = 0.0;
+  for (int c = 0; c < grid.cell_count(); ++c)
+    source[static_cast<std::size_t>(c)] =
+        divergence(grid, p.velocity, c) - divergence(grid, boundary_only, c);
+  solver.solve(p.kappa, p.density, boundary_only, p.dt, from_source, source);
+  double largest = 0.0, worst = 0.0;
+  for (std::size_t c = 0; c < cells; ++c) {
+    largest = std::max(largest, std::abs(from_faces[c]));
+    worst = std::max(worst, std::abs(from_source[c] - from_faces[c]));
+  }
+  std::printf("  source vs faces: largest |dP| %.3e Pa, worst difference %.2e\n", largest, worst);
+  EXPECT_LT(worst, 1e-8 * largest);
+  source[3] = std::nan("");
+  EXPECT_THROW(solver.solve(p.kappa, p.density, boundary_only, p.dt, from_source, source),
+               std::invalid_argument);
+  source.pop_back();
+  EXPECT_THROW(solver.solve(p.kappa, p.density, boundary_only, p.dt, from_source, source),
+               std::invalid_argument);
+}
+
 TEST(PressureSolver, MatrixIsSymmetricPositiveDefinite) {
   const auto grid = box_grid<2>({13, 9});
   const std::array<PressureBoundary, 4> sides{fixed, wall, fixed, wall};

@@ -72,7 +72,7 @@ void PorousCoupling<Dim>::read_medium(const cosim::Participant& participant, Ice
     participant.read(f::solid_bulk_density.name, solid_density_, relative_time);
   }
   solver.set_porous_medium(porosity_, solid_velocity_,
-                           first_window ? PorosityChange::fill_pores : PorosityChange::compress);
+                           first_window ? PorosityChange::fill_pores : PorosityChange::displace);
   if (description_.drag_in_solver) solver.set_solid_drag(drag_, solid_density_);
   if (!warned_) {
     warned_ = true;

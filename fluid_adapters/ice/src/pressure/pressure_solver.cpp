@@ -235,10 +235,21 @@ const Eigen::SparseMatrix<double>& PressureSolver<Dim>::matrix() const {
   return matrix_;
 }
 
-// -V div_c U*_FC.
+// -V (div_c U*_FC + source_c).
 template <int Dim>
-void PressureSolver<Dim>::set_right_hand_side(const FaceField<Dim>& predicted_velocity) {
+void PressureSolver<Dim>::set_right_hand_side(const FaceField<Dim>& predicted_velocity,
+                                              std::span<const double> volume_source) {
   right_hand_side_.setZero();
+  if (!volume_source.empty()) {
+    const double volume = grid_.cell_volume();
+    for (std::size_t c = 0; c < volume_source.size(); ++c) {
+      if (!std::isfinite(volume_source[c])) {
+        throw std::invalid_argument("PressureSolver: volume source is not finite in cell " +
+                                    std::to_string(c));
+      }
+      right_hand_side_[static_cast<Eigen::Index>(c)] = -volume * volume_source[c];
+    }
+  }
   for (int d = 0; d < Dim; ++d) {
     const double area = grid_.face_area(d);
     const std::vector<double>& u = predicted_velocity[d];
@@ -361,9 +372,12 @@ template <int Dim>
 PressureSolution PressureSolver<Dim>::solve(std::span<const double> kappa,
                                             const FaceField<Dim>& face_density,
                                             const FaceField<Dim>& predicted_velocity, double dt,
-                                            std::span<double> pressure_increment) {
+                                            std::span<double> pressure_increment,
+                                            std::span<const double> volume_source) {
   require_size(kappa.size(), grid_.cell_count(), "kappa");
   require_size(pressure_increment.size(), grid_.cell_count(), "pressure increment");
+  if (!volume_source.empty())
+    require_size(volume_source.size(), grid_.cell_count(), "volume source");
   require_face_field_sizes(grid_, face_density, "face density");
   require_face_field_sizes(grid_, predicted_velocity, "predicted face velocity");
   require_positive_time_step(dt);
@@ -373,7 +387,7 @@ PressureSolution PressureSolver<Dim>::solve(std::span<const double> kappa,
     }
   }
   assemble(kappa, face_density, dt);
-  set_right_hand_side(predicted_velocity);
+  set_right_hand_side(predicted_velocity, volume_source);
   switch (options_.preconditioner) {
     case PressurePreconditioner::jacobi:
       return run(jacobi_cg_, pressure_increment);

@@ -17,6 +17,16 @@ namespace ice {
 
 namespace {
 
+void check_porosity(std::span<const double> porosity) {
+  for (std::size_t c = 0; c < porosity.size(); ++c) {
+    const double n = porosity[c];
+    if (!(n > 0.0 && n <= 1.0)) {
+      throw cosim::NumericalError(
+          fmt::format("ICE: porosity {} in cell {} is outside (0, 1]", n, c));
+    }
+  }
+}
+
 template <int Dim>
 typename PressureSolver<Dim>::Boundaries pressure_boundaries(
     const typename IceSolver<Dim>::Sides& sides) {
@@ -266,13 +276,7 @@ IceSolver<Dim>::IceSolver(const CellGrid<Dim>& grid, std::vector<FluidMaterial> 
 
 template <int Dim>
 void IceSolver<Dim>::check_state(const FluidState<Dim>& state) const {
-  for (std::size_t c = 0; c < state.porosity.size(); ++c) {
-    const double n = state.porosity[c];
-    if (!(n > 0.0 && n <= 1.0)) {
-      throw cosim::NumericalError(
-          fmt::format("ICE: porosity {} in cell {} is outside (0, 1]", n, c));
-    }
-  }
+  check_porosity(state.porosity);
   for (std::size_t m = 0; m < state.materials.size(); ++m) {
     const MaterialState<Dim>& material = state.materials[m];
     for (std::size_t c = 0; c < material.bulk_density.size(); ++c) {
@@ -301,6 +305,16 @@ void IceSolver<Dim>::set_porous_medium(
   for (const auto& component : solid_velocity) {
     require(component.size() == cells, "solid velocity needs one value per cell");
   }
+  state_.solid_velocity = solid_velocity;
+  solid_exchange_velocity_ = solid_velocity;
+  if (change == PorosityChange::displace) {
+    check_porosity(porosity);
+    porosity_to_displace_.resize(cells);
+    for (std::size_t c = 0; c < cells; ++c)
+      porosity_to_displace_[c] = porosity[c] - state_.porosity[c];
+    return;
+  }
+  porosity_to_displace_.clear();
   if (change == PorosityChange::fill_pores) {
     for (std::size_t c = 0; c < cells; ++c) {
       const double ratio = porosity[c] / state_.porosity[c];
@@ -309,8 +323,6 @@ void IceSolver<Dim>::set_porous_medium(
     }
   }
   state_.porosity.assign(porosity.begin(), porosity.end());
-  state_.solid_velocity = solid_velocity;
-  solid_exchange_velocity_ = solid_velocity;
   check_state(state_);
   equilibrate(nullptr);
 }
@@ -739,8 +751,18 @@ bool IceSolver<Dim>::upwind_side_changed(double dt) const {
 template <int Dim>
 PressureSolution IceSolver<Dim>::solve_pressure_increment(double dt) {
   // Last step's increment is the initial guess: the pressure changes smoothly.
-  const PressureSolution solution = pressure_solver_.solve(
-      mixture_kappa_, face_density_, mixture_velocity_, dt, pressure_increment_);
+  // The pores the received medium closes (opens) beyond the solver's own
+  // motion of the solid close (open) over this step.
+  if (!porosity_to_displace_.empty()) {
+    displacement_rate_.resize(porosity_to_displace_.size());
+    for (std::size_t c = 0; c < porosity_to_displace_.size(); ++c)
+      displacement_rate_[c] = porosity_to_displace_[c] / dt;
+  } else {
+    displacement_rate_.clear();
+  }
+  const PressureSolution solution =
+      pressure_solver_.solve(mixture_kappa_, face_density_, mixture_velocity_, dt,
+                             pressure_increment_, displacement_rate_);
   correct_face_velocities(dt, 1.0);
   for (std::size_t c = 0; c < new_pressure_.size(); ++c) {
     new_pressure_[c] = state_.pressure[c] + pressure_increment_[c];
@@ -1082,14 +1104,21 @@ void IceSolver<Dim>::advect_and_update(double dt, StepReport& report) {
 // The pores follow the solid within a step: its volume is conserved
 // (incompressible grains), so n_c changes by dt div(phi_s,FC U_s,FC) with the
 // same face fluxes the pressure equation's divergence took (Tran et al.,
-// MPMICE, eq. 107 in conservative form). Without a solid nothing changes.
+// MPMICE, eq. 107 in conservative form), plus what set_porous_medium(displace)
+// left, which the pressure equation took as its source. Without a solid
+// nothing changes.
 template <int Dim>
 void IceSolver<Dim>::move_solid(double dt) {
-  bool solid = false;
+  bool solid = !porosity_to_displace_.empty();
   for (const double n : state_.porosity) solid = solid || n < 1.0;
   if (!solid) return;
   std::vector<double>& change = porosity_change_;
-  change.assign(at(grid_.cell_count()), 0.0);
+  if (porosity_to_displace_.empty()) {
+    change.assign(at(grid_.cell_count()), 0.0);
+  } else {
+    change.swap(porosity_to_displace_);
+    porosity_to_displace_.clear();
+  }
   for (int d = 0; d < Dim; ++d) {
     const double factor = dt / grid_.spacing()[d];
     const std::vector<double>& u = solid_face_velocity_[at(d)];

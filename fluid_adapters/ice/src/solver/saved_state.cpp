@@ -23,6 +23,7 @@ void IceSolver<Dim>::save_state(SavedIceState<Dim>& saved) const {
   saved.solid_exchange_velocity = solid_exchange_velocity_;
   saved.solid_impulse = solid_impulse_;
   saved.previous_face_velocity = previous_face_velocity_;
+  saved.porosity_to_displace = porosity_to_displace_;
 }
 
 template <int Dim>
@@ -42,6 +43,7 @@ void IceSolver<Dim>::restore_state(const SavedIceState<Dim>& saved) {
   solid_exchange_velocity_ = saved.solid_exchange_velocity;
   solid_impulse_ = saved.solid_impulse;
   previous_face_velocity_ = saved.previous_face_velocity;
+  porosity_to_displace_ = saved.porosity_to_displace;
 }
 
 template void IceSolver<1>::save_state(SavedIceState<1>&) const;

@@ -34,6 +34,7 @@ void for_each_cell_field(State& s, Visit&& visit) {
   visit("solid_bulk_density", s.solid_bulk_density);
   for (int d = 0; d < Dim; ++d)
     visit(fmt::format("solid_exchange_velocity.{}", d), s.solid_exchange_velocity[d]);
+  visit("porosity_to_displace", s.porosity_to_displace);
 }
 
 // The arrays of other lengths: face fields, per material or not, and the

@@ -99,13 +99,16 @@ class PressureSolver {
   // Solves eq. 125 for dP. `kappa` is the mixture compressibility per cell
   // (> 0), `face_density` rho_FC per face (> 0 on every face that enters:
   // interior and fixed_pressure faces), `predicted_velocity` U*_FC. On entry
-  // `pressure_increment` is the initial guess, on exit dP.
+  // `pressure_increment` is the initial guess, on exit dP. `volume_source`
+  // (one value per cell, or empty for none) is a rate [1/s] at which pore
+  // space opens in a cell besides the face fluxes: it adds to div U*_FC.
   // Throws std::invalid_argument for wrong sizes, non-positive or non-finite
   // kappa, dt or density and non-finite velocities; cosim::NumericalError
   // when CG does not reach the tolerance within max_iterations.
   PressureSolution solve(std::span<const double> kappa, const FaceField<Dim>& face_density,
                          const FaceField<Dim>& predicted_velocity, double dt,
-                         std::span<double> pressure_increment);
+                         std::span<double> pressure_increment,
+                         std::span<const double> volume_source = {});
 
   // U^{n+1}_FC = U*_FC - (dt / rho_FC) grad^FC dP on interior faces and
   // fixed_pressure sides (half-cell gradient to dP = 0); walls unchanged.
@@ -120,7 +123,8 @@ class PressureSolver {
 
  private:
   void assemble(std::span<const double> kappa, const FaceField<Dim>& face_density, double dt);
-  void set_right_hand_side(const FaceField<Dim>& predicted_velocity);
+  void set_right_hand_side(const FaceField<Dim>& predicted_velocity,
+                           std::span<const double> volume_source);
   template <class Solver>
   PressureSolution run(Solver& solver, std::span<double> pressure_increment);
   PressureSolution run_multigrid(std::span<double> pressure_increment);

@@ -37,7 +37,7 @@ struct IceSolverOptions {
   double smagorinsky_constant = 0.0;
 };
 
-enum class PorosityChange { compress, fill_pores };
+enum class PorosityChange { compress, displace, fill_pores };
 
 // A coupled solid whose bulk density exceeds this [kg/m3] is held: the solid
 // solver marks rigid bodies so (mpm_solver: their density x 1e30). It takes
@@ -97,12 +97,16 @@ class IceSolver {
 
   // Sets the porous medium of a coupled run (one value per cell each).
   // compress: the fluids keep their mass and are re-equilibrated to fill the
-  // new pores (a solid moving in raises the pore pressure); fill_pores: each
-  // bulk density is scaled by n_new / n_old, keeping the pressure (a run's
-  // first window, when the soil is laid into the fluid).
+  // new pores at once (a solid moving in raises the pore pressure by
+  // K dn / n); displace: the pores keep their volume now and the next step
+  // closes (opens) them by the difference as a source in its pressure
+  // equation, as it moves the solid (Tran et al., MPMICE, eq. 107), so the
+  // fluids flow out (in) where they can and are compressed only where they
+  // cannot; fill_pores: each bulk density is scaled by n_new / n_old, keeping
+  // the pressure (a run's first window, when the soil is laid into the fluid).
   void set_porous_medium(std::span<const double> porosity,
                          const std::array<CellField, static_cast<std::size_t>(Dim)>& solid_velocity,
-                         PorosityChange change = PorosityChange::compress);
+                         PorosityChange change = PorosityChange::displace);
 
   // The fluid-solid drag of a coupled run solved inside each step (the
   // coupler's `solved_by: fluid`): K per cell [kg m^-3 s^-1], the drag on
@@ -258,6 +262,10 @@ class IceSolver {
   std::vector<CellField> kinetic_;
   std::vector<CellField> lagrangian_temperature_;
   CellField porosity_change_;
+  // What set_porous_medium(displace) left for the next step's pressure
+  // equation and move_solid: received porosity minus the solver's own.
+  CellField porosity_to_displace_;
+  CellField displacement_rate_;  // porosity_to_displace_ / dt, the pressure equation's source
   double last_face_rate_ = 0.0;
 
   // The porous solid: its face velocity and upwind fraction, whose product

@@ -41,6 +41,8 @@ struct SavedIceState {
   std::array<CellField, static_cast<std::size_t>(Dim)> solid_exchange_velocity;
   std::vector<double> solid_impulse;
   std::vector<FaceField<Dim>> previous_face_velocity;
+  // The received porosity the next step must still displace (empty: none).
+  CellField porosity_to_displace;
 };
 
 }  // namespace ice
