@@ -34,6 +34,24 @@ inline double face_flux(double nu, double lower, double lower_difference, double
   return nu * (nu >= 0.0 ? from_lower : from_upper);
 }
 
+// The same in a porous medium: the profile is the donor's value per unit of
+// its pore space, q / n, and the slab carries it in the donor's pores.
+inline double pore_face_flux(double nu, double lower, double lower_difference, double lower_pores,
+                             double upper, double upper_difference, double upper_pores) {
+  const double from_lower = lower + 0.5 * (1.0 - nu) * lower_difference;
+  const double from_upper = upper - 0.5 * (1.0 + nu) * upper_difference;
+  return nu * (nu >= 0.0 ? lower_pores * from_lower : upper_pores * from_upper);
+}
+
+// One face's flux from the profile values (q, or q / n with `pores`).
+inline double donor_flux(const double* pores, int lower_cell, int upper_cell, double nu,
+                         double lower, double lower_difference, double upper,
+                         double upper_difference) {
+  if (pores == nullptr) return face_flux(nu, lower, lower_difference, upper, upper_difference);
+  return pore_face_flux(nu, lower, lower_difference, pores[lower_cell], upper, upper_difference,
+                        pores[upper_cell]);
+}
+
 }  // namespace
 
 template <int Dim>
@@ -45,11 +63,32 @@ Advector<Dim>::Advector(const CellGrid<Dim>& grid, Limiter limiter)
       row_flux_(size_of(grid.cells()[0] + 1), 0.0),
       difference_(plane_buffer_size(grid), 0.0),
       flux_(plane_buffer_size(grid), 0.0),
-      change_(size_of(grid.cell_count()), 0.0) {}
+      change_(size_of(grid.cell_count()), 0.0),
+      per_pore_volume_(size_of(grid.cell_count()), 0.0) {}
 
 template <int Dim>
 void Advector<Dim>::advance(const FaceField<Dim>& face_velocity, double dt,
                             std::span<const std::span<double>> fields) {
+  advance(face_velocity, dt, fields, {});
+}
+
+template <int Dim>
+void Advector<Dim>::advance(const FaceField<Dim>& face_velocity, double dt,
+                            std::span<const std::span<double>> fields,
+                            std::span<const double> porosity) {
+  if (!porosity.empty() && porosity.size() != size_of(grid_.cell_count())) {
+    throw std::invalid_argument("Advector: " + std::to_string(porosity.size()) +
+                                " porosities for " + std::to_string(grid_.cell_count()) + " cells");
+  }
+  for (const double n : porosity) {
+    if (!(n > 0.0 && n <= 1.0)) {
+      throw std::invalid_argument("Advector: a porosity must lie in (0, 1], got " +
+                                  std::to_string(n));
+    }
+  }
+  const bool porous =
+      std::any_of(porosity.begin(), porosity.end(), [](double n) { return n < 1.0; });
+  pores_ = porous ? porosity.data() : nullptr;
   if (!(dt >= 0.0) || !std::isfinite(dt)) {
     throw std::invalid_argument("Advector: time step must be finite and non-negative, got " +
                                 std::to_string(dt));
@@ -63,6 +102,11 @@ void Advector<Dim>::advance(const FaceField<Dim>& face_velocity, double dt,
   }
   set_face_courant_numbers(face_velocity, dt);
   for (const std::span<double> field : fields) {
+    profile_ = field.data();
+    if (pores_ != nullptr) {
+      for (std::size_t c = 0; c < field.size(); ++c) per_pore_volume_[c] = field[c] / pores_[c];
+      profile_ = per_pore_volume_.data();
+    }
     switch (limiter_) {
       case Limiter::first_order:
         advance_field<Limiter::first_order>(field);
@@ -137,7 +181,8 @@ void Advector<Dim>::add_row_fluxes(std::span<double> q, int row, bool last) {
   double* difference = row_difference_.data();
   double* flux = row_flux_.data();
   double* values = q.data() + row * n;
-  const double* value = values;
+  const double* value = profile_ + row * n;
+  const double* pores = pores_ == nullptr ? nullptr : pores_ + row * n;
   const double* courant = courant_[0].data() + row * (n + 1);
   difference[0] = 0.0;
   difference[n - 1] = 0.0;
@@ -148,11 +193,12 @@ void Advector<Dim>::add_row_fluxes(std::span<double> q, int row, bool last) {
   } else {
     for (int i = 1; i < n - 1; ++i) difference[i] = 0.0;
   }
-  flux[0] = courant[0] * value[0];
+  flux[0] = courant[0] * values[0];
   for (int f = 1; f < n; ++f) {
-    flux[f] = face_flux(courant[f], value[f - 1], difference[f - 1], value[f], difference[f]);
+    flux[f] = donor_flux(pores, f - 1, f, courant[f], value[f - 1], difference[f - 1], value[f],
+                         difference[f]);
   }
-  flux[n] = courant[n] * value[n - 1];
+  flux[n] = courant[n] * values[n - 1];
   double* cell_change = change_.data() + row * n;
   for (int i = 0; i < n; ++i) cell_change[i] = 0.0 + (flux[i] - flux[i + 1]);
   if (last) {
@@ -182,13 +228,15 @@ void Advector<Dim>::add_plane_fluxes(std::span<double> q, int direction, bool la
   double* current_flux = flux_.data() + s;
   for (int outer = 0; outer < rows; ++outer) {
     double* value = values + outer * s * n;  // cell i s + inner of this row
+    const double* profile = profile_ + outer * s * n;
+    const double* pores = pores_ == nullptr ? nullptr : pores_ + outer * s * n;
     double* cell_change = change + outer * s * n;
     const double* courant = courant_[direction].data() + outer * s * (n + 1);
     for (int inner = 0; inner < s; ++inner) previous_flux[inner] = courant[inner] * value[inner];
     for (int i = 0; i < n; ++i) {
       if (direction == 1) add_row_fluxes<limiter>(q, outer * n + i, false);
       // This cell row's limited differences (zero at the ends).
-      double* v = value + i * s;
+      const double* v = profile + i * s;
       if (limiter == Limiter::first_order || i == 0 || i == n - 1) {
         for (int inner = 0; inner < s; ++inner) current_difference[inner] = 0.0;
       } else {
@@ -200,11 +248,21 @@ void Advector<Dim>::add_plane_fluxes(std::span<double> q, int direction, bool la
       if (i > 0) {
         // Face row i, then cell row i - 1 is complete.
         const double* nu = courant + i * s;
+        const double* below = profile + (i - 1) * s;
         double* lower = value + (i - 1) * s;
         double* lower_change = cell_change + (i - 1) * s;
-        for (int inner = 0; inner < s; ++inner) {
-          current_flux[inner] = face_flux(nu[inner], lower[inner], previous_difference[inner],
-                                          v[inner], current_difference[inner]);
+        if (pores == nullptr) {
+          for (int inner = 0; inner < s; ++inner) {
+            current_flux[inner] = face_flux(nu[inner], below[inner], previous_difference[inner],
+                                            v[inner], current_difference[inner]);
+          }
+        } else {
+          for (int inner = 0; inner < s; ++inner) {
+            const int cell = i * s + inner;
+            current_flux[inner] =
+                pore_face_flux(nu[inner], below[inner], previous_difference[inner], pores[cell - s],
+                               v[inner], current_difference[inner], pores[cell]);
+          }
         }
         for (int inner = 0; inner < s; ++inner) {
           lower_change[inner] += previous_flux[inner] - current_flux[inner];

@@ -1054,7 +1054,8 @@ void IceSolver<Dim>::advect_and_update(double dt, StepReport& report) {
     }
     advector_.advance(
         face_velocity_[m], dt,
-        std::span<const std::span<double>>(fields.data(), total_energy ? dim + 4 : dim + 3));
+        std::span<const std::span<double>>(fields.data(), total_energy ? dim + 4 : dim + 3),
+        state_.porosity);
     // The kinetic energy the advection dissipated back into the internal
     // energy, then the primitive variables, in one pass; a bad cell is
     // reported by the checking pass below.
