@@ -139,7 +139,9 @@ Schema numerics_schema() {
       .optional("initial_time_step", Schema::number().positive().unit("s").default_value("1e-5"),
                 "First step.")
       .optional("min_time_step", Schema::number().positive().unit("s").default_value("1e-10"),
-                "A step below this ends the run as a numerical failure (exit 4).")
+                "A step the stability or refused steps bring below this ends the run as a "
+                "numerical failure (exit 4), with the state it failed from as a last snapshot; "
+                "a step cut short by a window end or an output time may be shorter.")
       .optional("max_time_step", Schema::number().non_negative().unit("s").default_value("0"),
                 "Largest step; 0: none.")
       .optional("max_step_growth", Schema::number().range(1.0, 10.0).default_value("1.2"),

@@ -177,8 +177,12 @@ class CaseRun {
         coupling_.read_medium(participant_, *solver_, false, 0.5 * dt);
       }
       StepReport report;
-      for (;;) {
-        if (!(dt >= c_.numerics.min_time_step)) {
+      // A step cut short by a window end or an output time may be shorter
+      // than min_time_step; the floor is on what the stability allows.
+      for (bool refused = false;; refused = true) {
+        if (!(dt >= c_.numerics.min_time_step) &&
+            (refused || !(run_.free_dt >= c_.numerics.min_time_step))) {
+          write_failure_snapshot(t);
           throw cosim::NumericalError(
               fmt::format("the time step {:.4g} s fell below numerics.min_time_step = {:.4g} s at "
                           "t = {:.9g} s (step {})",
@@ -308,8 +312,20 @@ class CaseRun {
                             report.courant};
       outputs_.append(*steps_csv_, row);
       if (snapshot_writer_) outputs_.write(*snapshot_writer_, t, fields_.fields(*solver_));
+      last_snapshot_time_ = t;
       if (t > 0.0) run_.snapshots.passed(t, tolerance_);
     }
+  }
+
+  // The state the steps were refused from (a refused step leaves it as it
+  // was) as one more snapshot, so that where and why the run failed can be
+  // looked at; not inside a window that may run again (its outputs are held
+  // until it converges) nor twice at one time.
+  void write_failure_snapshot(double t) {
+    if (!snapshot_writer_ || outputs_.holding() || !(t > last_snapshot_time_)) return;
+    snapshot_writer_->write(t, fields_.fields(*solver_));
+    spdlog::warn("the state at t = {:.9g} s, where the steps were refused, is snapshot {}", t,
+                 snapshot_writer_->snapshots_written() - 1);
   }
 
   void record_conserved(bool start) {
@@ -376,7 +392,8 @@ class CaseRun {
   RunBookkeeping saved_run_;
   SavedIceState<Dim> saved_solver_;
   double tolerance_;
-  std::size_t medium_window_ = 0;  // the window whose porous medium the solver holds
+  double last_snapshot_time_ = -infinity;  // of the last snapshot written or held
+  std::size_t medium_window_ = 0;          // the window whose porous medium the solver holds
   std::size_t windows_saved_ = 0;
   SnapshotFieldSet<Dim> fields_;
   cosim::HeldOutputs outputs_;
