@@ -96,6 +96,7 @@ TEST(IceCase, ReadsEveryKeyAndTheDefaults) {
             std::string::npos);
   EXPECT_TRUE(c.coupling.drag_in_solver);
   EXPECT_DOUBLE_EQ(c.coupling.minimum_porosity, 0.1);
+  EXPECT_DOUBLE_EQ(c.coupling.drag_viscosity, 0.0);
   EXPECT_TRUE(c.coupling.heat_exchange);
   EXPECT_FALSE(
       load_case_text(replaced(dam_break, "drag: ice, ", ""), "case.yaml").coupling.drag_in_solver);
@@ -131,6 +132,10 @@ TEST(IceCase, ErrorsNameTheKeyAndTheLine) {
       {"fill: water, velocity", "fill: water, pressure: 2.0e5, velocity", "hydrostatic"},
       {"drag: ice", "drag: solid", "coupling.drag"},
       {"minimum_porosity: 0.1", "minimum_porosity: 0.0", "coupling.minimum_porosity"},
+      {"minimum_porosity: 0.1,", "minimum_porosity: 0.1, drag_viscosity: 1.0e-3,",
+       "coupling.drag_viscosity': scales each fluid's drag by its viscosity, and material 'air'"},
+      {"minimum_porosity: 0.1,", "minimum_porosity: 0.1, drag_viscosity: -1.0,",
+       "coupling.drag_viscosity"},
       {"gauges: [{name: g1, point: [0.2, 0.01]}]",
        "wave_gauges: [{name: w, point: [0.2, 0.0], material: oil}]", "no material 'oil'"},
       {"gauges: [{name: g1, point: [0.2, 0.01]}]", "wave_gauges: [{name: w, point: [0.5, 0.0]}]",

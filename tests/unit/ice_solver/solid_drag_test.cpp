@@ -254,5 +254,46 @@ TEST(IceSolidDrag, BadDragInputIsRefused) {
   EXPECT_FALSE(solver.has_solid_drag());
 }
 
+TEST(IceSolidDrag, EachFluidTakesTheDragScaledByItsViscosity) {
+  // The Darcy column above, the drag received for a fluid of 1e-3 Pa s and
+  // the water twice as viscous: Darcy's velocity halves, at any step.
+  const CellGrid<1> grid = strip<1>(20, 2.0);
+  const double n = 0.4, k = 1.62e5, dp = 5.0e4, mu_drag = 1.0e-3, mu = 2.0e-3;
+  const double darcy = n * dp / (k * mu / mu_drag * 1.0);
+  std::vector<FluidMaterial> viscous = water();
+  viscous[0].viscosity = mu;
+  for (double dt : {1e-3, 2e-2}) {
+    IceSolver<1> solver(grid, viscous, ExchangeCoefficients::none(1),
+                        open_ends(101325.0 + dp, 101325.0), Eigen::Matrix<double, 1, 1>::Zero(),
+                        still_water(grid, 1.0));
+    std::vector<double> porosity(20, 1.0), drag(20, 0.0), density(20, 0.0);
+    for (int c = 5; c < 15; ++c) {
+      porosity[static_cast<std::size_t>(c)] = n;
+      drag[static_cast<std::size_t>(c)] = k;
+      density[static_cast<std::size_t>(c)] = 1e30;  // held
+    }
+    solver.set_porous_medium(porosity, {CellField(20, 0.0)}, PorosityChange::fill_pores);
+    solver.set_drag_viscosity(mu_drag);
+    solver.set_solid_drag(drag, density);
+    for (double t = 0.0; t < 0.5; t += dt) ASSERT_TRUE(solver.advance(dt).accepted);
+    const double u = solver.state().materials[0].velocity[0][10];
+    fmt::print(
+        "dt {:.0e}: U_f {:.6f} vs Darcy's with K mu / mu_drag {:.6f} ({:+.2e}, tolerance "
+        "2e-3)\n",
+        dt, u, darcy, u / darcy - 1.0);
+    EXPECT_NEAR(u / darcy, 1.0, 2e-3);
+  }
+}
+
+TEST(IceSolidDrag, ADragViscosityNeedsEveryFluidViscous) {
+  const CellGrid<1> grid = strip<1>(4, 1.0);
+  IceSolver<1> solver(grid, water(), ExchangeCoefficients::none(1), {},
+                      Eigen::Matrix<double, 1, 1>::Zero(), still_water(grid, 1.0));
+  EXPECT_THROW(solver.set_drag_viscosity(1e-3), std::invalid_argument);  // water() is inviscid
+  EXPECT_THROW(solver.set_drag_viscosity(-1.0), std::invalid_argument);
+  EXPECT_THROW(solver.set_drag_viscosity(NAN), std::invalid_argument);
+  EXPECT_NO_THROW(solver.set_drag_viscosity(0.0));
+}
+
 }  // namespace
 }  // namespace ice

@@ -195,6 +195,13 @@ Schema coupling_schema() {
                 "momentum_exchange_impulse (the job's momentum_exchange.solved_by: fluid).")
       .optional("minimum_porosity", Schema::number().range(1e-3, 1.0).default_value("0.05"),
                 "Floor of the porosity n = 1 - solid_fraction received.")
+      .optional("drag_viscosity", Schema::number().non_negative().unit("Pa s").default_value("0"),
+                "With drag: ice, the fluid viscosity the received drag_coefficient was computed "
+                "for (the job's momentum_exchange.drag.fluid_viscosity): each fluid's share of the "
+                "drag is then scaled by its own viscosity over this one, Darcy's drag being "
+                "linear in the viscosity (air in the pores of a dry soil is dragged some 55 times "
+                "less than water); every material then needs a viscosity. 0: every fluid takes "
+                "the coefficient as received.")
       .optional("heat_exchange", Schema::boolean().default_value("false"),
                 "Take part in the coupler's energy exchange: write fluid_temperature and "
                 "fluid_heat_capacity, read heat_exchange_energy (Tran et al., MPMICE, eq. 23).");

@@ -55,6 +55,17 @@ class CaseReader {
     const Node coupling = root_["coupling"];
     c.coupling.drag_in_solver = coupling.get<std::string>("drag") == "ice";
     c.coupling.minimum_porosity = coupling.get<double>("minimum_porosity");
+    c.coupling.drag_viscosity = coupling.get<double>("drag_viscosity");
+    if (c.coupling.drag_viscosity > 0.0) {
+      for (const FluidMaterial& m : c.materials) {
+        if (!(m.viscosity > 0.0)) {
+          coupling["drag_viscosity"].fail(fmt::format(
+              "scales each fluid's drag by its viscosity, and material '{}' has none (give it "
+              "materials.{}.viscosity)",
+              m.name, m.name));
+        }
+      }
+    }
     c.coupling.heat_exchange = coupling.get<bool>("heat_exchange");
     return c;
   }

@@ -73,7 +73,10 @@ void PorousCoupling<Dim>::read_medium(const cosim::Participant& participant, Ice
   }
   solver.set_porous_medium(porosity_, solid_velocity_,
                            first_window ? PorosityChange::fill_pores : PorosityChange::displace);
-  if (description_.drag_in_solver) solver.set_solid_drag(drag_, solid_density_);
+  if (description_.drag_in_solver) {
+    if (first_window) solver.set_drag_viscosity(description_.drag_viscosity);
+    solver.set_solid_drag(drag_, solid_density_);
+  }
   if (!warned_) {
     warned_ = true;
     const double limit = explicit_window_limit(solver);

@@ -61,8 +61,9 @@ void IceSolver<Dim>::exchange_cell_momentum(double dt) {
     if (drag) {
       weight[solid] = solid_bulk_density_[c];
       for (std::size_t m = 0; m < n; ++m) {
-        coefficient[m * total + solid] =
-            solid_drag_[c] * state_.materials[m].volume_fraction[c] / state_.porosity[c];
+        coefficient[m * total + solid] = solid_drag_[c] * drag_share_[m] *
+                                         state_.materials[m].volume_fraction[c] /
+                                         state_.porosity[c];
       }
       for (std::size_t d = 0; d < dim; ++d) value[solid * dim + d] = solid_exchange_velocity_[d][c];
     }

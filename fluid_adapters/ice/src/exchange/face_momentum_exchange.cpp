@@ -147,7 +147,8 @@ void IceSolver<Dim>::exchange_face_momentum(double dt) {
           }
         }
         for (std::size_t m = 0; m < n; ++m)
-          coefficient[m * total + solid] = drag_coefficient * fraction[m] / porosity;
+          coefficient[m * total + solid] =
+              drag_coefficient * drag_share_[m] * fraction[m] / porosity;
         for (std::size_t m = 0; m < n; ++m) value[m] = face_velocity_[m][at(d)][at(f)];
         // The drag acts on the fluids' flux relative to the solid,
         // q = F - U_s with F the mixture's volume flux through the face: the

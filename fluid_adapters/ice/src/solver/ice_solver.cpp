@@ -195,6 +195,7 @@ IceSolver<Dim>::IceSolver(const CellGrid<Dim>& grid, std::vector<FluidMaterial> 
       diffusion_(grid, sides) {
   const std::size_t n = materials_.size();
   const std::size_t cells = at(grid_.cell_count());
+  drag_share_.assign(n, 1.0);
   require(n >= 1, "at least one material is needed");
   require(n <= static_cast<std::size_t>(cosim::exchange::kMaxMaterials),
           fmt::format("at most {} materials", cosim::exchange::kMaxMaterials));
@@ -350,6 +351,24 @@ void IceSolver<Dim>::set_solid_drag(std::span<const double> drag_coefficient,
   solid_bulk_density_.assign(solid_bulk_density.begin(), solid_bulk_density.end());
   solid_impulse_.resize(cells * static_cast<std::size_t>(Dim), 0.0);
   solid_drag_on_ = true;
+}
+
+template <int Dim>
+void IceSolver<Dim>::set_drag_viscosity(double viscosity) {
+  if (!(viscosity >= 0.0) || !std::isfinite(viscosity)) {
+    throw std::invalid_argument(
+        fmt::format("IceSolver: the drag's viscosity {} Pa s must be finite and >= 0", viscosity));
+  }
+  drag_share_.assign(count(), 1.0);
+  if (viscosity == 0.0) return;
+  for (std::size_t m = 0; m < count(); ++m) {
+    if (!(materials_[m].viscosity > 0.0)) {
+      throw std::invalid_argument(
+          fmt::format("IceSolver: material '{}' has no viscosity to scale the drag of {} Pa s by",
+                      materials_[m].name, viscosity));
+    }
+    drag_share_[m] = materials_[m].viscosity / viscosity;
+  }
 }
 
 template <int Dim>
@@ -584,8 +603,8 @@ void IceSolver<Dim>::porous_face_velocity(std::size_t m, int d, int f, int lower
     const double porosity = 0.5 * (n_l + n_r);
     const double fraction =
         0.5 * (material.volume_fraction[at(lower)] + material.volume_fraction[at(upper)]);
-    const double k =
-        face_drag(lower, upper, porosity, d, f, previous_face_velocity_) * fraction / porosity;
+    const double k = face_drag(lower, upper, porosity, d, f, previous_face_velocity_) *
+                     drag_share_[m] * fraction / porosity;
     const double carried = 0.5 * (rb_l + rb_r) * std::abs(mean_u) / dx;
     const double memory = k > 0.0 ? k / (k + carried) : 0.0;
     mean_u += memory * (previous_face_velocity_[m][at(d)][at(f)] - mean_u);

@@ -66,6 +66,10 @@ struct CouplingDescription {
   // fluid); false: the coupler solves it and sends momentum_exchange_impulse.
   bool drag_in_solver = false;
   double minimum_porosity = 0.05;  // floor of n = 1 - phi_s received
+  // The viscosity the received drag coefficient is for [Pa s]; each fluid's
+  // share is scaled by its own over it (IceSolver::set_drag_viscosity). 0:
+  // as received.
+  double drag_viscosity = 0.0;
   // true: write fluid_temperature and fluid_heat_capacity and read the heat
   // of the coupler's energy exchange (`heat_exchange_energy`).
   bool heat_exchange = false;

@@ -124,6 +124,13 @@ class IceSolver {
   void set_solid_drag(std::span<const double> drag_coefficient,
                       std::span<const double> solid_bulk_density);
   bool has_solid_drag() const { return solid_drag_on_; }
+  // The viscosity [Pa s] the received drag coefficient was computed for:
+  // each fluid's share of it is then scaled by its own viscosity over this
+  // one (Darcy's drag is linear in the viscosity: air in the pores of a dry
+  // soil is dragged some 55 times less than water). 0, the default: every
+  // fluid takes the coefficient as received. Throws std::invalid_argument
+  // for a negative value, or a positive one with an inviscid material.
+  void set_drag_viscosity(double viscosity);
   // The momentum [kg m/s] the solid has received from the drag since the last
   // call (Dim components per cell, cell-major); then starts again from zero.
   void take_solid_impulse(std::span<double> impulse);
@@ -284,6 +291,8 @@ class IceSolver {
   std::vector<FaceField<Dim>> flow_direction_;          // the upwind sides the divergence took
   CellField signed_increment_;
   bool solid_drag_on_ = false;
+  // Per fluid material, the factor on its share of the solid drag.
+  std::vector<double> drag_share_;
   CellField solid_drag_;
   CellField solid_bulk_density_;
   std::vector<double> solid_impulse_;
