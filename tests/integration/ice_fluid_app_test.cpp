@@ -102,12 +102,16 @@ TEST(IceFluidApp, BadInputExitsTwoNamingFileKeyAndLine) {
   }
 }
 
+// The column case with its first step and step floor, run in `dir`.
+ProcessResult run_with_steps(const fs::path& dir, const char* initial, const char* floor) {
+  return run_case(dir, std::string(column_case) + "numerics: {initial_time_step: " + initial +
+                           ", min_time_step: " + floor + "}\n");
+}
+
 TEST(IceFluidApp, NumericalFailureExitsFour) {
   // A step floor above any step the flow allows.
-  const fs::path dir = fresh_directory("ice_fluid_app_numerical");
-  std::string text = column_case;
-  text += "numerics: {initial_time_step: 1.0e-2, min_time_step: 1.0e-2}\n";
-  const ProcessResult r = run_case(dir, text);
+  const ProcessResult r =
+      run_with_steps(fresh_directory("ice_fluid_app_numerical"), "1.0e-2", "1.0e-2");
   EXPECT_EQ(r.exit_code, 4) << r.output;
   EXPECT_THAT(r.output, HasSubstr("min_time_step"));
 }
@@ -116,15 +120,12 @@ TEST(IceFluidApp, AFailureAfterSomeStepsLeavesTheStateItFailedFromAsALastSnapsho
   // The collapsing column's flow soon needs steps below 4 ms (at t = 0.025 s):
   // snapshots at 0, 0.01 and 0.02 s, then the state the steps were refused from.
   const fs::path dir = fresh_directory("ice_fluid_app_failure_snapshot");
-  std::string text = column_case;
-  text += "numerics: {initial_time_step: 1.0e-2, min_time_step: 4.0e-3}\n";
-  const ProcessResult r = run_case(dir, text);
+  const ProcessResult r = run_with_steps(dir, "1.0e-2", "4.0e-3");
   ASSERT_EQ(r.exit_code, 4) << r.output;
   const fs::path out = dir / "run";
   EXPECT_TRUE(fs::exists(out / "ice_000003.h5"));
   EXPECT_FALSE(fs::exists(out / "ice_000004.h5"));
-  const std::string index = read_text(out / "ice.xdmf");
-  EXPECT_THAT(index, HasSubstr("ice_000003.h5"));
+  EXPECT_THAT(read_text(out / "ice.xdmf"), HasSubstr("ice_000003.h5"));
   EXPECT_THAT(read_text(out / "log.txt"), HasSubstr("where the steps were refused, is snapshot 3"));
 }
 
@@ -132,9 +133,7 @@ TEST(IceFluidApp, AStepCutShortByAnOutputTimeMayBeShorterThanTheFloor) {
   // 2 ms steps reach 0.039 s; the step to the snapshot at 0.04 s is 0.76 ms,
   // below the 1 ms floor, which is on the steps the stability allows.
   const fs::path dir = fresh_directory("ice_fluid_app_cut_step");
-  std::string text = column_case;
-  text += "numerics: {initial_time_step: 2.0e-3, min_time_step: 1.0e-3}\n";
-  const ProcessResult r = run_case(dir, text);
+  const ProcessResult r = run_with_steps(dir, "2.0e-3", "1.0e-3");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(read_csv(dir / "run" / "steps.csv").size(), 6u);
 }

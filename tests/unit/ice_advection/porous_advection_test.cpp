@@ -20,6 +20,19 @@ using ice::Limiter;
 
 constexpr Limiter all_limiters[] = {Limiter::first_order, Limiter::minmod, Limiter::van_leer};
 
+// Random velocities on interior faces, zero on the box's walls.
+ice::FaceField<2> random_closed_box_velocity(const ice::CellGrid<2>& grid, std::mt19937& rng) {
+  std::uniform_real_distribution<double> speed(-1.0, 1.0);
+  ice::FaceField<2> u = ice::make_face_field(grid);
+  for (int d = 0; d < 2; ++d) {
+    for (int f = 0; f < grid.face_count(d); ++f) {
+      const bool wall = grid.lower_cell(d, f) == -1 || grid.upper_cell(d, f) == -1;
+      u[d][f] = wall ? 0.0 : speed(rng);
+    }
+  }
+  return u;
+}
+
 double total(const std::vector<double>& values) {
   double sum = 0.0;
   for (const double v : values) sum += v;
@@ -68,14 +81,8 @@ TEST(PorousAdvection, AFilledPoreSpaceCarriesTheUpwindVolumeAcrossAJumpInPorosit
 TEST(PorousAdvection, AnOpenDomainAdvectsBitForBitAsWithoutAPorosity) {
   const ice::CellGrid<2> grid(Eigen::Vector2d::Zero(), Eigen::Vector2d(0.1, 0.13), {9, 7});
   std::mt19937 rng(7);
-  std::uniform_real_distribution<double> value(0.5, 1.5), speed(-1.0, 1.0);
-  ice::FaceField<2> u = ice::make_face_field(grid);
-  for (int d = 0; d < 2; ++d) {
-    for (int f = 0; f < grid.face_count(d); ++f) {
-      const bool wall = grid.lower_cell(d, f) == -1 || grid.upper_cell(d, f) == -1;
-      u[d][f] = wall ? 0.0 : speed(rng);
-    }
-  }
+  std::uniform_real_distribution<double> value(0.5, 1.5);
+  const ice::FaceField<2> u = random_closed_box_velocity(grid, rng);
   const double dt = ice::advection_time_step(grid, u, 0.5);
   std::vector<double> a(static_cast<std::size_t>(grid.cell_count()));
   for (double& v : a) v = value(rng);
@@ -95,7 +102,7 @@ TEST(PorousAdvection, AnOpenDomainAdvectsBitForBitAsWithoutAPorosity) {
 TEST(PorousAdvection, ConservesTheTotalInAClosedBoxWithARandomPorosity) {
   const ice::CellGrid<2> grid(Eigen::Vector2d::Zero(), Eigen::Vector2d(0.1, 0.1), {12, 10});
   std::mt19937 rng(11);
-  std::uniform_real_distribution<double> pores(0.05, 1.0), fill(0.5, 1.5), speed(-1.0, 1.0);
+  std::uniform_real_distribution<double> pores(0.05, 1.0), fill(0.5, 1.5);
   const auto cells = static_cast<std::size_t>(grid.cell_count());
   std::vector<double> porosity(cells);
   for (double& n : porosity) n = pores(rng);
@@ -106,13 +113,7 @@ TEST(PorousAdvection, ConservesTheTotalInAClosedBoxWithARandomPorosity) {
     ice::Advector<2> advector(grid, limiter);
     double worst = 0.0;
     for (int step = 0; step < 20; ++step) {
-      ice::FaceField<2> u = ice::make_face_field(grid);
-      for (int d = 0; d < 2; ++d) {
-        for (int f = 0; f < grid.face_count(d); ++f) {
-          const bool wall = grid.lower_cell(d, f) == -1 || grid.upper_cell(d, f) == -1;
-          u[d][f] = wall ? 0.0 : speed(rng);
-        }
-      }
+      const ice::FaceField<2> u = random_closed_box_velocity(grid, rng);
       const double dt = ice::advection_time_step(grid, u, 0.25);
       advector.advance(u, dt, std::vector<std::span<double>>{q}, porosity);
       worst = std::max(worst, std::abs(total(q) - start) / start);

@@ -93,27 +93,40 @@ TEST(IceSolidDrag, UniformRelaxationIsTheImplicitExchangeAndKeepsMomentum) {
   EXPECT_LT(worst, 1e-9);
 }
 
-TEST(IceSolidDrag, SteadyFlowThroughAHeldColumnIsDarcysAtAnyStep) {
-  // 20 cells over 2 m, the middle 10 porous (n = 0.4), dp = 50 kPa.
+// 20 cells over 2 m, the middle 10 porous (n = 0.4) around a held solid
+// with drag K, dp = 50 kPa across: the state after 0.5 s of steps dt
+// (steady), with the drag received for a fluid of `drag_viscosity`.
+constexpr double column_porosity = 0.4, column_drag = 1.62e5, column_dp = 5.0e4;
+
+std::unique_ptr<IceSolver<1>> darcy_column(const std::vector<FluidMaterial>& materials, double dt,
+                                           double drag_viscosity = 0.0) {
   const CellGrid<1> grid = strip<1>(20, 2.0);
-  const double n = 0.4, k = 1.62e5, dp = 5.0e4;
-  const double darcy = n * dp / (k * 1.0);  // n grad p = K U_f, interstitial
+  auto solver = std::make_unique<IceSolver<1>>(
+      grid, materials, ExchangeCoefficients::none(1), open_ends(101325.0 + column_dp, 101325.0),
+      Eigen::Matrix<double, 1, 1>::Zero(), still_water(grid, 1.0));
+  std::vector<double> porosity(20, 1.0), drag(20, 0.0), density(20, 0.0);
+  for (std::size_t c = 5; c < 15; ++c) {
+    porosity[c] = column_porosity;
+    drag[c] = column_drag;
+    density[c] = 1e30;  // held
+  }
+  solver->set_porous_medium(porosity, {CellField(20, 0.0)}, PorosityChange::fill_pores);
+  solver->set_drag_viscosity(drag_viscosity);
+  solver->set_solid_drag(drag, density);
+  for (double t = 0.0; t < 0.5; t += dt) {
+    if (!solver->advance(dt).accepted) return nullptr;
+  }
+  return solver;
+}
+
+TEST(IceSolidDrag, SteadyFlowThroughAHeldColumnIsDarcysAtAnyStep) {
+  const double n = column_porosity;
+  const double darcy = n * column_dp / (column_drag * 1.0);  // n grad p = K U_f, interstitial
   for (double dt : {1e-3, 2e-2}) {
-    FluidState<1> state = still_water(grid, 1.0);
-    IceSolver<1> solver(grid, water(), ExchangeCoefficients::none(1),
-                        open_ends(101325.0 + dp, 101325.0), Eigen::Matrix<double, 1, 1>::Zero(),
-                        state);
-    std::vector<double> porosity(20, 1.0), drag(20, 0.0), density(20, 0.0);
-    for (int c = 5; c < 15; ++c) {
-      porosity[static_cast<std::size_t>(c)] = n;
-      drag[static_cast<std::size_t>(c)] = k;
-      density[static_cast<std::size_t>(c)] = 1e30;  // held
-    }
-    solver.set_porous_medium(porosity, {CellField(20, 0.0)}, PorosityChange::fill_pores);
-    solver.set_solid_drag(drag, density);
-    for (double t = 0.0; t < 0.5; t += dt) ASSERT_TRUE(solver.advance(dt).accepted);
-    const double u = solver.state().materials[0].velocity[0][10];
-    const double flux = solver.face_velocity(0)[0][3];  // free water upstream
+    const auto solver = darcy_column(water(), dt);
+    ASSERT_TRUE(solver);
+    const double u = solver->state().materials[0].velocity[0][10];
+    const double flux = solver->face_velocity(0)[0][3];  // free water upstream
     fmt::print("dt {:.0e}: U_f {:.6f} vs Darcy {:.6f} ({:+.2e}); upstream flux vs n U_f {:+.2e}\n",
                dt, u, darcy, u / darcy - 1.0, flux / (n * darcy) - 1.0);
     EXPECT_NEAR(u / darcy, 1.0, 2e-3);
@@ -257,26 +270,14 @@ TEST(IceSolidDrag, BadDragInputIsRefused) {
 TEST(IceSolidDrag, EachFluidTakesTheDragScaledByItsViscosity) {
   // The Darcy column above, the drag received for a fluid of 1e-3 Pa s and
   // the water twice as viscous: Darcy's velocity halves, at any step.
-  const CellGrid<1> grid = strip<1>(20, 2.0);
-  const double n = 0.4, k = 1.62e5, dp = 5.0e4, mu_drag = 1.0e-3, mu = 2.0e-3;
-  const double darcy = n * dp / (k * mu / mu_drag * 1.0);
+  const double mu_drag = 1.0e-3, mu = 2.0e-3;
+  const double darcy = column_porosity * column_dp / (column_drag * mu / mu_drag * 1.0);
   std::vector<FluidMaterial> viscous = water();
   viscous[0].viscosity = mu;
   for (double dt : {1e-3, 2e-2}) {
-    IceSolver<1> solver(grid, viscous, ExchangeCoefficients::none(1),
-                        open_ends(101325.0 + dp, 101325.0), Eigen::Matrix<double, 1, 1>::Zero(),
-                        still_water(grid, 1.0));
-    std::vector<double> porosity(20, 1.0), drag(20, 0.0), density(20, 0.0);
-    for (int c = 5; c < 15; ++c) {
-      porosity[static_cast<std::size_t>(c)] = n;
-      drag[static_cast<std::size_t>(c)] = k;
-      density[static_cast<std::size_t>(c)] = 1e30;  // held
-    }
-    solver.set_porous_medium(porosity, {CellField(20, 0.0)}, PorosityChange::fill_pores);
-    solver.set_drag_viscosity(mu_drag);
-    solver.set_solid_drag(drag, density);
-    for (double t = 0.0; t < 0.5; t += dt) ASSERT_TRUE(solver.advance(dt).accepted);
-    const double u = solver.state().materials[0].velocity[0][10];
+    const auto solver = darcy_column(viscous, dt, mu_drag);
+    ASSERT_TRUE(solver);
+    const double u = solver->state().materials[0].velocity[0][10];
     fmt::print(
         "dt {:.0e}: U_f {:.6f} vs Darcy's with K mu / mu_drag {:.6f} ({:+.2e}, tolerance "
         "2e-3)\n",
