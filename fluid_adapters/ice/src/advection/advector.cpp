@@ -38,9 +38,8 @@ inline double face_flux(double nu, double lower, double lower_difference, double
 // its pore space, q / n, and the slab carries it in the donor's pores.
 inline double pore_face_flux(double nu, double lower, double lower_difference, double lower_pores,
                              double upper, double upper_difference, double upper_pores) {
-  const double from_lower = lower + 0.5 * (1.0 - nu) * lower_difference;
-  const double from_upper = upper - 0.5 * (1.0 + nu) * upper_difference;
-  return nu * (nu >= 0.0 ? lower_pores * from_lower : upper_pores * from_upper);
+  return (nu >= 0.0 ? lower_pores : upper_pores) *
+         face_flux(nu, lower, lower_difference, upper, upper_difference);
 }
 
 // One face's flux from the profile values (q, or q / n with `pores`).
