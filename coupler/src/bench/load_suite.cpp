@@ -29,6 +29,9 @@ namespace {
 
 const std::set<std::string> roles{"soil", "fluid", "case", "job"};
 
+// A report's line, with the backend's name in front.
+constexpr std::size_t max_reason_length = 300;
+
 const BackendDescriptor& backend_from(const std::string& name, const config::Node& where,
                                       const BackendCatalog& backends) {
   if (const auto* b = backends.find(name)) return *b;
@@ -285,6 +288,19 @@ Scenario read_scenario(const config::Node& node, const BackendCatalog& backends)
                            "soil overrides need a coupled scenario (`soil`)");
   for (const auto& [name, b] : node["backends"].entries())
     s.backends.push_back(read_backend(name, b, has_soil, backends));
+  if (auto absent = node.find("not_represented")) {
+    for (const auto& [name, reason] : absent->entries()) {
+      NotRepresented n{&backend_from(name, reason, backends), reason.as<std::string>(),
+                       reason.key_location()};
+      for (const auto& b : s.backends)
+        if (b.backend == n.backend)
+          reason.fail_at_key(fmt::format("'{}' runs the scenario (under `backends`)", name));
+      if (n.reason.find('\n') != std::string::npos || n.reason.size() > max_reason_length)
+        reason.fail(fmt::format("say why in one line of at most {} characters (here {})",
+                                max_reason_length, n.reason.size()));
+      s.not_represented.push_back(std::move(n));
+    }
+  }
   std::set<std::string> names;
   if (auto metrics = node.find("metrics")) {
     for (const auto& m : metrics->items()) {

@@ -428,6 +428,8 @@ void write_report(const fs::path& file, const Suite& suite, const std::vector<Ru
           notes.push_back(fmt::format("{}, {}: {}", run_label(*r->run), s.metrics[i].name,
                                       first_line(r->metrics[i].note)));
     for (const auto& n : convergence_notes(s, runs)) notes.push_back(n);
+    for (const auto& n : s.not_represented)
+      notes.push_back(fmt::format("**{}** not represented: {}", n.backend->name, n.reason));
     for (const auto& n : notes) md << "- " << n << "\n";
     if (!notes.empty()) md << "\n";
     if (context.plots) {

@@ -123,6 +123,14 @@ struct MetricSpec {
   std::optional<double> tolerance_for(const std::string& backend) const;
 };
 
+// A backend the scenario cannot run, and why in one line (a measured
+// reason): the report lists it beside the backends that ran.
+struct NotRepresented {
+  const BackendDescriptor* backend = nullptr;
+  std::string reason;
+  SourceLocation where;
+};
+
 struct Scenario {
   std::string name;
   std::string title;
@@ -130,6 +138,7 @@ struct Scenario {
   std::optional<Coupling> coupling;
   OverrideSet overrides;  // soil and job overrides shared by every backend
   std::vector<BackendRuns> backends;
+  std::vector<NotRepresented> not_represented;
   std::vector<MetricSpec> metrics;
   SourceLocation where;
 };

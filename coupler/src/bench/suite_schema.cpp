@@ -294,6 +294,9 @@ Schema scenario_schema() {
       .optional("full", resolution_schema(), "Overrides at --resolution full.")
       .required("backends", Schema::map_of(backend_schema()).length(1, 5),
                 "ice | openfoam | swe | mpm | coupler -> how it runs the scenario.")
+      .optional("not_represented", Schema::map_of(Schema::string().non_empty()),
+                "Backends that cannot run the scenario -> why, in one line with the measured "
+                "reason (shown in the report beside those that ran).")
       .optional("metrics", Schema::sequence(metric_schema()).default_value("[]"),
                 "What the report measures.");
   return s;

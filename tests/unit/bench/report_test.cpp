@@ -108,5 +108,19 @@ TEST(Report, TheMarkdownTableKeepsItsColumns) {
   EXPECT_EQ(iterations, "| iterations per window (median) | | 4.5 | 1 |");
 }
 
+TEST(Report, NamesTheBackendsThatCannotRunAScenarioAndWhy) {
+  ScratchDirectory dir;
+  TwoBackends b;
+  b.suite.scenarios[0].not_represented.push_back(
+      {&backend("swe"), "no pores in a depth-averaged fluid", {}});
+  write_report(dir.path() / "report.md", b.suite, b.results,
+               {"test machine", "now", Resolution::coarse, false, "none"});
+  std::ifstream in(dir.path() / "report.md");
+  std::string line, found;
+  while (std::getline(in, line))
+    if (line.find("not represented") != std::string::npos) found = line;
+  EXPECT_EQ(found, "- **swe** not represented: no pores in a depth-averaged fluid");
+}
+
 }  // namespace
 }  // namespace cosim::bench

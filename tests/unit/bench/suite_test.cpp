@@ -32,6 +32,7 @@ scenarios:
         fluid: foam.yaml
         set: {soil: {grid.cells: [4, 2]}, job: {window: 0.2}}
         full: {set: {fluid: {end_time: 2.0}}}
+    not_represented: {swe: "a 1D shallow-water fluid has no pores; measured: none"}
     metrics:
       - name: speed
         unit: m/s
@@ -70,6 +71,9 @@ TEST(Suite, ReadsScenariosBackendsOverridesAndMetrics) {
   EXPECT_EQ(s.metrics[1].error.norm, "max_abs");
   EXPECT_DOUBLE_EQ(s.metrics[1].error.scale, 2.0);
   EXPECT_FALSE(s.metrics[1].tolerance_for("ice").has_value());
+  ASSERT_EQ(s.not_represented.size(), 1u);
+  EXPECT_EQ(s.not_represented[0].backend->name, "swe");
+  EXPECT_EQ(s.not_represented[0].reason, "a 1D shallow-water fluid has no pores; measured: none");
 }
 
 // Each mistake is refused before anything runs, at its file:line and key.
@@ -130,6 +134,12 @@ INSTANTIATE_TEST_SUITE_P(
                  "{csv: ref.csv, x: t}", "either `column`"},
         BadSuite{"a negative time", "variable: velocity_x, at: end", "variable: velocity_x, at: -1",
                  "must not be negative"},
+        BadSuite{"a reason for a backend that runs",
+                 "not_represented: {swe:", "not_represented: {ice:", "'ice' runs the scenario"},
+        BadSuite{"a reason for an unknown backend",
+                 "not_represented: {swe:", "not_represented: {sve:", "unknown backend 'sve'"},
+        BadSuite{"a reason of more than one line", "has no pores; measured",
+                 "has no pores\\nmeasured", "say why in one line"},
         BadSuite{"a duplicate metric", "      - name: curve", "      - name: speed",
                  "a second metric named 'speed'"}));
 
