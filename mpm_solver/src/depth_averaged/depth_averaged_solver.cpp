@@ -1,0 +1,330 @@
+#include "mpm/depth_averaged/depth_averaged_solver.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "cosim/error.hpp"
+#include "mpm/shape/quadratic_bspline_kernel.hpp"
+#include "mpm/shape/stencil.hpp"
+
+namespace mpm {
+
+namespace {
+
+using Kernel = QuadraticBsplineKernel;
+using GroundStencil = Stencil<2, Kernel>;
+
+GroundStencil stencil_at(const Vec<2>& x, const GridGeometry<2>& grid) {
+  GroundStencil s;
+  s.evaluate(x, Vec<2>::Zero(), grid);
+  return s;
+}
+
+bool inside(const Vec<2>& x, const GridGeometry<2>& grid) {
+  const Vec<2> upper = grid.upper();
+  return x[0] >= grid.origin[0] && x[0] <= upper[0] && x[1] >= grid.origin[1] && x[1] <= upper[1];
+}
+
+}  // namespace
+
+DepthAveragedSolver::DepthAveragedSolver(DepthAveragedSettings settings,
+                                         std::vector<DepthAveragedMaterial> materials,
+                                         DepthAveragedParticles particles)
+    : settings_(std::move(settings)),
+      materials_(std::move(materials)),
+      particles_(std::move(particles)) {
+  const auto& grid = settings_.grid;
+  for (int d = 0; d < 2; ++d) {
+    if (grid.cells[d] < 2)
+      throw std::invalid_argument("the ground grid needs at least 2 cells in each direction");
+    if (!(grid.spacing[d] > 0.0))
+      throw std::invalid_argument("the ground grid's spacing must be positive");
+    nodes_[d] = Kernel::dofs(grid.cells[d]);
+  }
+  if (!(settings_.flip_fraction >= 0.0 && settings_.flip_fraction <= 1.0))
+    throw std::invalid_argument("flip_fraction must be in [0, 1]");
+  if (!(settings_.courant > 0.0 && settings_.courant <= 1.0))
+    throw std::invalid_argument("courant must be in (0, 1]");
+  if (materials_.empty()) throw std::invalid_argument("no material");
+  for (const auto& m : materials_) m.check();
+  for (std::size_t p = 0; p < particles_.size(); ++p) {
+    const int m = particles_.material[p];
+    if (m < 0 || m >= static_cast<int>(materials_.size()))
+      throw std::invalid_argument(fmt::format("point {} has no material {}", p, m));
+    if (!inside(particles_.position[p], grid))
+      throw std::invalid_argument(fmt::format("point {} at ({}, {}) is outside the grid", p,
+                                              particles_.position[p][0],
+                                              particles_.position[p][1]));
+    if (!(particles_.volume[p] > 0.0) || !(particles_.area[p] > 0.0))
+      throw std::invalid_argument(fmt::format("point {} has no volume or no area", p));
+  }
+  const std::size_t n = static_cast<std::size_t>(nodes_[0]) * static_cast<std::size_t>(nodes_[1]);
+  area_.assign(n, 0.0);
+  mass_.assign(n, 0.0);
+  momentum_.assign(n, Vec<2>::Zero());
+  new_momentum_.assign(n, Vec<2>::Zero());
+  force_.assign(n, Vec<2>::Zero());
+  volume_.assign(n, 0.0);
+  depth_.assign(n, 0.0);
+  friction_.assign(n, 0.0);
+  stopped_.assign(n, 0);
+  compute_node_areas();
+  clear_grid();
+  transfer_points_to_grid();
+  compute_depth();
+}
+
+// a_i = integral of N_i over the grid, by two-point Gauss quadrature per
+// direction (exact for the piecewise quadratic N_i).
+void DepthAveragedSolver::compute_node_areas() {
+  const auto& grid = settings_.grid;
+  const double g = 0.5 / std::sqrt(3.0);
+  const double weight = 0.25 * grid.cell_volume();
+  for (int cy = 0; cy < grid.cells[1]; ++cy)
+    for (int cx = 0; cx < grid.cells[0]; ++cx)
+      for (double qy : {0.5 - g, 0.5 + g})
+        for (double qx : {0.5 - g, 0.5 + g}) {
+          const Vec<2> x{grid.origin[0] + (cx + qx) * grid.spacing[0],
+                         grid.origin[1] + (cy + qy) * grid.spacing[1]};
+          stencil_at(x, grid).for_each(
+              [&](std::size_t i, double N, const Vec<2>&) { area_[i] += N * weight; });
+        }
+}
+
+Vec<2> DepthAveragedSolver::node_position(std::size_t node) const {
+  const auto& grid = settings_.grid;
+  const int i = static_cast<int>(node % static_cast<std::size_t>(nodes_[0]));
+  const int j = static_cast<int>(node / static_cast<std::size_t>(nodes_[0]));
+  return {grid.origin[0] + Kernel::dof_coordinate(i, grid.cells[0]) * grid.spacing[0],
+          grid.origin[1] + Kernel::dof_coordinate(j, grid.cells[1]) * grid.spacing[1]};
+}
+
+double DepthAveragedSolver::depth_at(const Vec<2>& x) const {
+  double h = 0.0;
+  stencil_at(x, settings_.grid).for_each([&](std::size_t i, double N, const Vec<2>&) {
+    h += N * depth_[i];
+  });
+  return h;
+}
+
+double DepthAveragedSolver::cohesion(std::size_t p) const {
+  return materials_[static_cast<std::size_t>(particles_.material[p])].cohesion *
+         (1.0 - particles_.damage[p]);
+}
+
+double DepthAveragedSolver::earth_pressure_coefficient(std::size_t p) const {
+  const auto& m = materials_[static_cast<std::size_t>(particles_.material[p])];
+  return settings_.earth_pressure.coefficient(m.internal_friction_angle,
+                                              particles_.areal_strain_rate[p]);
+}
+
+double DepthAveragedSolver::stable_time_step() const {
+  const double g_n = settings_.terrain.normal_gravity();
+  double fastest = 0.0;
+  for (std::size_t p = 0; p < particles_.size(); ++p) {
+    const auto& m = materials_[static_cast<std::size_t>(particles_.material[p])];
+    // The wave speed with the larger of K's two values, as K may switch within the step.
+    const double K =
+        std::max(settings_.earth_pressure.coefficient(m.internal_friction_angle, 1.0),
+                 settings_.earth_pressure.coefficient(m.internal_friction_angle, -1.0));
+    fastest =
+        std::max(fastest, particles_.velocity[p].norm() + std::sqrt(K * g_n * particles_.depth(p)));
+  }
+  if (fastest == 0.0) return std::numeric_limits<double>::infinity();
+  return settings_.courant * settings_.grid.spacing.minCoeff() / fastest;
+}
+
+void DepthAveragedSolver::step(double dt) {
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw std::invalid_argument(fmt::format("a step must be positive and finite, not {}", dt));
+  clear_grid();
+  transfer_points_to_grid();
+  compute_depth();
+  add_lateral_thrust();
+  advance_grid_momentum(dt);
+  apply_walls();  // first: the walls' reaction to the thrust is no motion for friction to resist
+  apply_basal_friction(dt);
+  transfer_grid_to_points(dt);
+  degrade_cohesion(dt);
+  split_stretched_points();
+  time_ += dt;
+}
+
+long DepthAveragedSolver::advance_to(double end_time) {
+  long steps = 0;
+  while (time_ < end_time * (1.0 - 1e-14)) {
+    double dt = std::min(stable_time_step(), end_time - time_);
+    if (!std::isfinite(dt)) dt = end_time - time_;
+    step(dt);
+    ++steps;
+  }
+  return steps;
+}
+
+void DepthAveragedSolver::clear_grid() {
+  std::fill(mass_.begin(), mass_.end(), 0.0);
+  std::fill(momentum_.begin(), momentum_.end(), Vec<2>::Zero());
+  std::fill(force_.begin(), force_.end(), Vec<2>::Zero());
+  std::fill(volume_.begin(), volume_.end(), 0.0);
+  std::fill(friction_.begin(), friction_.end(), 0.0);
+}
+
+void DepthAveragedSolver::transfer_points_to_grid() {
+  const auto& terrain = settings_.terrain;
+  const double g_n = terrain.normal_gravity();
+  for (std::size_t p = 0; p < particles_.size(); ++p) {
+    const auto& m = materials_[static_cast<std::size_t>(particles_.material[p])];
+    const double mp = particles_.mass[p];
+    const Vec<2> drive = mp * terrain.driving_acceleration(particles_.position[p]);
+    const double capacity = mp * g_n * std::tan(m.basal_friction_angle);
+    stencil_at(particles_.position[p], settings_.grid)
+        .for_each([&](std::size_t i, double N, const Vec<2>&) {
+          mass_[i] += N * mp;
+          momentum_[i] += N * mp * particles_.velocity[p];
+          volume_[i] += N * particles_.volume[p];
+          force_[i] += N * drive;
+          friction_[i] += N * capacity;
+        });
+  }
+}
+
+void DepthAveragedSolver::compute_depth() {
+  for (std::size_t i = 0; i < depth_.size(); ++i) depth_[i] = volume_[i] / area_[i];
+}
+
+// f_i = sum_p A_p T(h_p) grad N_ip: the weak form of -grad T.
+void DepthAveragedSolver::add_lateral_thrust() {
+  const double g_n = settings_.terrain.normal_gravity();
+  for (std::size_t p = 0; p < particles_.size(); ++p) {
+    const auto& m = materials_[static_cast<std::size_t>(particles_.material[p])];
+    const double T = EarthPressure::thrust(earth_pressure_coefficient(p), m.density * g_n,
+                                           cohesion(p), particles_.depth(p));
+    if (T == 0.0) continue;
+    const double area_thrust = particles_.area[p] * T;
+    stencil_at(particles_.position[p], settings_.grid)
+        .for_each([&](std::size_t i, double, const Vec<2>& dN) { force_[i] += area_thrust * dN; });
+  }
+}
+
+void DepthAveragedSolver::advance_grid_momentum(double dt) {
+  for (std::size_t i = 0; i < mass_.size(); ++i) new_momentum_[i] = momentum_[i] + dt * force_[i];
+}
+
+// Coulomb friction on the bed (eq. 36), |impulse| <= dt tan(delta) N: it
+// opposes the motion the other forces would give and, where it could do more
+// than stop the node, stops it.
+void DepthAveragedSolver::apply_basal_friction(double dt) {
+  for (std::size_t i = 0; i < mass_.size(); ++i) {
+    const double largest = dt * friction_[i];
+    const double speed_momentum = new_momentum_[i].norm();
+    stopped_[i] = speed_momentum <= largest;
+    if (stopped_[i])
+      new_momentum_[i].setZero();
+    else
+      new_momentum_[i] *= 1.0 - largest / speed_momentum;
+  }
+}
+
+void DepthAveragedSolver::apply_walls() {
+  for (int d = 0; d < 2; ++d) {
+    const int other = 1 - d;
+    for (int side = 0; side < 2; ++side) {
+      const GroundWall wall = settings_.walls[static_cast<std::size_t>(2 * d + side)];
+      const int layer = side == 0 ? 0 : nodes_[d] - 1;
+      for (int k = 0; k < nodes_[other]; ++k) {
+        const int ix = d == 0 ? layer : k, iy = d == 0 ? k : layer;
+        const std::size_t i = static_cast<std::size_t>(iy) * static_cast<std::size_t>(nodes_[0]) +
+                              static_cast<std::size_t>(ix);
+        if (wall == GroundWall::stick)
+          new_momentum_[i].setZero();
+        else
+          new_momentum_[i][d] = 0.0;
+      }
+    }
+  }
+}
+
+void DepthAveragedSolver::transfer_grid_to_points(double dt) {
+  const double flip = settings_.flip_fraction;
+  const auto& grid = settings_.grid;
+  for (std::size_t p = 0; p < particles_.size(); ++p) {
+    Vec<2> v_new = Vec<2>::Zero(), dv = Vec<2>::Zero();
+    Mat<2> gradient = Mat<2>::Zero();  // L = grad v
+    bool all_stopped = true;
+    stencil_at(particles_.position[p], grid)
+        .for_each([&](std::size_t i, double N, const Vec<2>& dN) {
+          // Every node with mass takes part, however little: a quadratic
+          // B-spline's weight N and slope (~sqrt(2 N)) vanish together, so a
+          // light node's large velocity enters the point only as N v and
+          // v grad N, both bounded, and leaving it out would lose momentum.
+          if (mass_[i] <= 0.0) return;
+          all_stopped = all_stopped && stopped_[i];
+          const Vec<2> vi_new = new_momentum_[i] / mass_[i];
+          v_new += N * vi_new;
+          dv += N * (vi_new - momentum_[i] / mass_[i]);
+          gradient += vi_new * dN.transpose();
+        });
+    // A point whose every node friction stopped is at rest, whatever FLIP
+    // would carry over from its earlier velocity.
+    particles_.velocity[p] =
+        all_stopped ? Vec<2>::Zero()
+                    : Vec<2>(flip * (particles_.velocity[p] + dv) + (1.0 - flip) * v_new);
+    particles_.position[p] += dt * v_new;
+    particles_.areal_strain_rate[p] = gradient.trace();
+    const Mat<2> increment = Mat<2>::Identity() + dt * gradient;
+    const double stretch = increment.determinant();
+    if (!(stretch > 0.0))
+      throw cosim::NumericalError(fmt::format(
+          "depth-averaged point {} was turned inside out at t = {} s (area ratio {}): the step is "
+          "too long",
+          p, time_ + dt, stretch));
+    particles_.area[p] *= stretch;
+    particles_.edges[p] = increment * particles_.edges[p];
+    if (!particles_.velocity[p].allFinite() || !particles_.position[p].allFinite())
+      throw cosim::NumericalError(
+          fmt::format("depth-averaged point {} turned non-finite at t = {} s", p, time_ + dt));
+    if (!inside(particles_.position[p], grid))
+      throw cosim::NumericalError(fmt::format(
+          "depth-averaged point {} left the grid at ({:.6g}, {:.6g}) m, t = {} s: make the grid "
+          "larger",
+          p, particles_.position[p][0], particles_.position[p][1], time_ + dt));
+  }
+}
+
+void DepthAveragedSolver::split_stretched_points() {
+  if (settings_.split_length <= 0.0) return;
+  const std::size_t before = particles_.size();
+  for (std::size_t p = 0; p < before; ++p) {
+    for (int edge = 0; edge < 2; ++edge) {
+      const Vec<2> e = particles_.edges[p].col(edge);
+      // The edge's length in cells of the grid along it.
+      const double cells =
+          std::hypot(e[0] / settings_.grid.spacing[0], e[1] / settings_.grid.spacing[1]);
+      if (cells > settings_.split_length) {
+        particles_.split(p, edge);
+        break;  // the other edge is looked at next step
+      }
+    }
+  }
+}
+
+// Eq. 26: a point whose depth exceeds its crack depth yields, and its bonds
+// break with its areal strain.
+void DepthAveragedSolver::degrade_cohesion(double dt) {
+  const double g_n = settings_.terrain.normal_gravity();
+  for (std::size_t p = 0; p < particles_.size(); ++p) {
+    const auto& m = materials_[static_cast<std::size_t>(particles_.material[p])];
+    if (!m.degradation.enabled() || particles_.damage[p] >= 1.0) continue;
+    const double z_c =
+        EarthPressure::crack_depth(earth_pressure_coefficient(p), m.density * g_n, cohesion(p));
+    if (particles_.depth(p) > z_c)
+      particles_.damage[p] =
+          m.degradation.damage_after(particles_.damage[p], dt * particles_.areal_strain_rate[p]);
+  }
+}
+
+}  // namespace mpm

@@ -1,0 +1,137 @@
+#include "mpm/depth_averaged/depth_averaged_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "cosim/error.hpp"
+
+namespace mpm {
+namespace {
+
+constexpr double deg = std::numbers::pi / 180.0;
+constexpr double g = 9.81;
+
+DepthAveragedMaterial sand(double basal_friction_deg, double cohesion = 0.0) {
+  DepthAveragedMaterial m;
+  m.name = "sand";
+  m.density = 2000.0;
+  m.internal_friction_angle = 30.0 * deg;
+  m.basal_friction_angle = basal_friction_deg * deg;
+  m.cohesion = cohesion;
+  return m;
+}
+
+DepthAveragedSettings ground(double inclination_deg, int nx, int ny, double dx,
+                             EarthPressureModel model = EarthPressureModel::isotropic) {
+  DepthAveragedSettings s;
+  s.grid.origin = Vec<2>::Zero();
+  s.grid.spacing = Vec<2>::Constant(dx);
+  s.grid.cells = {nx, ny};
+  s.terrain = Terrain(inclination_deg * deg, g);
+  s.earth_pressure = EarthPressure(model);
+  return s;
+}
+
+DepthAveragedSolver block(const DepthAveragedSettings& s, const DepthAveragedMaterial& m,
+                          const Vec<2>& lower, const Vec<2>& upper, double depth,
+                          const Vec<2>& v = Vec<2>::Zero()) {
+  DepthAveragedParticles p;
+  p.seed(
+      lower, upper, s.grid.spacing, 2, [&](const Vec<2>&) { return depth; }, m.density, 0, v);
+  return DepthAveragedSolver(s, {m}, p);
+}
+
+// A layer of uniform depth filling the grid between slip walls on level
+// ground: the Gauss-point seeding gives every node the same depth, so no
+// thrust gradient moves it.
+TEST(DepthAveragedSolver, AUniformLayerOnLevelGroundStaysAtRest) {
+  const auto s = ground(0.0, 8, 6, 0.5);
+  auto solver = block(s, sand(0.0), {0.0, 0.0}, {4.0, 3.0}, 0.7);
+  for (double h : solver.nodal_depth()) EXPECT_NEAR(h, 0.7, 1e-14);
+  for (int k = 0; k < 50; ++k) solver.step(1e-3);
+  double fastest = 0.0;
+  for (const auto& v : solver.particles().velocity) fastest = std::max(fastest, v.norm());
+  EXPECT_LT(fastest, 1e-12);
+}
+
+// Only the thrust acts (level ground, no friction, the walls not reached):
+// P2G, the grid update, the PIC/FLIP transfer and the splitting of stretched
+// points conserve momentum, and the mass is the points'.
+TEST(DepthAveragedSolver, ASpreadingMoundKeepsItsMassAndMomentumToRoundOff) {
+  auto s = ground(0.0, 40, 30, 0.25);
+  DepthAveragedParticles p;
+  p.seed(
+      {2.0, 2.0}, {6.0, 5.0}, s.grid.spacing, 3,
+      [](const Vec<2>& x) { return 1.0 + 0.3 * std::sin(x[0]) * std::cos(2.0 * x[1]); }, 1800.0, 0);
+  const double mass = p.total_mass();
+  DepthAveragedSolver solver(s, {sand(0.0)}, p);
+  solver.advance_to(0.15);
+  const double scale = mass * std::sqrt(g * 1.3);
+  EXPECT_NEAR(solver.particles().total_mass(), mass, 1e-12 * mass);
+  EXPECT_LT(solver.particles().momentum().norm(), 1e-12 * scale)
+      << solver.particles().momentum().transpose();
+  double fastest = 0.0;
+  for (const auto& v : solver.particles().velocity) fastest = std::max(fastest, v.norm());
+  EXPECT_GT(fastest, 0.5);  // it did spread
+}
+
+// tan(delta) above the slope: friction holds the block exactly where it is.
+TEST(DepthAveragedSolver, FrictionHoldsABlockOnASlopeFlatterThanItsFrictionAngle) {
+  const auto s = ground(20.0, 20, 6, 0.5);
+  auto m = sand(25.0, 1.0e6);  // cohesive: no thrust, the block is rigid
+  auto solver = block(s, m, {3.0, 1.0}, {6.0, 2.0}, 0.5);
+  const Vec<2> start = solver.particles().centre_of_mass();
+  for (int k = 0; k < 200; ++k) solver.step(5e-3);
+  EXPECT_EQ((solver.particles().centre_of_mass() - start).norm(), 0.0);
+}
+
+// Thrown up the slope, the block decelerates at g (sin + cos tan(delta)),
+// stops, and friction never pushes it back down.
+TEST(DepthAveragedSolver, FrictionStopsAMassButNeverReversesIt) {
+  const double theta = 15.0 * deg, delta = 25.0 * deg, v0 = 2.0;
+  const auto s = ground(15.0, 40, 6, 0.5);
+  auto solver = block(s, sand(25.0, 1.0e6), {12.0, 1.0}, {14.0, 2.0}, 0.5, {-v0, 0.0});
+  const double x0 = solver.particles().centre_of_mass()[0];
+  const double decel = g * (std::sin(theta) + std::cos(theta) * std::tan(delta));
+  const double stop_time = v0 / decel;
+  const double dt = 1e-3;
+  while (solver.time() < 0.5 * stop_time) solver.step(dt);
+  EXPECT_NEAR(solver.particles().momentum()[0] / solver.particles().total_mass(),
+              -v0 + decel * solver.time(), 1e-9);
+  while (solver.time() < 2.0 * stop_time) solver.step(dt);
+  const double travelled = solver.particles().centre_of_mass()[0] - x0;
+  EXPECT_NEAR(travelled, -v0 * v0 / (2.0 * decel), 2.0 * v0 * dt);
+  for (const auto& v : solver.particles().velocity) EXPECT_EQ(v.norm(), 0.0);
+  for (int k = 0; k < 100; ++k) solver.step(dt);
+  EXPECT_EQ(solver.particles().centre_of_mass()[0] - x0, travelled);
+}
+
+// The walls hold the mass on the grid at stable steps; a step far beyond
+// them carries it off, which stops the run.
+TEST(DepthAveragedSolver, APointLeavingTheGridStopsTheRunWithANumericalError) {
+  const auto s = ground(30.0, 8, 4, 0.5);
+  auto solver = block(s, sand(0.0, 1.0e6), {1.5, 0.5}, {2.5, 1.5}, 0.3, {20.0, 0.0});
+  EXPECT_THROW(solver.step(1.0), cosim::NumericalError);
+}
+
+TEST(DepthAveragedSolver, RefusesPointsOutsideTheGridAndBadSettings) {
+  const auto s = ground(0.0, 4, 4, 1.0);
+  DepthAveragedParticles p;
+  p.add({5.0, 1.0}, Vec<2>::Zero(), 1.0, 1.0, 1000.0, 0);
+  EXPECT_THROW(DepthAveragedSolver(s, {sand(10.0)}, p), std::invalid_argument);
+  DepthAveragedParticles q;
+  q.add({1.0, 1.0}, Vec<2>::Zero(), 1.0, 1.0, 1000.0, 1);
+  EXPECT_THROW(DepthAveragedSolver(s, {sand(10.0)}, q), std::invalid_argument);
+  auto bad = s;
+  bad.flip_fraction = 1.5;
+  EXPECT_THROW(DepthAveragedSolver(bad, {sand(10.0)}, DepthAveragedParticles{}),
+               std::invalid_argument);
+  auto wet = sand(10.0);
+  wet.density = -1.0;
+  EXPECT_THROW(DepthAveragedSolver(s, {wet}, DepthAveragedParticles{}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace mpm
