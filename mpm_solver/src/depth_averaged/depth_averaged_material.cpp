@@ -19,6 +19,22 @@ void DepthAveragedMaterial::check() const {
       fail(fmt::format("{} must be in [0, 90) degrees; it is in rad", what).c_str(), angle);
   if (!(cohesion >= 0.0) || !std::isfinite(cohesion))
     fail("cohesion must not be negative", cohesion);
+  if (!(structured_share >= 0.0 && structured_share <= 1.0))
+    fail("structured share must be in [0, 1]", structured_share);
+  if (!(basal_pressure_factor >= 0.0 && basal_pressure_factor <= 1.0))
+    fail("basal pressure factor must be in [0, 1]", basal_pressure_factor);
+  if (!(fragmentation_strain >= 0.0) || !std::isfinite(fragmentation_strain))
+    fail("fragmentation strain must not be negative", fragmentation_strain);
+}
+
+// Eq. 28 over a step in which the column dilates by d eps_v, with
+// c = c0 (1 - D): d ln f_sc = -max(0, d eps_v) / ((1 - D) eps_f).
+double DepthAveragedMaterial::structured_share_after(double share, double damage,
+                                                     double volumetric_strain) const {
+  const double eps_f =
+      fragmentation_strain > 0.0 ? fragmentation_strain : degradation.critical_volumetric_strain();
+  if (!(eps_f > 0.0) || damage >= 1.0 || volumetric_strain <= 0.0) return share;
+  return share * std::exp(-volumetric_strain / ((1.0 - damage) * eps_f));
 }
 
 }  // namespace mpm

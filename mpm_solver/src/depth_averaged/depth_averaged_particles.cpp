@@ -17,6 +17,7 @@ void DepthAveragedParticles::add(const Vec<2>& x, const Vec<2>& v, double depth_
   material.push_back(material_);
   areal_strain_rate.push_back(0.0);
   damage.push_back(0.0);
+  structured_share.push_back(1.0);
 }
 
 std::size_t DepthAveragedParticles::seed(const Vec<2>& lower, const Vec<2>& upper,
@@ -84,6 +85,7 @@ std::size_t DepthAveragedParticles::split(std::size_t p, int edge) {
   material.push_back(material[p]);
   areal_strain_rate.push_back(areal_strain_rate[p]);
   damage.push_back(damage[p]);
+  structured_share.push_back(structured_share[p]);
   return size() - 1;
 }
 

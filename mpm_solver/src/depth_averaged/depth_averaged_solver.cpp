@@ -72,6 +72,18 @@ DepthAveragedSolver::DepthAveragedSolver(DepthAveragedSettings settings,
   depth_.assign(n, 0.0);
   friction_.assign(n, 0.0);
   stopped_.assign(n, 0);
+  for (std::size_t p = 0; p < particles_.size(); ++p)
+    particles_.structured_share[p] =
+        materials_[static_cast<std::size_t>(particles_.material[p])].structured_share;
+  if (settings_.still_water) {
+    if (!(settings_.still_water->density > 0.0) || !std::isfinite(settings_.still_water->level))
+      throw std::invalid_argument("still water needs a positive density and a finite level");
+    std::vector<double> surface(n);
+    for (std::size_t i = 0; i < n; ++i)
+      surface[i] =
+          settings_.terrain.height_of_level(settings_.still_water->level, node_position(i));
+    set_fluid_surface(settings_.still_water->density, std::move(surface));
+  }
   compute_node_areas();
   clear_grid();
   transfer_points_to_grid();
@@ -111,6 +123,45 @@ double DepthAveragedSolver::depth_at(const Vec<2>& x) const {
   return h;
 }
 
+void DepthAveragedSolver::set_fluid_surface(double density, std::vector<double> surface_at_nodes) {
+  if (surface_at_nodes.empty()) {
+    fluid_surface_.clear();
+    fluid_density_ = 0.0;
+    return;
+  }
+  if (surface_at_nodes.size() != mass_.size())
+    throw std::invalid_argument(fmt::format("the fluid surface has {} values for {} grid nodes",
+                                            surface_at_nodes.size(), mass_.size()));
+  if (!(density > 0.0) || !std::isfinite(density))
+    throw std::invalid_argument(fmt::format("the fluid's density {} must be positive", density));
+  for (std::size_t i = 0; i < surface_at_nodes.size(); ++i)
+    if (!std::isfinite(surface_at_nodes[i]))
+      throw std::invalid_argument(
+          fmt::format("the fluid surface at node {} is {}", i, surface_at_nodes[i]));
+  fluid_density_ = density;
+  fluid_surface_ = std::move(surface_at_nodes);
+}
+
+double DepthAveragedSolver::fluid_surface_at(const Vec<2>& x) const {
+  if (fluid_surface_.empty()) return -std::numeric_limits<double>::infinity();
+  double eta = 0.0;
+  stencil_at(x, settings_.grid).for_each([&](std::size_t i, double N, const Vec<2>&) {
+    eta += N * fluid_surface_[i];
+  });
+  return eta;
+}
+
+DepthAveragedSolver::Submersion DepthAveragedSolver::submersion(std::size_t p) const {
+  if (fluid_surface_.empty()) return {};
+  const Vec<2>& x = particles_.position[p];
+  const double above_bed = fluid_surface_at(x) - settings_.terrain.bed_elevation(x);
+  const double s = std::clamp(above_bed, 0.0, particles_.depth(p));
+  const auto& m = materials_[static_cast<std::size_t>(particles_.material[p])];
+  const double f_sc = particles_.structured_share[p];
+  const double propagated = (1.0 - f_sc) + f_sc * m.basal_pressure_factor;  // eq. 39
+  return {s, propagated * fluid_density_ * s};
+}
+
 double DepthAveragedSolver::cohesion(std::size_t p) const {
   return materials_[static_cast<std::size_t>(particles_.material[p])].cohesion *
          (1.0 - particles_.damage[p]);
@@ -120,6 +171,13 @@ double DepthAveragedSolver::earth_pressure_coefficient(std::size_t p) const {
   const auto& m = materials_[static_cast<std::size_t>(particles_.material[p])];
   return settings_.earth_pressure.coefficient(m.internal_friction_angle,
                                               particles_.areal_strain_rate[p]);
+}
+
+// The column's effective unit weight g cos(theta) (rho h - B_eff rho_f s) / h.
+double DepthAveragedSolver::unit_weight(std::size_t p) const {
+  const double h = particles_.depth(p);
+  return settings_.terrain.normal_gravity() *
+         std::max(0.0, particles_.density(p) - submersion(p).relieved_density_depth / h);
 }
 
 double DepthAveragedSolver::stable_time_step() const {
@@ -179,16 +237,27 @@ void DepthAveragedSolver::transfer_points_to_grid() {
   for (std::size_t p = 0; p < particles_.size(); ++p) {
     const auto& m = materials_[static_cast<std::size_t>(particles_.material[p])];
     const double mp = particles_.mass[p];
-    const Vec<2> drive = mp * terrain.driving_acceleration(particles_.position[p]);
-    const double capacity = mp * g_n * std::tan(m.basal_friction_angle);
-    stencil_at(particles_.position[p], settings_.grid)
-        .for_each([&](std::size_t i, double N, const Vec<2>&) {
-          mass_[i] += N * mp;
-          momentum_[i] += N * mp * particles_.velocity[p];
-          volume_[i] += N * particles_.volume[p];
-          force_[i] += N * drive;
-          friction_[i] += N * capacity;
-        });
+    const GroundStencil stencil = stencil_at(particles_.position[p], settings_.grid);
+    Vec<2> drive = mp * terrain.driving_acceleration(particles_.position[p]);
+    double bearing_mass = mp;
+    if (!fluid_surface_.empty()) {
+      const Submersion submerged = submersion(p);
+      Vec<2> surface_slope = Vec<2>::Zero();
+      stencil.for_each([&](std::size_t i, double, const Vec<2>& dN) {
+        surface_slope += fluid_surface_[i] * dN;
+      });
+      // eq. 54: the fluid's hydrostatic pressure gradient on the submerged part
+      drive -= fluid_density_ * g_n * particles_.area[p] * submerged.depth * surface_slope;
+      bearing_mass = std::max(0.0, mp - particles_.area[p] * submerged.relieved_density_depth);
+    }
+    const double capacity = bearing_mass * g_n * std::tan(m.basal_friction_angle);
+    stencil.for_each([&](std::size_t i, double N, const Vec<2>&) {
+      mass_[i] += N * mp;
+      momentum_[i] += N * mp * particles_.velocity[p];
+      volume_[i] += N * particles_.volume[p];
+      force_[i] += N * drive;
+      friction_[i] += N * capacity;
+    });
   }
 }
 
@@ -198,10 +267,8 @@ void DepthAveragedSolver::compute_depth() {
 
 // f_i = sum_p A_p T(h_p) grad N_ip: the weak form of -grad T.
 void DepthAveragedSolver::add_lateral_thrust() {
-  const double g_n = settings_.terrain.normal_gravity();
   for (std::size_t p = 0; p < particles_.size(); ++p) {
-    const auto& m = materials_[static_cast<std::size_t>(particles_.material[p])];
-    const double T = EarthPressure::thrust(earth_pressure_coefficient(p), m.density * g_n,
+    const double T = EarthPressure::thrust(earth_pressure_coefficient(p), unit_weight(p),
                                            cohesion(p), particles_.depth(p));
     if (T == 0.0) continue;
     const double area_thrust = particles_.area[p] * T;
@@ -313,17 +380,22 @@ void DepthAveragedSolver::split_stretched_points() {
 }
 
 // Eq. 26: a point whose depth exceeds its crack depth yields, and its bonds
-// break with its areal strain.
+// break with its areal strain; its structures break up as it dilates (eq. 28)
+// and are gone with the last bond.
 void DepthAveragedSolver::degrade_cohesion(double dt) {
-  const double g_n = settings_.terrain.normal_gravity();
   for (std::size_t p = 0; p < particles_.size(); ++p) {
     const auto& m = materials_[static_cast<std::size_t>(particles_.material[p])];
     if (!m.degradation.enabled() || particles_.damage[p] >= 1.0) continue;
     const double z_c =
-        EarthPressure::crack_depth(earth_pressure_coefficient(p), m.density * g_n, cohesion(p));
-    if (particles_.depth(p) > z_c)
-      particles_.damage[p] =
-          m.degradation.damage_after(particles_.damage[p], dt * particles_.areal_strain_rate[p]);
+        EarthPressure::crack_depth(earth_pressure_coefficient(p), unit_weight(p), cohesion(p));
+    if (particles_.depth(p) <= z_c) continue;
+    const double strain = dt * particles_.areal_strain_rate[p];
+    const double damage = particles_.damage[p];
+    particles_.damage[p] = m.degradation.damage_after(damage, strain);
+    particles_.structured_share[p] =
+        particles_.damage[p] >= 1.0
+            ? 0.0
+            : m.structured_share_after(particles_.structured_share[p], damage, strain);
   }
 }
 

@@ -17,6 +17,10 @@ Terrain::Terrain(double inclination, double gravity, std::optional<RasterGrid> b
     throw std::invalid_argument("gravity must be finite and not negative");
 }
 
+double Terrain::height_of_level(double elevation, const Vec<2>& x) const {
+  return (elevation + x[0] * std::sin(inclination_)) / std::cos(inclination_);
+}
+
 Vec<2> Terrain::driving_acceleration(const Vec<2>& x) const {
   Vec<2> a = -normal_gravity_ * bed_slope(x);
   a[0] += gravity_ * std::sin(inclination_);

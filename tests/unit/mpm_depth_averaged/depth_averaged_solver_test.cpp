@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "cosim/error.hpp"
 
@@ -54,6 +55,78 @@ TEST(DepthAveragedSolver, AUniformLayerOnLevelGroundStaysAtRest) {
   double fastest = 0.0;
   for (const auto& v : solver.particles().velocity) fastest = std::max(fastest, v.norm());
   EXPECT_LT(fastest, 1e-12);
+}
+
+// The same layer at the bottom of a lake, and a partly emerged one: the
+// lake's surface is level, so it pushes no column sideways.
+TEST(DepthAveragedSolver, ALayerInALakeAtRestStaysAtRest) {
+  for (const double level : {5.0, 0.3}) {
+    auto s = ground(0.0, 8, 6, 0.5);
+    s.still_water = StillWater{1000.0, level};
+    auto solver = block(s, sand(0.0), {0.0, 0.0}, {4.0, 3.0}, 0.7);
+    for (int k = 0; k < 50; ++k) solver.step(1e-3);
+    double fastest = 0.0;
+    for (const auto& v : solver.particles().velocity) fastest = std::max(fastest, v.norm());
+    EXPECT_LT(fastest, 1e-12) << "level " << level;
+  }
+}
+
+// A lake's surface on the inclined plane rises along x at tan(theta): the
+// nodes' heights reproduce it exactly between the walls.
+TEST(DepthAveragedSolver, AStillLakesSurfaceIsLevelInTheWorld) {
+  auto s = ground(30.0, 10, 4, 0.5);
+  s.still_water = StillWater{1000.0, 2.0};
+  const auto solver = block(s, sand(40.0), {1.0, 0.0}, {2.0, 2.0}, 0.5);
+  for (const double x : {0.1, 2.3, 4.9}) {
+    const double expected = (2.0 + x * std::sin(30.0 * deg)) / std::cos(30.0 * deg);
+    EXPECT_NEAR(solver.fluid_surface_at({x, 1.0}), expected, 1e-12) << "x " << x;
+  }
+}
+
+// B = 1 relieves the base by the fluid's whole pressure, B = 0 by none
+// (eq. 39). On a 40 deg slope with delta 30 deg a dry block slides; deep in
+// water buoyancy halves its drive (rho_f / rho = 1/2), so with B = 0 the
+// friction on its full weight holds it, and with B = 1 it slides.
+TEST(DepthAveragedSolver, ASubmergedBlockIsHeldWithBZeroAndSlidesWithBOne) {
+  for (const double B : {0.0, 1.0}) {
+    auto s = ground(40.0, 20, 8, 0.5);
+    s.still_water = StillWater{1000.0, 50.0};
+    auto m = sand(30.0, 1e5);
+    m.basal_pressure_factor = B;
+    auto solver = block(s, m, {3.0, 1.0}, {5.0, 3.0}, 1.0);
+    for (int k = 0; k < 100; ++k) solver.step(1e-3);
+    double fastest = 0.0;
+    for (const auto& v : solver.particles().velocity) fastest = std::max(fastest, v.norm());
+    if (B == 0.0)
+      EXPECT_EQ(fastest, 0.0);
+    else
+      EXPECT_GT(fastest, 0.05);
+  }
+}
+
+TEST(DepthAveragedSolver, RefusesAFluidSurfaceOfTheWrongSizeOrNotFinite) {
+  const auto s = ground(0.0, 8, 6, 0.5);
+  auto solver = block(s, sand(0.0), {0.0, 0.0}, {4.0, 3.0}, 0.7);
+  EXPECT_THROW(solver.set_fluid_surface(1000.0, std::vector<double>(3, 1.0)),
+               std::invalid_argument);
+  std::vector<double> surface(solver.nodal_depth().size(), 1.0);
+  EXPECT_THROW(solver.set_fluid_surface(0.0, surface), std::invalid_argument);
+  surface[4] = std::nan("");
+  EXPECT_THROW(solver.set_fluid_surface(1000.0, surface), std::invalid_argument);
+}
+
+// Eq. 28: the structures break up as exp(-eps_v / ((1 - D) eps_f)) while the
+// column dilates, and not while it is compressed.
+TEST(DepthAveragedMaterial, StructuresBreakUpAsTheColumnDilates) {
+  auto m = sand(20.0, 1e4);
+  m.degradation = CohesionDegradation(0.05);
+  EXPECT_NEAR(m.structured_share_after(0.8, 0.0, 0.01), 0.8 * std::exp(-0.2), 1e-15);
+  EXPECT_NEAR(m.structured_share_after(0.8, 0.5, 0.01), 0.8 * std::exp(-0.4), 1e-15);
+  EXPECT_EQ(m.structured_share_after(0.8, 0.0, -0.01), 0.8);
+  m.fragmentation_strain = 0.1;
+  EXPECT_NEAR(m.structured_share_after(1.0, 0.0, 0.01), std::exp(-0.1), 1e-15);
+  m.basal_pressure_factor = 1.5;
+  EXPECT_THROW(m.check(), std::invalid_argument);
 }
 
 // Only the thrust acts (level ground, no friction, the walls not reached):

@@ -5,7 +5,11 @@
 //  - a block whose cohesion keeps its whole depth above the crack depth
 //    slides rigidly, x = g (sin(theta) - cos(theta) tan(delta)) t^2 / 2, and
 //    takes no damage; with little cohesion the same block yields, spreads,
-//    and its bonds break (van den Bout et al., OpenLISEM Hazard, eq. 26).
+//    and its bonds break (van den Bout et al., OpenLISEM Hazard, eq. 26);
+//  - the cohesive block deep in a lake slides rigidly at
+//    g ((1 - gamma) sin(theta) - (1 - B gamma) cos(theta) tan(delta)),
+//    gamma = rho_f / rho: buoyancy always, and the fluid's pressure at its
+//    base as far as the basal pressure factor B lets it through (eq. 39).
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -13,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "mpm/depth_averaged/depth_averaged_solver.hpp"
 
@@ -85,9 +90,13 @@ struct BlockRun {
   double moved = 0.0, length = 0.0, initial_length = 0.0, width = 0.0, max_damage = 0.0;
 };
 
-BlockRun slide_block(double cohesion, double t) {
-  const auto s = plane(30.0, {0.0, 0.0}, {120, 40}, 0.25, EarthPressureModel::rankine);
-  const auto m = material(20.0, cohesion, 0.01);
+BlockRun slide_block(double cohesion, double t, double theta_deg = 30.0, double delta_deg = 20.0,
+                     std::optional<StillWater> water = std::nullopt,
+                     double basal_pressure_factor = 1.0) {
+  auto s = plane(theta_deg, {0.0, 0.0}, {120, 40}, 0.25, EarthPressureModel::rankine);
+  s.still_water = water;
+  auto m = material(delta_deg, cohesion, 0.01);
+  m.basal_pressure_factor = basal_pressure_factor;
   DepthAveragedParticles points;
   points.seed(
       {2.0, 4.0}, {6.0, 6.0}, s.grid.spacing, 2, [](const Vec<2>&) { return 1.0; }, m.density, 0);
@@ -130,6 +139,26 @@ TEST(BlockOnSlope, ACohesiveBlockSlidesRigidlyAndALooseOneSpreadsAndBreaks) {
   EXPECT_EQ(strong.max_damage, 0.0);
   EXPECT_GT(weak.length, 1.2 * weak.initial_length);
   EXPECT_GT(weak.max_damage, 0.5);
+}
+
+TEST(SubmergedBlock, SlidesAtTheBuoyedAccelerationThatTheBasalPressureFactorSets) {
+  const double theta = 40.0 * deg, delta = 15.0 * deg, t = 3.0, gamma = 1000.0 / 2000.0;
+  const StillWater lake{1000.0, 100.0};  // far above the block all the way
+  for (const double B : {1.0, 0.0}) {
+    const double acceleration =
+        g * ((1 - gamma) * std::sin(theta) - (1 - B * gamma) * std::cos(theta) * std::tan(delta));
+    const double exact = 0.5 * acceleration * t * t;
+    const BlockRun run = slide_block(100.0e3, t, 40.0, 15.0, lake, B);
+    const double error = (run.moved - exact) / exact;
+    fmt::print(
+        "Block deep in a lake on a 40 deg slope, delta 15 deg, B = {}: moved {:.4f} m in {} s, "
+        "exact {:.4f} m ({:+.2e}, tolerance 2 %); dry it would move {:.4f} m\n",
+        B, run.moved, t, exact, error,
+        0.5 * g * (std::sin(theta) - std::cos(theta) * std::tan(delta)) * t * t);
+    EXPECT_LT(std::abs(error), 0.02) << "B = " << B;
+    EXPECT_NEAR(run.length, run.initial_length, 1e-9);
+    EXPECT_EQ(run.max_damage, 0.0);
+  }
 }
 
 }  // namespace

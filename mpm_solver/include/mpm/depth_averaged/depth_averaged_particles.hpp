@@ -26,9 +26,11 @@ struct DepthAveragedParticles {
   std::vector<int> material;              // index into the solver's materials
   std::vector<double> areal_strain_rate;  // div u [1/s]
   std::vector<double> damage;             // D = 1 - c / c0
+  std::vector<double> structured_share;   // f_sc: solids still bound in structures
 
   std::size_t size() const { return position.size(); }
   double depth(std::size_t p) const { return volume[p] / area[p]; }
+  double density(std::size_t p) const { return mass[p] / volume[p]; }
   // A column of the given depth [m] over the plan area [m^2], with edges
   // (default: a square of that area).
   void add(const Vec<2>& x, const Vec<2>& v, double depth, double area, double density,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "mpm/depth_averaged/depth_averaged_material.hpp"
@@ -13,6 +14,12 @@ namespace mpm {
 
 // What a grid face does to the mass: slip (no normal motion) or stick.
 enum class GroundWall { slip, stick };
+
+// A lake the mass moves in, its surface level at a world elevation.
+struct StillWater {
+  double density = 1000.0;  // rho_f [kg/m^3]
+  double level = 0.0;       // world elevation of the surface [m] (Terrain::height_of_level)
+};
 
 struct DepthAveragedSettings {
   GridGeometry<2> grid;  // in the plane of the ground
@@ -30,6 +37,9 @@ struct DepthAveragedSettings {
   // A point whose edge grows longer than this many grid cells (in the edge's
   // direction) is split in two; 0 never splits.
   double split_length = 1.0;
+  // A fluid at rest around the mass; a coupled fluid sets its surface
+  // through DepthAveragedSolver::set_fluid_surface instead.
+  std::optional<StillWater> still_water;
 };
 
 // The depth-averaged mass of van den Bout et al. (OpenLISEM Hazard) as
@@ -46,8 +56,14 @@ struct DepthAveragedSettings {
 //                   - rho g cos(theta) h tan(delta) u / |u|            (eqs. 36, 37)
 //
 // with T the lateral thrust of EarthPressure (Bell's cohesion and tension
-// cracks). The thrust's weak form gives each node f_i = sum_p A_p T_p
-// grad N_ip; the basal friction acts on the nodes' momentum after all
+// cracks). In a fluid of density rho_f whose free surface stands at height
+// eta_f above the reference plane, the submerged part s = clamp(eta_f - b, 0, h)
+// of a column is pushed by the fluid's hydrostatic pressure gradient,
+// -rho_f g cos(theta) s grad eta_f (buoyancy, eq. 54's p_bu term), and its
+// base is relieved by the fluid pressure that reaches it through the solids,
+// B_eff rho_f g cos(theta) s with B_eff = (1 - f_sc) + f_sc B (eq. 39): the
+// friction and the thrust take the weight rho h - B_eff rho_f s. The thrust's weak form gives each
+// node f_i = sum_p A_p T_p grad N_ip; the basal friction acts on the nodes' momentum after all
 // other forces, never more than stops them (a resting mass stays at rest when
 // tan(delta) exceeds its driving slope). Fragmentation (eq. 26) degrades the
 // cohesion of a yielding point (h > z_c) by its areal strain.
@@ -72,6 +88,15 @@ class DepthAveragedSolver {
   // The cohesion a point has left [Pa].
   double cohesion(std::size_t p) const;
 
+  // The free surface of a fluid around the mass: its density and its height
+  // above the reference plane at each grid node (B-spline coefficients,
+  // x fastest, as nodal_depth); an empty surface removes the fluid.
+  // Throws std::invalid_argument for a wrong size or a non-finite value.
+  void set_fluid_surface(double density, std::vector<double> surface_at_nodes);
+  double fluid_surface_at(const Vec<2>& x) const;
+  // The structured share f_sc a point has left.
+  double structured_share(std::size_t p) const { return particles_.structured_share[p]; }
+
   // The depth field of the last transfer: its values at the grid's nodes
   // (B-spline coefficients, x fastest), the nodes' positions, and its value
   // anywhere on the grid.
@@ -95,6 +120,14 @@ class DepthAveragedSolver {
 
   void compute_node_areas();
   double earth_pressure_coefficient(std::size_t p) const;
+  // The fluid's relief of the column's weight per unit area, B_eff rho_f s, and
+  // the submerged depth s [m] at point p (both 0 without a fluid).
+  struct Submersion {
+    double depth = 0.0;
+    double relieved_density_depth = 0.0;  // B_eff rho_f s [kg/m^2]
+  };
+  Submersion submersion(std::size_t p) const;
+  double unit_weight(std::size_t p) const;  // [N/m^3]
 
   DepthAveragedSettings settings_;
   std::vector<DepthAveragedMaterial> materials_;
@@ -111,6 +144,8 @@ class DepthAveragedSolver {
   std::vector<double> depth_;         // h_i
   std::vector<double> friction_;      // sum_p N_ip m_p g cos(theta) tan(delta_p)
   std::vector<char> stopped_;         // friction stopped the node this step
+  double fluid_density_ = 0.0;
+  std::vector<double> fluid_surface_;  // eta_f at the nodes; empty without a fluid
 };
 
 }  // namespace mpm

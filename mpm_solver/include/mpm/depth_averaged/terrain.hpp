@@ -25,6 +25,11 @@ class Terrain {
   double bed_elevation(const Vec<2>& x) const { return bed_ ? bed_->value(x) : 0.0; }
   Vec<2> bed_slope(const Vec<2>& x) const { return bed_ ? bed_->gradient(x) : Vec<2>::Zero(); }
 
+  // The height above the reference plane, along its normal, of the
+  // horizontal level at world elevation z (the plane passing through
+  // elevation 0 at x = 0): (z + x sin(theta)) / cos(theta) [m].
+  double height_of_level(double elevation, const Vec<2>& x) const;
+
   // Gravity's component normal to the ground [m/s^2].
   double normal_gravity() const { return normal_gravity_; }
   // The acceleration gravity gives a mass along the ground at x [m/s^2]:
