@@ -1,5 +1,6 @@
 // mpm_solver: the explicit material point method, standalone or as a
-// participant of a coupled job (`cosim run`).
+// participant of a coupled job (`cosim run`); a `kind: depth_averaged_case`
+// file runs the depth-averaged mass of van den Bout et al. (standalone).
 //
 //   mpm_solver --config case.yaml --output run/ [--overwrite] [--threads N]
 //   mpm_solver --validate --config case.yaml
@@ -9,6 +10,8 @@
 #include "mpm/case/case_schema.hpp"
 #include "mpm/case/load_case.hpp"
 #include "mpm/coupling/coupling_observer.hpp"
+#include "mpm/depth_averaged/depth_averaged_case.hpp"
+#include "mpm/depth_averaged/depth_averaged_run.hpp"
 #include "mpm/io/run_driver.hpp"
 
 int main(int argc, char** argv) {
@@ -16,7 +19,7 @@ int main(int argc, char** argv) {
       {.name = "mpm_solver",
        .description = "mpm_solver: explicit material point method for soil and structures",
        .case_kind = "mpm_case",
-       .help_config = mpm::mpm_case_help,
+       .help_config = [] { return mpm::mpm_case_help() + "\n" + mpm::depth_averaged_case_help(); },
        .run =
            [](const cosim::SolverCommandLine& line) {
              mpm::RunOptions options;
@@ -25,6 +28,14 @@ int main(int argc, char** argv) {
              options.threads = line.threads;
              options.verbosity = line.verbosity;
              options.reuse = line.reuse;
+             if (mpm::is_depth_averaged_case(line.config)) {
+               if (!line.endpoint.is_standalone())
+                 throw cosim::InputError(
+                     line.config.string() +
+                     ": a depth_averaged_case runs standalone; its pairing with swe_fluid is "
+                     "not built yet");
+               return mpm::run_depth_averaged_case(options);
+             }
              // Coupled (an endpoint from `cosim run`), or standalone in
              // windows: the coupling concept's observers drive a
              // cosim::Participant alongside the time loop.
@@ -34,6 +45,10 @@ int main(int argc, char** argv) {
            },
        .validate =
            [](const std::filesystem::path& config) {
+             if (mpm::is_depth_averaged_case(config)) {
+               mpm::DepthAveragedCase c = mpm::load_depth_averaged_case(config);
+               return cosim::ValidatedCase{c.name, std::move(c.size), "depth_averaged_case"};
+             }
              mpm::CaseDescription c = mpm::load_case(config);
              return cosim::ValidatedCase{c.name, std::move(c.size)};
            }},

@@ -33,6 +33,7 @@ struct SolverCommandLine {
 struct ValidatedCase {
   std::string name;
   RunSize size;
+  std::string kind = {};  // when the program reads more than its case_kind
 };
 
 struct SolverProgram {

@@ -16,8 +16,9 @@ int validate(const SolverProgram& program, const SolverCommandLine& line) {
   if (line.config.empty()) throw InputError("--validate needs --config <case.yaml>");
   if (!program.validate) throw InputError(program.name + " cannot --validate");
   const ValidatedCase valid = program.validate(line.config);
-  std::cout << fmt::format("{}: valid {} '{}': {}\n", line.config.string(), program.case_kind,
-                           valid.name, valid.size.describe());
+  std::cout << fmt::format("{}: valid {} '{}': {}\n", line.config.string(),
+                           valid.kind.empty() ? program.case_kind : valid.kind, valid.name,
+                           valid.size.describe());
   return 0;
 }
 

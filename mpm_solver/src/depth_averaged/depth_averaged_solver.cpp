@@ -88,6 +88,7 @@ DepthAveragedSolver::DepthAveragedSolver(DepthAveragedSettings settings,
   clear_grid();
   transfer_points_to_grid();
   compute_depth();
+  new_momentum_ = momentum_;
 }
 
 // a_i = integral of N_i over the grid, by two-point Gauss quadrature per
@@ -160,6 +161,16 @@ DepthAveragedSolver::Submersion DepthAveragedSolver::submersion(std::size_t p) c
   const double f_sc = particles_.structured_share[p];
   const double propagated = (1.0 - f_sc) + f_sc * m.basal_pressure_factor;  // eq. 39
   return {s, propagated * fluid_density_ * s};
+}
+
+Vec<2> DepthAveragedSolver::velocity_at(const Vec<2>& x) const {
+  Vec<2> momentum = Vec<2>::Zero();
+  double mass = 0.0;
+  stencil_at(x, settings_.grid).for_each([&](std::size_t i, double N, const Vec<2>&) {
+    momentum += N * new_momentum_[i];
+    mass += N * mass_[i];
+  });
+  return mass > 0.0 ? Vec<2>(momentum / mass) : Vec<2>::Zero();
 }
 
 double DepthAveragedSolver::cohesion(std::size_t p) const {

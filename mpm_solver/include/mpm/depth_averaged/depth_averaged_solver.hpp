@@ -104,6 +104,9 @@ class DepthAveragedSolver {
   Vec<2> node_position(std::size_t node) const;
   std::array<int, 2> nodes_per_direction() const { return nodes_; }
   double depth_at(const Vec<2>& x) const;
+  // The grid's velocity at x after the last step, sum N_i p_i / sum N_i m_i
+  // (zero where the mass is not).
+  Vec<2> velocity_at(const Vec<2>& x) const;
 
  private:
   // The step, in order.
