@@ -1,11 +1,12 @@
 // Every YAML file shipped under configs/ loads: jobs through the coupler's
-// loader (schema and cross-references), MPM, shallow-water, ICE and OpenFOAM cases through
-// their solvers' loaders. A key renamed in a schema, or an example left
-// behind by a change, fails here rather than in a user's first run.
-// `kind: test_participant` files are read by the test participant, which
-// the demo jobs run in cosim_run_test. Bench suites load, and every run
-// they plan (at both resolutions) has a job and cases that load: the jobs
-// the bench builds from its pairings and the cases its overrides change.
+// loader (schema and cross-references), MPM (and depth-averaged),
+// shallow-water, ICE and OpenFOAM cases through their solvers' loaders. A key
+// renamed in a schema, or an example left behind by a change, fails here
+// rather than in a user's first run. `kind: test_participant` files are read
+// by the test participant, which the demo jobs run in cosim_run_test. Bench
+// suites load, and every run they plan (at both resolutions) has a job and
+// cases that load: the jobs the bench builds from its pairings and the cases
+// its overrides change.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -20,6 +21,7 @@
 #include "ice/case/load_case.hpp"
 #include "job/job.hpp"
 #include "mpm/case/load_case.hpp"
+#include "mpm/depth_averaged/depth_averaged_case.hpp"
 #include "openfoam/case/load_case.hpp"
 #include "swe/case/load_case.hpp"
 
@@ -34,6 +36,8 @@ std::string load_by_kind(const fs::path& file) {
     (void)cosim::job::load_job(file);
   } else if (kind == "mpm_case") {
     (void)mpm::load_case(file);
+  } else if (kind == "depth_averaged_case") {
+    (void)mpm::load_depth_averaged_case(file);
   } else if (kind == "swe_case") {
     (void)swe::load_case(file);
   } else if (kind == "ice_case") {
@@ -64,6 +68,7 @@ TEST(ShippedConfigs, EveryJobAndCaseLoads) {
   for (const auto& [kind, count] : loaded) fmt::print("  {:17s} {} files load\n", kind, count);
   EXPECT_GE(loaded["job"], 9);
   EXPECT_GE(loaded["mpm_case"], 16);
+  EXPECT_GE(loaded["depth_averaged_case"], 2);
   EXPECT_GE(loaded["swe_case"], 12);
   EXPECT_GE(loaded["ice_case"], 3);
   EXPECT_GE(loaded["openfoam_case"], 1);
