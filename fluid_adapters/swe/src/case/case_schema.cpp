@@ -129,6 +129,66 @@ Schema coupling_schema() {
   return coupling;
 }
 
+Schema two_phase_schema() {
+  Schema drag = Schema::object(
+                    "Pudasaini's generalised drag between the solids (with the fluid they confine) "
+                    "and the free fluid, split between structured blocks and unconfined grains "
+                    "(van den Bout et al., OpenLISEM Hazard, eqs. 61-64). Values out of range are "
+                    "refused at their line.")
+                    .default_value("{}");
+  drag.optional("exponent_j", Schema::number().default_value("2"),
+                "j in [1, 2] of the force C (u_u - u_c)|u_u - u_c|^(j-1): j = 1 is linear, "
+                "j = 2 quadratic. (The paper's text calls quadratic j = 1; we follow its "
+                "formula and settings.)")
+      .optional("reynolds_exponent_M", Schema::number().default_value("2.4"),
+                "M in [1, 10] of G = alpha_u^(M - 1); 2.4 to 4.65 (Pitman & Le 2005).")
+      .optional("partition_exponent_m", Schema::number().default_value("1"),
+                "m >= 0 of the partition factor P = ((1 - f_sc) alpha_s / ((1 - f_fc) "
+                "alpha_f))^m.")
+      .optional("grain_size", Schema::number().unit("m").default_value("1e-3"),
+                "d > 0 of the unconfined grains (their settling velocity and Re_p).")
+      .optional("block_size", Schema::number().unit("m").default_value("1"),
+                "Mean size > 0 of the structured blocks.")
+      .optional("smoothing_speed",
+                Schema::number().unit("m/s").default_note("|alpha_c u_c + "
+                                                          "alpha_u u_u|, eq. 63"),
+                "K >= 0 of the smoothing S_p (eqs. 62-63); constant when given.");
+  Schema box = Schema::object("Axis-aligned box.");
+  box.required("min", Schema::vector(2, 2).unit("m"), "Lower corner.")
+      .required("max", Schema::vector(2, 2).unit("m"), "Upper corner.");
+  Schema layer = Schema::object(
+      "A static solid layer laid at the start (standalone runs): uniform over `box`, or "
+      "everywhere. The fluid's bed becomes bed + depth and the initial water is laid over it.");
+  layer.required("depth", Schema::number().non_negative().unit("m"), "Solid depth h_s.")
+      .required("density", Schema::number().positive().unit("kg/m^3"),
+                "Bulk density rho_c of the solids with their confined fluid; in (rho_f, "
+                "solid_density].")
+      .optional("structured_share", Schema::number().range(0.0, 1.0).default_value("0"),
+                "Share f_sc of the solids bound in structured blocks.")
+      .optional("velocity", Schema::vector(2, 2).unit("m/s").default_note("zero"),
+                "Solid velocity [u_s, v_s].")
+      .optional("box", box, "Where the layer lies; everywhere when absent.");
+  Schema two_phase = Schema::object(
+      "Two-phase mode (2D only; van den Bout et al., OpenLISEM Hazard, eqs. 47-65): the free "
+      "fluid flows over a solid layer (bed + h_s) and, after each fluid step, exchanges momentum "
+      "with it by drag and virtual mass, exactly in time with the coefficients frozen over the "
+      "step. Absent: single-phase shallow water.");
+  two_phase.optional("drag", drag, "The drag law's parameters.")
+      .optional("solid_density", Schema::number().positive().unit("kg/m^3").default_value("2650"),
+                "Density rho_s of the grains; above the fluid's.")
+      .optional("fluid_viscosity", Schema::number().positive().unit("Pa s").default_value("1e-3"),
+                "Dynamic viscosity eta_f of the fluid.")
+      .optional("virtual_mass", Schema::boolean().default_value("true"),
+                "Include the virtual mass V = alpha_c rho_f C_vm, C_vm = (1 + 2 alpha_c) / (2 "
+                "alpha_u) (eq. 65).")
+      .optional("rain_rate", Schema::number().non_negative().unit("m/s").default_value("0"),
+                "Uniform rain R added to every cell (without horizontal momentum).")
+      .optional("infiltration_rate", Schema::number().non_negative().unit("m/s").default_value("0"),
+                "Uniform infiltration I; a cell never loses more water than it holds.")
+      .optional("solid_layer", layer, "A static initial solid layer.");
+  return two_phase;
+}
+
 }  // namespace
 
 Schema swe_case_schema() {
@@ -184,6 +244,7 @@ Schema swe_case_schema() {
       .optional("threads", Schema::integer().non_negative().default_value("0"),
                 "OpenMP threads; 0: OpenMP's default.")
       .optional("coupling", coupling_schema(), "Exchange with a soil solver.")
+      .optional("two_phase", two_phase_schema(), "Free fluid over a solid layer (2D).")
       .optional("limits", cosim::run_limits_schema(), "What the run may use.");
   return file;
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 
 #include "cosim/config/document.hpp"
 #include "cosim/config/kind.hpp"
@@ -54,6 +55,7 @@ class CaseReader {
     read_output(c);
     c.threads = root_.get<int>("threads");
     read_coupling(c);
+    read_two_phase(c);
     return c;
   }
 
@@ -317,6 +319,78 @@ class CaseReader {
       c.coupling.pressure = BedPressure::excess;
   }
 
+  // The drag's parameters, each checked by cosim::exchange::check() alone so
+  // that a value out of range is refused at its own key and line.
+  static cosim::exchange::GeneralisedDragParameters read_drag(const Node& drag) {
+    using Parameters = cosim::exchange::GeneralisedDragParameters;
+    Parameters p = quadratic_drag();
+    auto checked = [](const Node& node, double Parameters::*field) {
+      Parameters alone = quadratic_drag();
+      alone.*field = node.as<double>();
+      try {
+        cosim::exchange::check(alone);
+      } catch (const std::invalid_argument& e) {
+        node.fail(e.what());
+      }
+      return alone.*field;
+    };
+    p.exponent = checked(drag["exponent_j"], &Parameters::exponent);
+    p.reynolds_exponent = checked(drag["reynolds_exponent_M"], &Parameters::reynolds_exponent);
+    p.partition_exponent = checked(drag["partition_exponent_m"], &Parameters::partition_exponent);
+    p.grain_size = checked(drag["grain_size"], &Parameters::grain_size);
+    p.block_size = checked(drag["block_size"], &Parameters::block_size);
+    if (auto k = drag.find("smoothing_speed")) {
+      Parameters alone = quadratic_drag();
+      alone.smoothing_speed = k->as<double>();
+      try {
+        cosim::exchange::check(alone);
+      } catch (const std::invalid_argument& e) {
+        k->fail(e.what());
+      }
+      p.smoothing_speed = alone.smoothing_speed;
+    }
+    return p;
+  }
+
+  void read_two_phase(CaseDescription& c) {
+    const auto node = root_.find("two_phase");
+    if (!node) return;
+    if (c.dimension != 2) node->fail_at_key("the two-phase mode needs a 2D case (dimension: 2)");
+    TwoPhaseSpec spec;
+    spec.parameters.drag = read_drag((*node)["drag"]);
+    spec.parameters.solid_density = node->get<double>("solid_density");
+    spec.parameters.fluid_viscosity = node->get<double>("fluid_viscosity");
+    spec.parameters.virtual_mass = node->get<bool>("virtual_mass");
+    spec.sources.rain_rate = node->get<double>("rain_rate");
+    spec.sources.infiltration_rate = node->get<double>("infiltration_rate");
+    const double rho_f = c.physics.density, rho_s = spec.parameters.solid_density;
+    if (!(rho_s > rho_f))
+      (*node)["solid_density"].fail(fmt::format(
+          "the grain density {:g} kg/m^3 must exceed the fluid's (physics.density) {:g} kg/m^3",
+          rho_s, rho_f));
+    if (auto layer = node->find("solid_layer")) {
+      InitialSolidLayer l;
+      l.depth = layer->get<double>("depth");
+      l.density = layer->get<double>("density");
+      if (!(l.density > rho_f && l.density <= rho_s))
+        (*layer)["density"].fail(fmt::format(
+            "the bulk density {:g} kg/m^3 of the solids with their confined fluid must lie in "
+            "(rho_f, rho_s] = ({:g}, {:g}] kg/m^3 (physics.density, two_phase.solid_density)",
+            l.density, rho_f, rho_s));
+      l.structured_share = layer->get<double>("structured_share");
+      if (auto v = layer->find("velocity")) l.velocity = pair_of(*v, 2);
+      if (auto box = layer->find("box")) {
+        l.in_box = true;
+        l.min = pair_of((*box)["min"], 2);
+        l.max = pair_of((*box)["max"], 2);
+        if (!(l.max[0] >= l.min[0] && l.max[1] >= l.min[1]))
+          (*box)["max"].fail("the box's upper corner lies below its lower corner");
+      }
+      spec.initial_layer = l;
+    }
+    c.two_phase = spec;
+  }
+
   // The run's size with `cells` cells, refused above what the case's limits allow.
   cosim::RunSize checked_size(int dimension, double cells) const {
     cosim::RunSize size = run_size(dimension, cells, root_);
@@ -360,6 +434,10 @@ std::unique_ptr<Solver> make_solver(const CaseDescription& c) {
   for (std::size_t i = 0; i < bed.size(); ++i) {
     const cosim::Vec3 x = cells.position(i);
     bed[i] = c.bed.at(x[0], x[1]);
+  }
+  if (c.two_phase) {
+    const SolidLayer layer = lay_solid_layer(*c.two_phase, cells);
+    for (std::size_t i = 0; i < bed.size(); ++i) bed[i] += layer.depth[i];
   }
   std::vector<double> h, hu, hv;
   c.initial.lay(cells, bed, h, hu, hv);

@@ -24,6 +24,7 @@
 #include "swe/case/load_case.hpp"
 #include "swe/coupling/bed_traction.hpp"
 #include "swe/io/gauge_recorder.hpp"
+#include "swe/two_phase/two_phase_exchange.hpp"
 
 namespace swe {
 
@@ -89,7 +90,9 @@ class CaseRun {
         coupling_(description.coupling),
         progress_{.snapshots =
                       cosim::OutputSchedule(description.output_every, description.end_time)},
-        tolerance_(1e-10 * description.end_time) {}
+        tolerance_(1e-10 * description.end_time) {
+    if (description.two_phase) make_two_phase();
+  }
 
   void run() {
     try {
@@ -142,6 +145,33 @@ class CaseRun {
     }
   }
 
+  // The two-phase exchange over the case's bed and initial solid layer (the
+  // solver's bed is already bed + h_s: make_solver).
+  void make_two_phase() {
+    const cosim::Mesh cells{cells_mesh, solver_->cells()};
+    std::vector<double> base_bed(cells.size());
+    for (std::size_t i = 0; i < base_bed.size(); ++i) {
+      const cosim::Vec3 x = cells.position(i);
+      base_bed[i] = c_.bed.at(x[0], x[1]);
+    }
+    two_phase_.emplace(*solver_, c_.two_phase->parameters, c_.two_phase->sources,
+                       lay_solid_layer(*c_.two_phase, cells), std::move(base_bed));
+    spdlog::info("two-phase: a solid layer under the fluid, drag j = {:g}{}",
+                 c_.two_phase->parameters.drag.exponent,
+                 c_.two_phase->parameters.virtual_mass ? " with virtual mass" : "");
+  }
+
+  // The received bed (the ground without solids) under the fluid: with a
+  // solid layer, the fluid's bed is bed + h_s.
+  void set_received_bed(const std::vector<double>& bed) {
+    if (two_phase_) {
+      two_phase_->set_base_bed(bed);
+      two_phase_->apply_bed(*solver_);
+    } else {
+      solver_->set_bed(bed);
+    }
+  }
+
   // eta_0 per cell, the reference of BedPressure::excess.
   void record_initial_surface() {
     const auto h = solver_->depth();
@@ -154,9 +184,9 @@ class CaseRun {
   // again over it (a free surface stays a free surface).
   void lay_water_over_received_bed() {
     const std::vector<double> bed = participant_.read(bed_field);
+    set_received_bed(bed);
     std::vector<double> h, hu, hv;
-    c_.initial.lay({cells_mesh, solver_->cells()}, bed, h, hu, hv);
-    solver_->set_bed(bed);
+    c_.initial.lay({cells_mesh, solver_->cells()}, solver_->bed(), h, hu, hv);
     solver_->set_state(h, hu, hv);
     spdlog::info("coupled: water laid over the received bed ({} cells)", bed.size());
   }
@@ -189,7 +219,7 @@ class CaseRun {
         auto scope = summary_.phases().measure("bed_update");
         bed.resize(solver_->cell_count());
         participant_.read(bed_field, bed);
-        solver_->set_bed(bed);
+        set_received_bed(bed);
       }
       const double stable = solver_->stable_time_step();
       if (!(stable >= c_.min_time_step))
@@ -207,11 +237,15 @@ class CaseRun {
         auto scope = summary_.phases().measure("bed_update");
         bed.resize(solver_->cell_count());
         participant_.read(bed_field, bed, 0.5 * dt);
-        solver_->set_bed(bed);
+        set_received_bed(bed);
       }
       {
         auto scope = summary_.phases().measure("advance");
         solver_->step(dt);
+      }
+      if (two_phase_) {
+        auto scope = summary_.phases().measure("two_phase");
+        two_phase_->after_step(*solver_, dt);
       }
       ++progress_.steps;
       progress_.min_dt = std::min(progress_.min_dt, dt);
@@ -252,6 +286,7 @@ class CaseRun {
   void save_window_start() {
     auto scope = summary_.phases().measure("save_state");
     solver_->save_state();
+    if (two_phase_) two_phase_->save_state();
     saved_progress_ = progress_;
     outputs_.hold();
   }
@@ -259,6 +294,7 @@ class CaseRun {
   void restore_window_start() {
     auto scope = summary_.phases().measure("restore_state");
     solver_->restore_state();
+    if (two_phase_) two_phase_->restore_state();
     progress_ = *saved_progress_;
     outputs_.discard();
   }
@@ -283,6 +319,14 @@ class CaseRun {
     cosim::write_schedule(out, "run.snapshots", progress_.snapshots);
     cosim::write_schedule(out, "run.gauge_times", *progress_.gauge_times);
     out.numbers("coupling.initial_surface", coupling_.initial_surface);
+    if (two_phase_) {
+      out.numbers("two_phase.velocity_x", two_phase_->layer().velocity_x);
+      out.numbers("two_phase.velocity_y", two_phase_->layer().velocity_y);
+      out.numbers("two_phase.impulse_x", two_phase_->impulse_x());
+      out.numbers("two_phase.impulse_y", two_phase_->impulse_y());
+      out.number("two_phase.volume_added", two_phase_->volume_added());
+      out.number("two_phase.volume_infiltrated", two_phase_->volume_infiltrated());
+    }
     out.commit();
     participant_.checkpoint_written();
   }
@@ -298,6 +342,17 @@ class CaseRun {
     cosim::read_schedule(in, "run.gauge_times", *progress_.gauge_times);
     in.numbers("coupling.initial_surface", coupling_.initial_surface.size(),
                coupling_.initial_surface);
+    if (two_phase_) {
+      TwoPhaseExchange::State state;
+      const std::size_t n = solver_->cell_count();
+      in.numbers("two_phase.velocity_x", n, state.velocity_x);
+      in.numbers("two_phase.velocity_y", n, state.velocity_y);
+      in.numbers("two_phase.impulse_x", n, state.impulse_x);
+      in.numbers("two_phase.impulse_y", n, state.impulse_y);
+      state.added = in.number("two_phase.volume_added");
+      state.infiltrated = in.number("two_phase.volume_infiltrated");
+      two_phase_->set_state(state);
+    }
     spdlog::info("restarted from {} at t = {:.9g} s (step {})",
                  participant_.restart_directory().string(), participant_.time(), progress_.steps);
   }
@@ -350,10 +405,28 @@ class CaseRun {
         velocity_[k + 1] = h[c] > dry ? qy[c] / h[c] : 0.0;
       }
     }
+    if (!two_phase_) {
+      outputs_.write(*snapshot_writer_, t,
+                     {{"h", {h, 1, "m"}},
+                      {"eta", {eta_, 1, "m"}},
+                      {"bed", {bed, 1, "m"}},
+                      {"discharge", {discharge_, dim, "m^2/s"}},
+                      {"velocity", {velocity_, dim, "m/s"}}});
+      return;
+    }
+    // Two-phase: `bed` is the ground without solids, `solid_depth` the layer on it.
+    const SolidLayer& layer = two_phase_->layer();
+    solid_velocity_.resize(2 * n);
+    for (std::size_t c = 0; c < n; ++c) {
+      solid_velocity_[2 * c] = layer.velocity_x[c];
+      solid_velocity_[2 * c + 1] = layer.velocity_y[c];
+    }
     outputs_.write(*snapshot_writer_, t,
                    {{"h", {h, 1, "m"}},
                     {"eta", {eta_, 1, "m"}},
-                    {"bed", {bed, 1, "m"}},
+                    {"bed", {two_phase_->base_bed(), 1, "m"}},
+                    {"solid_depth", {layer.depth, 1, "m"}},
+                    {"solid_velocity", {solid_velocity_, 2, "m/s"}},
                     {"discharge", {discharge_, dim, "m^2/s"}},
                     {"velocity", {velocity_, dim, "m/s"}}});
   }
@@ -376,6 +449,11 @@ class CaseRun {
       if (progress_.steps > 0) summary_.set_metric("min_time_step", progress_.min_dt, "s");
       const auto& timings = participant_.timings();
       summary_.set_metric("coupling_wait", timings.waiting, "s");
+      if (two_phase_) {
+        summary_.set_metric("two_phase_volume_added", two_phase_->volume_added(), "m^3");
+        summary_.set_metric("two_phase_volume_infiltrated", two_phase_->volume_infiltrated(),
+                            "m^3");
+      }
     }
   }
 
@@ -393,7 +471,8 @@ class CaseRun {
   std::optional<cosim::SnapshotWriter> snapshot_writer_;
   std::optional<GaugeRecorder> gauges_;
   std::optional<cosim::TimeSeriesWriter> water_;
-  std::vector<double> eta_, discharge_, velocity_;
+  std::vector<double> eta_, discharge_, velocity_, solid_velocity_;
+  std::optional<TwoPhaseExchange> two_phase_;
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "swe/solver.hpp"
 #include "swe/solver_1d.hpp"
 #include "swe/solver_2d.hpp"
+#include "swe/two_phase/two_phase_spec.hpp"
 
 namespace swe {
 
@@ -72,10 +74,12 @@ struct CaseDescription {
   int threads = 0;  // 0: OpenMP's default
 
   CouplingSpec coupling;
-  cosim::RunSize size;  // its cells and their memory (set by the loader)
+  std::optional<TwoPhaseSpec> two_phase;  // absent: single-phase
+  cosim::RunSize size;                    // its cells and their memory (set by the loader)
 };
 
-// The solver the case describes, with its bed and initial water laid.
+// The solver the case describes, with its bed and initial water laid (in
+// two-phase mode over bed + the initial solid layer's depth).
 std::unique_ptr<Solver> make_solver(const CaseDescription& description);
 
 }  // namespace swe
