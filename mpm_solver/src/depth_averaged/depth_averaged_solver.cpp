@@ -154,8 +154,13 @@ double DepthAveragedSolver::fluid_surface_at(const Vec<2>& x) const {
 
 DepthAveragedSolver::Submersion DepthAveragedSolver::submersion(std::size_t p) const {
   if (fluid_surface_.empty()) return {};
+  return submersion_below(p, fluid_surface_at(particles_.position[p]));
+}
+
+DepthAveragedSolver::Submersion DepthAveragedSolver::submersion_below(std::size_t p,
+                                                                      double surface) const {
   const Vec<2>& x = particles_.position[p];
-  const double above_bed = fluid_surface_at(x) - settings_.terrain.bed_elevation(x);
+  const double above_bed = surface - settings_.terrain.bed_elevation(x);
   const double s = std::clamp(above_bed, 0.0, particles_.depth(p));
   const auto& m = materials_[static_cast<std::size_t>(particles_.material[p])];
   const double f_sc = particles_.structured_share[p];
@@ -185,10 +190,10 @@ double DepthAveragedSolver::earth_pressure_coefficient(std::size_t p) const {
 }
 
 // The column's effective unit weight g cos(theta) (rho h - B_eff rho_f s) / h.
-double DepthAveragedSolver::unit_weight(std::size_t p) const {
+double DepthAveragedSolver::unit_weight(std::size_t p, double relieved_density_depth) const {
   const double h = particles_.depth(p);
   return settings_.terrain.normal_gravity() *
-         std::max(0.0, particles_.density(p) - submersion(p).relieved_density_depth / h);
+         std::max(0.0, particles_.density(p) - relieved_density_depth / h);
 }
 
 double DepthAveragedSolver::stable_time_step() const {
@@ -245,18 +250,23 @@ void DepthAveragedSolver::clear_grid() {
 void DepthAveragedSolver::transfer_points_to_grid() {
   const auto& terrain = settings_.terrain;
   const double g_n = terrain.normal_gravity();
+  relieved_.resize(particles_.size());
   for (std::size_t p = 0; p < particles_.size(); ++p) {
     const auto& m = materials_[static_cast<std::size_t>(particles_.material[p])];
     const double mp = particles_.mass[p];
     const GroundStencil stencil = stencil_at(particles_.position[p], settings_.grid);
     Vec<2> drive = mp * terrain.driving_acceleration(particles_.position[p]);
     double bearing_mass = mp;
+    relieved_[p] = 0.0;
     if (!fluid_surface_.empty()) {
-      const Submersion submerged = submersion(p);
+      double surface = 0.0;
       Vec<2> surface_slope = Vec<2>::Zero();
-      stencil.for_each([&](std::size_t i, double, const Vec<2>& dN) {
+      stencil.for_each([&](std::size_t i, double N, const Vec<2>& dN) {
+        surface += N * fluid_surface_[i];
         surface_slope += fluid_surface_[i] * dN;
       });
+      const Submersion submerged = submersion_below(p, surface);
+      relieved_[p] = submerged.relieved_density_depth;
       // eq. 54: the fluid's hydrostatic pressure gradient on the submerged part
       drive -= fluid_density_ * g_n * particles_.area[p] * submerged.depth * surface_slope;
       bearing_mass = std::max(0.0, mp - particles_.area[p] * submerged.relieved_density_depth);
@@ -279,8 +289,9 @@ void DepthAveragedSolver::compute_depth() {
 // f_i = sum_p A_p T(h_p) grad N_ip: the weak form of -grad T.
 void DepthAveragedSolver::add_lateral_thrust() {
   for (std::size_t p = 0; p < particles_.size(); ++p) {
-    const double T = EarthPressure::thrust(earth_pressure_coefficient(p), unit_weight(p),
-                                           cohesion(p), particles_.depth(p));
+    const double T =
+        EarthPressure::thrust(earth_pressure_coefficient(p), unit_weight(p, relieved_[p]),
+                              cohesion(p), particles_.depth(p));
     if (T == 0.0) continue;
     const double area_thrust = particles_.area[p] * T;
     stencil_at(particles_.position[p], settings_.grid)
@@ -397,8 +408,9 @@ void DepthAveragedSolver::degrade_cohesion(double dt) {
   for (std::size_t p = 0; p < particles_.size(); ++p) {
     const auto& m = materials_[static_cast<std::size_t>(particles_.material[p])];
     if (!m.degradation.enabled() || particles_.damage[p] >= 1.0) continue;
-    const double z_c =
-        EarthPressure::crack_depth(earth_pressure_coefficient(p), unit_weight(p), cohesion(p));
+    const double z_c = EarthPressure::crack_depth(
+        earth_pressure_coefficient(p), unit_weight(p, submersion(p).relieved_density_depth),
+        cohesion(p));
     if (particles_.depth(p) <= z_c) continue;
     const double strain = dt * particles_.areal_strain_rate[p];
     const double damage = particles_.damage[p];

@@ -130,7 +130,9 @@ class DepthAveragedSolver {
     double relieved_density_depth = 0.0;  // B_eff rho_f s [kg/m^2]
   };
   Submersion submersion(std::size_t p) const;
-  double unit_weight(std::size_t p) const;  // [N/m^3]
+  Submersion submersion_below(std::size_t p, double surface) const;  // surface eta_f at the point
+  // g cos(theta) (rho h - relieved) / h [N/m^3]
+  double unit_weight(std::size_t p, double relieved_density_depth) const;
 
   DepthAveragedSettings settings_;
   std::vector<DepthAveragedMaterial> materials_;
@@ -149,6 +151,7 @@ class DepthAveragedSolver {
   std::vector<char> stopped_;         // friction stopped the node this step
   double fluid_density_ = 0.0;
   std::vector<double> fluid_surface_;  // eta_f at the nodes; empty without a fluid
+  std::vector<double> relieved_;       // B_eff rho_f s per point, from the last P2G
 };
 
 }  // namespace mpm
