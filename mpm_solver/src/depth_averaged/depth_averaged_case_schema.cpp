@@ -64,7 +64,11 @@ Schema material_schema() {
       .optional(
           "fragmentation_strain",
           Schema::number().positive().default_note("the cohesion degradation's critical strain"),
-          "epsilon_f of eq. 28: the dilation over which the blocks break up.");
+          "epsilon_f of eq. 28: the dilation over which the blocks break up.")
+      .optional("confined_fluid_fraction", Schema::number().range(0.0, 0.99).default_value("0"),
+                "The share of a column's volume that is fluid confined in its blocks (f_fc "
+                "alpha_f / alpha_c, eqs. 1-3): released as the blocks break up (eqs. 27, 28), it "
+                "leaves the column with its mass and, coupled, becomes free water of swe_fluid.");
   CohesionDegradation::add_keys(material);
   return material;
 }
@@ -123,8 +127,8 @@ Schema still_water_schema() {
       .required("level", Schema::number().unit("m"),
                 "World elevation of its surface; the reference plane is at elevation 0 at x = 0 "
                 "and falls along x at tan(inclination).")
-      .optional("density", Schema::number().positive().unit("kg/m^3").default_value("1000"),
-                "rho_f.");
+      .optional("density", Schema::number().positive().unit("kg/m^3").default_note("fluid.density"),
+                "rho_f; given, it is also the density of the fluid the columns confine.");
   return water;
 }
 
@@ -165,6 +169,15 @@ Schema depth_averaged_case_schema() {
       .optional("walls", walls_schema().default_value("{}"), "The grid's faces.")
       .optional("numerics", numerics_schema().default_value("{}"), "The scheme.")
       .optional("still_water", still_water_schema(), "A lake around the mass; absent: none.")
+      .optional(
+          "fluid",
+          Schema::object("The water around and inside the mass.")
+              .optional("density", Schema::number().positive().unit("kg/m^3").default_value("1000"),
+                        "rho_f: of the fluid the columns confine and release, of the "
+                        "still water, and of a coupled swe_fluid's water (give its "
+                        "physics.density).")
+              .default_value("{}"),
+          "The water's density.")
       .optional("gauges", Schema::sequence(gauge_schema()), "Points recorded to gauges.csv.")
       .optional("output", output_schema().default_value("{}"), "Output.")
       .optional("threads", Schema::integer().non_negative().default_value("0"),

@@ -23,6 +23,8 @@ void DepthAveragedMaterial::check() const {
     fail("structured share must be in [0, 1]", structured_share);
   if (!(basal_pressure_factor >= 0.0 && basal_pressure_factor <= 1.0))
     fail("basal pressure factor must be in [0, 1]", basal_pressure_factor);
+  if (!(confined_fluid_fraction >= 0.0 && confined_fluid_fraction < 1.0))
+    fail("confined fluid fraction must be in [0, 1)", confined_fluid_fraction);
   if (!(fragmentation_strain >= 0.0) || !std::isfinite(fragmentation_strain))
     fail("fragmentation strain must not be negative", fragmentation_strain);
 }

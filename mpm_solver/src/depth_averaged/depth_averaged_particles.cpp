@@ -18,6 +18,8 @@ void DepthAveragedParticles::add(const Vec<2>& x, const Vec<2>& v, double depth_
   areal_strain_rate.push_back(0.0);
   damage.push_back(0.0);
   structured_share.push_back(1.0);
+  confined_fluid.push_back(0.0);
+  released_fluid.push_back(0.0);
 }
 
 std::size_t DepthAveragedParticles::seed(const Vec<2>& lower, const Vec<2>& upper,
@@ -74,6 +76,8 @@ std::size_t DepthAveragedParticles::split(std::size_t p, int edge) {
   volume[p] *= 0.5;
   area[p] *= 0.5;
   mass[p] *= 0.5;
+  confined_fluid[p] *= 0.5;
+  released_fluid[p] *= 0.5;
   edges[p].col(edge) *= 0.5;
   position.push_back(position[p] + quarter);
   position[p] -= quarter;
@@ -86,6 +90,8 @@ std::size_t DepthAveragedParticles::split(std::size_t p, int edge) {
   areal_strain_rate.push_back(areal_strain_rate[p]);
   damage.push_back(damage[p]);
   structured_share.push_back(structured_share[p]);
+  confined_fluid.push_back(confined_fluid[p]);
+  released_fluid.push_back(released_fluid[p]);
   return size() - 1;
 }
 

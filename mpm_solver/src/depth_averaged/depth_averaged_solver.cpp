@@ -72,9 +72,19 @@ DepthAveragedSolver::DepthAveragedSolver(DepthAveragedSettings settings,
   depth_.assign(n, 0.0);
   friction_.assign(n, 0.0);
   stopped_.assign(n, 0);
-  for (std::size_t p = 0; p < particles_.size(); ++p)
-    particles_.structured_share[p] =
-        materials_[static_cast<std::size_t>(particles_.material[p])].structured_share;
+  if (!(settings_.confined_fluid_density > 0.0))
+    throw std::invalid_argument("the confined fluid's density must be positive");
+  for (std::size_t p = 0; p < particles_.size(); ++p) {
+    const auto& m = materials_[static_cast<std::size_t>(particles_.material[p])];
+    particles_.structured_share[p] = m.structured_share;
+    particles_.confined_fluid[p] =
+        m.structured_share > 0.0 ? m.confined_fluid_fraction * particles_.volume[p] : 0.0;
+    if (particles_.confined_fluid[p] > 0.0 &&
+        !(particles_.density(p) > settings_.confined_fluid_density))
+      throw std::invalid_argument(fmt::format(
+          "material '{}' confines fluid of density {} kg/m^3 but is no denser itself ({} kg/m^3)",
+          m.name, settings_.confined_fluid_density, particles_.density(p)));
+  }
   if (settings_.still_water) {
     if (!(settings_.still_water->density > 0.0) || !std::isfinite(settings_.still_water->level))
       throw std::invalid_argument("still water needs a positive density and a finite level");
@@ -267,8 +277,11 @@ void DepthAveragedSolver::transfer_points_to_grid() {
       });
       const Submersion submerged = submersion_below(p, surface);
       relieved_[p] = submerged.relieved_density_depth;
-      // eq. 54: the fluid's hydrostatic pressure gradient on the submerged part
-      drive -= fluid_density_ * g_n * particles_.area[p] * submerged.depth * surface_slope;
+      // eq. 54: the fluid's hydrostatic pressure gradient on the submerged
+      // part, and its buoyancy, which the bed's slope turns along the ground
+      // as it does the weight: -rho_f g s grad(eta - b).
+      drive -= fluid_density_ * g_n * particles_.area[p] * submerged.depth *
+               (surface_slope - terrain.bed_slope(particles_.position[p]));
       bearing_mass = std::max(0.0, mp - particles_.area[p] * submerged.relieved_density_depth);
     }
     const double capacity = bearing_mass * g_n * std::tan(m.basal_friction_angle);
@@ -415,11 +428,34 @@ void DepthAveragedSolver::degrade_cohesion(double dt) {
     const double strain = dt * particles_.areal_strain_rate[p];
     const double damage = particles_.damage[p];
     particles_.damage[p] = m.degradation.damage_after(damage, strain);
-    particles_.structured_share[p] =
-        particles_.damage[p] >= 1.0
-            ? 0.0
-            : m.structured_share_after(particles_.structured_share[p], damage, strain);
+    const double share = particles_.structured_share[p];
+    const double new_share =
+        particles_.damage[p] >= 1.0 ? 0.0 : m.structured_share_after(share, damage, strain);
+    particles_.structured_share[p] = new_share;
+    // Eq. 27: the confined fluid goes at the structures' rate, its volume
+    // and mass leaving the column (its momentum with them).
+    if (share > 0.0 && particles_.confined_fluid[p] > 0.0) {
+      const double released = particles_.confined_fluid[p] * (share - new_share) / share;
+      particles_.confined_fluid[p] -= released;
+      particles_.released_fluid[p] += released;
+      particles_.volume[p] -= released;
+      particles_.mass[p] -= settings_.confined_fluid_density * released;
+    }
   }
+}
+
+std::vector<double> DepthAveragedSolver::take_released_fluid() {
+  std::vector<double> released(particles_.size(), 0.0);
+  released.swap(particles_.released_fluid);
+  return released;
+}
+
+void DepthAveragedSolver::apply_impulse(std::span<const Vec<2>> impulse) {
+  if (impulse.size() != particles_.size())
+    throw std::invalid_argument(
+        fmt::format("an impulse for {} points on {} points", impulse.size(), particles_.size()));
+  for (std::size_t p = 0; p < particles_.size(); ++p)
+    particles_.velocity[p] += impulse[p] / particles_.mass[p];
 }
 
 }  // namespace mpm

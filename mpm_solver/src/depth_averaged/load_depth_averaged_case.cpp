@@ -119,9 +119,16 @@ class CaseReader {
     }
     c_.settings.terrain = Terrain(terrain["inclination"].as<double>() * deg,
                                   terrain["gravity"].as<double>(), std::move(bed));
-    if (auto water = root_.find("still_water"))
-      c_.settings.still_water =
-          StillWater{(*water)["density"].as<double>(), (*water)["level"].as<double>()};
+    const double fluid_density = root_["fluid"]["density"].as<double>();
+    c_.settings.confined_fluid_density = fluid_density;
+    if (auto water = root_.find("still_water")) {
+      StillWater still{fluid_density, (*water)["level"].as<double>()};
+      if (auto density = water->find("density")) {
+        still.density = density->as<double>();
+        c_.settings.confined_fluid_density = still.density;
+      }
+      c_.settings.still_water = still;
+    }
   }
 
   void read_numerics() {
@@ -148,6 +155,7 @@ class CaseReader {
       m.cohesion = node["cohesion"].as<double>();
       m.structured_share = node["structured_share"].as<double>();
       m.basal_pressure_factor = node["basal_pressure_factor"].as<double>();
+      m.confined_fluid_fraction = node["confined_fluid_fraction"].as<double>();
       if (auto eps_f = node.find("fragmentation_strain")) {
         m.fragmentation_strain = eps_f->as<double>();
         if (!node.has("cohesion_degradation"))

@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 #include <vector>
 
 #include "cosim/error.hpp"
@@ -104,6 +106,31 @@ TEST(DepthAveragedSolver, ASubmergedBlockIsHeldWithBZeroAndSlidesWithBOne) {
   }
 }
 
+// The same physics when the slope is the bed's (a catchment in plan view,
+// theta = 0): a rigid block deep in a still lake on a bed falling at
+// tan(alpha) = 0.5 accelerates at g ((1 - gamma) tan(alpha) - (1 - B gamma)
+// tan(delta)), gamma = rho_f / rho (the shallow-topography form of the
+// inclined-plane formula): buoyancy takes its share of the drive whatever B.
+TEST(DepthAveragedSolver, BuoyancyTakesItsShareOfTheDriveOnASlopingBed) {
+  std::vector<double> bed;
+  for (int row = 0; row < 9; ++row)
+    for (int column = 0; column < 25; ++column) bed.push_back(20.0 - 0.5 * 0.5 * column);
+  for (const double B : {0.0, 1.0}) {
+    auto s = ground(0.0, 24, 8, 0.5);
+    s.terrain = Terrain(0.0, g, RasterGrid(25, 9, Vec<2>::Zero(), 0.5, bed));
+    s.still_water = StillWater{1000.0, 100.0};
+    auto m = sand(10.0, 1e6);  // rigid
+    m.basal_pressure_factor = B;
+    auto solver = block(s, m, {3.0, 1.0}, {5.0, 3.0}, 1.0);
+    const double dt = 1e-3;
+    for (int k = 0; k < 200; ++k) solver.step(dt);
+    const double gamma = 0.5;
+    const double a = g * ((1.0 - gamma) * 0.5 - (1.0 - B * gamma) * std::tan(10.0 * deg));
+    const double v = solver.particles().momentum()[0] / solver.particles().total_mass();
+    EXPECT_NEAR(v, a * 0.2, 1e-3 * a * 0.2) << "B = " << B;
+  }
+}
+
 TEST(DepthAveragedSolver, RefusesAFluidSurfaceOfTheWrongSizeOrNotFinite) {
   const auto s = ground(0.0, 8, 6, 0.5);
   auto solver = block(s, sand(0.0), {0.0, 0.0}, {4.0, 3.0}, 0.7);
@@ -127,6 +154,60 @@ TEST(DepthAveragedMaterial, StructuresBreakUpAsTheColumnDilates) {
   EXPECT_NEAR(m.structured_share_after(1.0, 0.0, 0.01), std::exp(-0.1), 1e-15);
   m.basal_pressure_factor = 1.5;
   EXPECT_THROW(m.check(), std::invalid_argument);
+}
+
+// A weakly cohesive mound spreads and breaks up: the fluid its blocks held
+// leaves it at their rate (eq. 27), taking its own mass, and what is taken is
+// exactly what the points lost.
+TEST(DepthAveragedSolver, BreakingBlocksReleaseTheirConfinedFluid) {
+  auto s = ground(0.0, 40, 30, 0.25);
+  auto m = sand(0.0, 500.0);
+  m.degradation = CohesionDegradation(0.05);
+  m.confined_fluid_fraction = 0.3;
+  DepthAveragedParticles p;
+  p.seed(
+      {3.0, 2.5}, {6.0, 5.0}, s.grid.spacing, 2,
+      [](const Vec<2>& x) { return 1.5 - 0.2 * std::abs(x[0] - 4.5); }, m.density, 0);
+  const double mass = p.total_mass();
+  double volume = 0.0;
+  for (double v : p.volume) volume += v;
+  DepthAveragedSolver solver(s, {m}, p);
+  EXPECT_NEAR(std::accumulate(solver.particles().confined_fluid.begin(),
+                              solver.particles().confined_fluid.end(), 0.0),
+              0.3 * volume, 1e-12 * volume);
+  double released = 0.0;
+  for (int k = 0; k < 20; ++k) {
+    solver.advance_to(0.05 * (k + 1));
+    for (double v : solver.take_released_fluid()) released += v;
+  }
+  const auto& q = solver.particles();
+  const double volume_left = std::accumulate(q.volume.begin(), q.volume.end(), 0.0);
+  const double confined_left =
+      std::accumulate(q.confined_fluid.begin(), q.confined_fluid.end(), 0.0);
+  EXPECT_GT(released, 0.01 * volume);  // it did break up
+  EXPECT_NEAR(volume_left + released, volume, 1e-12 * volume);
+  EXPECT_NEAR(q.total_mass() + s.confined_fluid_density * released, mass, 1e-12 * mass);
+  EXPECT_NEAR(confined_left + released, 0.3 * volume, 1e-12 * volume);
+  // Fluid and blocks went at one rate: C = 0.3 f_sc V0 with V = V0 - 0.3 V0 (1 - f_sc).
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const double share = q.structured_share[i];
+    EXPECT_NEAR(q.confined_fluid[i], 0.3 * share * q.volume[i] / (1.0 - 0.3 * (1.0 - share)),
+                1e-12 * q.volume[i]);
+  }
+  const std::vector<double> none = solver.take_released_fluid();
+  EXPECT_TRUE(std::all_of(none.begin(), none.end(), [](double v) { return v == 0.0; }));
+}
+
+TEST(DepthAveragedSolver, AnImpulseChangesEachPointsVelocityByItOverItsMass) {
+  const auto s = ground(0.0, 8, 6, 0.5);
+  auto solver = block(s, sand(0.0), {1.0, 1.0}, {2.0, 2.0}, 0.5);
+  const auto& q = solver.particles();
+  std::vector<Vec<2>> impulse(q.size());
+  for (std::size_t p = 0; p < q.size(); ++p) impulse[p] = Vec<2>{2.0, -1.0} * q.mass[p];
+  solver.apply_impulse(impulse);
+  for (const auto& v : q.velocity) EXPECT_NEAR((v - Vec<2>{2.0, -1.0}).norm(), 0.0, 1e-15);
+  impulse.pop_back();
+  EXPECT_THROW(solver.apply_impulse(impulse), std::invalid_argument);
 }
 
 // Only the thrust acts (level ground, no friction, the walls not reached):

@@ -31,6 +31,11 @@ struct DepthAveragedMaterial {
   // epsilon_f of eq. 28 [-]: the volumetric strain over which the structures
   // break up; 0 takes the degradation's critical strain.
   double fragmentation_strain = 0.0;
+  // The share of a column's volume that is fluid confined in its structures
+  // at the start (f_fc alpha_f / alpha_c of eqs. 1-3): as the structures
+  // break up (eq. 28) their fluid is released at the same rate (eq. 27) and
+  // leaves the column, which keeps its grains and the rest of its fluid.
+  double confined_fluid_fraction = 0.0;
 
   double structured_share_after(double share, double damage, double volumetric_strain) const;
 

@@ -27,6 +27,8 @@ struct DepthAveragedParticles {
   std::vector<double> areal_strain_rate;  // div u [1/s]
   std::vector<double> damage;             // D = 1 - c / c0
   std::vector<double> structured_share;   // f_sc: solids still bound in structures
+  std::vector<double> confined_fluid;     // fluid still confined in the structures [m^3]
+  std::vector<double> released_fluid;     // fluid released since taken (eq. 27) [m^3]
 
   std::size_t size() const { return position.size(); }
   double depth(std::size_t p) const { return volume[p] / area[p]; }

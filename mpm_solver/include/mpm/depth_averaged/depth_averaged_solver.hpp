@@ -2,6 +2,7 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "mpm/depth_averaged/depth_averaged_material.hpp"
@@ -40,6 +41,9 @@ struct DepthAveragedSettings {
   // A fluid at rest around the mass; a coupled fluid sets its surface
   // through DepthAveragedSolver::set_fluid_surface instead.
   std::optional<StillWater> still_water;
+  // rho_f of the fluid the columns confine: what they lose with the volume
+  // they release (eq. 27) [kg/m^3].
+  double confined_fluid_density = 1000.0;
 };
 
 // The depth-averaged mass of van den Bout et al. (OpenLISEM Hazard) as
@@ -58,8 +62,11 @@ struct DepthAveragedSettings {
 // with T the lateral thrust of EarthPressure (Bell's cohesion and tension
 // cracks). In a fluid of density rho_f whose free surface stands at height
 // eta_f above the reference plane, the submerged part s = clamp(eta_f - b, 0, h)
-// of a column is pushed by the fluid's hydrostatic pressure gradient,
-// -rho_f g cos(theta) s grad eta_f (buoyancy, eq. 54's p_bu term), and its
+// of a column is pushed by the fluid's hydrostatic pressure gradient and
+// buoyed, -rho_f g cos(theta) s grad(eta_f - b) (eq. 54's p_bu term: on a
+// sloping bed the buoyancy takes its share of the weight's push along the
+// ground, whatever reaches the base; in a still lake over the inclined
+// plane grad eta_f = tan(theta) e_x cancels rho_f s of the drive), and its
 // base is relieved by the fluid pressure that reaches it through the solids,
 // B_eff rho_f g cos(theta) s with B_eff = (1 - f_sc) + f_sc B (eq. 39): the
 // friction and the thrust take the weight rho h - B_eff rho_f s. The thrust's weak form gives each
@@ -94,8 +101,14 @@ class DepthAveragedSolver {
   // Throws std::invalid_argument for a wrong size or a non-finite value.
   void set_fluid_surface(double density, std::vector<double> surface_at_nodes);
   double fluid_surface_at(const Vec<2>& x) const;
+  bool has_fluid() const { return !fluid_surface_.empty(); }
   // The structured share f_sc a point has left.
   double structured_share(std::size_t p) const { return particles_.structured_share[p]; }
+  // The fluid each point released since the last call [m^3], set back to zero.
+  std::vector<double> take_released_fluid();
+  // Adds impulse[p] / m_p to each point's velocity (an impulse from outside,
+  // e.g. a fluid's drag). Throws std::invalid_argument for a wrong size.
+  void apply_impulse(std::span<const Vec<2>> impulse);
 
   // The depth field of the last transfer: its values at the grid's nodes
   // (B-spline coefficients, x fastest), the nodes' positions, and its value
