@@ -198,6 +198,55 @@ inline constexpr Field bed_traction{
         "the water's traction on the bed: the horizontal shear, then the vertical normal "
         "component; d components on a (d-1)-dimensional surface (water writes, soil reads)"};
 
+// A depth-averaged mass (material points in plan view) under a two-phase
+// shallow water (van den Bout et al., OpenLISEM Hazard, eqs. 47-65): the
+// points' columns summed onto the water's cells, the water's drag and
+// surface back to the points.
+inline constexpr Field column_volume{
+    .name = "column_volume",
+    .unit = "m^3",
+    .quantity = Quantity::extensive,
+    .time = TimeTreatment::state,
+    .components = Components::one,
+    .meaning = "V: the columns' volume of solids and the fluid they confine (mass writes)"};
+inline constexpr Field column_mass{.name = "column_mass",
+                                   .unit = "kg",
+                                   .quantity = Quantity::extensive,
+                                   .time = TimeTreatment::state,
+                                   .components = Components::one,
+                                   .meaning = "m: the columns' mass (mass writes)"};
+inline constexpr Field column_momentum{.name = "column_momentum",
+                                       .unit = "kg m/s",
+                                       .quantity = Quantity::extensive,
+                                       .time = TimeTreatment::state,
+                                       .components = Components::dimension,
+                                       .meaning = "m u: the columns' momentum (mass writes)"};
+inline constexpr Field structured_mass{
+    .name = "structured_mass",
+    .unit = "kg",
+    .quantity = Quantity::extensive,
+    .time = TimeTreatment::state,
+    .components = Components::one,
+    .meaning = "f_sc m: the part of the columns' mass still bound in blocks (mass writes)"};
+inline constexpr Field released_fluid_volume{
+    .name = "released_fluid_volume",
+    .unit = "m^3",
+    .quantity = Quantity::extensive,
+    .time = TimeTreatment::integral,
+    .components = Components::one,
+    .meaning =
+        "the confined fluid the fragmenting columns released over the window (eq. 27; "
+        "mass writes, water reads as a source)"};
+inline constexpr Field free_surface_elevation{
+    .name = "free_surface_elevation",
+    .unit = "m",
+    .quantity = Quantity::intensive,
+    .time = TimeTreatment::state,
+    .components = Components::one,
+    .meaning =
+        "eta: the water's surface; over dry cells the level of the nearest water (water "
+        "writes, mass reads for its buoyancy)"};
+
 // Every entry above, in that order.
 std::span<const Field* const> all();
 // The entry named `name`, or nullptr.

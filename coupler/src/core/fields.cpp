@@ -19,14 +19,33 @@ FieldSpec Field::on(std::string mesh, int dimension) const {
 
 namespace {
 
-constexpr std::array catalogue{
-    &solid_fraction,       &solid_velocity,      &solid_bulk_density,
-    &permeability,         &grain_size,          &solid_volume_flux,
-    &fluid_velocity,       &fluid_bulk_density,  &pore_fluid_bulk_modulus,
-    &pore_pressure,        &pore_pressure_force, &momentum_exchange_impulse,
-    &drag_coefficient,     &water_fraction,      &solid_temperature,
-    &solid_heat_capacity,  &fluid_temperature,   &fluid_heat_capacity,
-    &heat_exchange_energy, &bed_elevation,       &bed_traction};
+constexpr std::array catalogue{&solid_fraction,
+                               &solid_velocity,
+                               &solid_bulk_density,
+                               &permeability,
+                               &grain_size,
+                               &solid_volume_flux,
+                               &fluid_velocity,
+                               &fluid_bulk_density,
+                               &pore_fluid_bulk_modulus,
+                               &pore_pressure,
+                               &pore_pressure_force,
+                               &momentum_exchange_impulse,
+                               &drag_coefficient,
+                               &water_fraction,
+                               &solid_temperature,
+                               &solid_heat_capacity,
+                               &fluid_temperature,
+                               &fluid_heat_capacity,
+                               &heat_exchange_energy,
+                               &bed_elevation,
+                               &bed_traction,
+                               &column_volume,
+                               &column_mass,
+                               &column_momentum,
+                               &structured_mass,
+                               &released_fluid_volume,
+                               &free_surface_elevation};
 
 }  // namespace
 

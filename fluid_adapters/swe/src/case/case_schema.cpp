@@ -115,11 +115,20 @@ Schema coupling_schema() {
   coupling
       .optional(
           "reads",
-          Schema::sequence(Schema::one_of({"bed_elevation"})).default_value("[bed_elevation]"),
-          "bed_elevation [m] per cell: replaces the bed every step, keeping depths.")
+          Schema::sequence(Schema::one_of({"bed_elevation", "solid_layer"}))
+              .default_value("[bed_elevation]"),
+          "bed_elevation [m] per cell: replaces the bed every step, keeping depths. solid_layer "
+          "(2D, with `two_phase`): the columns of a depth-averaged mass per cell each window "
+          "(column_volume, column_mass, column_momentum, structured_mass, released_fluid_volume): "
+          "the fluid flows over bed + their depth, drags them and takes their released fluid.")
       .optional("writes",
-                Schema::sequence(Schema::one_of({"bed_traction"})).default_value("[bed_traction]"),
-                "bed_traction [Pa] per cell: horizontal component(s), then vertical.")
+                Schema::sequence(Schema::one_of({"bed_traction", "momentum_exchange_impulse",
+                                                 "free_surface_elevation"}))
+                    .default_value("[bed_traction]"),
+                "bed_traction [Pa] per cell: horizontal component(s), then vertical. "
+                "momentum_exchange_impulse [kg m/s] (with solid_layer): the drag's impulse on "
+                "the solids of each cell. free_surface_elevation [m]: the water's surface, over "
+                "dry cells the level of the nearest water.")
       .optional(
           "bed_pressure", Schema::one_of({"hydrostatic", "excess"}).default_value("hydrostatic"),
           "hydrostatic: p = rho g h normal to the bed (the soil then feels its buoyancy); "

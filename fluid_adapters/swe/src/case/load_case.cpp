@@ -56,6 +56,7 @@ class CaseReader {
     c.threads = root_.get<int>("threads");
     read_coupling(c);
     read_two_phase(c);
+    check_coupling(c);
     return c;
   }
 
@@ -315,6 +316,9 @@ class CaseReader {
     };
     c.coupling.reads_bed = listed("reads", "bed_elevation");
     c.coupling.writes_traction = listed("writes", "bed_traction");
+    c.coupling.reads_solid_layer = listed("reads", "solid_layer");
+    c.coupling.writes_impulse = listed("writes", "momentum_exchange_impulse");
+    c.coupling.writes_free_surface = listed("writes", "free_surface_elevation");
     if (coupling.get<std::string>("bed_pressure") == "excess")
       c.coupling.pressure = BedPressure::excess;
   }
@@ -389,6 +393,21 @@ class CaseReader {
       spec.initial_layer = l;
     }
     c.two_phase = spec;
+  }
+
+  // What the coupling reads and writes needs: the solid layer a 2D two-phase
+  // case, the impulse the layer it comes from.
+  void check_coupling(const CaseDescription& c) const {
+    const Node coupling = root_["coupling"];
+    if (c.coupling.reads_solid_layer && !c.two_phase)
+      coupling["reads"].fail(
+          "solid_layer needs the two-phase mode: add a `two_phase` block (dimension: 2)");
+    if (c.coupling.writes_impulse && !c.coupling.reads_solid_layer)
+      coupling["writes"].fail(
+          "momentum_exchange_impulse is the drag on a coupled solid layer: add solid_layer to "
+          "coupling.reads");
+    if (c.coupling.writes_free_surface && c.dimension != 2)
+      coupling["writes"].fail("free_surface_elevation needs a 2D case (dimension: 2)");
   }
 
   // The run's size with `cells` cells, refused above what the case's limits allow.

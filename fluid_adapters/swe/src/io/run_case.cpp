@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
+#include <variant>
 
 #include "cosim/error.hpp"
 #include "cosim/fields.hpp"
@@ -23,6 +25,7 @@
 #include "cosim/io/time_series_writer.hpp"
 #include "swe/case/load_case.hpp"
 #include "swe/coupling/bed_traction.hpp"
+#include "swe/coupling/extended_free_surface.hpp"
 #include "swe/io/gauge_recorder.hpp"
 #include "swe/two_phase/two_phase_exchange.hpp"
 
@@ -34,6 +37,8 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr const char* cells_mesh = "swe_cells";
 constexpr const char* bed_field = cosim::fields::bed_elevation.name;
 constexpr const char* traction_field = cosim::fields::bed_traction.name;
+constexpr const char* impulse_field = cosim::fields::momentum_exchange_impulse.name;
+constexpr const char* surface_field = cosim::fields::free_surface_elevation.name;
 
 struct WaterStats {
   double volume, eta_max, eta_min, speed_max;
@@ -104,8 +109,9 @@ class CaseRun {
         participant_.declare_checkpointable();
         if (c_.window > 0.0) participant_.set_standalone_window(c_.window);
         participant_.initialize(0.0, c_.end_time);
-        if (!restarts() && participant_.is_coupled() && c_.coupling.reads_bed)
-          lay_water_over_received_bed();
+        if (!restarts() && participant_.is_coupled() &&
+            (c_.coupling.reads_bed || c_.coupling.reads_solid_layer))
+          lay_water_over_received_ground();
         record_initial_surface();
         end_time_ = participant_.end_time();
         progress_.gauge_times.emplace(c_.gauge_every, end_time_);
@@ -143,6 +149,54 @@ class CaseRun {
           cosim::fields::bed_traction.on(cells_mesh, solver_->dimension() + 1));
       participant_.write(traction_field, bed_traction(*solver_, coupling_));
     }
+    if (c_.coupling.reads_solid_layer) {
+      namespace f = cosim::fields;
+      for (const f::Field* field :
+           {&f::column_volume, &f::column_mass, &f::column_momentum, &f::structured_mass})
+        participant_.declare_read(field->on(cells_mesh, 2), 0.0);
+      cosim::FieldSpec released = f::released_fluid_volume.on(cells_mesh, 2);
+      released.optional = true;
+      participant_.declare_read(released, 0.0);
+    }
+    if (c_.coupling.writes_impulse) {
+      participant_.declare_write(cosim::fields::momentum_exchange_impulse.on(cells_mesh, 2));
+    }
+    if (c_.coupling.writes_free_surface) {
+      participant_.declare_write(cosim::fields::free_surface_elevation.on(cells_mesh, 2));
+      participant_.write(surface_field, free_surface());
+    }
+  }
+
+  // The water's surface for a mass that floats in it, over dry cells the
+  // level of the nearest water; the ground without solids where there is
+  // no water at all.
+  std::vector<double> free_surface() const {
+    if (two_phase_) return extended_free_surface(*solver_, two_phase_->base_bed());
+    const auto bed = solver_->bed();
+    return extended_free_surface(*solver_, std::vector<double>(bed.begin(), bed.end()));
+  }
+
+  // The columns of the coupled mass, summed onto the cells, become the
+  // layer the fluid flows over and drags (once a window, at its start).
+  void receive_solid_layer() {
+    namespace f = cosim::fields;
+    const std::size_t n = solver_->cell_count();
+    auto read = [&](const f::Field& field, std::size_t per_cell) {
+      std::vector<double> values(n * per_cell);
+      participant_.read(field.name, values);
+      return values;
+    };
+    const std::vector<double> volume = read(f::column_volume, 1);
+    const std::vector<double> mass = read(f::column_mass, 1);
+    const std::vector<double> momentum = read(f::column_momentum, 2);
+    const std::vector<double> structured = read(f::structured_mass, 1);
+    std::vector<double> released;
+    if (participant_.is_sent(f::released_fluid_volume.name))
+      released = read(f::released_fluid_volume, 1);
+    const auto grid = std::get<cosim::UniformGrid>(solver_->cells());
+    two_phase_->set_layer(layer_from_columns(
+        {volume, mass, momentum, structured, released}, n, grid.spacing[0] * grid.spacing[1],
+        participant_.window_size(), two_phase_->parameters().solid_density));
   }
 
   // The two-phase exchange over the case's bed and initial solid layer (the
@@ -180,15 +234,20 @@ class CaseRun {
     for (std::size_t c = 0; c < h.size(); ++c) coupling_.initial_surface[c] = h[c] + bed[c];
   }
 
-  // The bed of a coupled run comes from the soil: the case's water is laid
-  // again over it (a free surface stays a free surface).
-  void lay_water_over_received_bed() {
-    const std::vector<double> bed = participant_.read(bed_field);
-    set_received_bed(bed);
+  // The bed (and the solid layer) of a coupled run come from the soil: the
+  // case's water is laid again over them (a free surface stays a free surface).
+  void lay_water_over_received_ground() {
+    if (c_.coupling.reads_bed) set_received_bed(participant_.read(bed_field));
+    if (c_.coupling.reads_solid_layer) {
+      receive_solid_layer();
+      two_phase_->apply_bed(*solver_);
+    }
     std::vector<double> h, hu, hv;
     c_.initial.lay({cells_mesh, solver_->cells()}, solver_->bed(), h, hu, hv);
     solver_->set_state(h, hu, hv);
-    spdlog::info("coupled: water laid over the received bed ({} cells)", bed.size());
+    spdlog::info("coupled: water laid over the received {} ({} cells)",
+                 c_.coupling.reads_solid_layer ? "ground and solid layer" : "bed",
+                 solver_->cell_count());
   }
 
   void open_outputs() {
@@ -212,6 +271,8 @@ class CaseRun {
     // (below); the stable step is then the one over the last step's bed.
     const bool bed_each_step =
         coupled && c_.coupling.reads_bed && participant_.reads_vary_within_window();
+    // The window (and attempt) whose solid layer the fluid holds.
+    std::pair<std::size_t, std::size_t> layer_window{0, 0};
     while (participant_.is_coupling_ongoing()) {
       if (participant_.must_save_state()) save_window_start();
       const double t = participant_.time();
@@ -220,6 +281,13 @@ class CaseRun {
         bed.resize(solver_->cell_count());
         participant_.read(bed_field, bed);
         set_received_bed(bed);
+      }
+      const std::pair window{participant_.window_index(), participant_.iteration()};
+      if (coupled && c_.coupling.reads_solid_layer && window != layer_window) {
+        auto scope = summary_.phases().measure("solid_layer");
+        receive_solid_layer();
+        two_phase_->apply_bed(*solver_);
+        layer_window = window;
       }
       const double stable = solver_->stable_time_step();
       if (!(stable >= c_.min_time_step))
@@ -246,6 +314,7 @@ class CaseRun {
       if (two_phase_) {
         auto scope = summary_.phases().measure("two_phase");
         two_phase_->after_step(*solver_, dt);
+        if (coupled && c_.coupling.writes_impulse) write_impulse_rate(dt);
       }
       ++progress_.steps;
       progress_.min_dt = std::min(progress_.min_dt, dt);
@@ -253,6 +322,10 @@ class CaseRun {
       if (coupled && c_.coupling.writes_traction && window_ends) {
         auto scope = summary_.phases().measure("traction");
         participant_.write(traction_field, bed_traction(*solver_, coupling_));
+      }
+      if (coupled && c_.coupling.writes_free_surface && window_ends) {
+        auto scope = summary_.phases().measure("free_surface");
+        participant_.write(surface_field, free_surface());
       }
       {
         auto scope = summary_.phases().measure("coupling");
@@ -279,6 +352,22 @@ class CaseRun {
         summary_.write();
       }
     }
+  }
+
+  // The drag's impulse on the solids over the step just made, as the rate
+  // the integral field takes (x and y of a cell side by side).
+  void write_impulse_rate(double dt) {
+    const auto& jx = two_phase_->impulse_x();
+    const auto& jy = two_phase_->impulse_y();
+    impulse_rate_.resize(2 * jx.size());
+    for (std::size_t c = 0; c < jx.size(); ++c) {
+      impulse_rate_[2 * c] = jx[c] / dt;
+      impulse_rate_[2 * c + 1] = jy[c] / dt;
+      impulse_sent_[0] += jx[c];
+      impulse_sent_[1] += jy[c];
+    }
+    two_phase_->clear_impulse();
+    participant_.write(impulse_field, impulse_rate_);
   }
 
   // A window that may run again starts from a copy of the solver's state and
@@ -453,6 +542,10 @@ class CaseRun {
         summary_.set_metric("two_phase_volume_added", two_phase_->volume_added(), "m^3");
         summary_.set_metric("two_phase_volume_infiltrated", two_phase_->volume_infiltrated(),
                             "m^3");
+        if (c_.coupling.writes_impulse) {
+          summary_.set_metric("drag_impulse_sent_x", impulse_sent_[0], "kg m/s");
+          summary_.set_metric("drag_impulse_sent_y", impulse_sent_[1], "kg m/s");
+        }
       }
     }
   }
@@ -471,8 +564,9 @@ class CaseRun {
   std::optional<cosim::SnapshotWriter> snapshot_writer_;
   std::optional<GaugeRecorder> gauges_;
   std::optional<cosim::TimeSeriesWriter> water_;
-  std::vector<double> eta_, discharge_, velocity_, solid_velocity_;
+  std::vector<double> eta_, discharge_, velocity_, solid_velocity_, impulse_rate_;
   std::optional<TwoPhaseExchange> two_phase_;
+  std::array<double, 2> impulse_sent_{0.0, 0.0};  // to the solids, in total [kg m/s]
 };
 
 }  // namespace

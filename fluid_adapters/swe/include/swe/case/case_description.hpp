@@ -43,6 +43,14 @@ enum class BedPressure {
 struct CouplingSpec {
   bool reads_bed = true;        // bed_elevation, per cell [m]
   bool writes_traction = true;  // bed_traction, dimension + 1 components [Pa]
+  // Two-phase, coupled to a depth-averaged mass: its columns per cell
+  // (column_volume, column_mass, column_momentum, structured_mass,
+  // released_fluid_volume) in; the drag's impulse on them
+  // (momentum_exchange_impulse) and the water's surface
+  // (free_surface_elevation) out.
+  bool reads_solid_layer = false;
+  bool writes_impulse = false;
+  bool writes_free_surface = false;
   BedPressure pressure = BedPressure::hydrostatic;
   std::vector<double> initial_surface;  // eta_0 per cell for `excess`, set when the run starts [m]
 };

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 namespace swe {
@@ -34,6 +35,23 @@ struct SolidLayer {
 // A layer of `cells` cells without solids: zero depth and velocity, the given
 // density, no structures.
 SolidLayer empty_solid_layer(std::size_t cells, double density);
+
+// What a depth-averaged mass's columns put on each cell (summed by the
+// coupler, conservatively): volume V [m^3], mass m [kg], momentum m u
+// [kg m/s] (x and y of a cell side by side), the mass still bound in blocks
+// f_sc m [kg], and the fluid released over the window [m^3].
+struct ColumnTotals {
+  std::span<const double> volume, mass, momentum, structured_mass, released_volume;
+};
+
+// The layer of those columns over cells of `cell_area` [m^2]: h_s = V / |cell|,
+// rho_c = m / V, u_s = m u / m, f_sc = f_sc m / m (clamped to [0, 1] against
+// round-off), and the released fluid as a rate over `window` [s]. A cell
+// without columns (V <= 0) holds no solids, at `empty_density`. Throws
+// cosim::InputError for arrays of other sizes or a layer that fails
+// validate() (a negative volume, a non-finite value).
+SolidLayer layer_from_columns(const ColumnTotals& columns, std::size_t cells, double cell_area,
+                              double window, double empty_density);
 
 // Throws cosim::InputError naming the cell and the quantity for: an array
 // whose size is not `cells` (grain_size and released_fluid_rate may be
