@@ -1,6 +1,7 @@
 // mpm_solver: the explicit material point method, standalone or as a
 // participant of a coupled job (`cosim run`); a `kind: depth_averaged_case`
-// file runs the depth-averaged mass of van den Bout et al. (standalone).
+// file runs the depth-averaged mass of van den Bout et al. (standalone, or
+// coupled to a two-phase swe_fluid).
 //
 //   mpm_solver --config case.yaml --output run/ [--overwrite] [--threads N]
 //   mpm_solver --validate --config case.yaml
@@ -28,14 +29,8 @@ int main(int argc, char** argv) {
              options.threads = line.threads;
              options.verbosity = line.verbosity;
              options.reuse = line.reuse;
-             if (mpm::is_depth_averaged_case(line.config)) {
-               if (!line.endpoint.is_standalone())
-                 throw cosim::InputError(
-                     line.config.string() +
-                     ": a depth_averaged_case runs standalone; its pairing with swe_fluid is "
-                     "not built yet");
-               return mpm::run_depth_averaged_case(options);
-             }
+             if (mpm::is_depth_averaged_case(line.config))
+               return mpm::run_depth_averaged_case(options, line.endpoint);
              // Coupled (an endpoint from `cosim run`), or standalone in
              // windows: the coupling concept's observers drive a
              // cosim::Participant alongside the time loop.

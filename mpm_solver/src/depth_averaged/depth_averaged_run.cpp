@@ -20,6 +20,7 @@
 #include "cosim/io/time_series_writer.hpp"
 #include "cosim/runtime/stop_request.hpp"
 #include "mpm/depth_averaged/depth_averaged_case.hpp"
+#include "mpm/depth_averaged/depth_averaged_coupling.hpp"
 
 namespace mpm {
 
@@ -35,16 +36,6 @@ cosim::Mesh points_mesh(const DepthAveragedParticles& points) {
   }
   cloud.volumes = points.volume;
   return {"points", std::move(cloud)};
-}
-
-cosim::UniformGrid ground_cells(const GridGeometry<2>& grid) {
-  cosim::UniformGrid cells;
-  cells.dim = 2;
-  cells.origin = {grid.origin[0], grid.origin[1], 0.0};
-  cells.spacing = {grid.spacing[0], grid.spacing[1], 1.0};
-  cells.cells = {grid.cells[0], grid.cells[1], 1};
-  cells.location = cosim::GridLocation::cell;
-  return cells;
 }
 
 // Where the mass is along the slope and how it moves, for summary.json.
@@ -72,7 +63,7 @@ MassExtent extent_of(const DepthAveragedSolver& solver) {
 class DepthAveragedRun {
  public:
   DepthAveragedRun(DepthAveragedCase description, const RunOptions& options,
-                   cosim::RunSummary& summary)
+                   const cosim::CouplingEndpoint& endpoint, cosim::RunSummary& summary)
       : options_(options),
         summary_(summary),
         end_time_(description.end_time),
@@ -87,6 +78,22 @@ class DepthAveragedRun {
         cells_(ground_cells(solver_.settings().grid)),
         points_writer_(options.output, "points", points_mesh(solver_.particles())),
         ground_writer_(options.output, "ground", cosim::Mesh{"ground", cells_}) {
+    if (!endpoint.is_standalone()) {
+      participant_.emplace(endpoint.name_or(description.name), endpoint);
+      try {
+        coupling_.emplace(*participant_, solver_, solver_.settings().confined_fluid_density);
+      } catch (const std::invalid_argument& e) {
+        throw cosim::InputError(fmt::format("{}: {}", description.file.string(), e.what()));
+      }
+      coupling_->declare(solver_);
+      participant_->initialize(0.0, end_time_);
+      end_time_ = participant_->end_time();
+      tolerance_ = 1e-10 * end_time_;
+      snapshots_ = cosim::OutputSchedule(description.output_every, end_time_);
+      gauge_times_ = cosim::OutputSchedule(
+          description.gauge_every > 0.0 ? description.gauge_every : description.output_every,
+          end_time_);
+    }
     if (!gauges_.empty()) {
       std::vector<std::string> columns{cosim::column_name("time", "s")};
       for (const auto& g : gauges_) {
@@ -98,14 +105,24 @@ class DepthAveragedRun {
   }
 
   void run() {
+    if (coupling_) {
+      coupling_->start_window(solver_);  // the water's surface at the start
+      window_starts_ = false;
+    }
     record_conserved(true);
     write_snapshot();
     write_gauges();
     summary_.write();
     try {
       loop();
-    } catch (...) {
+      if (coupling_) {
+        auto scope = summary_.phases().measure("coupling");
+        coupling_->start_window(solver_);  // the drag of the last window
+      }
+      if (participant_) participant_->finalize();
+    } catch (const std::exception& e) {
       record_end();
+      if (participant_) participant_->abort(e.what());
       throw;
     }
     record_end();
@@ -117,15 +134,28 @@ class DepthAveragedRun {
   void loop() {
     using Clock = std::chrono::steady_clock;
     auto last_progress = Clock::now();
-    while (solver_.time() < end_time_ - tolerance_) {
+    while (participant_ ? participant_->is_coupling_ongoing()
+                        : solver_.time() < end_time_ - tolerance_) {
       cosim::runtime::throw_if_stop_requested();
+      if (coupling_ && window_starts_) {
+        auto scope = summary_.phases().measure("coupling");
+        coupling_->start_window(solver_);
+      }
       const double t = solver_.time();
       double dt = std::min(solver_.stable_time_step(), end_time_ - t);
+      if (participant_) dt = std::min(dt, participant_->max_time_step());
       const double next_output = std::min(snapshots_.next(), gauge_times_.next());
       if (next_output > t + tolerance_) dt = std::min(dt, next_output - t);
       {
         auto scope = summary_.phases().measure("advance");
         solver_.step(dt);
+      }
+      if (coupling_) {
+        auto scope = summary_.phases().measure("coupling");
+        const bool window_ends = dt >= participant_->max_time_step() - tolerance_;
+        coupling_->after_step(solver_, dt, window_ends);
+        participant_->advance(dt);
+        window_starts_ = participant_->is_window_complete();
       }
       ++steps_;
       point_updates_ += static_cast<double>(solver_.particles().size());
@@ -179,7 +209,7 @@ class DepthAveragedRun {
                                  {"bed", {bed, 1, "m"}},
                                  {"solid_surface", {surface, 1, "m"}},
                                  {"solid_speed", {speed, 1, "m/s"}}};
-    if (solver_.settings().still_water) {
+    if (solver_.has_fluid()) {
       fluid_surface.resize(n);
       for (std::size_t c = 0; c < n; ++c) {
         const auto at = cells_.position(c);
@@ -239,6 +269,20 @@ class DepthAveragedRun {
       summary_.set_metric("min_structured_share", e.least_structured, "1");
       summary_.set_metric("snapshots", static_cast<double>(points_writer_.snapshots_written()),
                           "1");
+      double released = 0.0;
+      for (double v : solver_.particles().released_fluid) released += v;
+      if (!coupling_) summary_.set_metric("fluid_released", released, "m^3");
+      if (coupling_) {
+        summary_.set_metric("fluid_released", coupling_->fluid_released(), "m^3");
+        summary_.set_metric("fluid_released_last_window", coupling_->fluid_released_last_window(),
+                            "m^3");
+        summary_.set_metric("drag_impulse_received_x", coupling_->impulse_received()[0], "kg m/s");
+        summary_.set_metric("drag_impulse_received_y", coupling_->impulse_received()[1], "kg m/s");
+        summary_.set_metric("drag_impulse_unplaced", coupling_->impulse_unplaced().cwiseAbs().sum(),
+                            "kg m/s");
+        summary_.set_windows(static_cast<std::int64_t>(participant_->timings().windows));
+        summary_.set_metric("coupling_wait", participant_->timings().waiting, "s");
+      }
     } catch (const std::exception& e) {
       spdlog::warn("could not record the end state in summary.json: {}", e.what());
     }
@@ -256,6 +300,9 @@ class DepthAveragedRun {
   cosim::SnapshotWriter points_writer_;
   cosim::SnapshotWriter ground_writer_;
   std::optional<cosim::TimeSeriesWriter> gauge_writer_;
+  std::optional<cosim::Participant> participant_;
+  std::optional<DepthAveragedCoupling> coupling_;
+  bool window_starts_ = true;
   std::int64_t steps_ = 0;
   double point_updates_ = 0.0;
 };
@@ -271,7 +318,8 @@ nlohmann::json case_section(const DepthAveragedCase& c) {
           {"end_time_s", c.end_time}};
 }
 
-void run_loaded(const RunOptions& options, cosim::RunSummary& summary) {
+void run_loaded(const RunOptions& options, const cosim::CouplingEndpoint& endpoint,
+                cosim::RunSummary& summary) {
   std::optional<DepthAveragedRun> run;
   {
     auto scope = summary.phases().measure("setup");
@@ -287,19 +335,19 @@ void run_loaded(const RunOptions& options, cosim::RunSummary& summary) {
         description.particles.size(), description.settings.grid.cells[0],
         description.settings.grid.cells[1], description.end_time);
     summary.write();
-    run.emplace(std::move(description), options, summary);
+    run.emplace(std::move(description), options, endpoint, summary);
   }
   run->run();
 }
 
 }  // namespace
 
-int run_depth_averaged_case(const RunOptions& options) {
+int run_depth_averaged_case(const RunOptions& options, const cosim::CouplingEndpoint& endpoint) {
   cosim::prepare_output_directory(options.output, options.reuse);
   cosim::init_logging(options.output, "mpm_solver", options.verbosity);
   cosim::RunSummary summary(options.output, "mpm_solver");
   summary.write();
-  return cosim::run_and_finish(summary, [&] { run_loaded(options, summary); });
+  return cosim::run_and_finish(summary, [&] { run_loaded(options, endpoint, summary); });
 }
 
 }  // namespace mpm

@@ -1,10 +1,13 @@
 #pragma once
 
+#include "cosim/participant.hpp"
 #include "mpm/io/run_driver.hpp"
 
 namespace mpm {
 
-// A standalone run of a `kind: depth_averaged_case` file (options.config),
+// A run of a `kind: depth_averaged_case` file (options.config), standalone
+// or, with an endpoint from `cosim run`, coupled to a two-phase swe_fluid
+// (depth_averaged_coupling.hpp),
 // as architecture.md §6 has every run: prepares <output>, log.txt, then
 // writes
 //   points.xdmf + points_<n>.h5   the points (velocity, depth, damage,
@@ -18,6 +21,7 @@ namespace mpm {
 //                                 the front, tail and centre of the mass.
 // Returns the exit code: 0, 2 bad input, 4 numerical failure (a point
 // leaving the grid), 1 internal error.
-int run_depth_averaged_case(const RunOptions& options);
+int run_depth_averaged_case(const RunOptions& options,
+                            const cosim::CouplingEndpoint& endpoint = {});
 
 }  // namespace mpm
