@@ -19,7 +19,11 @@ double relaxed_fraction(double rate, double exponent, double relative_speed, dou
   if (std::isinf(rate)) return 1.0;
   const double decay = rate * dt;
   if (exponent == 1.0) return -std::expm1(-decay);
-  // 1 - (1 + x)^(-1/(j-1)) with x = (j - 1) a |w0|^(j-1) dt
+  // 1 - (1 + x)^(-1/(j-1)) with x = (j - 1) a |w0|^(j-1) dt; x / (1 + x) for j = 2
+  if (exponent == 2.0) {
+    const double x = decay * relative_speed;
+    return x / (1.0 + x);
+  }
   const double x = (exponent - 1.0) * decay * std::pow(relative_speed, exponent - 1.0);
   return -std::expm1(-std::log1p(x) / (exponent - 1.0));
 }

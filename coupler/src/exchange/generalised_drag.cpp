@@ -25,6 +25,13 @@ bool is_positive(double value) {
   return std::isfinite(value) && value > 0;
 }
 
+// x^j, without pow for the linear and quadratic laws (every cell, every step).
+double raised(double x, double j) {
+  if (j == 2.0) return x * x;
+  if (j == 1.0) return x;
+  return std::pow(x, j);
+}
+
 }  // namespace
 
 double DebrisMixture::confined_fraction() const {
@@ -126,7 +133,7 @@ double generalised_drag_coefficient(const DebrisMixture& mixture,
     const double u_t =
         settling_velocity(parameters.block_size, rho_c, rho_f, mixture.fluid_viscosity, g);
     const double denominator = u_t * solid_like + smoothing_speed / alpha_u;
-    coefficient += f_sc * alpha_c * alpha_u * (rho_c - rho_f) * g / std::pow(denominator, j);
+    coefficient += f_sc * alpha_c * alpha_u * (rho_c - rho_f) * g / raised(denominator, j);
   }
 
   // Unconfined grains: P F + (1 - P) G (eqs. 61-64).
@@ -138,13 +145,13 @@ double generalised_drag_coefficient(const DebrisMixture& mixture,
         std::pow((1.0 - f_sc) * mixture.solid_fraction / alpha_u, parameters.partition_exponent),
         0.0, 1.0);
     const double particle_reynolds = rho_f * parameters.grain_size * u_t / mixture.fluid_viscosity;
+    const double ratio = alpha_u / alpha_c;
     const double fluid_like =
-        rho_f / rho_s / 180.0 * std::pow(alpha_u / alpha_c, 3) * particle_reynolds;  // F
+        rho_f / rho_s / 180.0 * ratio * ratio * ratio * particle_reynolds;  // F
     const double smoothing = (partition / alpha_c + (1.0 - partition) / alpha_u) * smoothing_speed;
     const double denominator =
         u_t * (partition * fluid_like + (1.0 - partition) * solid_like) + smoothing;
-    coefficient +=
-        (1.0 - f_sc) * alpha_c * alpha_u * (rho_s - rho_f) * g / std::pow(denominator, j);
+    coefficient += (1.0 - f_sc) * alpha_c * alpha_u * (rho_s - rho_f) * g / raised(denominator, j);
   }
   return coefficient;
 }

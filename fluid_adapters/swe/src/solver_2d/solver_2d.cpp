@@ -224,12 +224,14 @@ void Solver2d::set_state(std::span<const double> h, std::span<const double> hu,
   check_size(h, "depth", false);
   check_size(hu, "discharge_x", true);
   check_size(hv, "discharge_y", true);
+  // The messages are built only for a cell that fails: this runs every step
+  // of the two-phase mode.
   for (std::size_t c = 0; c < n; ++c) {
-    require(h[c] >= 0.0 && std::isfinite(h[c]), "depth of cell " + std::to_string(c) +
-                                                    " must be finite and non-negative, got " +
-                                                    number(h[c]));
-    require((hu.empty() || std::isfinite(hu[c])) && (hv.empty() || std::isfinite(hv[c])),
-            "discharge of cell " + std::to_string(c) + " must be finite");
+    if (!(h[c] >= 0.0 && std::isfinite(h[c])))
+      require(false, "depth of cell " + std::to_string(c) +
+                         " must be finite and non-negative, got " + number(h[c]));
+    if (!((hu.empty() || std::isfinite(hu[c])) && (hv.empty() || std::isfinite(hv[c]))))
+      require(false, "discharge of cell " + std::to_string(c) + " must be finite");
   }
   const std::ptrdiff_t nx = m.layout.nx;
   for (std::size_t c = 0; c < n; ++c) {
@@ -249,7 +251,8 @@ void Solver2d::set_bed(std::span<const double> bed) {
   require(bed.size() == n,
           "bed has " + std::to_string(bed.size()) + " values for " + std::to_string(n) + " cells");
   for (std::size_t c = 0; c < n; ++c)
-    require(std::isfinite(bed[c]), "bed of cell " + std::to_string(c) + " must be finite");
+    if (!std::isfinite(bed[c]))
+      require(false, "bed of cell " + std::to_string(c) + " must be finite");
   const std::ptrdiff_t nx = m.layout.nx;
   for (std::size_t c = 0; c < n; ++c)
     m.bed[m.layout.index(static_cast<std::ptrdiff_t>(c) % nx,

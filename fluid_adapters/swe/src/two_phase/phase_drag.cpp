@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "cosim/error.hpp"
 #include "cosim/exchange/drag_relaxation.hpp"
@@ -53,18 +54,19 @@ void exchange_momentum(const TwoPhaseParameters& parameters, double fluid_densit
         "solid layer's {} cells",
         h.size(), n));
   const std::size_t components = planar ? 2 : 1;
-  cosim::exchange::GeneralisedDragParameters drag = parameters.drag;
-  for (std::size_t c = 0; c < n; ++c) {
+  // Cells are independent: in parallel, the first failure (in cell order)
+  // rethrown after the loop, as an exception may not leave it.
+  const auto cells = static_cast<std::ptrdiff_t>(n);
+  std::ptrdiff_t failed_cell = cells;
+  std::string failure;
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t ci = 0; ci < cells; ++ci) {
+    const auto c = static_cast<std::size_t>(ci);
     const double h_s = layer.depth[c], h_f = h[c];
     if (!(h_s > dry_depth && h_f > dry_depth)) continue;
-    const double rho_c = layer.density[c];
-    DebrisMixture mixture;
-    try {
-      mixture = cell_mixture(h_s, h_f, rho_c, layer.structured_share[c], parameters, fluid_density);
-    } catch (const cosim::InputError& e) {
-      throw cosim::InputError(fmt::format("two-phase drag in cell {}: {}", c, e.what()));
-    }
+    cosim::exchange::GeneralisedDragParameters drag = parameters.drag;
     if (!layer.grain_size.empty()) drag.grain_size = layer.grain_size[c];
+    const double rho_c = layer.density[c];
     const double mixture_depth = h_s + h_f;
     const double alpha_c = h_s / mixture_depth, alpha_u = h_f / mixture_depth;
     std::array<double, 2> u_c{layer.velocity_x[c], planar ? layer.velocity_y[c] : 0.0};
@@ -72,9 +74,11 @@ void exchange_momentum(const TwoPhaseParameters& parameters, double fluid_densit
     std::array<double, 2> impulse{0.0, 0.0};
     const std::span<double> solid(u_c.data(), components), fluid(u_u.data(), components),
         given(impulse.data(), components);
-    double coefficient = 0.0;
     try {
-      coefficient = cosim::exchange::generalised_drag_coefficient(mixture, drag, solid, fluid);
+      const DebrisMixture mixture =
+          cell_mixture(h_s, h_f, rho_c, layer.structured_share[c], parameters, fluid_density);
+      const double coefficient =
+          cosim::exchange::generalised_drag_coefficient(mixture, drag, solid, fluid);
       cosim::exchange::DragRelaxation relaxation{
           .solid_weight = alpha_c * rho_c,
           .fluid_weight = alpha_u * fluid_density,
@@ -85,8 +89,13 @@ void exchange_momentum(const TwoPhaseParameters& parameters, double fluid_densit
                   ? alpha_c * fluid_density * cosim::exchange::virtual_mass_coefficient(mixture)
                   : 0.0};
       cosim::exchange::relax_drag(relaxation, dt, solid, fluid, given);
-    } catch (const std::invalid_argument& e) {
-      throw cosim::InputError(fmt::format("two-phase drag in cell {}: {}", c, e.what()));
+    } catch (const std::exception& e) {
+#pragma omp critical(two_phase_drag_failure)
+      if (ci < failed_cell) {
+        failed_cell = ci;
+        failure = e.what();
+      }
+      continue;
     }
     layer.velocity_x[c] = u_c[0];
     hu[c] = h_f * u_u[0];
@@ -97,6 +106,8 @@ void exchange_momentum(const TwoPhaseParameters& parameters, double fluid_densit
       impulse_y[c] += impulse[1] * mixture_depth * cell_area;
     }
   }
+  if (failed_cell < cells)
+    throw cosim::InputError(fmt::format("two-phase drag in cell {}: {}", failed_cell, failure));
 }
 
 }  // namespace swe
