@@ -65,6 +65,13 @@ Schema material_schema() {
           "fragmentation_strain",
           Schema::number().positive().default_note("the cohesion degradation's critical strain"),
           "epsilon_f of eq. 28: the dilation over which the blocks break up.")
+      .optional("youngs_modulus", Schema::number().non_negative().unit("Pa").default_value("0"),
+                "E of the in-plane stress (eq. 43's last term, eqs. 22-23 in the plane): elastic, "
+                "bounded by Mohr-Coulomb with the cohesion left and internal_friction_angle, it "
+                "holds a block together while its parts are driven apart, and a weak one tears. "
+                "0: none, the earth pressure alone (the time step then ignores elastic waves).")
+      .optional("poisson_ratio", Schema::number().range(0.0, 0.49).default_value("0.3"),
+                "nu of the in-plane stress.")
       .optional("confined_fluid_fraction", Schema::number().range(0.0, 0.99).default_value("0"),
                 "The share of a column's volume that is fluid confined in its blocks (f_fc "
                 "alpha_f / alpha_c, eqs. 1-3): released as the blocks break up (eqs. 27, 28), it "

@@ -23,6 +23,10 @@ void DepthAveragedMaterial::check() const {
     fail("structured share must be in [0, 1]", structured_share);
   if (!(basal_pressure_factor >= 0.0 && basal_pressure_factor <= 1.0))
     fail("basal pressure factor must be in [0, 1]", basal_pressure_factor);
+  if (!(in_plane.youngs_modulus >= 0.0) || !std::isfinite(in_plane.youngs_modulus))
+    fail("Young's modulus must not be negative", in_plane.youngs_modulus);
+  if (!(in_plane.poisson_ratio >= 0.0 && in_plane.poisson_ratio < 0.5))
+    fail("Poisson's ratio must be in [0, 0.5)", in_plane.poisson_ratio);
   if (!(confined_fluid_fraction >= 0.0 && confined_fluid_fraction < 1.0))
     fail("confined fluid fraction must be in [0, 1)", confined_fluid_fraction);
   if (!(fragmentation_strain >= 0.0) || !std::isfinite(fragmentation_strain))

@@ -16,6 +16,9 @@ void DepthAveragedParticles::add(const Vec<2>& x, const Vec<2>& v, double depth_
   mass.push_back(depth_ * area_ * density);
   material.push_back(material_);
   areal_strain_rate.push_back(0.0);
+  velocity_gradient.push_back(Mat<2>::Zero());
+  stress.push_back(Mat<2>::Zero());
+  yielded.push_back(0);
   damage.push_back(0.0);
   structured_share.push_back(1.0);
   confined_fluid.push_back(0.0);
@@ -88,6 +91,9 @@ std::size_t DepthAveragedParticles::split(std::size_t p, int edge) {
   mass.push_back(mass[p]);
   material.push_back(material[p]);
   areal_strain_rate.push_back(areal_strain_rate[p]);
+  velocity_gradient.push_back(velocity_gradient[p]);
+  stress.push_back(stress[p]);
+  yielded.push_back(yielded[p]);
   damage.push_back(damage[p]);
   structured_share.push_back(structured_share[p]);
   confined_fluid.push_back(confined_fluid[p]);

@@ -215,8 +215,9 @@ double DepthAveragedSolver::stable_time_step() const {
     const double K =
         std::max(settings_.earth_pressure.coefficient(m.internal_friction_angle, 1.0),
                  settings_.earth_pressure.coefficient(m.internal_friction_angle, -1.0));
-    fastest =
-        std::max(fastest, particles_.velocity[p].norm() + std::sqrt(K * g_n * particles_.depth(p)));
+    const double wave = std::max(std::sqrt(K * g_n * particles_.depth(p)),
+                                 m.in_plane.wave_speed(particles_.density(p)));
+    fastest = std::max(fastest, particles_.velocity[p].norm() + wave);
   }
   if (fastest == 0.0) return std::numeric_limits<double>::infinity();
   return settings_.courant * settings_.grid.spacing.minCoeff() / fastest;
@@ -228,11 +229,12 @@ void DepthAveragedSolver::step(double dt) {
   clear_grid();
   transfer_points_to_grid();
   compute_depth();
-  add_lateral_thrust();
+  add_internal_forces();
   advance_grid_momentum(dt);
   apply_walls();  // first: the walls' reaction to the thrust is no motion for friction to resist
   apply_basal_friction(dt);
   transfer_grid_to_points(dt);
+  update_in_plane_stress(dt);
   degrade_cohesion(dt);
   split_stretched_points();
   time_ += dt;
@@ -299,16 +301,37 @@ void DepthAveragedSolver::compute_depth() {
   for (std::size_t i = 0; i < depth_.size(); ++i) depth_[i] = volume_[i] / area_[i];
 }
 
-// f_i = sum_p A_p T(h_p) grad N_ip: the weak form of -grad T.
-void DepthAveragedSolver::add_lateral_thrust() {
+double DepthAveragedSolver::lateral_thrust(std::size_t p) const {
+  return EarthPressure::thrust(earth_pressure_coefficient(p), unit_weight(p, relieved_[p]),
+                               cohesion(p), particles_.depth(p));
+}
+
+// f_i = sum_p (A_p T(h_p) I - V_p sigma_p) grad N_ip: the weak form of
+// -grad T + div(h sigma).
+void DepthAveragedSolver::add_internal_forces() {
   for (std::size_t p = 0; p < particles_.size(); ++p) {
-    const double T =
-        EarthPressure::thrust(earth_pressure_coefficient(p), unit_weight(p, relieved_[p]),
-                              cohesion(p), particles_.depth(p));
-    if (T == 0.0) continue;
-    const double area_thrust = particles_.area[p] * T;
+    const Mat<2> stress = particles_.area[p] * lateral_thrust(p) * Mat<2>::Identity() -
+                          particles_.volume[p] * particles_.stress[p];
+    if (stress.isZero(0.0)) continue;
     stencil_at(particles_.position[p], settings_.grid)
-        .for_each([&](std::size_t i, double, const Vec<2>& dN) { force_[i] += area_thrust * dN; });
+        .for_each([&](std::size_t i, double, const Vec<2>& dN) { force_[i] += stress * dN; });
+  }
+}
+
+// The in-plane stress's elastic step, then Mohr-Coulomb on it with the
+// earth pressure's mean stress -T/h, with the cohesion the point has left.
+void DepthAveragedSolver::update_in_plane_stress(double dt) {
+  for (std::size_t p = 0; p < particles_.size(); ++p) {
+    const auto& m = materials_[static_cast<std::size_t>(particles_.material[p])];
+    if (!m.in_plane.enabled()) continue;
+    const Mat<2> trial =
+        m.in_plane.elastic_update(particles_.stress[p], particles_.velocity_gradient[p], dt);
+    const Mat<2> earth = (lateral_thrust(p) / particles_.depth(p)) * Mat<2>::Identity();
+    bool yielded = false;
+    particles_.stress[p] =
+        InPlaneStress::bounded(trial - earth, cohesion(p), m.internal_friction_angle, yielded) +
+        earth;
+    particles_.yielded[p] = yielded;
   }
 }
 
@@ -377,6 +400,7 @@ void DepthAveragedSolver::transfer_grid_to_points(double dt) {
                     : Vec<2>(flip * (particles_.velocity[p] + dv) + (1.0 - flip) * v_new);
     particles_.position[p] += dt * v_new;
     particles_.areal_strain_rate[p] = gradient.trace();
+    particles_.velocity_gradient[p] = gradient;
     const Mat<2> increment = Mat<2>::Identity() + dt * gradient;
     const double stretch = increment.determinant();
     if (!(stretch > 0.0))
@@ -414,8 +438,9 @@ void DepthAveragedSolver::split_stretched_points() {
   }
 }
 
-// Eq. 26: a point whose depth exceeds its crack depth yields, and its bonds
-// break with its areal strain; its structures break up as it dilates (eq. 28)
+// Eq. 26: a point whose depth exceeds its crack depth, or whose in-plane
+// stress reached Mohr-Coulomb, yields, and its bonds break with its areal
+// strain; its structures break up as it dilates (eq. 28)
 // and are gone with the last bond.
 void DepthAveragedSolver::degrade_cohesion(double dt) {
   for (std::size_t p = 0; p < particles_.size(); ++p) {
@@ -424,7 +449,7 @@ void DepthAveragedSolver::degrade_cohesion(double dt) {
     const double z_c = EarthPressure::crack_depth(
         earth_pressure_coefficient(p), unit_weight(p, submersion(p).relieved_density_depth),
         cohesion(p));
-    if (particles_.depth(p) <= z_c) continue;
+    if (particles_.depth(p) <= z_c && !particles_.yielded[p]) continue;
     const double strain = dt * particles_.areal_strain_rate[p];
     const double damage = particles_.damage[p];
     particles_.damage[p] = m.degradation.damage_after(damage, strain);

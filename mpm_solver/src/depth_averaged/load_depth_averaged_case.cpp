@@ -156,6 +156,8 @@ class CaseReader {
       m.structured_share = node["structured_share"].as<double>();
       m.basal_pressure_factor = node["basal_pressure_factor"].as<double>();
       m.confined_fluid_fraction = node["confined_fluid_fraction"].as<double>();
+      m.in_plane.youngs_modulus = node["youngs_modulus"].as<double>();
+      m.in_plane.poisson_ratio = node["poisson_ratio"].as<double>();
       if (auto eps_f = node.find("fragmentation_strain")) {
         m.fragmentation_strain = eps_f->as<double>();
         if (!node.has("cohesion_degradation"))

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "mpm/depth_averaged/in_plane_stress.hpp"
 #include "mpm/material/cohesion_degradation.hpp"
 
 namespace mpm {
@@ -36,6 +37,9 @@ struct DepthAveragedMaterial {
   // break up (eq. 28) their fluid is released at the same rate (eq. 27) and
   // leaves the column, which keeps its grains and the rest of its fluid.
   double confined_fluid_fraction = 0.0;
+  // The in-plane stress of eq. 43's last term (E = 0: none, the earth
+  // pressure alone), bounded by Mohr-Coulomb with the cohesion left and phi.
+  InPlaneStress in_plane;
 
   double structured_share_after(double share, double damage, double volumetric_strain) const;
 

@@ -25,6 +25,9 @@ struct DepthAveragedParticles {
   std::vector<double> mass;               // [kg]
   std::vector<int> material;              // index into the solver's materials
   std::vector<double> areal_strain_rate;  // div u [1/s]
+  std::vector<Mat<2>> velocity_gradient;  // L = grad u of the last step [1/s]
+  std::vector<Mat<2>> stress;             // in-plane, beyond the earth pressure [Pa]
+  std::vector<char> yielded;              // the in-plane stress yielded in the last step
   std::vector<double> damage;             // D = 1 - c / c0
   std::vector<double> structured_share;   // f_sc: solids still bound in structures
   std::vector<double> confined_fluid;     // fluid still confined in the structures [m^3]

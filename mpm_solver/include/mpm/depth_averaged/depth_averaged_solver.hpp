@@ -60,7 +60,10 @@ struct DepthAveragedSettings {
 //                   - rho g cos(theta) h tan(delta) u / |u|            (eqs. 36, 37)
 //
 // with T the lateral thrust of EarthPressure (Bell's cohesion and tension
-// cracks). In a fluid of density rho_f whose free surface stands at height
+// cracks), and, for a material with a Young's modulus, + div(h sigma), sigma
+// the in-plane stress (InPlaneStress: eq. 43's last term), which holds a
+// cohesive block together while its parts are driven apart and lets a weak
+// one tear. In a fluid of density rho_f whose free surface stands at height
 // eta_f above the reference plane, the submerged part s = clamp(eta_f - b, 0, h)
 // of a column is pushed by the fluid's hydrostatic pressure gradient and
 // buoyed, -rho_f g cos(theta) s grad(eta_f - b) (eq. 54's p_bu term: on a
@@ -126,16 +129,19 @@ class DepthAveragedSolver {
   void clear_grid();
   void transfer_points_to_grid();  // mass, momentum, volume, driving force, friction capacity
   void compute_depth();            // h_i = V_i / a_i, then h_p
-  void add_lateral_thrust();
+  void add_internal_forces();      // the lateral thrust and the in-plane stress
   void advance_grid_momentum(double dt);
   void apply_walls();
   void apply_basal_friction(double dt);
   void transfer_grid_to_points(double dt);
+  void update_in_plane_stress(double dt);
   void degrade_cohesion(double dt);
   void split_stretched_points();
 
   void compute_node_areas();
   double earth_pressure_coefficient(std::size_t p) const;
+  // T of point p with its relief from the last P2G [N/m].
+  double lateral_thrust(std::size_t p) const;
   // The fluid's relief of the column's weight per unit area, B_eff rho_f s, and
   // the submerged depth s [m] at point p (both 0 without a fluid).
   struct Submersion {
