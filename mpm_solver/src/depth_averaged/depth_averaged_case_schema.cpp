@@ -174,6 +174,12 @@ Schema depth_averaged_case_schema() {
       .required("materials", Schema::map_of(material_schema()), "Named materials.")
       .required("masses", Schema::sequence(mass_schema()).length(1, unlimited), "The masses.")
       .optional("walls", walls_schema().default_value("{}"), "The grid's faces.")
+      .optional("obstacles",
+                Schema::sequence(Schema::object("A box standing on the ground: the grid's nodes "
+                                                "inside it are held still (a stick wall).")
+                                     .required("min", plane_point().unit("m"), "Lower corner.")
+                                     .required("max", plane_point().unit("m"), "Upper corner.")),
+                "Fixed obstacles the mass stops against and flows around.")
       .optional("numerics", numerics_schema().default_value("{}"), "The scheme.")
       .optional("still_water", still_water_schema(), "A lake around the mass; absent: none.")
       .optional(

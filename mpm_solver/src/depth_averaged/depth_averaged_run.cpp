@@ -45,6 +45,7 @@ struct MassExtent {
   double fastest = 0.0;
   double most_damage = 0.0;
   double least_structured = 1.0;
+  double damaged_mass = 0.0;  // of the points whose damage reached 0.5 [kg]
 };
 
 MassExtent extent_of(const DepthAveragedSolver& solver) {
@@ -56,6 +57,7 @@ MassExtent extent_of(const DepthAveragedSolver& solver) {
     e.fastest = std::max(e.fastest, points.velocity[p].norm());
     e.most_damage = std::max(e.most_damage, points.damage[p]);
     e.least_structured = std::min(e.least_structured, points.structured_share[p]);
+    if (points.damage[p] >= 0.5) e.damaged_mass += points.mass[p];
   }
   return e;
 }
@@ -266,6 +268,8 @@ class DepthAveragedRun {
       summary_.set_metric("centre_of_mass_y", centre[1], "m");
       summary_.set_metric("max_speed", e.fastest, "m/s");
       summary_.set_metric("max_damage", e.most_damage, "1");
+      summary_.set_metric("damaged_mass_share", e.damaged_mass / solver_.particles().total_mass(),
+                          "1");
       summary_.set_metric("min_structured_share", e.least_structured, "1");
       summary_.set_metric("snapshots", static_cast<double>(points_writer_.snapshots_written()),
                           "1");

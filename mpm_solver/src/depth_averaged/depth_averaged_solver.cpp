@@ -72,6 +72,15 @@ DepthAveragedSolver::DepthAveragedSolver(DepthAveragedSettings settings,
   depth_.assign(n, 0.0);
   friction_.assign(n, 0.0);
   stopped_.assign(n, 0);
+  for (const auto& o : settings_.obstacles) {
+    if (!(o.max[0] > o.min[0] && o.max[1] > o.min[1]))
+      throw std::invalid_argument("an obstacle's max must lie above its min");
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec<2> x = node_position(i);
+      if (x[0] >= o.min[0] && x[0] <= o.max[0] && x[1] >= o.min[1] && x[1] <= o.max[1])
+        held_.push_back(i);
+    }
+  }
   if (!(settings_.confined_fluid_density > 0.0))
     throw std::invalid_argument("the confined fluid's density must be positive");
   for (std::size_t p = 0; p < particles_.size(); ++p) {
@@ -355,6 +364,7 @@ void DepthAveragedSolver::apply_basal_friction(double dt) {
 }
 
 void DepthAveragedSolver::apply_walls() {
+  for (const std::size_t i : held_) new_momentum_[i].setZero();
   for (int d = 0; d < 2; ++d) {
     const int other = 1 - d;
     for (int side = 0; side < 2; ++side) {

@@ -138,6 +138,19 @@ class CaseReader {
     c_.settings.split_length = numerics["split_length"].as<double>();
     c_.settings.earth_pressure =
         EarthPressure(earth_pressure_model_from(numerics["earth_pressure"].as<std::string>()));
+    if (auto obstacles = root_.find("obstacles"))
+      for (const Node& node : obstacles->items()) {
+        GroundObstacle o{point_of(node["min"]), point_of(node["max"])};
+        if (!(o.max[0] > o.min[0] && o.max[1] > o.min[1]))
+          node["max"].fail("max must lie above min in both directions");
+        const auto& grid = c_.settings.grid;
+        if (o.max[0] < grid.origin[0] || o.max[1] < grid.origin[1] || o.min[0] > grid.upper()[0] ||
+            o.min[1] > grid.upper()[1])
+          node.fail(fmt::format("the obstacle from {} to {} lies outside the grid from {} to {}",
+                                format_point(o.min), format_point(o.max), format_point(grid.origin),
+                                format_point(grid.upper())));
+        c_.settings.obstacles.push_back(o);
+      }
     const Node walls = root_["walls"];
     const char* faces[] = {"x_min", "x_max", "y_min", "y_max"};
     for (std::size_t f = 0; f < 4; ++f)

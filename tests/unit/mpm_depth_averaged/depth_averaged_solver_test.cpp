@@ -131,6 +131,27 @@ TEST(DepthAveragedSolver, BuoyancyTakesItsShareOfTheDriveOnASlopingBed) {
   }
 }
 
+// A block sliding down a 30 deg plane into an obstacle across half its
+// width: the half that meets it stops in front of it, the other half slides
+// past; no point gets into the obstacle.
+TEST(DepthAveragedSolver, AnObstacleStopsTheMassThatMeetsIt) {
+  auto s = ground(30.0, 40, 16, 0.25);
+  s.obstacles.push_back({{5.0, 0.0}, {5.5, 2.0}});
+  auto solver = block(s, sand(20.0, 1e5), {2.0, 0.5}, {3.5, 3.5}, 0.5);
+  solver.advance_to(2.2);
+  double blocked_front = 0.0, free_front = 0.0;
+  for (const auto& x : solver.particles().position) {
+    EXPECT_FALSE(x[0] > 5.0 + 0.25 && x[0] < 5.5 && x[1] < 2.0 - 0.25)
+        << "a point at (" << x[0] << ", " << x[1] << ") inside the obstacle";
+    (x[1] < 1.5 ? blocked_front : free_front) =
+        std::max(x[1] < 1.5 ? blocked_front : free_front, x[0]);
+  }
+  EXPECT_LT(blocked_front, 5.25);
+  EXPECT_GT(free_front, 6.0);
+  s.obstacles.front().max = {4.0, 1.0};
+  EXPECT_THROW(block(s, sand(20.0), {2.0, 0.5}, {3.5, 3.5}, 0.5), std::invalid_argument);
+}
+
 TEST(DepthAveragedSolver, RefusesAFluidSurfaceOfTheWrongSizeOrNotFinite) {
   const auto s = ground(0.0, 8, 6, 0.5);
   auto solver = block(s, sand(0.0), {0.0, 0.0}, {4.0, 3.0}, 0.7);

@@ -16,6 +16,13 @@ namespace mpm {
 // What a grid face does to the mass: slip (no normal motion) or stick.
 enum class GroundWall { slip, stick };
 
+// A fixed obstacle standing on the ground: the grid's nodes inside the box
+// are held still, as a stick wall, so the mass stops against it and flows
+// around it.
+struct GroundObstacle {
+  Vec<2> min = Vec<2>::Zero(), max = Vec<2>::Zero();  // [m]
+};
+
 // A lake the mass moves in, its surface level at a world elevation.
 struct StillWater {
   double density = 1000.0;  // rho_f [kg/m^3]
@@ -28,6 +35,7 @@ struct DepthAveragedSettings {
   EarthPressure earth_pressure;
   std::array<GroundWall, 4> walls{GroundWall::slip, GroundWall::slip, GroundWall::slip,
                                   GroundWall::slip};  // x_min, x_max, y_min, y_max
+  std::vector<GroundObstacle> obstacles;
   // Share of FLIP in the points' velocity update (the rest PIC): PIC's
   // smoothing over the kernel slows a dam break's thin front (its 1 %-depth
   // point 8 % behind Mangeney et al.'s at 15 s, against 1 % with 0.99).
@@ -168,6 +176,7 @@ class DepthAveragedSolver {
   std::vector<double> depth_;         // h_i
   std::vector<double> friction_;      // sum_p N_ip m_p g cos(theta) tan(delta_p)
   std::vector<char> stopped_;         // friction stopped the node this step
+  std::vector<std::size_t> held_;     // nodes inside an obstacle
   double fluid_density_ = 0.0;
   std::vector<double> fluid_surface_;  // eta_f at the nodes; empty without a fluid
   std::vector<double> relieved_;       // B_eff rho_f s per point, from the last P2G
