@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 
 #include "run_process.hpp"
@@ -97,6 +98,51 @@ TEST(DepthAveragedPairing, ConservesWhatCrossesAndTheLakeHoldsTheMassBack) {
              dry_centre);
   EXPECT_GT(centre, 15.0);  // it reached the lake's floor (the slope ends at x = 15 m)
   EXPECT_LT(centre, dry_centre - 0.5);
+}
+
+// A copy of the shipped job in a fresh directory, `from` replaced by `to` in
+// one of its files.
+fs::path edited_job(const std::string& name, const std::string& file, const std::string& from,
+                    const std::string& to) {
+  const fs::path dir = ct::fresh_directory(name);
+  for (const auto& entry : fs::directory_iterator(configs))
+    fs::copy_file(entry.path(), dir / entry.path().filename());
+  std::string text = ct::read_text(dir / file);
+  const auto at = text.find(from);
+  if (at == std::string::npos) throw std::runtime_error("no '" + from + "' in " + file);
+  text.replace(at, from.size(), to);
+  ct::write_text(dir / file, text);
+  return dir;
+}
+
+TEST(DepthAveragedPairing, RefusesAnInclinedTerrainNamingTheKeyAndLine) {
+  const fs::path dir = edited_job("depth_averaged_pairing_inclined", "slide.yaml", "terrain:\n",
+                                  "terrain:\n  inclination: 10\n");
+  const fs::path out = ct::fresh_directory("depth_averaged_pairing_inclined_run");
+  const auto r = ct::run({ct::binary("cosim").string(), "run", (dir / "job.yaml").string(),
+                          "--output", out.string(), "--verbosity", "quiet"},
+                         std::chrono::seconds(120));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  const std::string console = ct::read_text(out / "mass" / "console.log");
+  EXPECT_NE(console.find("slide.yaml:"), std::string::npos) << console;
+  EXPECT_NE(console.find("key 'terrain.inclination'"), std::string::npos) << console;
+}
+
+TEST(DepthAveragedPairing, TheWaterRefusesASolidLayerWithoutItsTwoPhaseMode) {
+  const fs::path dir = edited_job("depth_averaged_pairing_single_phase", "lake.yaml",
+                                  "two_phase:", "single_phase_now:");
+  // the block under it is no longer a key of the case either: drop it
+  std::string text = ct::read_text(dir / "lake.yaml");
+  const auto start = text.find("single_phase_now:");
+  const auto end = text.find("output:");
+  text.erase(start, end - start);
+  ct::write_text(dir / "lake.yaml", text);
+  const auto r = ct::run(
+      {ct::binary("swe_fluid").string(), "--validate", "--config", (dir / "lake.yaml").string()},
+      std::chrono::seconds(60));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("coupling.reads"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("two_phase"), std::string::npos) << r.output;
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ DepthAveragedCoupling::DepthAveragedCoupling(cosim::Participant& participant,
       fluid_density_(fluid_density) {
   if (solver.settings().terrain.inclination() != 0.0)
     throw std::invalid_argument(
-        "a coupled depth-averaged mass needs terrain.inclination 0: the water's grid is "
+        "a coupled depth-averaged mass needs an inclination of 0: the water's grid is "
         "horizontal (give the slope in the bed raster)");
 }
 

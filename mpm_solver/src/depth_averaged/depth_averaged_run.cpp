@@ -85,7 +85,7 @@ class DepthAveragedRun {
       try {
         coupling_.emplace(*participant_, solver_, solver_.settings().confined_fluid_density);
       } catch (const std::invalid_argument& e) {
-        throw cosim::InputError(fmt::format("{}: {}", description.file.string(), e.what()));
+        throw cosim::InputError(description.inclination_where, "terrain.inclination", e.what());
       }
       coupling_->declare(solver_);
       participant_->initialize(0.0, end_time_);

@@ -117,6 +117,9 @@ class CaseReader {
               "the bed raster does not cover the ground grid: its corner {} lies outside",
               format_point(corner)));
     }
+    c_.inclination_where = terrain["inclination"].key_location();
+    if (c_.inclination_where.line == 0) c_.inclination_where = terrain.key_location();
+    if (c_.inclination_where.line == 0) c_.inclination_where = root_.location();
     c_.settings.terrain = Terrain(terrain["inclination"].as<double>() * deg,
                                   terrain["gravity"].as<double>(), std::move(bed));
     const double fluid_density = root_["fluid"]["density"].as<double>();

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cosim/config/schema.hpp"
+#include "cosim/error.hpp"
 #include "cosim/io/run_size.hpp"
 #include "mpm/depth_averaged/depth_averaged_material.hpp"
 #include "mpm/depth_averaged/depth_averaged_particles.hpp"
@@ -27,6 +28,9 @@ struct DepthAveragedCase {
   std::filesystem::path file;
   std::uint64_t config_hash = 0;
   DepthAveragedSettings settings;
+  // Where terrain.inclination is (or would be) in the file, for a coupled
+  // run that refuses an inclined plane.
+  cosim::SourceLocation inclination_where;
   std::vector<DepthAveragedMaterial> materials;
   std::vector<std::string> mass_names;  // one per `masses` entry
   DepthAveragedParticles particles;     // seeded
