@@ -1,0 +1,56 @@
+#pragma once
+
+#include <mpi.h>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include "cosim/decomposition/cartesian_decomposition.hpp"
+
+namespace cosim::decomposition {
+
+// One rank's block of a CartesianDecomposition with `halo` layers of ghost
+// cells on every side, and the exchange that fills the ghost cells on the
+// faces it shares with other ranks from their owned cells. The block is
+// stored with its ghosts, x fastest (padded_extent()); a ghost layer on the
+// grid's own edge is left to the solver's boundary conditions. Corners and
+// edges are filled too: the directions are exchanged one after the other,
+// each over the whole padded extent of the others, so a later direction
+// carries what an earlier one brought.
+class HaloExchange {
+ public:
+  // `comm` holds decomposition.ranks() ranks; a Cartesian communicator is
+  // made from it in the decomposition's order (MPI_Cart_create without
+  // reordering). Throws cosim::InputError for a communicator of another
+  // size, a negative halo, or a halo wider than a block.
+  HaloExchange(MPI_Comm comm, const CartesianDecomposition& decomposition, int halo);
+  ~HaloExchange();
+  HaloExchange(const HaloExchange&) = delete;
+  HaloExchange& operator=(const HaloExchange&) = delete;
+
+  int rank() const { return rank_; }
+  const Block& block() const { return block_; }
+  int halo() const { return halo_; }
+  // Cells per direction with the ghosts (owned + 2 halo; 1 beyond the grid's dim).
+  const std::array<std::int64_t, 3>& padded_extent() const { return extent_; }
+  std::size_t padded_size() const;
+  // Index in the padded block of the cell with global indices (i, j, k),
+  // which may lie in the ghost layers.
+  std::size_t index(std::int64_t i, std::int64_t j = 0, std::int64_t k = 0) const;
+
+  // Fills the ghost cells of `field`, `components` values per cell (side by
+  // side), from the neighbours. Every rank calls it (collective).
+  void exchange(std::span<double> field, int components) const;
+
+ private:
+  MPI_Comm cart_ = MPI_COMM_NULL;
+  int rank_ = 0;
+  int dim_ = 1;
+  int halo_ = 0;
+  Block block_;
+  std::array<std::int64_t, 3> extent_{1, 1, 1};
+};
+
+}  // namespace cosim::decomposition

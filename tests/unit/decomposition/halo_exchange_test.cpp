@@ -1,0 +1,97 @@
+// The halo exchange on 1, 2, 3 and 4 ranks (mpirun, label mpi): every rank
+// fills its owned cells with a function of the global cell and component,
+// its ghosts with NaN; after the exchange every ghost inside the grid holds
+// the function's value (edges and corners too), and every ghost beyond the
+// grid's edge is still NaN.
+#include "cosim/decomposition/halo_exchange.hpp"
+
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "cosim/error.hpp"
+
+namespace cosim::decomposition {
+namespace {
+
+double value(std::int64_t i, std::int64_t j, std::int64_t k, int c) {
+  return 1e6 * c + 1e4 * static_cast<double>(k) + 1e2 * static_cast<double>(j) +
+         static_cast<double>(i);
+}
+
+void check_exchange(int dim, std::array<std::int64_t, 3> cells, int halo, int components) {
+  int ranks = 0;
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  const auto dims = process_grid(ranks, std::span<const std::int64_t>(cells.data(), dim));
+  const CartesianDecomposition decomposition(dim, cells, dims);
+  const HaloExchange exchange(MPI_COMM_WORLD, decomposition, halo);
+  const Block& b = exchange.block();
+  std::vector<double> field(exchange.padded_size() * static_cast<std::size_t>(components),
+                            std::numeric_limits<double>::quiet_NaN());
+  for (auto k = b.cells[2].begin; k < b.cells[2].end; ++k)
+    for (auto j = b.cells[1].begin; j < b.cells[1].end; ++j)
+      for (auto i = b.cells[0].begin; i < b.cells[0].end; ++i)
+        for (int c = 0; c < components; ++c)
+          field[exchange.index(i, j, k) * static_cast<std::size_t>(components) +
+                static_cast<std::size_t>(c)] = value(i, j, k, c);
+  exchange.exchange(field, components);
+  std::array<std::int64_t, 3> lo{0, 0, 0}, hi{1, 1, 1};
+  for (std::size_t d = 0; d < 3; ++d)
+    if (static_cast<int>(d) < dim) {
+      lo[d] = b.cells[d].begin - halo;
+      hi[d] = b.cells[d].end + halo;
+    }
+  int wrong = 0;
+  for (auto k = lo[2]; k < hi[2]; ++k)
+    for (auto j = lo[1]; j < hi[1]; ++j)
+      for (auto i = lo[0]; i < hi[0]; ++i) {
+        const bool inside = i >= 0 && i < cells[0] && (dim < 2 || (j >= 0 && j < cells[1])) &&
+                            (dim < 3 || (k >= 0 && k < cells[2]));
+        for (int c = 0; c < components; ++c) {
+          const double v = field[exchange.index(i, j, k) * static_cast<std::size_t>(components) +
+                                 static_cast<std::size_t>(c)];
+          if (inside ? v != value(i, j, k, c) : !std::isnan(v)) ++wrong;
+        }
+      }
+  EXPECT_EQ(wrong, 0) << "rank " << exchange.rank() << " of " << ranks;
+}
+
+TEST(HaloExchange, FillsEveryGhostInsideTheGridIn1D) {
+  check_exchange(1, {23, 1, 1}, 2, 1);
+}
+TEST(HaloExchange, FillsEveryGhostInsideTheGridIn2D) {
+  check_exchange(2, {13, 9, 1}, 2, 3);
+}
+TEST(HaloExchange, FillsEveryGhostInsideTheGridIn3D) {
+  check_exchange(3, {7, 6, 5}, 1, 2);
+}
+
+TEST(HaloExchange, RefusesAHaloWiderThanABlock) {
+  int ranks = 0;
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  const CartesianDecomposition thin(1, {static_cast<std::int64_t>(2 * ranks), 1, 1}, {ranks, 1, 1});
+  EXPECT_THROW(HaloExchange(MPI_COMM_WORLD, thin, 3), InputError);
+}
+
+}  // namespace
+}  // namespace cosim::decomposition
+
+int main(int argc, char** argv) {
+  MPI_Init(&argc, &argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  // Only rank 0 prints; every rank's failures still fail its exit code.
+  if (rank != 0) {
+    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
+    delete listeners.Release(listeners.default_result_printer());
+  }
+  const int result = RUN_ALL_TESTS();
+  int any = 0;
+  MPI_Allreduce(&result, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Finalize();
+  return any;
+}
