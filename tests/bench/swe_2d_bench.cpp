@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "swe/solver_2d.hpp"
@@ -70,16 +71,23 @@ void sizes_and_threads(benchmark::internal::Benchmark* b) {
       ->UseRealTime();
 }
 
+// The dam break's grid between walls, Manning 0.015.
+std::unique_ptr<swe::Solver2d> walled_basin(const DamBreak& d) {
+  swe::Physics physics;
+  physics.manning = 0.015;
+  const swe::Boundary wall{swe::BoundaryKind::wall, 0.0};
+  return std::make_unique<swe::Solver2d>(d.grid, physics, swe::Scheme{},
+                                         swe::Boundaries2d{wall, wall, wall, wall});
+}
+
 void BM_Solver2dStep(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const int threads = static_cast<int>(state.range(1));
   const int previous_threads = omp_get_max_threads();
   omp_set_num_threads(threads);
   const DamBreak d = dam_break(n);
-  swe::Physics physics;
-  physics.manning = 0.015;
-  const swe::Boundary wall{swe::BoundaryKind::wall, 0.0};
-  swe::Solver2d solver(d.grid, physics, swe::Scheme{}, {wall, wall, wall, wall});
+  const auto basin = walled_basin(d);
+  swe::Solver2d& solver = *basin;
   solver.set_bed(d.bed);
   solver.set_state(d.depth, {}, {});
   int steps = 0;
@@ -102,10 +110,8 @@ void BM_TwoPhaseStep(benchmark::State& state) {
   const int previous_threads = omp_get_max_threads();
   omp_set_num_threads(threads);
   const DamBreak d = dam_break(n);
-  swe::Physics physics;
-  physics.manning = 0.015;
-  const swe::Boundary wall{swe::BoundaryKind::wall, 0.0};
-  swe::Solver2d solver(d.grid, physics, swe::Scheme{}, {wall, wall, wall, wall});
+  const auto basin = walled_basin(d);
+  swe::Solver2d& solver = *basin;
   const std::size_t cells = d.bed.size();
   swe::SolidLayer layer = swe::empty_solid_layer(cells, 2650.0);
   for (std::size_t c = 0; c < cells; ++c)

@@ -59,12 +59,12 @@ void exchange_momentum(const TwoPhaseParameters& parameters, double fluid_densit
   const auto cells = static_cast<std::ptrdiff_t>(n);
   std::ptrdiff_t failed_cell = cells;
   std::string failure;
-#pragma omp parallel for schedule(static)
+  cosim::exchange::GeneralisedDragParameters drag = parameters.drag;  // a copy per thread
+#pragma omp parallel for schedule(static) firstprivate(drag)
   for (std::ptrdiff_t ci = 0; ci < cells; ++ci) {
     const auto c = static_cast<std::size_t>(ci);
     const double h_s = layer.depth[c], h_f = h[c];
     if (!(h_s > dry_depth && h_f > dry_depth)) continue;
-    cosim::exchange::GeneralisedDragParameters drag = parameters.drag;
     if (!layer.grain_size.empty()) drag.grain_size = layer.grain_size[c];
     const double rho_c = layer.density[c];
     const double mixture_depth = h_s + h_f;
