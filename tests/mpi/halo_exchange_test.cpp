@@ -22,22 +22,37 @@ double value(std::int64_t i, std::int64_t j, std::int64_t k, int c) {
          static_cast<double>(i);
 }
 
-void check_exchange(int dim, std::array<std::int64_t, 3> cells, int halo, int components) {
+// `components` values per cell side by side in one field, or, with
+// `separate_fields`, one field per component exchanged together (SoA).
+void check_exchange(int dim, std::array<std::int64_t, 3> cells, int halo, int components,
+                    bool separate_fields = false) {
   int ranks = 0;
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   const auto dims = process_grid(ranks, std::span<const std::int64_t>(cells.data(), dim));
   const CartesianDecomposition decomposition(dim, cells, dims);
   const HaloExchange exchange(MPI_COMM_WORLD, decomposition, halo);
   const Block& b = exchange.block();
-  std::vector<double> field(exchange.padded_size() * static_cast<std::size_t>(components),
+  const std::size_t padded = exchange.padded_size();
+  std::vector<double> field(padded * static_cast<std::size_t>(components),
                             std::numeric_limits<double>::quiet_NaN());
+  // Cell `cell`'s component c, in either arrangement.
+  auto at = [&](std::size_t cell, int c) -> double& {
+    const auto cu = static_cast<std::size_t>(c);
+    return separate_fields ? field[cu * padded + cell]
+                           : field[cell * static_cast<std::size_t>(components) + cu];
+  };
   for (auto k = b.cells[2].begin; k < b.cells[2].end; ++k)
     for (auto j = b.cells[1].begin; j < b.cells[1].end; ++j)
       for (auto i = b.cells[0].begin; i < b.cells[0].end; ++i)
-        for (int c = 0; c < components; ++c)
-          field[exchange.index(i, j, k) * static_cast<std::size_t>(components) +
-                static_cast<std::size_t>(c)] = value(i, j, k, c);
-  exchange.exchange(field, components);
+        for (int c = 0; c < components; ++c) at(exchange.index(i, j, k), c) = value(i, j, k, c);
+  if (separate_fields) {
+    std::vector<std::span<double>> fields;
+    for (int c = 0; c < components; ++c)
+      fields.emplace_back(field.data() + static_cast<std::size_t>(c) * padded, padded);
+    exchange.exchange(fields);
+  } else {
+    exchange.exchange(field, components);
+  }
   std::array<std::int64_t, 3> lo{0, 0, 0}, hi{1, 1, 1};
   for (std::size_t d = 0; d < 3; ++d)
     if (static_cast<int>(d) < dim) {
@@ -51,8 +66,7 @@ void check_exchange(int dim, std::array<std::int64_t, 3> cells, int halo, int co
         const bool inside = i >= 0 && i < cells[0] && (dim < 2 || (j >= 0 && j < cells[1])) &&
                             (dim < 3 || (k >= 0 && k < cells[2]));
         for (int c = 0; c < components; ++c) {
-          const double v = field[exchange.index(i, j, k) * static_cast<std::size_t>(components) +
-                                 static_cast<std::size_t>(c)];
+          const double v = at(exchange.index(i, j, k), c);
           if (inside ? v != value(i, j, k, c) : !std::isnan(v)) ++wrong;
         }
       }
@@ -64,6 +78,10 @@ TEST(HaloExchange, FillsEveryGhostInsideTheGridIn1D) {
 }
 TEST(HaloExchange, FillsEveryGhostInsideTheGridIn2D) {
   check_exchange(2, {13, 9, 1}, 2, 3);
+}
+TEST(HaloExchange, FillsTheGhostsOfSeveralFieldsInOneMessagePerFace) {
+  check_exchange(2, {13, 9, 1}, 2, 3, true);
+  check_exchange(3, {7, 6, 5}, 1, 2, true);
 }
 TEST(HaloExchange, FillsEveryGhostInsideTheGridIn3D) {
   check_exchange(3, {7, 6, 5}, 1, 2);

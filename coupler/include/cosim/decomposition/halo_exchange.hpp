@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "cosim/decomposition/cartesian_decomposition.hpp"
 
@@ -43,6 +44,13 @@ class HaloExchange {
   // Fills the ghost cells of `field`, `components` values per cell (side by
   // side), from the neighbours. Every rank calls it (collective).
   void exchange(std::span<double> field, int components) const;
+  // Fills the ghost cells of several fields of one value per cell (SoA
+  // arrays), packed into one message per face: the latency of one exchange
+  // for all of them.
+  void exchange(std::span<const std::span<double>> fields) const;
+
+  // Values this rank sent in its last exchange (the halo's volume per call).
+  std::size_t values_sent() const { return values_sent_; }
 
  private:
   MPI_Comm cart_ = MPI_COMM_NULL;
@@ -51,6 +59,11 @@ class HaloExchange {
   int halo_ = 0;
   Block block_;
   std::array<std::int64_t, 3> extent_{1, 1, 1};
+  mutable std::vector<double> send_, receive_;
+  mutable std::size_t values_sent_ = 0;
+
+  // The fields' values per cell: `components` side by side in each of them.
+  void exchange(std::span<const std::span<double>> fields, int components) const;
 };
 
 }  // namespace cosim::decomposition
