@@ -1,9 +1,11 @@
 #pragma once
 
 #include <array>
+#include <memory>
 
 #include "swe/boundary.hpp"
 #include "swe/solver.hpp"
+#include "swe/subdomain_link.hpp"
 
 namespace swe {
 
@@ -29,6 +31,14 @@ struct Boundaries2d {
 // cell_at: cells are closed below, open above, except that the upper edges of
 // the domain belong to the last cells.
 //
+// A block of a grid decomposed over several processes (issue 27) is a
+// Solver2d of the block's cells with a SubdomainLink: the ghost cells of the
+// sides it links come from the neighbouring blocks (the boundaries given for
+// those sides are ignored), and the stable time step and the totals are
+// reduced over every block. The blocks' states are then bit-identical to
+// the whole grid's on one process (each cell sees the same neighbours and
+// the same dt); the totals agree to round-off (the order of the sum).
+//
 // A stage sweeps the grid row by row (faces computed once, in vectorised
 // loops over a row); rows are split over OpenMP threads above 8192 cells,
 // with the same bits on any thread count.
@@ -37,7 +47,8 @@ class Solver2d final : public Solver {
   // Throws cosim::InputError for a non-positive spacing or cell count (and a
   // non-positive gravity, a Courant number outside (0, 1], a negative
   // fixed_depth).
-  Solver2d(Grid2d grid, Physics physics, Scheme scheme, Boundaries2d boundaries);
+  Solver2d(Grid2d grid, Physics physics, Scheme scheme, Boundaries2d boundaries,
+           std::shared_ptr<SubdomainLink> link = nullptr);
   ~Solver2d() override;
 
   int dimension() const override { return 2; }
@@ -73,6 +84,8 @@ class Solver2d final : public Solver {
   const Scheme& scheme() const override;
 
   const Grid2d& grid() const;
+  // The link to the other blocks of a decomposed grid; null on its own.
+  SubdomainLink* link() const;
 
  private:
   struct Impl;

@@ -77,21 +77,41 @@ void fill_side(const Side& side, const Boundary& boundary, const Physics& physic
   }
 }
 
-}  // namespace
-
-void fill_ghost_cells(const PaddedLayout& layout, const Boundaries2d& boundaries,
-                      const Physics& physics, PaddedFields& fields, std::vector<double>& bed) {
+// The four sides of `layout`, x_min, x_max, y_min, y_max.
+std::array<Side, 4> sides(const PaddedLayout& layout, PaddedFields& fields) {
   const std::ptrdiff_t nx = layout.nx, ny = layout.ny, sx = layout.stride();
   std::vector<double>* hu = &fields.hu;
   std::vector<double>* hv = &fields.hv;
-  fill_side({layout.index(0, 0), ny, sx, 1, nx, -1.0, hu, hv}, boundaries.x_min, physics, fields,
-            bed);
-  fill_side({layout.index(nx - 1, 0), ny, sx, -1, nx, 1.0, hu, hv}, boundaries.x_max, physics,
-            fields, bed);
-  fill_side({layout.index(0, 0), nx, 1, sx, ny, -1.0, hv, hu}, boundaries.y_min, physics, fields,
-            bed);
-  fill_side({layout.index(0, ny - 1), nx, 1, -sx, ny, 1.0, hv, hu}, boundaries.y_max, physics,
-            fields, bed);
+  return {Side{layout.index(0, 0), ny, sx, 1, nx, -1.0, hu, hv},
+          Side{layout.index(nx - 1, 0), ny, sx, -1, nx, 1.0, hu, hv},
+          Side{layout.index(0, 0), nx, 1, sx, ny, -1.0, hv, hu},
+          Side{layout.index(0, ny - 1), nx, 1, -sx, ny, 1.0, hv, hu}};
+}
+
+}  // namespace
+
+void fill_ghost_cells(const PaddedLayout& layout, const Boundaries2d& boundaries,
+                      const std::array<bool, 4>& linked, const Physics& physics,
+                      PaddedFields& fields, std::vector<double>& bed) {
+  const Boundary* boundary[4] = {&boundaries.x_min, &boundaries.x_max, &boundaries.y_min,
+                                 &boundaries.y_max};
+  const std::array<Side, 4> all = sides(layout, fields);
+  for (std::size_t s = 0; s < 4; ++s)
+    if (!linked[s]) fill_side(all[s], *boundary[s], physics, fields, bed);
+}
+
+void update_linked_ghost_primitives(const PaddedLayout& layout, const std::array<bool, 4>& linked,
+                                    const Physics& physics, PaddedFields& fields,
+                                    const std::vector<double>& bed) {
+  const std::array<Side, 4> all = sides(layout, fields);
+  for (std::size_t s = 0; s < 4; ++s) {
+    if (!linked[s]) continue;
+    const Side& side = all[s];
+    for (std::ptrdiff_t n = 0; n < side.count; ++n)
+      for (std::ptrdiff_t layer = 1; layer <= PaddedLayout::ghosts; ++layer)
+        update_primitives(fields, bed.data(), side.first + n * side.along - layer * side.inward,
+                          physics.dry_depth);
+  }
 }
 
 }  // namespace swe::solver_2d

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "solver_2d/padded_fields.hpp"
@@ -19,7 +20,16 @@ namespace swe::solver_2d {
 //   fixed_depth      the given depth, normal velocity from the outgoing Riemann
 //                    invariant u_n +- 2 sqrt(g h) of the adjacent cell,
 //                    tangential velocity copied.
+// Sides marked in `linked` (x_min, x_max, y_min, y_max) face another block
+// of a decomposed grid and are left alone.
 void fill_ghost_cells(const PaddedLayout& layout, const Boundaries2d& boundaries,
-                      const Physics& physics, PaddedFields& fields, std::vector<double>& bed);
+                      const std::array<bool, 4>& linked, const Physics& physics,
+                      PaddedFields& fields, std::vector<double>& bed);
+
+// The primitives of the ghost cells of the linked sides, from their
+// conserved variables and bed (filled by the neighbouring blocks).
+void update_linked_ghost_primitives(const PaddedLayout& layout, const std::array<bool, 4>& linked,
+                                    const Physics& physics, PaddedFields& fields,
+                                    const std::vector<double>& bed);
 
 }  // namespace swe::solver_2d

@@ -88,6 +88,8 @@ struct Solver2d::Impl {
   Physics physics;
   Scheme scheme;
   Boundaries2d boundaries;
+  std::shared_ptr<SubdomainLink> link;
+  std::array<bool, 4> linked{false, false, false, false};
   PaddedLayout layout;
   std::vector<double> bed;  // padded
   PaddedFields state;       // U^n, ghosts and primitives always current
@@ -112,11 +114,13 @@ struct Solver2d::Impl {
                       std::pair{"bed", &m.bed},     std::pair{"bed_cells", &m.bed_cells}};
   }
 
-  Impl(Grid2d g, Physics p, Scheme s, Boundaries2d b)
+  Impl(Grid2d g, Physics p, Scheme s, Boundaries2d b, std::shared_ptr<SubdomainLink> l)
       : grid(g),
         physics(p),
         scheme(s),
         boundaries(b),
+        link(std::move(l)),
+        linked(link ? link->linked_sides() : std::array<bool, 4>{false, false, false, false}),
         layout{g.cells[0], g.cells[1]},
         bed(layout.size()),
         state(layout.size()),
@@ -129,11 +133,20 @@ struct Solver2d::Impl {
   bool parallel() const { return layout.nx * layout.ny > solver_2d::parallel_cell_count; }
 
   void fill_ghosts(PaddedFields& f) {
-    solver_2d::fill_ghost_cells(layout, boundaries, physics, f, bed);
+    solver_2d::fill_ghost_cells(layout, boundaries, linked, physics, f, bed);
+    if (!link) return;
+    const std::span<double> conserved[3] = {f.h, f.hu, f.hv};
+    link->fill_ghosts(conserved);
+    solver_2d::update_linked_ghost_primitives(layout, linked, physics, f, bed);
   }
 
-  // Interior primitives of the state (after set_state / set_bed) and its ghosts.
+  // Interior primitives of the state (after set_state / set_bed) and its
+  // ghosts (the bed's across linked sides first).
   void refresh_state() {
+    if (link) {
+      const std::span<double> bed_array[1] = {bed};
+      link->fill_ghosts(bed_array);
+    }
     const std::ptrdiff_t nx = layout.nx, ny = layout.ny;
     for (std::ptrdiff_t j = 0; j < ny; ++j)
       for (std::ptrdiff_t i = 0; i < nx; ++i)
@@ -173,9 +186,17 @@ struct Solver2d::Impl {
   }
 };
 
-Solver2d::Solver2d(Grid2d grid, Physics physics, Scheme scheme, Boundaries2d boundaries) {
+Solver2d::Solver2d(Grid2d grid, Physics physics, Scheme scheme, Boundaries2d boundaries,
+                   std::shared_ptr<SubdomainLink> link) {
   validate(grid, physics, scheme, boundaries);
-  impl_ = std::make_unique<Impl>(grid, physics, scheme, boundaries);
+  const std::array<bool, 4> linked =
+      link ? link->linked_sides() : std::array<bool, 4>{false, false, false, false};
+  for (int d = 0; d < 2; ++d)
+    if (linked[2 * d] || linked[2 * d + 1])
+      require(grid.cells[d] >= PaddedLayout::ghosts,
+              std::string("a block of a decomposed grid needs at least 2 cells in ") +
+                  (d == 0 ? "x" : "y") + ", got " + std::to_string(grid.cells[d]));
+  impl_ = std::make_unique<Impl>(grid, physics, scheme, boundaries, std::move(link));
 }
 
 Solver2d::~Solver2d() = default;
@@ -277,6 +298,7 @@ double Solver2d::stable_time_step() const {
     rate = std::max(rate,
                     max_wave_rate(h + row, u + row, v + row, nx, sx, inv_dx, inv_dy, g, dry_depth));
   }
+  if (m.link) rate = m.link->max(rate);
   return rate > 0.0 ? m.scheme.courant / rate : std::numeric_limits<double>::infinity();
 }
 
@@ -363,6 +385,11 @@ Totals Solver2d::totals() const {
     t.momentum_x += r.momentum_x;
     t.momentum_y += r.momentum_y;
   }
+  if (m.link) {
+    std::array<double, 3> sums{t.volume, t.momentum_x, t.momentum_y};
+    m.link->sum(sums);
+    t = {sums[0], sums[1], sums[2]};
+  }
   const double area = m.grid.spacing[0] * m.grid.spacing[1];
   t.volume *= area;
   t.momentum_x *= area;
@@ -378,6 +405,9 @@ const Scheme& Solver2d::scheme() const {
 }
 const Grid2d& Solver2d::grid() const {
   return impl_->grid;
+}
+SubdomainLink* Solver2d::link() const {
+  return impl_->link.get();
 }
 
 }  // namespace swe
