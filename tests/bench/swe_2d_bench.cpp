@@ -23,31 +23,16 @@
 #include <memory>
 #include <vector>
 
+#include "radial_dam_break.hpp"
 #include "swe/solver_2d.hpp"
 #include "swe/two_phase/two_phase_exchange.hpp"
 
 namespace {
 
-struct DamBreak {
-  swe::Grid2d grid;
-  std::vector<double> bed, depth;
-};
+using DamBreak = bench::RadialDamBreak;
 
 DamBreak dam_break(int n) {
-  DamBreak d;
-  d.grid = {{-1.0, -1.0}, {2.0 / n, 2.0 / n}, {n, n}};
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      const double x = -1.0 + (i + 0.5) * d.grid.spacing[0],
-                   y = -1.0 + (j + 0.5) * d.grid.spacing[1];
-      const double bed =
-          0.1 * std::sin(4.0 * x) * std::cos(3.0 * y) + (x + y > 1.2 ? 0.8 * (x + y - 1.2) : 0.0);
-      const double surface = x * x + y * y < 0.09 ? 1.0 : 0.5;
-      d.bed.push_back(bed);
-      d.depth.push_back(std::max(0.0, surface - bed));
-    }
-  }
-  return d;
+  return bench::radial_dam_break(n, n);
 }
 
 // The counters of a run, and the thread count put back.
