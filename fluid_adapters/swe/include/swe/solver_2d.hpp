@@ -21,6 +21,16 @@ struct Grid2d {
   std::array<int, 2> cells{1, 1};
 };
 
+// The block of `grid` of cells[d] cells from cell begin[d] on.
+Grid2d sub_grid(const Grid2d& grid, std::array<int, 2> begin, std::array<int, 2> cells);
+
+// The grid's cells as a coupling mesh (a cell-centred UniformGrid).
+cosim::MeshGeometry cell_mesh(const Grid2d& grid);
+// The cell holding (x, y), x fastest, or the cell count when outside: cells
+// are closed below, open above, except that the upper edges of the domain
+// belong to the last cells.
+std::size_t cell_at(const Grid2d& grid, double x, double y);
+
 struct Boundaries2d {
   Boundary x_min, x_max, y_min, y_max;
 };

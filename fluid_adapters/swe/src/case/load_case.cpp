@@ -442,13 +442,11 @@ CaseDescription load_case_text(std::string_view text, const std::filesystem::pat
   return CaseReader(document).read();
 }
 
-std::unique_ptr<Solver> make_solver(const CaseDescription& c) {
-  std::unique_ptr<Solver> solver;
-  if (c.dimension == 1)
-    solver = std::make_unique<Solver1d>(c.edges, c.physics, c.scheme, c.boundaries_1d);
-  else
-    solver = std::make_unique<Solver2d>(c.grid, c.physics, c.scheme, c.boundaries_2d);
-  const cosim::Mesh cells{"swe_cells", solver->cells()};
+namespace {
+
+// The case's bed (with the solid layer on it, two-phase) and its water over
+// `cells`, set into `solver`.
+void lay_case(const CaseDescription& c, const cosim::Mesh& cells, Solver& solver) {
   std::vector<double> bed(cells.size());
   for (std::size_t i = 0; i < bed.size(); ++i) {
     const cosim::Vec3 x = cells.position(i);
@@ -460,8 +458,37 @@ std::unique_ptr<Solver> make_solver(const CaseDescription& c) {
   }
   std::vector<double> h, hu, hv;
   c.initial.lay(cells, bed, h, hu, hv);
-  solver->set_bed(bed);
-  solver->set_state(h, hu, hv);
+  solver.set_bed(bed);
+  solver.set_state(h, hu, hv);
+}
+
+}  // namespace
+
+std::unique_ptr<Solver> make_solver(const CaseDescription& c) {
+  std::unique_ptr<Solver> solver;
+  if (c.dimension == 1)
+    solver = std::make_unique<Solver1d>(c.edges, c.physics, c.scheme, c.boundaries_1d);
+  else
+    solver = std::make_unique<Solver2d>(c.grid, c.physics, c.scheme, c.boundaries_2d);
+  lay_case(c, {"swe_cells", solver->cells()}, *solver);
+  return solver;
+}
+
+std::unique_ptr<Solver> make_block_solver(const CaseDescription& c, const GridBlock& block) {
+  auto solver = std::make_unique<Solver2d>(sub_grid(c.grid, block.begin, block.cells), c.physics,
+                                           c.scheme, c.boundaries_2d, block.link);
+  // The block's cells at their centres in the whole grid.
+  const cosim::UniformGrid whole = std::get<cosim::UniformGrid>(cell_mesh(c.grid));
+  cosim::CellCloud centres{.dim = 2, .centres = {}, .volumes = {}};
+  for (int j = 0; j < block.cells[1]; ++j)
+    for (int i = 0; i < block.cells[0]; ++i) {
+      const cosim::Vec3 x = whole.position(static_cast<std::size_t>(block.begin[0] + i) +
+                                           static_cast<std::size_t>(c.grid.cells[0]) *
+                                               static_cast<std::size_t>(block.begin[1] + j));
+      centres.centres.insert(centres.centres.end(), {x[0], x[1]});
+      centres.volumes.push_back(solver->cell_size(0));
+    }
+  lay_case(c, {"swe_cells", centres}, *solver);
   return solver;
 }
 

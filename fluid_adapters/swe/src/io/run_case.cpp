@@ -8,6 +8,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -28,6 +29,10 @@
 #include "swe/coupling/extended_free_surface.hpp"
 #include "swe/io/gauge_recorder.hpp"
 #include "swe/two_phase/two_phase_exchange.hpp"
+
+#ifdef SWE_WITH_MPI
+#include "swe/parallel/decomposed_run.hpp"
+#endif
 
 namespace swe {
 
@@ -73,6 +78,19 @@ nlohmann::json case_section(const CaseDescription& c, const Solver& solver) {
           {"end_time_s", c.end_time}};
 }
 
+// How this process takes part in a run decomposed over several ranks
+// (issue 27); the defaults are those of a run on one process.
+struct RankRole {
+  bool writes_outputs = true;  // rank 0 writes the run's files
+  int ranks = 1;
+  // The whole grid for the outputs (gathered on rank 0); null: the solver.
+  Solver* whole = nullptr;
+  std::function<void()> gather = [] {};             // refreshes `whole` (collective)
+  std::function<bool(bool)> any = [](bool local) {  // a flag on any rank (collective)
+    return local;
+  };
+};
+
 // What a run accumulates besides the solver's state: saved with it at the
 // start of a window that may run again, and restored when it must.
 struct RunProgress {
@@ -86,11 +104,13 @@ struct RunProgress {
 class CaseRun {
  public:
   CaseRun(const CaseDescription& description, const RunOptions& options,
-          const cosim::CouplingEndpoint& endpoint, cosim::RunSummary& summary)
+          const cosim::CouplingEndpoint& endpoint, cosim::RunSummary& summary,
+          std::unique_ptr<Solver> solver = nullptr, RankRole role = {})
       : c_(description),
         options_(options),
         summary_(summary),
-        solver_(make_solver(description)),
+        solver_(solver ? std::move(solver) : make_solver(description)),
+        role_(std::move(role)),
         participant_(endpoint.name_or(description.name), endpoint),
         coupling_(description.coupling),
         progress_{.snapshots =
@@ -103,7 +123,9 @@ class CaseRun {
     try {
       {
         auto scope = summary_.phases().measure("setup");
-        summary_.set_section("case", case_section(c_, *solver_));
+        nlohmann::json section = case_section(c_, output_solver());
+        section["ranks"] = role_.ranks;
+        summary_.set_section("case", section);
         declare_coupling();
         participant_.declare_repeatable();
         participant_.declare_checkpointable();
@@ -120,15 +142,16 @@ class CaseRun {
         if (restarts()) read_checkpoint();
         open_outputs();
       }
-      const Totals start = solver_->totals();
+      const Totals start = run_totals();
       record_conserved(start, true);
       if (!restarts()) write_outputs(0.0);
       summary_.write();
       loop();
-      record_conserved(solver_->totals(), false);
+      record_conserved(run_totals(), false);
       participant_.finalize();
     } catch (const std::exception& e) {
-      record_conserved(solver_->totals(), false);
+      // Decomposed, the totals are a collective another rank may never reach.
+      if (role_.ranks == 1) record_conserved(solver_->totals(), false);
       participant_.abort(e.what());
       throw;
     }
@@ -250,10 +273,25 @@ class CaseRun {
                  solver_->cell_count());
   }
 
+  // The totals of the whole grid; decomposed, summed on rank 0 over the
+  // gathered grid in the order of one process, so that summary.json holds
+  // the same figures bit for bit (the other ranks report none).
+  Totals run_totals() const {
+    if (role_.ranks == 1) return solver_->totals();
+    role_.gather();
+    return output_solver().totals();
+  }
+
+  // The solver, or the whole grid gathered from every rank's block.
+  const Solver& output_solver() const { return role_.whole ? *role_.whole : *solver_; }
+
   void open_outputs() {
+    if (!role_.writes_outputs) return;
     if (c_.snapshots)
-      snapshot_writer_.emplace(options_.output, "swe", cosim::Mesh{cells_mesh, solver_->cells()});
-    if (!c_.gauges.empty()) gauges_.emplace(options_.output / "gauges.csv", c_.gauges, *solver_);
+      snapshot_writer_.emplace(options_.output, "swe",
+                               cosim::Mesh{cells_mesh, output_solver().cells()});
+    if (!c_.gauges.empty())
+      gauges_.emplace(options_.output / "gauges.csv", c_.gauges, output_solver());
     water_.emplace(options_.output / "water.csv",
                    std::vector<std::string>{
                        cosim::column_name("time", "s"),
@@ -340,7 +378,15 @@ class CaseRun {
       if (progress_.steps % 64 == 0 || progress_.snapshots.due(now, tolerance_)) check_state(now);
       write_outputs(now);
       if (participant_.must_write_checkpoint()) write_checkpoint();
-      if (Clock::now() - last_progress > std::chrono::seconds(5)) {
+      if (Clock::now() - last_progress > std::chrono::seconds(5) && role_.ranks > 1) {
+        // The water's figures need every rank's block: only the time here.
+        last_progress = Clock::now();
+        spdlog::info("t = {:.6g} s / {:.6g} s, step {}, dt = {:.3g} s", now, end_time_,
+                     progress_.steps, dt);
+        summary_.set_steps(static_cast<std::int64_t>(progress_.steps));
+        summary_.set_progress(now, end_time_);
+        summary_.write();
+      } else if (Clock::now() - last_progress > std::chrono::seconds(5)) {
         last_progress = Clock::now();
         const WaterStats s = water_stats(*solver_);
         spdlog::info(
@@ -446,40 +492,55 @@ class CaseRun {
                  participant_.restart_directory().string(), participant_.time(), progress_.steps);
   }
 
+  // Decomposed, every rank checks its block and all stop together.
   void check_state(double t) const {
     const auto h = solver_->depth();
     const auto q = solver_->discharge_x();
-    for (std::size_t c = 0; c < h.size(); ++c)
+    std::string failure;
+    for (std::size_t c = 0; c < h.size() && failure.empty(); ++c)
       if (!std::isfinite(h[c]) || !std::isfinite(q[c]) || h[c] < 0.0)
-        throw cosim::NumericalError(
-            fmt::format("cell {} has depth {} and discharge {} at t = {:.9g} s (step {})", c, h[c],
-                        q[c], t, progress_.steps));
+        failure =
+            fmt::format("{}cell {} has depth {} and discharge {} at t = {:.9g} s (step {})",
+                        role_.ranks > 1 ? "a block's " : "", c, h[c], q[c], t, progress_.steps);
+    if (role_.any(!failure.empty()))
+      throw cosim::NumericalError(
+          failure.empty() ? fmt::format("a cell of another rank's block went bad at t = {:.9g} s "
+                                        "(step {}); its log says which",
+                                        t, progress_.steps)
+                          : failure);
   }
 
   // Outputs due at t, through outputs_: held while the window may run again.
+  // Decomposed, every rank gathers its block to rank 0, which writes.
   void write_outputs(double t) {
     const bool every_step = c_.gauge_every <= 0.0;
-    if (gauges_ && (t == 0.0 || every_step || progress_.gauge_times->due(t, tolerance_)))
-      gauges_->record(t, *solver_, outputs_);
+    const bool gauges_due =
+        !c_.gauges.empty() && (t == 0.0 || every_step || progress_.gauge_times->due(t, tolerance_));
+    const bool snapshot_due = t == 0.0 || progress_.snapshots.due(t, tolerance_);
+    if (gauges_due || snapshot_due) role_.gather();
+    if (gauges_due && gauges_) gauges_->record(t, output_solver(), outputs_);
     if (t > 0.0) progress_.gauge_times->passed(t, tolerance_);
-    if (t == 0.0 || progress_.snapshots.due(t, tolerance_)) {
+    if (snapshot_due) {
       auto scope = summary_.phases().measure("output");
-      const WaterStats s = water_stats(*solver_);
-      progress_.eta_max = std::max(progress_.eta_max, s.eta_max);
-      const std::array<double, 5> row{t, s.volume, s.eta_max, s.eta_min, s.speed_max};
-      outputs_.append(*water_, row);
-      if (snapshot_writer_) write_snapshot(t);
+      if (role_.writes_outputs) {
+        const WaterStats s = water_stats(output_solver());
+        progress_.eta_max = std::max(progress_.eta_max, s.eta_max);
+        const std::array<double, 5> row{t, s.volume, s.eta_max, s.eta_min, s.speed_max};
+        outputs_.append(*water_, row);
+        if (snapshot_writer_) write_snapshot(t);
+      }
       if (t > 0.0) progress_.snapshots.passed(t, tolerance_);
     }
   }
 
   void write_snapshot(double t) {
-    const auto h = solver_->depth();
-    const auto bed = solver_->bed();
-    const auto qx = solver_->discharge_x();
-    const auto qy = solver_->discharge_y();
-    const double dry = solver_->physics().dry_depth;
-    const int dim = solver_->dimension();
+    const Solver& solver = output_solver();
+    const auto h = solver.depth();
+    const auto bed = solver.bed();
+    const auto qx = solver.discharge_x();
+    const auto qy = solver.discharge_y();
+    const double dry = solver.physics().dry_depth;
+    const int dim = solver.dimension();
     const std::size_t n = h.size();
     eta_.resize(n);
     discharge_.resize(n * static_cast<std::size_t>(dim));
@@ -528,9 +589,11 @@ class CaseRun {
       else
         summary_.set_conserved_end(name, value, unit);
     };
-    set("water_volume", totals.volume, line ? "m^2" : "m^3");
-    set("momentum_x", c_.physics.density * totals.momentum_x, line ? "kg/s" : "kg m/s");
-    if (!line) set("momentum_y", c_.physics.density * totals.momentum_y, "kg m/s");
+    if (role_.writes_outputs) {  // decomposed, only rank 0 holds the whole grid's totals
+      set("water_volume", totals.volume, line ? "m^2" : "m^3");
+      set("momentum_x", c_.physics.density * totals.momentum_x, line ? "kg/s" : "kg m/s");
+      if (!line) set("momentum_y", c_.physics.density * totals.momentum_y, "kg m/s");
+    }
     if (!start) {
       summary_.set_steps(static_cast<std::int64_t>(progress_.steps));
       summary_.set_windows(static_cast<std::int64_t>(participant_.timings().windows));
@@ -554,6 +617,7 @@ class CaseRun {
   const RunOptions& options_;
   cosim::RunSummary& summary_;
   std::unique_ptr<Solver> solver_;
+  RankRole role_;
   cosim::Participant participant_;
   CouplingSpec coupling_;
   RunProgress progress_;
@@ -569,25 +633,86 @@ class CaseRun {
   std::array<double, 2> impulse_sent_{0.0, 0.0};  // to the solids, in total [kg m/s]
 };
 
+// The case, its name and size in the summary, and the threads it asks for.
+CaseDescription read_case(const RunOptions& options, cosim::RunSummary& summary) {
+  CaseDescription description = [&] {
+    auto scope = summary.phases().measure("read_case");
+    return load_case(options.config);
+  }();
+  summary.set_config(options.config, description.config_hash);
+  summary.set_section("size", description.size.to_json());
+  const int threads = options.threads >= 0 ? options.threads : description.threads;
+  if (threads > 0) omp_set_num_threads(threads);
+  return description;
+}
+
+#ifdef SWE_WITH_MPI
+// swe_fluid standalone under `mpirun -np N`, N > 1: rank 0 prepares the
+// output directory and writes the run's files; rank r keeps its own log and
+// summary in ranks/rank_<r>/. The job ends with the largest exit code of
+// its ranks; a rank that fails while the others still run ends them all
+// (MpiSession::finish).
+int run_decomposed(const RunOptions& options, const cosim::CouplingEndpoint& endpoint) {
+  const parallel::MpiSession mpi;
+  const bool root = mpi.rank() == 0;
+  int prepared = 0;
+  if (root) {
+    try {
+      cosim::prepare_output_directory(options.output, options.reuse);
+    } catch (const cosim::Error& e) {
+      std::fprintf(stderr, "swe_fluid: %s\n", e.what());
+      prepared = cosim::to_int(e.code());
+    }
+  }
+  MPI_Bcast(&prepared, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  if (prepared != 0) return prepared;
+  RunOptions mine = options;
+  if (!root) {
+    mine.output = options.output / "ranks" / fmt::format("rank_{}", mpi.rank());
+    cosim::create_output_directory(mine.output);
+    mine.verbosity = cosim::Verbosity::quiet;
+  }
+  cosim::init_logging(mine.output, "swe_fluid", mine.verbosity);
+  cosim::RunSummary summary(mine.output, "swe_fluid");
+  const int code = cosim::run_and_finish(summary, [&] {
+    const CaseDescription description = read_case(options, summary);
+    parallel::DecomposedRun part(MPI_COMM_WORLD, description);
+    const auto& b = part.block();
+    spdlog::info("case '{}': 2D on {} ranks ({} x {} blocks), {} threads each, end time {} s",
+                 description.name, mpi.ranks(), part.decomposition().dims()[0],
+                 part.decomposition().dims()[1], omp_get_max_threads(), description.end_time);
+    spdlog::info("rank {}: cells [{}, {}) x [{}, {}) of {} x {}", mpi.rank(), b.cells[0].begin,
+                 b.cells[0].end, b.cells[1].begin, b.cells[1].end, description.grid.cells[0],
+                 description.grid.cells[1]);
+    RankRole role{.writes_outputs = root,
+                  .ranks = mpi.ranks(),
+                  .whole = &part.whole(),
+                  .gather = [&part] { part.whole().gather(); },
+                  .any = [&part](bool local) { return part.any(local); }};
+    CaseRun run(description, mine, endpoint, summary, part.take_solver(), std::move(role));
+    run.run();
+  });
+  spdlog::default_logger()->flush();
+  return mpi.finish(code);
+}
+#endif
+
 }  // namespace
 
 int run_case(const RunOptions& options, const cosim::CouplingEndpoint& endpoint) {
+#ifdef SWE_WITH_MPI
+  if (endpoint.is_standalone() && parallel::ranks_from_launcher() > 1)
+    return run_decomposed(options, endpoint);
+#endif
   cosim::prepare_output_directory(options.output, options.reuse);
   cosim::init_logging(options.output, "swe_fluid", options.verbosity);
   cosim::RunSummary summary(options.output, "swe_fluid");
   return cosim::run_and_finish(summary, [&] {
-    const CaseDescription description = [&] {
-      auto scope = summary.phases().measure("read_case");
-      return load_case(options.config);
-    }();
-    summary.set_config(options.config, description.config_hash);
-    const int threads = options.threads >= 0 ? options.threads : description.threads;
-    if (threads > 0) omp_set_num_threads(threads);
+    const CaseDescription description = read_case(options, summary);
     spdlog::info("case '{}': {}D, {} threads, end time {} s", description.name,
                  description.dimension, omp_get_max_threads(), description.end_time);
     spdlog::info("size: {} (limits.memory_gib {:g})", description.size.describe(),
                  description.size.memory_limit_gib);
-    summary.set_section("size", description.size.to_json());
     CaseRun run(description, options, endpoint, summary);
     run.run();
   });

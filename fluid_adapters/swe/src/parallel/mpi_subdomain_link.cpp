@@ -54,18 +54,12 @@ void MpiSubdomainLink::sum(std::span<double> values) {
 }
 
 Grid2d block_grid(const Grid2d& grid, const cosim::decomposition::Block& block) {
-  Grid2d part = grid;
-  for (std::size_t d = 0; d < 2; ++d) {
-    part.cells[d] = static_cast<int>(block.cells[d].size());
-    part.origin[d] = grid.origin[d] + static_cast<double>(block.cells[d].begin) * grid.spacing[d];
-  }
-  return part;
+  return sub_grid(
+      grid, {static_cast<int>(block.cells[0].begin), static_cast<int>(block.cells[1].begin)},
+      {static_cast<int>(block.cells[0].size()), static_cast<int>(block.cells[1].size())});
 }
 
-BlockSolver2d make_block_solver(MPI_Comm comm, const Grid2d& grid, const Physics& physics,
-                                const Scheme& scheme, const Boundaries2d& boundaries) {
-  int ranks = 1;
-  MPI_Comm_size(comm, &ranks);
+cosim::decomposition::CartesianDecomposition decompose_grid(const Grid2d& grid, int ranks) {
   const std::array<std::int64_t, 2> cells{grid.cells[0], grid.cells[1]};
   const std::array<int, 3> dims = cosim::decomposition::process_grid(ranks, cells);
   for (std::size_t d = 0; d < 2; ++d)
@@ -74,9 +68,14 @@ BlockSolver2d make_block_solver(MPI_Comm comm, const Grid2d& grid, const Physics
           "{} ranks split the grid's {} cells in {} into {} parts, fewer than {} cells each: "
           "run on fewer ranks",
           ranks, cells[d], d == 0 ? "x" : "y", dims[d], ghost_layers));
-  const cosim::decomposition::CartesianDecomposition decomposition(2, {cells[0], cells[1], 1},
-                                                                   dims);
-  auto link = std::make_shared<MpiSubdomainLink>(comm, decomposition);
+  return {2, {cells[0], cells[1], 1}, dims};
+}
+
+BlockSolver2d make_block_solver(MPI_Comm comm, const Grid2d& grid, const Physics& physics,
+                                const Scheme& scheme, const Boundaries2d& boundaries) {
+  int ranks = 1;
+  MPI_Comm_size(comm, &ranks);
+  auto link = std::make_shared<MpiSubdomainLink>(comm, decompose_grid(grid, ranks));
   BlockSolver2d part{nullptr, link, link->halo().block()};
   part.solver =
       std::make_unique<Solver2d>(block_grid(grid, part.block), physics, scheme, boundaries, link);

@@ -205,8 +205,16 @@ std::size_t Solver2d::cell_count() const {
   return impl_->cell_count();
 }
 
-cosim::MeshGeometry Solver2d::cells() const {
-  const Grid2d& g = impl_->grid;
+Grid2d sub_grid(const Grid2d& grid, std::array<int, 2> begin, std::array<int, 2> cells) {
+  Grid2d part = grid;
+  for (std::size_t d = 0; d < 2; ++d) {
+    part.cells[d] = cells[d];
+    part.origin[d] = grid.origin[d] + begin[d] * grid.spacing[d];
+  }
+  return part;
+}
+
+cosim::MeshGeometry cell_mesh(const Grid2d& g) {
   cosim::UniformGrid mesh;
   mesh.dim = 2;
   mesh.origin = {g.origin[0], g.origin[1], 0.0};
@@ -216,21 +224,29 @@ cosim::MeshGeometry Solver2d::cells() const {
   return mesh;
 }
 
-double Solver2d::cell_size(std::size_t) const {
-  return impl_->grid.spacing[0] * impl_->grid.spacing[1];
-}
-
-std::size_t Solver2d::cell_at(double x, double y) const {
-  const Grid2d& g = impl_->grid;
+std::size_t cell_at(const Grid2d& g, double x, double y) {
+  const auto count = static_cast<std::size_t>(g.cells[0]) * static_cast<std::size_t>(g.cells[1]);
   const double position[2] = {x, y};
   std::size_t index[2];
   for (int d = 0; d < 2; ++d) {
     const double s = (position[d] - g.origin[d]) / g.spacing[d];
     // The upper edge of the domain belongs to the last cell.
-    if (!(s >= 0.0 && s <= g.cells[d])) return cell_count();
+    if (!(s >= 0.0 && s <= g.cells[d])) return count;
     index[d] = std::min(static_cast<std::size_t>(s), static_cast<std::size_t>(g.cells[d] - 1));
   }
   return index[0] + static_cast<std::size_t>(g.cells[0]) * index[1];
+}
+
+cosim::MeshGeometry Solver2d::cells() const {
+  return cell_mesh(impl_->grid);
+}
+
+double Solver2d::cell_size(std::size_t) const {
+  return impl_->grid.spacing[0] * impl_->grid.spacing[1];
+}
+
+std::size_t Solver2d::cell_at(double x, double y) const {
+  return swe::cell_at(impl_->grid, x, y);
 }
 
 void Solver2d::set_state(std::span<const double> h, std::span<const double> hu,

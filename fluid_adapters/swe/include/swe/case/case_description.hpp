@@ -90,4 +90,17 @@ struct CaseDescription {
 // two-phase mode over bed + the initial solid layer's depth).
 std::unique_ptr<Solver> make_solver(const CaseDescription& description);
 
+// A block of the case's 2D grid, for a run decomposed over ranks: its cells
+// in the whole grid and its link to the other blocks.
+struct GridBlock {
+  std::array<int, 2> begin{0, 0};
+  std::array<int, 2> cells{0, 0};
+  std::shared_ptr<SubdomainLink> link;
+};
+// The solver of that block, with the case's bed and water in its cells
+// (the values at the cells' centres in the whole grid, so that every block
+// holds the whole grid's values bit for bit). Single-phase only.
+std::unique_ptr<Solver> make_block_solver(const CaseDescription& description,
+                                          const GridBlock& block);
+
 }  // namespace swe

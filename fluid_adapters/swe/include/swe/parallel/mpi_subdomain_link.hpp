@@ -49,6 +49,11 @@ struct BlockSolver2d {
   cosim::decomposition::Block block;
 };
 
+// `grid` split over `ranks` ranks (cosim::decomposition::process_grid: the
+// least halo). Throws cosim::InputError when a block would hold fewer than 2
+// cells in a direction that is split.
+cosim::decomposition::CartesianDecomposition decompose_grid(const Grid2d& grid, int ranks);
+
 // Splits `grid` over the ranks of `comm` (cosim::decomposition::process_grid:
 // the least halo) and builds this rank's block solver with the boundaries of
 // the sides on the grid's edge. Collective. Throws cosim::InputError when a

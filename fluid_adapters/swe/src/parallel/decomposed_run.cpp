@@ -1,0 +1,92 @@
+#include "swe/parallel/decomposed_run.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <string>
+#include <thread>
+
+#include "cosim/error.hpp"
+
+namespace swe::parallel {
+
+int ranks_from_launcher() {
+  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+    if (const char* value = std::getenv(variable)) return std::max(1, std::atoi(value));
+  return 1;
+}
+
+MpiSession::MpiSession() {
+  int provided = 0;
+  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks_);
+}
+
+MpiSession::~MpiSession() {
+  MPI_Finalize();
+}
+
+int MpiSession::finish(int code, std::chrono::milliseconds grace) const {
+  MPI_Request all_ended = MPI_REQUEST_NULL;
+  MPI_Ibarrier(MPI_COMM_WORLD, &all_ended);
+  const auto deadline = std::chrono::steady_clock::now() + grace;
+  for (int ended = 0;;) {
+    MPI_Test(&all_ended, &ended, MPI_STATUS_IGNORE);
+    if (ended) break;
+    if (code != 0 && std::chrono::steady_clock::now() > deadline) {
+      MPI_Abort(MPI_COMM_WORLD, code);
+      std::_Exit(code);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  int job = code;
+  MPI_Allreduce(&code, &job, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  return job;
+}
+
+namespace {
+
+cosim::decomposition::CartesianDecomposition decompose_case(MPI_Comm comm,
+                                                            const CaseDescription& c) {
+  int ranks = 1;
+  MPI_Comm_size(comm, &ranks);
+  const std::string where = c.file.string();
+  if (c.dimension != 2)
+    throw cosim::InputError(
+        fmt::format("{}: key 'dimension': a 1D case runs on one rank; mpirun started {} (a "
+                    "decomposed run splits a 2D grid)",
+                    where, ranks));
+  if (c.two_phase)
+    throw cosim::InputError(
+        fmt::format("{}: key 'two_phase': the two-phase mode runs on one rank; mpirun started {}",
+                    where, ranks));
+  try {
+    return decompose_grid(c.grid, ranks);
+  } catch (const cosim::InputError& e) {
+    throw cosim::InputError(fmt::format("{}: key 'mesh.cells': {}", where, e.what()));
+  }
+}
+
+}  // namespace
+
+DecomposedRun::DecomposedRun(MPI_Comm comm, const CaseDescription& description)
+    : comm_(comm),
+      decomposition_(decompose_case(comm, description)),
+      link_(std::make_shared<MpiSubdomainLink>(comm, decomposition_)) {
+  const auto& b = link_->halo().block();
+  const GridBlock block{{static_cast<int>(b.cells[0].begin), static_cast<int>(b.cells[1].begin)},
+                        {static_cast<int>(b.cells[0].size()), static_cast<int>(b.cells[1].size())},
+                        link_};
+  solver_ = make_block_solver(description, block);
+  whole_ = std::make_unique<GatheredGrid2d>(comm, decomposition_, description.grid,
+                                            static_cast<const Solver2d&>(*solver_));
+}
+
+bool DecomposedRun::any(bool local) const {
+  int flag = local ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &flag, 1, MPI_INT, MPI_MAX, comm_);
+  return flag != 0;
+}
+
+}  // namespace swe::parallel
