@@ -34,14 +34,23 @@ void fail(const std::string& what) {
               "HDF5: " + what + (messages.empty() ? std::string() : ": " + messages));
 }
 
-OutputFile::OutputFile(const std::filesystem::path& path)
+OutputFile::OutputFile(const std::filesystem::path& path, hid_t access)
     : path_(path.string()),
-      file_(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
+      file_(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access),
             "cannot create '" + path_ + "'") {}
 
 void OutputFile::write(const std::string& dataset, std::span<const hsize_t> dims,
                        std::span<const double> values, std::string_view unit) {
   write_raw(dataset, dims, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.data(), values.size(), unit);
+}
+
+void OutputFile::write(const std::string& dataset, std::span<const hsize_t> dims, const Part& part,
+                       std::span<const double> values, std::string_view unit) {
+  if (part.start.size() != dims.size() || part.count.size() != dims.size())
+    throw Error(ExitCode::internal_error,
+                "HDF5: '" + path_ + ":/" + dataset + "': a part of another rank than its dataset");
+  write_raw(dataset, dims, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.data(), values.size(), unit,
+            &part);
 }
 
 void OutputFile::write(const std::string& dataset, std::span<const hsize_t> dims,
@@ -51,10 +60,10 @@ void OutputFile::write(const std::string& dataset, std::span<const hsize_t> dims
 
 void OutputFile::write_raw(const std::string& dataset, std::span<const hsize_t> dims,
                            hid_t file_type, hid_t memory_type, const void* values,
-                           std::size_t count, std::string_view unit) {
+                           std::size_t count, std::string_view unit, const Part* part) {
   const std::string where = "'" + path_ + ":/" + dataset + "'";
   hsize_t expected = 1;
-  for (const hsize_t d : dims) expected *= d;
+  for (const hsize_t d : part ? part->count : dims) expected *= d;
   if (expected != count)
     throw Error(ExitCode::bad_input, "HDF5: " + where + ": " + std::to_string(count) +
                                          " values for a dataspace of " + std::to_string(expected));
@@ -69,8 +78,19 @@ void OutputFile::write_raw(const std::string& dataset, std::span<const hsize_t> 
   const DatasetHandle set(H5Dcreate2(file_.get(), dataset.c_str(), file_type, space.get(),
                                      H5P_DEFAULT, dataset_properties.get(), H5P_DEFAULT),
                           "cannot create dataset " + where);
-  if (count > 0 && H5Dwrite(set.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) < 0)
+  if (part) {
+    const DataspaceHandle mine(
+        H5Screate_simple(static_cast<int>(part->count.size()), part->count.data(), nullptr),
+        "dataspace of a part of " + where);
+    if (H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, part->start.data(), nullptr,
+                            part->count.data(), nullptr) < 0)
+      fail("a part of " + where);
+    if (H5Dwrite(set.get(), memory_type, mine.get(), space.get(), part->transfer, values) < 0)
+      fail("cannot write a part of dataset " + where);
+  } else if (count > 0 &&
+             H5Dwrite(set.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) < 0) {
     fail("cannot write dataset " + where);
+  }
   if (!unit.empty()) {
     const DatatypeHandle text(H5Tcopy(H5T_C_S1), "string type for " + where);
     if (H5Tset_size(text.get(), unit.size()) < 0) fail("string size for " + where);

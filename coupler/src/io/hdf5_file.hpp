@@ -67,9 +67,21 @@ using GroupHandle = Handle<H5Gclose>;
 // attributes are added by path; intermediate groups are created as needed.
 class OutputFile {
  public:
-  explicit OutputFile(const std::filesystem::path& path);
+  // `access`: the file access properties (H5P_DEFAULT, or MPI-IO for a file
+  // every rank of a decomposed run writes together).
+  explicit OutputFile(const std::filesystem::path& path, hid_t access = H5P_DEFAULT);
 
   void write(const std::string& dataset, std::span<const hsize_t> dims,
+             std::span<const double> values, std::string_view unit = {});
+  // This process's part of a dataset of `dims`: the block of `count` values
+  // per dimension from `start` (slowest first), written with the transfer
+  // properties `transfer` (collective MPI-IO in a decomposed run, where
+  // every rank calls this in the same order).
+  struct Part {
+    std::span<const hsize_t> start, count;
+    hid_t transfer = H5P_DEFAULT;
+  };
+  void write(const std::string& dataset, std::span<const hsize_t> dims, const Part& part,
              std::span<const double> values, std::string_view unit = {});
   void write(const std::string& dataset, std::span<const hsize_t> dims,
              std::span<const std::int64_t> values);
@@ -83,7 +95,8 @@ class OutputFile {
   // The groups of a dataset's path that do not exist yet, without times.
   void create_groups_above(const std::string& dataset, const std::string& where);
   void write_raw(const std::string& dataset, std::span<const hsize_t> dims, hid_t file_type,
-                 hid_t memory_type, const void* values, std::size_t count, std::string_view unit);
+                 hid_t memory_type, const void* values, std::size_t count, std::string_view unit,
+                 const Part* part = nullptr);
   void set_scalar_attribute(hid_t object, const std::string& name, hid_t file_type,
                             hid_t memory_type, const void* value);
 

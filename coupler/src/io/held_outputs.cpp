@@ -11,7 +11,7 @@ void HeldOutputs::append(TimeSeriesWriter& writer, std::span<const double> row) 
   row_values_.insert(row_values_.end(), row.begin(), row.end());
 }
 
-void HeldOutputs::write(SnapshotWriter& writer, double time, const SnapshotFields& fields) {
+void HeldOutputs::write(SnapshotSink& writer, double time, const SnapshotFields& fields) {
   if (!holding_) {
     writer.write(time, fields);
     return;

@@ -45,15 +45,6 @@ void write_hdf5_atomically(const fs::path& path, Fill&& fill) {
   }
 }
 
-std::vector<double> padded_to_three_components(std::span<const double> values) {
-  std::vector<double> padded(values.size() / 2 * 3, 0.0);
-  for (std::size_t e = 0; e < values.size() / 2; ++e) {
-    padded[3 * e] = values[2 * e];
-    padded[3 * e + 1] = values[2 * e + 1];
-  }
-  return padded;
-}
-
 }  // namespace
 
 SnapshotWriter::SnapshotWriter(fs::path directory, std::string base_name, Mesh mesh)
@@ -131,7 +122,8 @@ void SnapshotWriter::write_snapshot(double time, const Mesh& mesh, const Snapsho
       if (stored == field.components) {
         file.write("fields/" + name, dims, field.values, field.unit);
       } else {
-        file.write("fields/" + name, dims, padded_to_three_components(field.values), field.unit);
+        file.write("fields/" + name, dims, xdmf::padded_to_three_components(field.values),
+                   field.unit);
       }
     }
   });
@@ -142,36 +134,12 @@ void SnapshotWriter::write_snapshot(double time, const Mesh& mesh, const Snapsho
 
 std::string SnapshotWriter::grid_xml(std::size_t step, double time, const Mesh& mesh,
                                      const SnapshotFields& fields) const {
-  const std::string file = xdmf::escape_xml(snapshot_path(step).filename().string());
-  std::string xml = fmt::format(
-      "      <Grid Name=\"{}_{:06}\" GridType=\"Uniform\">\n"
-      "        <Time Value=\"{:.17g}\"/>\n",
-      xdmf::escape_xml(base_name_), step, time);
-  xml += xdmf::topology_and_geometry(mesh, geometry_file_, "        ");
-  for (const auto& [name, field] : fields) {
-    const int stored = xdmf::stored_components(field.components);
-    xml += fmt::format(
-        "        <Attribute Name=\"{0}\" AttributeType=\"{1}\" Center=\"{2}\">\n"
-        "          <DataItem Format=\"HDF\" Dimensions=\"{3}\" NumberType=\"Float\" "
-        "Precision=\"8\">{4}:/fields/{0}</DataItem>\n"
-        "        </Attribute>\n",
-        xdmf::escape_xml(name), xdmf::attribute_type(field.components),
-        xdmf::attribute_center(mesh), xdmf::dims_text(xdmf::field_dims(mesh, stored)), file);
-  }
-  xml += "      </Grid>\n";
-  return xml;
+  return xdmf::snapshot_grid(base_name_, step, time, mesh, geometry_file_,
+                             snapshot_path(step).filename().string(), fields);
 }
 
 void SnapshotWriter::rewrite_index() const {
-  std::string xml = fmt::format(
-      "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
-      "<Xdmf Version=\"3.0\">\n"
-      "  <Domain>\n"
-      "    <Grid Name=\"{}\" GridType=\"Collection\" CollectionType=\"Temporal\">\n",
-      xdmf::escape_xml(base_name_));
-  for (const std::string& grid : grids_) xml += grid;
-  xml += "    </Grid>\n  </Domain>\n</Xdmf>\n";
-  write_file_atomically(index_path(), xml);
+  xdmf::write_temporal_index(index_path(), base_name_, grids_);
 }
 
 }  // namespace cosim

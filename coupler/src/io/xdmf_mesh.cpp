@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "cosim/io/files.hpp"
+
 namespace cosim::xdmf {
 
 namespace {
@@ -179,6 +181,51 @@ std::string escape_xml(std::string_view text) {
     }
   }
   return out;
+}
+
+std::string snapshot_grid(std::string_view base_name, std::size_t step, double time,
+                          const Mesh& mesh, const std::string& geometry_file,
+                          const std::string& file, const SnapshotFields& fields) {
+  const std::string escaped_file = escape_xml(file);
+  std::string xml = fmt::format(
+      "      <Grid Name=\"{}_{:06}\" GridType=\"Uniform\">\n"
+      "        <Time Value=\"{:.17g}\"/>\n",
+      escape_xml(base_name), step, time);
+  xml += topology_and_geometry(mesh, geometry_file, "        ");
+  for (const auto& [name, field] : fields) {
+    const int stored = stored_components(field.components);
+    xml += fmt::format(
+        "        <Attribute Name=\"{0}\" AttributeType=\"{1}\" Center=\"{2}\">\n"
+        "          <DataItem Format=\"HDF\" Dimensions=\"{3}\" NumberType=\"Float\" "
+        "Precision=\"8\">{4}:/fields/{0}</DataItem>\n"
+        "        </Attribute>\n",
+        escape_xml(name), attribute_type(field.components), attribute_center(mesh),
+        dims_text(field_dims(mesh, stored)), escaped_file);
+  }
+  xml += "      </Grid>\n";
+  return xml;
+}
+
+void write_temporal_index(const std::filesystem::path& path, std::string_view base_name,
+                          const std::vector<std::string>& grids) {
+  std::string xml = fmt::format(
+      "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+      "<Xdmf Version=\"3.0\">\n"
+      "  <Domain>\n"
+      "    <Grid Name=\"{}\" GridType=\"Collection\" CollectionType=\"Temporal\">\n",
+      escape_xml(base_name));
+  for (const std::string& grid : grids) xml += grid;
+  xml += "    </Grid>\n  </Domain>\n</Xdmf>\n";
+  write_file_atomically(path, xml);
+}
+
+std::vector<double> padded_to_three_components(std::span<const double> values) {
+  std::vector<double> padded(values.size() / 2 * 3, 0.0);
+  for (std::size_t e = 0; e < values.size() / 2; ++e) {
+    padded[3 * e] = values[2 * e];
+    padded[3 * e + 1] = values[2 * e + 1];
+  }
+  return padded;
 }
 
 }  // namespace cosim::xdmf

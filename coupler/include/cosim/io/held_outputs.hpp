@@ -30,7 +30,7 @@ class HeldOutputs {
   bool holding() const { return holding_; }
 
   void append(TimeSeriesWriter& writer, std::span<const double> row);
-  void write(SnapshotWriter& writer, double time, const SnapshotFields& fields);
+  void write(SnapshotSink& writer, double time, const SnapshotFields& fields);
 
  private:
   struct HeldRow {
@@ -44,7 +44,7 @@ class HeldOutputs {
     std::vector<double> values;
   };
   struct HeldSnapshot {
-    SnapshotWriter* writer = nullptr;
+    SnapshotSink* writer = nullptr;
     double time = 0.0;
     std::vector<HeldField> fields;
   };

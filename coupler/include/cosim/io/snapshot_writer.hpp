@@ -22,6 +22,16 @@ struct FieldView {
 
 using SnapshotFields = std::map<std::string, FieldView, std::less<>>;
 
+// Where a run's snapshots go: one process's SnapshotWriter, or the
+// PartitionedSnapshotWriter of a run decomposed over MPI ranks.
+class SnapshotSink {
+ public:
+  virtual ~SnapshotSink() = default;
+  // Appends a snapshot at `time` [s] (see the writers for the fields' sizes).
+  virtual void write(double time, const SnapshotFields& fields) = 0;
+  virtual std::size_t snapshots_written() const = 0;
+};
+
 // Field snapshots of one mesh as HDF5 files with an XDMF 3 index that
 // ParaView opens (architecture.md §6).
 //
@@ -54,7 +64,7 @@ using SnapshotFields = std::map<std::string, FieldView, std::less<>>;
 // HDF5 errors become cosim::Error carrying the HDF5 error stack's message;
 // HDF5's automatic printing of its error stack is switched off. Not for use
 // by several threads at once.
-class SnapshotWriter {
+class SnapshotWriter final : public SnapshotSink {
  public:
   // Validates the mesh (InputError) and creates the directory (Error).
   SnapshotWriter(std::filesystem::path directory, std::string base_name, Mesh mesh);
@@ -62,13 +72,13 @@ class SnapshotWriter {
   // Appends a snapshot at `time` [s]. Each field needs
   // mesh.size() * components values (InputError naming the field otherwise);
   // names must be non-empty, without '/' or ':', and not "." or "..".
-  void write(double time, const SnapshotFields& fields);
+  void write(double time, const SnapshotFields& fields) override;
   // Same, on a changed mesh of the same kind (moving particles, a moving
   // grid): the new geometry is stored with this snapshot and used by the
   // snapshots after it.
   void write(double time, const Mesh& current_mesh, const SnapshotFields& fields);
 
-  std::size_t snapshots_written() const { return grids_.size(); }
+  std::size_t snapshots_written() const override { return grids_.size(); }
   std::filesystem::path index_path() const;
   std::filesystem::path snapshot_path(std::size_t step) const;
   const Mesh& mesh() const { return mesh_; }

@@ -28,6 +28,7 @@
 #include "swe/coupling/bed_traction.hpp"
 #include "swe/coupling/extended_free_surface.hpp"
 #include "swe/io/gauge_recorder.hpp"
+#include "swe/io/run_ranks.hpp"
 #include "swe/two_phase/two_phase_exchange.hpp"
 
 #ifdef SWE_WITH_MPI
@@ -39,6 +40,7 @@ namespace swe {
 namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
+const RunRanks one_process;
 constexpr const char* cells_mesh = "swe_cells";
 constexpr const char* bed_field = cosim::fields::bed_elevation.name;
 constexpr const char* traction_field = cosim::fields::bed_traction.name;
@@ -49,7 +51,8 @@ struct WaterStats {
   double volume, eta_max, eta_min, speed_max;
 };
 
-WaterStats water_stats(const Solver& solver) {
+// Decomposed, every rank's block, reduced over the ranks (collective).
+WaterStats water_stats(const Solver& solver, const RunRanks& ranks) {
   const auto h = solver.depth();
   const auto bed = solver.bed();
   const auto qx = solver.discharge_x();
@@ -63,6 +66,9 @@ WaterStats water_stats(const Solver& solver) {
     const double q = qy.empty() ? std::abs(qx[c]) : std::hypot(qx[c], qy[c]);
     s.speed_max = std::max(s.speed_max, q / h[c]);
   }
+  std::array<double, 3> largest{s.eta_max, -s.eta_min, s.speed_max};
+  ranks.max(largest);
+  s = {s.volume, largest[0], -largest[1], largest[2]};
   if (s.eta_max == -infinity) s.eta_max = s.eta_min = std::numeric_limits<double>::quiet_NaN();
   return s;
 }
@@ -78,19 +84,6 @@ nlohmann::json case_section(const CaseDescription& c, const Solver& solver) {
           {"end_time_s", c.end_time}};
 }
 
-// How this process takes part in a run decomposed over several ranks
-// (issue 27); the defaults are those of a run on one process.
-struct RankRole {
-  bool writes_outputs = true;  // rank 0 writes the run's files
-  int ranks = 1;
-  // The whole grid for the outputs (gathered on rank 0); null: the solver.
-  Solver* whole = nullptr;
-  std::function<void()> gather = [] {};             // refreshes `whole` (collective)
-  std::function<bool(bool)> any = [](bool local) {  // a flag on any rank (collective)
-    return local;
-  };
-};
-
 // What a run accumulates besides the solver's state: saved with it at the
 // start of a window that may run again, and restored when it must.
 struct RunProgress {
@@ -105,12 +98,12 @@ class CaseRun {
  public:
   CaseRun(const CaseDescription& description, const RunOptions& options,
           const cosim::CouplingEndpoint& endpoint, cosim::RunSummary& summary,
-          std::unique_ptr<Solver> solver = nullptr, RankRole role = {})
+          std::unique_ptr<Solver> solver = nullptr, const RunRanks& ranks = one_process)
       : c_(description),
         options_(options),
         summary_(summary),
         solver_(solver ? std::move(solver) : make_solver(description)),
-        role_(std::move(role)),
+        ranks_(ranks),
         participant_(endpoint.name_or(description.name), endpoint),
         coupling_(description.coupling),
         progress_{.snapshots =
@@ -123,8 +116,13 @@ class CaseRun {
     try {
       {
         auto scope = summary_.phases().measure("setup");
-        nlohmann::json section = case_section(c_, output_solver());
-        section["ranks"] = role_.ranks;
+        nlohmann::json section = case_section(c_, *solver_);
+        if (ranks_.ranks() > 1) {
+          section["cells"] = static_cast<std::size_t>(c_.grid.cells[0]) *
+                             static_cast<std::size_t>(c_.grid.cells[1]);
+          section["cells_per_rank"] = solver_->cell_count();
+        }
+        section["ranks"] = ranks_.ranks();
         summary_.set_section("case", section);
         declare_coupling();
         participant_.declare_repeatable();
@@ -142,16 +140,16 @@ class CaseRun {
         if (restarts()) read_checkpoint();
         open_outputs();
       }
-      const Totals start = run_totals();
+      const Totals start = solver_->totals();
       record_conserved(start, true);
       if (!restarts()) write_outputs(0.0);
       summary_.write();
       loop();
-      record_conserved(run_totals(), false);
+      record_conserved(solver_->totals(), false);
       participant_.finalize();
     } catch (const std::exception& e) {
       // Decomposed, the totals are a collective another rank may never reach.
-      if (role_.ranks == 1) record_conserved(solver_->totals(), false);
+      if (ranks_.ranks() == 1) record_conserved(solver_->totals(), false);
       participant_.abort(e.what());
       throw;
     }
@@ -273,25 +271,14 @@ class CaseRun {
                  solver_->cell_count());
   }
 
-  // The totals of the whole grid; decomposed, summed on rank 0 over the
-  // gathered grid in the order of one process, so that summary.json holds
-  // the same figures bit for bit (the other ranks report none).
-  Totals run_totals() const {
-    if (role_.ranks == 1) return solver_->totals();
-    role_.gather();
-    return output_solver().totals();
-  }
-
-  // The solver, or the whole grid gathered from every rank's block.
-  const Solver& output_solver() const { return role_.whole ? *role_.whole : *solver_; }
-
+  // Decomposed, every rank opens the snapshots (written together) and the
+  // gauges (sampled by every rank); rank 0 alone writes the tables.
   void open_outputs() {
-    if (!role_.writes_outputs) return;
     if (c_.snapshots)
-      snapshot_writer_.emplace(options_.output, "swe",
-                               cosim::Mesh{cells_mesh, output_solver().cells()});
+      snapshot_writer_ = ranks_.snapshots(options_.output, "swe", {cells_mesh, solver_->cells()});
     if (!c_.gauges.empty())
-      gauges_.emplace(options_.output / "gauges.csv", c_.gauges, output_solver());
+      gauges_.emplace(options_.output / "gauges.csv", c_.gauges, *solver_, ranks_);
+    if (!ranks_.writes_outputs()) return;
     water_.emplace(options_.output / "water.csv",
                    std::vector<std::string>{
                        cosim::column_name("time", "s"),
@@ -378,7 +365,7 @@ class CaseRun {
       if (progress_.steps % 64 == 0 || progress_.snapshots.due(now, tolerance_)) check_state(now);
       write_outputs(now);
       if (participant_.must_write_checkpoint()) write_checkpoint();
-      if (Clock::now() - last_progress > std::chrono::seconds(5) && role_.ranks > 1) {
+      if (Clock::now() - last_progress > std::chrono::seconds(5) && ranks_.ranks() > 1) {
         // The water's figures need every rank's block: only the time here.
         last_progress = Clock::now();
         spdlog::info("t = {:.6g} s / {:.6g} s, step {}, dt = {:.3g} s", now, end_time_,
@@ -388,7 +375,7 @@ class CaseRun {
         summary_.write();
       } else if (Clock::now() - last_progress > std::chrono::seconds(5)) {
         last_progress = Clock::now();
-        const WaterStats s = water_stats(*solver_);
+        const WaterStats s = water_stats(*solver_, ranks_);
         spdlog::info(
             "t = {:.6g} s / {:.6g} s, step {}, dt = {:.3g} s, eta max {:.6g} m, speed max {:.4g} "
             "m/s",
@@ -501,8 +488,8 @@ class CaseRun {
       if (!std::isfinite(h[c]) || !std::isfinite(q[c]) || h[c] < 0.0)
         failure =
             fmt::format("{}cell {} has depth {} and discharge {} at t = {:.9g} s (step {})",
-                        role_.ranks > 1 ? "a block's " : "", c, h[c], q[c], t, progress_.steps);
-    if (role_.any(!failure.empty()))
+                        ranks_.ranks() > 1 ? "a block's " : "", c, h[c], q[c], t, progress_.steps);
+    if (ranks_.any(!failure.empty()))
       throw cosim::NumericalError(
           failure.empty() ? fmt::format("a cell of another rank's block went bad at t = {:.9g} s "
                                         "(step {}); its log says which",
@@ -511,30 +498,25 @@ class CaseRun {
   }
 
   // Outputs due at t, through outputs_: held while the window may run again.
-  // Decomposed, every rank gathers its block to rank 0, which writes.
+  // Decomposed, every rank takes part (reductions, collective writes).
   void write_outputs(double t) {
     const bool every_step = c_.gauge_every <= 0.0;
-    const bool gauges_due =
-        !c_.gauges.empty() && (t == 0.0 || every_step || progress_.gauge_times->due(t, tolerance_));
-    const bool snapshot_due = t == 0.0 || progress_.snapshots.due(t, tolerance_);
-    if (gauges_due || snapshot_due) role_.gather();
-    if (gauges_due && gauges_) gauges_->record(t, output_solver(), outputs_);
+    if (gauges_ && (t == 0.0 || every_step || progress_.gauge_times->due(t, tolerance_)))
+      gauges_->record(t, *solver_, outputs_);
     if (t > 0.0) progress_.gauge_times->passed(t, tolerance_);
-    if (snapshot_due) {
+    if (t == 0.0 || progress_.snapshots.due(t, tolerance_)) {
       auto scope = summary_.phases().measure("output");
-      if (role_.writes_outputs) {
-        const WaterStats s = water_stats(output_solver());
-        progress_.eta_max = std::max(progress_.eta_max, s.eta_max);
-        const std::array<double, 5> row{t, s.volume, s.eta_max, s.eta_min, s.speed_max};
-        outputs_.append(*water_, row);
-        if (snapshot_writer_) write_snapshot(t);
-      }
+      const WaterStats s = water_stats(*solver_, ranks_);
+      progress_.eta_max = std::max(progress_.eta_max, s.eta_max);
+      const std::array<double, 5> row{t, s.volume, s.eta_max, s.eta_min, s.speed_max};
+      if (water_) outputs_.append(*water_, row);
+      if (snapshot_writer_) write_snapshot(t);
       if (t > 0.0) progress_.snapshots.passed(t, tolerance_);
     }
   }
 
   void write_snapshot(double t) {
-    const Solver& solver = output_solver();
+    const Solver& solver = *solver_;
     const auto h = solver.depth();
     const auto bed = solver.bed();
     const auto qx = solver.discharge_x();
@@ -589,7 +571,7 @@ class CaseRun {
       else
         summary_.set_conserved_end(name, value, unit);
     };
-    if (role_.writes_outputs) {  // decomposed, only rank 0 holds the whole grid's totals
+    if (ranks_.writes_outputs()) {  // decomposed, the totals are rank 0's to report
       set("water_volume", totals.volume, line ? "m^2" : "m^3");
       set("momentum_x", c_.physics.density * totals.momentum_x, line ? "kg/s" : "kg m/s");
       if (!line) set("momentum_y", c_.physics.density * totals.momentum_y, "kg m/s");
@@ -617,7 +599,7 @@ class CaseRun {
   const RunOptions& options_;
   cosim::RunSummary& summary_;
   std::unique_ptr<Solver> solver_;
-  RankRole role_;
+  const RunRanks& ranks_;
   cosim::Participant participant_;
   CouplingSpec coupling_;
   RunProgress progress_;
@@ -625,7 +607,7 @@ class CaseRun {
   double tolerance_;
   double end_time_ = 0.0;
   cosim::HeldOutputs outputs_;
-  std::optional<cosim::SnapshotWriter> snapshot_writer_;
+  std::unique_ptr<cosim::SnapshotSink> snapshot_writer_;
   std::optional<GaugeRecorder> gauges_;
   std::optional<cosim::TimeSeriesWriter> water_;
   std::vector<double> eta_, discharge_, velocity_, solid_velocity_, impulse_rate_;
@@ -648,8 +630,9 @@ CaseDescription read_case(const RunOptions& options, cosim::RunSummary& summary)
 
 #ifdef SWE_WITH_MPI
 // swe_fluid standalone under `mpirun -np N`, N > 1: rank 0 prepares the
-// output directory and writes the run's files; rank r keeps its own log and
-// summary in ranks/rank_<r>/. The job ends with the largest exit code of
+// output directory and writes the tables and the summary; every rank writes
+// its block into each snapshot; rank r keeps its own log and summary in
+// ranks/rank_<r>/. The job ends with the largest exit code of
 // its ranks; a rank that fails while the others still run ends them all
 // (MpiSession::finish).
 int run_decomposed(const RunOptions& options, const cosim::CouplingEndpoint& endpoint) {
@@ -684,12 +667,7 @@ int run_decomposed(const RunOptions& options, const cosim::CouplingEndpoint& end
     spdlog::info("rank {}: cells [{}, {}) x [{}, {}) of {} x {}", mpi.rank(), b.cells[0].begin,
                  b.cells[0].end, b.cells[1].begin, b.cells[1].end, description.grid.cells[0],
                  description.grid.cells[1]);
-    RankRole role{.writes_outputs = root,
-                  .ranks = mpi.ranks(),
-                  .whole = &part.whole(),
-                  .gather = [&part] { part.whole().gather(); },
-                  .any = [&part](bool local) { return part.any(local); }};
-    CaseRun run(description, mine, endpoint, summary, part.take_solver(), std::move(role));
+    CaseRun run(description, options, endpoint, summary, part.take_solver(), part);
     run.run();
   });
   spdlog::default_logger()->flush();

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "cosim/error.hpp"
+#include "cosim/io/partitioned_snapshot_writer.hpp"
 
 namespace swe::parallel {
 
@@ -72,6 +73,7 @@ cosim::decomposition::CartesianDecomposition decompose_case(MPI_Comm comm,
 
 DecomposedRun::DecomposedRun(MPI_Comm comm, const CaseDescription& description)
     : comm_(comm),
+      grid_(description.grid),
       decomposition_(decompose_case(comm, description)),
       link_(std::make_shared<MpiSubdomainLink>(comm, decomposition_)) {
   const auto& b = link_->halo().block();
@@ -79,14 +81,43 @@ DecomposedRun::DecomposedRun(MPI_Comm comm, const CaseDescription& description)
                         {static_cast<int>(b.cells[0].size()), static_cast<int>(b.cells[1].size())},
                         link_};
   solver_ = make_block_solver(description, block);
-  whole_ = std::make_unique<GatheredGrid2d>(comm, decomposition_, description.grid,
-                                            static_cast<const Solver2d&>(*solver_));
 }
 
 bool DecomposedRun::any(bool local) const {
   int flag = local ? 1 : 0;
   MPI_Allreduce(MPI_IN_PLACE, &flag, 1, MPI_INT, MPI_MAX, comm_);
   return flag != 0;
+}
+
+void DecomposedRun::sum(std::span<double> values) const {
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM,
+                comm_);
+}
+
+void DecomposedRun::max(std::span<double> values) const {
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MAX,
+                comm_);
+}
+
+std::size_t DecomposedRun::cell_at(const Solver& solver, double x, double y) const {
+  // The whole grid's cell, so that a point on a face between blocks has one owner.
+  const std::size_t whole = swe::cell_at(grid_, x, y);
+  const auto nx = static_cast<std::size_t>(grid_.cells[0]);
+  const auto ny = static_cast<std::size_t>(grid_.cells[1]);
+  if (whole >= nx * ny) return solver.cell_count();
+  const auto i = static_cast<std::int64_t>(whole % nx), j = static_cast<std::int64_t>(whole / nx);
+  const auto& b = block();
+  if (i < b.cells[0].begin || i >= b.cells[0].end || j < b.cells[1].begin || j >= b.cells[1].end)
+    return solver.cell_count();
+  return static_cast<std::size_t>((i - b.cells[0].begin) +
+                                  b.cells[0].size() * (j - b.cells[1].begin));
+}
+
+std::unique_ptr<cosim::SnapshotSink> DecomposedRun::snapshots(
+    const std::filesystem::path& directory, const std::string& base_name,
+    const cosim::Mesh& cells) const {
+  return std::make_unique<cosim::PartitionedSnapshotWriter>(
+      comm_, directory, base_name, cosim::Mesh{cells.name, cell_mesh(grid_)}, block().cells);
 }
 
 }  // namespace swe::parallel

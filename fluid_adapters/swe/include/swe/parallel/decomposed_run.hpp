@@ -6,13 +6,14 @@
 #include <memory>
 
 #include "swe/case/case_description.hpp"
-#include "swe/parallel/gathered_grid_2d.hpp"
+#include "swe/io/run_ranks.hpp"
 #include "swe/parallel/mpi_subdomain_link.hpp"
 
 // swe_fluid started standalone by `mpirun -np N` (issue 27): the case's 2D
 // grid split into N blocks, one per rank, stepped together with the same
-// time steps; rank 0 gathers the whole grid for the outputs and writes the
-// files a run on one rank writes.
+// time steps. The ranks write one set of files, those of a run on one
+// process: each snapshot collectively into one HDF5 file, the tables by
+// rank 0 from reductions. No rank holds more than its block.
 namespace swe::parallel {
 
 // The ranks mpirun started (from its environment, before MPI starts); 1
@@ -41,28 +42,36 @@ class MpiSession {
   int rank_ = 0, ranks_ = 1;
 };
 
-// This rank's block of the case's grid and the gathered whole grid.
-// Throws cosim::InputError, naming the case file, for a case that cannot run
-// decomposed (1D, two-phase) and for blocks narrower than the ghost layers.
-class DecomposedRun {
+// This rank's block of the case's grid, and the reductions over the ranks.
+// Throws cosim::InputError, naming the case file and key, for a case that
+// cannot run decomposed (1D, two-phase) and for blocks narrower than the
+// ghost layers.
+class DecomposedRun final : public RunRanks {
  public:
   DecomposedRun(MPI_Comm comm, const CaseDescription& description);
 
   std::unique_ptr<Solver> take_solver() { return std::move(solver_); }
-  GatheredGrid2d& whole() { return *whole_; }
-  // Whether `local` holds on any rank (collective).
-  bool any(bool local) const;
   const cosim::decomposition::Block& block() const { return link_->halo().block(); }
   const cosim::decomposition::CartesianDecomposition& decomposition() const {
     return decomposition_;
   }
 
+  int ranks() const override { return decomposition_.ranks(); }
+  int rank() const override { return link_->halo().rank(); }
+  bool any(bool local) const override;
+  void sum(std::span<double> values) const override;
+  void max(std::span<double> values) const override;
+  std::size_t cell_at(const Solver& solver, double x, double y) const override;
+  std::unique_ptr<cosim::SnapshotSink> snapshots(const std::filesystem::path& directory,
+                                                 const std::string& base_name,
+                                                 const cosim::Mesh& cells) const override;
+
  private:
   MPI_Comm comm_;
+  Grid2d grid_;  // the whole grid
   cosim::decomposition::CartesianDecomposition decomposition_;
   std::shared_ptr<MpiSubdomainLink> link_;
   std::unique_ptr<Solver> solver_;
-  std::unique_ptr<GatheredGrid2d> whole_;
 };
 
 }  // namespace swe::parallel

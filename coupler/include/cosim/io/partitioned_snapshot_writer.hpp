@@ -1,0 +1,55 @@
+#pragma once
+
+#include <mpi.h>
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cosim/decomposition/cartesian_decomposition.hpp"
+#include "cosim/io/snapshot_writer.hpp"
+#include "cosim/mesh.hpp"
+
+namespace cosim {
+
+// The snapshots of a uniform grid of cells decomposed over the ranks of a
+// communicator (issue 27): every rank passes its block's values, and each
+// snapshot is one HDF5 file the ranks write together (parallel HDF5, MPI-IO
+// collective writes), with the same datasets, attributes and XDMF index as
+// SnapshotWriter's (rank 0 keeps the index), so that ParaView opens a
+// decomposed run exactly as one on one process. No rank holds more than
+// its block. Files are staged and renamed once complete, as SnapshotWriter's.
+class PartitionedSnapshotWriter final : public SnapshotSink {
+ public:
+  // `mesh`: the whole grid (a UniformGrid of 2 or 3 dimensions with values
+  // at the cells); `block`: this rank's cells per direction (x first). The
+  // ranks' blocks must tile the grid. Collective. Throws InputError for
+  // another mesh or a block outside the grid.
+  PartitionedSnapshotWriter(MPI_Comm comm, std::filesystem::path directory, std::string base_name,
+                            Mesh mesh, const std::array<decomposition::Range, 3>& block);
+  ~PartitionedSnapshotWriter();
+  PartitionedSnapshotWriter(const PartitionedSnapshotWriter&) = delete;
+  PartitionedSnapshotWriter& operator=(const PartitionedSnapshotWriter&) = delete;
+
+  // Appends a snapshot at `time` [s]. Each field holds the block's cells x
+  // components values, the block's cells x fastest (InputError naming the
+  // field otherwise). Every rank calls it with the same fields (collective).
+  void write(double time, const SnapshotFields& fields) override;
+
+  std::size_t snapshots_written() const override { return written_; }
+  std::filesystem::path index_path() const;
+  std::filesystem::path snapshot_path(std::size_t step) const;
+
+ private:
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  int rank_ = 0;
+  std::filesystem::path directory_;
+  std::string base_name_;
+  Mesh mesh_;
+  std::array<decomposition::Range, 3> block_;
+  std::size_t written_ = 0;
+  std::vector<std::string> grids_;  // rank 0: the <Grid> of every snapshot
+};
+
+}  // namespace cosim

@@ -1,0 +1,125 @@
+// The snapshots of a grid decomposed over 1 to 4 ranks (mpirun, label mpi),
+// written together with parallel HDF5, against those SnapshotWriter writes
+// of the whole grid on one process: the same datasets and attributes bit for
+// bit, and the same XDMF index; a field of the wrong size is refused.
+#include "cosim/io/partitioned_snapshot_writer.hpp"
+
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <string>
+#include <vector>
+
+#include "cosim/decomposition/cartesian_decomposition.hpp"
+#include "cosim/error.hpp"
+#include "hdf5_contents.hpp"
+#include "run_process.hpp"
+#include "text_files.hpp"
+
+namespace cosim {
+namespace {
+
+namespace fs = std::filesystem;
+
+double value(std::int64_t i, std::int64_t j, std::int64_t k, int c, int snapshot) {
+  return 1e4 * snapshot + 1e3 * c + 1e2 * static_cast<double>(k) + 10.0 * static_cast<double>(j) +
+         static_cast<double>(i) + 0.125;
+}
+
+// Values of the cells [begin, end) per direction, x fastest, `components` per cell.
+std::vector<double> values_of(const std::array<decomposition::Range, 3>& cells, int components,
+                              int snapshot) {
+  std::vector<double> values;
+  for (auto k = cells[2].begin; k < cells[2].end; ++k)
+    for (auto j = cells[1].begin; j < cells[1].end; ++j)
+      for (auto i = cells[0].begin; i < cells[0].end; ++i)
+        for (int c = 0; c < components; ++c) values.push_back(value(i, j, k, c, snapshot));
+  return values;
+}
+
+void check_against_one_process(int dim, std::array<int, 3> cells, const std::string& name) {
+  int ranks = 1, rank = 0;
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  fs::path dir;
+  // one directory per rank count: ctest may run the counts side by side
+  if (rank == 0)
+    dir = testing::fresh_directory("partitioned_snapshots_" + name + "_" + std::to_string(ranks));
+  std::string text = dir.string();
+  int length = static_cast<int>(text.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  text.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(text.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
+  dir = text;
+
+  UniformGrid grid;
+  grid.dim = dim;
+  grid.origin = {-1.0, 0.5, 2.0};
+  grid.spacing = {0.5, 0.25, 0.125};
+  grid.cells = {cells[0], cells[1], cells[2]};
+  grid.location = GridLocation::cell;
+  const Mesh mesh{"cells", grid};
+  std::array<std::int64_t, 3> counts{cells[0], cells[1], cells[2]};
+  const auto dims =
+      decomposition::process_grid(ranks, std::span<const std::int64_t>(counts.data(), dim));
+  const decomposition::CartesianDecomposition decomposition(dim, counts, dims);
+  const decomposition::Block block = decomposition.block(rank);
+
+  PartitionedSnapshotWriter together(MPI_COMM_WORLD, dir / "together", "s", mesh, block.cells);
+  const std::array<decomposition::Range, 3> whole{decomposition::Range{0, cells[0]},
+                                                  decomposition::Range{0, cells[1]},
+                                                  decomposition::Range{0, cells[2]}};
+  for (int snapshot = 0; snapshot < 2; ++snapshot) {
+    const std::vector<double> depth = values_of(block.cells, 1, snapshot);
+    const std::vector<double> velocity = values_of(block.cells, dim, snapshot);
+    const std::vector<double> stress = values_of(block.cells, 6, snapshot);
+    together.write(0.5 * snapshot, {{"depth", {depth, 1, "m"}},
+                                    {"velocity", {velocity, dim, "m/s"}},
+                                    {"stress", {stress, 6, "Pa"}}});
+  }
+  EXPECT_EQ(together.snapshots_written(), 2u);
+  const std::vector<double> too_few(3, 0.0);
+  EXPECT_THROW(together.write(1.0, {{"depth", {too_few, 1}}}), InputError);
+
+  if (rank != 0) return;
+  SnapshotWriter alone(dir / "alone", "s", mesh);
+  for (int snapshot = 0; snapshot < 2; ++snapshot) {
+    const std::vector<double> depth = values_of(whole, 1, snapshot);
+    const std::vector<double> velocity = values_of(whole, dim, snapshot);
+    const std::vector<double> stress = values_of(whole, 6, snapshot);
+    alone.write(0.5 * snapshot, {{"depth", {depth, 1, "m"}},
+                                 {"velocity", {velocity, dim, "m/s"}},
+                                 {"stress", {stress, 6, "Pa"}}});
+  }
+  for (const char* file : {"s_000000.h5", "s_000001.h5"})
+    EXPECT_EQ(testing::hdf5_contents(dir / "together" / file),
+              testing::hdf5_contents(dir / "alone" / file))
+        << file << " on " << ranks << " ranks";
+  EXPECT_EQ(testing::read_text(dir / "together" / "s.xdmf"),
+            testing::read_text(dir / "alone" / "s.xdmf"));
+  EXPECT_FALSE(fs::exists(dir / "together" / ".s_000002.h5.tmp"));
+}
+
+TEST(PartitionedSnapshotWriter, WritesTheFilesOfOneProcessIn2D) {
+  check_against_one_process(2, {13, 9, 1}, "2d");
+}
+
+TEST(PartitionedSnapshotWriter, WritesTheFilesOfOneProcessIn3D) {
+  check_against_one_process(3, {7, 6, 5}, "3d");
+}
+
+TEST(PartitionedSnapshotWriter, RefusesAMeshThatIsNotAGridOfCells) {
+  UniformGrid nodes;
+  nodes.dim = 2;
+  nodes.cells = {4, 4, 1};
+  nodes.location = GridLocation::node;
+  const std::array<decomposition::Range, 3> block{
+      decomposition::Range{0, 4}, decomposition::Range{0, 4}, decomposition::Range{0, 1}};
+  EXPECT_THROW(
+      PartitionedSnapshotWriter(MPI_COMM_WORLD, "never_made", "s", {"nodes", nodes}, block),
+      InputError);
+  EXPECT_FALSE(fs::exists("never_made"));
+}
+
+}  // namespace
+}  // namespace cosim
