@@ -45,17 +45,11 @@ void Particles<Dim>::resize(std::size_t n) {
 
 template <int Dim>
 double Particles<Dim>::bytes_per_particle() const {
-  const auto bytes = [](const auto& v) {
-    return static_cast<double>(v.capacity() *
-                               sizeof(typename std::decay_t<decltype(v)>::value_type));
-  };
-  const double total = bytes(position) + bytes(velocity) + bytes(deformation_gradient) +
-                       bytes(half_length) + bytes(mass) + bytes(initial_volume) + bytes(volume) +
-                       bytes(stress) + bytes(plastic_strain) + bytes(damage) + bytes(internal) +
-                       bytes(porosity) + bytes(initial_porosity) + bytes(permeability) +
-                       bytes(grain_size) + bytes(pore_pressure) + bytes(temperature) +
-                       bytes(temperature_gradient) + bytes(heat_capacity) + bytes(external_force) +
-                       bytes(external_heat) + bytes(body);
+  double total = 0.0;
+  for_each_array([&total](const auto& v) {
+    total +=
+        static_cast<double>(v.capacity() * sizeof(typename std::decay_t<decltype(v)>::value_type));
+  });
   return size() == 0 ? 0.0 : total / static_cast<double>(size());
 }
 

@@ -53,8 +53,45 @@ struct Particles {
 
   std::size_t size() const { return mass.size(); }
   void resize(std::size_t n);
+  // Calls f(array) for every per-particle array above, in their order (a
+  // particle's whole state: what migrates with it between ranks).
+  template <class F>
+  void for_each_array(F&& f) {
+    visit_arrays(*this, f);
+  }
+  template <class F>
+  void for_each_array(F&& f) const {
+    visit_arrays(*this, f);
+  }
   // Bytes held per particle by these arrays (capacity included).
   double bytes_per_particle() const;
+
+ private:
+  template <class Self, class F>
+  static void visit_arrays(Self& p, F& f) {
+    f(p.position);
+    f(p.velocity);
+    f(p.deformation_gradient);
+    f(p.half_length);
+    f(p.mass);
+    f(p.initial_volume);
+    f(p.volume);
+    f(p.stress);
+    f(p.plastic_strain);
+    f(p.damage);
+    f(p.internal);
+    f(p.porosity);
+    f(p.initial_porosity);
+    f(p.permeability);
+    f(p.grain_size);
+    f(p.pore_pressure);
+    f(p.temperature);
+    f(p.temperature_gradient);
+    f(p.heat_capacity);
+    f(p.external_force);
+    f(p.external_heat);
+    f(p.body);
+  }
 };
 
 extern template struct Particles<2>;
