@@ -1,0 +1,135 @@
+#!/usr/bin/python3
+"""Performance model of a decomposed run (issue 27): the time of one step on
+P ranks from the measured compute cost per cell or point on one core and the
+halo exchanges and reductions each solver's step makes, on a cluster whose
+network is given by its latency and bandwidth. Prints the parallel
+efficiency E(P) = T(1) / (P T(P)). See performance_model.md."""
+import math
+import sys
+
+# The network of a typical cluster (parameters, not measurements).
+ALPHA = 2.0e-6    # latency of one MPI message between nodes [s] (InfiniBand HDR, MPI software included)
+BETA = 2.0e9      # bandwidth per rank when every rank of a node sends at once [B/s] (~12.5 GB/s per node / 6 busy links)
+
+
+def allreduce(ranks):
+    """Small allreduce by recursive doubling: 2 log2(P) latencies."""
+    return 0.0 if ranks == 1 else 2.0 * math.ceil(math.log2(ranks)) * ALPHA
+
+
+def process_grid(ranks, nx, ny):
+    """The factorisation px x py of P with the least cut faces (cosim's process_grid)."""
+    best = None
+    for px in range(1, ranks + 1):
+        if ranks % px:
+            continue
+        py = ranks // px
+        if px > nx or py > ny:
+            continue
+        faces = (px - 1) * ny + (py - 1) * nx
+        if best is None or faces < best[0]:
+            best = (faces, px, py)
+    return best[1], best[2]
+
+
+def halo(ranks, nx, ny, layers, values_per_cell):
+    """One exchange of `layers` ghost layers of `values_per_cell` doubles with
+    every neighbour of an interior block: its latencies and bytes."""
+    if ranks == 1:
+        return 0.0
+    px, py = process_grid(ranks, nx, ny)
+    bx, by = nx / px, ny / py
+    messages = (2 if px > 1 else 0) + (2 if py > 1 else 0)
+    face_cells = (2 * by if px > 1 else 0) + (2 * bx if py > 1 else 0)
+    return messages * ALPHA + layers * face_cells * values_per_cell * 8.0 / BETA
+
+
+def multigrid_levels(ranks, nx, ny):
+    """Levels of a V-cycle distributed over the ranks: down to 2 x 2 cells a
+    block; below that, the coarse grid is gathered on one rank (an allgather)."""
+    px, py = process_grid(ranks, nx, ny)
+    return max(1, int(math.log2(max(2.0, min(nx / px, ny / py)))))
+
+
+def ice_step(ranks, nx, ny, seconds_per_cell, cg_iterations):
+    """ICE (Tran et al., MPMICE, Sec. 3): 4 halo exchanges of the materials'
+    fields (2 layers, 12 values: 2 fluids x rho, u, v, e, alpha, plus the
+    solid fraction and velocity), 2 reductions (dt, equilibration); the
+    pressure solve: per CG iteration one halo of the pressure (1 layer) for the
+    matrix product, a V-cycle with 5 halos per level (smoothing down and up,
+    residual, restriction, prolongation) and its coarse solve, 2 dot
+    products."""
+    compute = seconds_per_cell * nx * ny / ranks
+    levels = multigrid_levels(ranks, nx, ny)
+    coarse = allreduce(ranks)  # the gathered coarse grid
+    per_iteration = ((1 + 5 * levels) * halo(ranks, nx, ny, 1, 1) + coarse
+                     + 2 * allreduce(ranks))
+    explicit = 4 * halo(ranks, nx, ny, 2, 12) + 2 * allreduce(ranks)
+    return compute, explicit + cg_iterations * per_iteration
+
+
+def mpm_step(ranks, nx, ny, seconds_per_point, points):
+    """MPM: the ghost nodes summed after P2G (mass, momentum, force: 5
+    values), the updated nodal velocities back before G2P (2 values), the
+    points that cross a cut (a neighbour exchange, about one layer of
+    points per face and step: 22 arrays, 200 B a point), the time step
+    reduced. Nodes: one layer each side."""
+    compute = seconds_per_point * points / ranks
+    if ranks == 1:
+        return compute, 0.0
+    px, py = process_grid(ranks, nx, ny)
+    points_per_cell = points / (nx * ny)
+    migration = halo(ranks, nx, ny, 1, 0) + 0.05 * points_per_cell * (
+        2 * ny / py + 2 * nx / px) * 200.0 / BETA
+    return compute, (halo(ranks, nx, ny, 1, 5) + halo(ranks, nx, ny, 1, 2) + migration
+                     + allreduce(ranks))
+
+
+def swe_step(ranks, nx, ny, seconds_per_cell):
+    """SWE 2D: two halo exchanges of h, hu, hv (2 layers), the dt reduction."""
+    compute = seconds_per_cell * nx * ny / ranks
+    return compute, 2 * halo(ranks, nx, ny, 2, 3) + allreduce(ranks)
+
+
+def efficiency(step, ranks):
+    compute_1, comm_1 = step(1)
+    compute_p, comm_p = step(ranks)
+    return (compute_1 + comm_1) / (ranks * (compute_p + comm_p)), comm_p / (compute_p + comm_p)
+
+
+def main():
+    rank_counts = [2, 64, 1024, 4096]
+    # Measured on one core of the 2-core VM (the closing note of the session):
+    # the debris flow at the paper's resolution, 700 x 400 cells, 353,545 points,
+    # 30 windows of 10 us: ICE 0.323 s a step (1.15 us a cell, 10.7 CG iterations
+    # a step), MPM 0.470 s a step (1.33 us a point); 1.3 ICE steps and 1 MPM step
+    # a window.
+    nx, ny = 700, 400
+    ice = lambda p: ice_step(p, nx, ny, 0.323 / (nx * ny), 10.7)
+    mpm = lambda p: mpm_step(p, nx, ny, 0.470 / 353545, 353545)
+
+    def debris_window(p):
+        ci, mi = ice(p)
+        cm, mm = mpm(p)
+        # The two solvers on the same ranks' cores one after the other (each
+        # participant on P ranks, the windows staggered), 1.3 ICE steps a window.
+        return 1.3 * ci + cm, 1.3 * mi + mm
+
+    print(f"network: latency {ALPHA * 1e6:g} us, bandwidth {BETA / 1e9:g} GB/s per rank")
+    print("debris flow, 700 x 400 cells, 353,545 points (Tran et al., MPMICE), per window:")
+    print(f"{'ranks':>6} {'cells/rank':>10} {'compute ms':>11} {'comm ms':>9} {'comm share':>10} {'E':>6}")
+    for p in rank_counts:
+        compute, comm = debris_window(p)
+        e, share = efficiency(debris_window, p)
+        print(f"{p:6d} {nx * ny / p:10.0f} {1e3 * compute:11.3f} {1e3 * comm:9.3f} {share:10.1%} {e:6.1%}")
+    print("SWE 2D (59.2 ns a cell-update, measured), 1e8 cells (10,000 x 10,000):")
+    swe = lambda p: swe_step(p, 10000, 10000, 59.2e-9)
+    for p in rank_counts:
+        compute, comm = swe(p)
+        e, share = efficiency(swe, p)
+        print(f"{p:6d} {1e8 / p:10.0f} {1e3 * compute:11.3f} {1e3 * comm:9.3f} {share:10.1%} {e:6.1%}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
