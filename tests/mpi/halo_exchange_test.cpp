@@ -87,6 +87,64 @@ TEST(HaloExchange, FillsEveryGhostInsideTheGridIn3D) {
   check_exchange(3, {7, 6, 5}, 1, 2);
 }
 
+// Every rank adds 1 + the cell's index to every cell of its padded block
+// inside the grid; after accumulate() each owned cell holds that times the
+// number of padded blocks that cover it (exact: small integers).
+void check_accumulate(int dim, std::array<std::int64_t, 3> cells, int halo) {
+  int ranks = 0;
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  const auto dims = process_grid(ranks, std::span<const std::int64_t>(cells.data(), dim));
+  const CartesianDecomposition decomposition(dim, cells, dims);
+  const HaloExchange exchange(MPI_COMM_WORLD, decomposition, halo);
+  auto padded = [&](const Block& b, std::size_t d) {
+    return static_cast<int>(d) < dim ? Range{b.cells[d].begin - halo, b.cells[d].end + halo}
+                                     : Range{0, 1};
+  };
+  auto inside = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+    return i >= 0 && i < cells[0] && j >= 0 && j < cells[1] && k >= 0 && k < cells[2];
+  };
+  auto contribution = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+    return 1.0 + static_cast<double>(i + cells[0] * (j + cells[1] * k));
+  };
+  const Block& mine = exchange.block();
+  std::vector<double> mass(exchange.padded_size(), 0.0), momentum(exchange.padded_size(), 0.0);
+  const Range r0 = padded(mine, 0), r1 = padded(mine, 1), r2 = padded(mine, 2);
+  for (auto k = r2.begin; k < r2.end; ++k)
+    for (auto j = r1.begin; j < r1.end; ++j)
+      for (auto i = r0.begin; i < r0.end; ++i)
+        if (inside(i, j, k)) {
+          mass[exchange.index(i, j, k)] = contribution(i, j, k);
+          momentum[exchange.index(i, j, k)] = -2.0 * contribution(i, j, k);
+        }
+  const std::span<double> fields[2] = {mass, momentum};
+  exchange.accumulate(fields);
+  int wrong = 0;
+  for (auto k = mine.cells[2].begin; k < mine.cells[2].end; ++k)
+    for (auto j = mine.cells[1].begin; j < mine.cells[1].end; ++j)
+      for (auto i = mine.cells[0].begin; i < mine.cells[0].end; ++i) {
+        int covering = 0;
+        for (int r = 0; r < ranks; ++r) {
+          const Block b = decomposition.block(r);
+          const Range p0 = padded(b, 0), p1 = padded(b, 1), p2 = padded(b, 2);
+          if (i >= p0.begin && i < p0.end && j >= p1.begin && j < p1.end && k >= p2.begin &&
+              k < p2.end)
+            ++covering;
+        }
+        const double expected = covering * contribution(i, j, k);
+        if (mass[exchange.index(i, j, k)] != expected) ++wrong;
+        if (momentum[exchange.index(i, j, k)] != -2.0 * expected) ++wrong;
+      }
+  EXPECT_EQ(wrong, 0) << "rank " << exchange.rank() << " of " << ranks;
+}
+
+TEST(HaloExchange, AccumulateAddsEveryGhostToItsOwnerIn2D) {
+  check_accumulate(2, {13, 9, 1}, 2);
+  check_accumulate(2, {8, 8, 1}, 1);
+}
+TEST(HaloExchange, AccumulateAddsEveryGhostToItsOwnerIn3D) {
+  check_accumulate(3, {7, 6, 5}, 1);
+}
+
 TEST(HaloExchange, RefusesAHaloWiderThanABlock) {
   int ranks = 0;
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);

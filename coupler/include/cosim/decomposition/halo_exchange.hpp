@@ -49,6 +49,14 @@ class HaloExchange {
   // for all of them.
   void exchange(std::span<const std::span<double>> fields) const;
 
+  // The reverse of exchange(), for quantities that points or cells scatter
+  // onto their neighbours (an MPM's nodal mass and momentum after P2G): what
+  // each rank holds in its ghost cells inside the grid, edges and corners
+  // included, is added to the owner's cells. The ghosts are left with
+  // partial sums: exchange() afterwards gives them the totals. The sums run
+  // in a fixed order for a given decomposition.
+  void accumulate(std::span<const std::span<double>> fields) const;
+
   // Values this rank sent in its last exchange (the halo's volume per call).
   std::size_t values_sent() const { return values_sent_; }
 
@@ -64,6 +72,14 @@ class HaloExchange {
 
   // The fields' values per cell: `components` side by side in each of them.
   void exchange(std::span<const std::span<double>> fields, int components) const;
+  void check(std::span<const std::span<double>> fields, int components) const;
+  // One message along direction d, to the upper neighbour (`upward`) or the
+  // lower: the slab from local layer `send_first` goes, the one received is
+  // given to receive(field values, received values, count) at `receive_first`.
+  template <class Receive>
+  void transfer(std::span<const std::span<double>> fields, std::size_t per_cell, std::size_t d,
+                bool upward, std::int64_t send_first, std::int64_t receive_first,
+                Receive&& receive) const;
 };
 
 }  // namespace cosim::decomposition
