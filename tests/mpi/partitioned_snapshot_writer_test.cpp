@@ -108,6 +108,29 @@ TEST(PartitionedSnapshotWriter, WritesTheFilesOfOneProcessIn3D) {
   check_against_one_process(3, {7, 6, 5}, "3d");
 }
 
+// Ranks that name different files are refused together, before MPI-IO
+// could wait on them; one rank alone names one file.
+TEST(PartitionedSnapshotWriter, RefusesRanksThatNameDifferentFiles) {
+  int ranks = 1, rank = 0;
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  UniformGrid grid;
+  grid.dim = 2;
+  grid.cells = {8, 8, 1};
+  grid.location = GridLocation::cell;
+  const std::array<decomposition::Range, 3> whole{
+      decomposition::Range{0, 8}, decomposition::Range{0, 8}, decomposition::Range{0, 1}};
+  const fs::path mine = testing::fresh_directory("partitioned_names_" + std::to_string(ranks) +
+                                                 "_" + std::to_string(rank));
+  const Mesh mesh{"cells", grid};
+  if (ranks == 1) {
+    PartitionedSnapshotWriter alone(MPI_COMM_WORLD, mine, "s", mesh, whole);
+    EXPECT_EQ(alone.snapshots_written(), 0u);
+  } else {
+    EXPECT_THROW(PartitionedSnapshotWriter(MPI_COMM_WORLD, mine, "s", mesh, whole), InputError);
+  }
+}
+
 TEST(PartitionedSnapshotWriter, RefusesAMeshThatIsNotAGridOfCells) {
   UniformGrid nodes;
   nodes.dim = 2;

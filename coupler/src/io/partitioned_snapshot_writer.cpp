@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <functional>
 #include <utility>
 
 #include "cosim/error.hpp"
@@ -51,6 +52,18 @@ PartitionedSnapshotWriter::PartitionedSnapshotWriter(
     throw InputError("snapshot base name '" + base_name_ + "' is empty or contains '/'");
   MPI_Comm_dup(comm, &comm_);
   MPI_Comm_rank(comm_, &rank_);
+  // Ranks that name different files would wait forever in MPI-IO's open
+  // (Open MPI's OMPIO, when the open fails on some of them): all refuse now.
+  const std::string where = (directory_ / base_name_).lexically_normal().string();
+  unsigned long long name[2] = {std::hash<std::string>{}(where), 0};
+  name[1] = ~name[0];
+  MPI_Allreduce(MPI_IN_PLACE, name, 2, MPI_UNSIGNED_LONG_LONG, MPI_MAX, comm_);
+  if (name[0] != ~name[1]) {
+    MPI_Comm_free(&comm_);
+    throw InputError(
+        fmt::format("partitioned snapshots '{}': the ranks name different files (this rank: '{}')",
+                    base_name_, where));
+  }
   hdf5::silence_error_printing();
   if (rank_ == 0) create_output_directory(directory_);
   MPI_Barrier(comm_);
