@@ -108,18 +108,24 @@ TEST(PartitionedSnapshotWriter, WritesTheFilesOfOneProcessIn3D) {
   check_against_one_process(3, {7, 6, 5}, "3d");
 }
 
+// A 2D grid of n x n unit cells with values at `location`, and its whole range.
+std::pair<UniformGrid, std::array<decomposition::Range, 3>> square_grid(std::int64_t n,
+                                                                        GridLocation location) {
+  UniformGrid grid;
+  grid.dim = 2;
+  grid.cells = {n, n, 1};
+  grid.location = location;
+  return {grid,
+          {decomposition::Range{0, n}, decomposition::Range{0, n}, decomposition::Range{0, 1}}};
+}
+
 // Ranks that name different files are refused together, before MPI-IO
 // could wait on them; one rank alone names one file.
 TEST(PartitionedSnapshotWriter, RefusesRanksThatNameDifferentFiles) {
   int ranks = 1, rank = 0;
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  UniformGrid grid;
-  grid.dim = 2;
-  grid.cells = {8, 8, 1};
-  grid.location = GridLocation::cell;
-  const std::array<decomposition::Range, 3> whole{
-      decomposition::Range{0, 8}, decomposition::Range{0, 8}, decomposition::Range{0, 1}};
+  const auto [grid, whole] = square_grid(8, GridLocation::cell);
   const fs::path mine = testing::fresh_directory("partitioned_names_" + std::to_string(ranks) +
                                                  "_" + std::to_string(rank));
   const Mesh mesh{"cells", grid};
@@ -132,12 +138,7 @@ TEST(PartitionedSnapshotWriter, RefusesRanksThatNameDifferentFiles) {
 }
 
 TEST(PartitionedSnapshotWriter, RefusesAMeshThatIsNotAGridOfCells) {
-  UniformGrid nodes;
-  nodes.dim = 2;
-  nodes.cells = {4, 4, 1};
-  nodes.location = GridLocation::node;
-  const std::array<decomposition::Range, 3> block{
-      decomposition::Range{0, 4}, decomposition::Range{0, 4}, decomposition::Range{0, 1}};
+  const auto [nodes, block] = square_grid(4, GridLocation::node);
   EXPECT_THROW(
       PartitionedSnapshotWriter(MPI_COMM_WORLD, "never_made", "s", {"nodes", nodes}, block),
       InputError);
