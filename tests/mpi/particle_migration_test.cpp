@@ -44,6 +44,7 @@ void set_state(Particles<Dim>& p, std::size_t i, std::size_t id) {
   p.external_force[i].setConstant(x + 15.0);
   p.external_heat[i] = x + 16.0;
   p.body[i] = static_cast<std::uint32_t>(id % 7);
+  p.id[i] = id;
 }
 
 // Whether every array of point i is that of its id (initial_volume).

@@ -33,36 +33,49 @@ const std::byte* unpack(Array& array, const std::byte* bytes) {
 }  // namespace
 
 template <int Dim>
-ParticleMigration<Dim>::ParticleMigration(
-    MPI_Comm comm, const cosim::decomposition::CartesianDecomposition& decomposition,
-    const Vec<Dim>& origin, double cell_size)
-    : decomposition_(decomposition), origin_(origin), cell_size_(cell_size) {
-  if (decomposition.dimension() != Dim)
-    throw cosim::InputError("particle migration: a decomposition of another dimension");
-  if (!(cell_size > 0.0)) throw cosim::InputError("particle migration: a cell size <= 0");
+ParticleMigration<Dim>::ParticleMigration(MPI_Comm comm, Owner owner) : owner_(std::move(owner)) {
   MPI_Comm_dup(comm, &comm_);
   MPI_Comm_rank(comm_, &rank_);
   MPI_Comm_size(comm_, &ranks_);
+  outgoing_.resize(static_cast<std::size_t>(ranks_));
+}
+
+namespace {
+
+// The owner of the cell at x, clamped to the grid.
+template <int Dim>
+typename ParticleMigration<Dim>::Owner cell_owner(
+    const cosim::decomposition::CartesianDecomposition& decomposition, const Vec<Dim>& origin,
+    double cell_size) {
+  if (decomposition.dimension() != Dim)
+    throw cosim::InputError("particle migration: a decomposition of another dimension");
+  if (!(cell_size > 0.0)) throw cosim::InputError("particle migration: a cell size <= 0");
+  return [decomposition, origin, cell_size](const Vec<Dim>& x) {
+    std::array<std::int64_t, 3> cell{0, 0, 0};
+    for (int d = 0; d < Dim; ++d) {
+      const auto du = static_cast<std::size_t>(d);
+      const double s = std::floor((x[d] - origin[d]) / cell_size);
+      const auto last = static_cast<double>(decomposition.cells()[du] - 1);
+      cell[du] = static_cast<std::int64_t>(std::clamp(std::isfinite(s) ? s : 0.0, 0.0, last));
+    }
+    return decomposition.owner(cell);
+  };
+}
+
+}  // namespace
+
+template <int Dim>
+ParticleMigration<Dim>::ParticleMigration(
+    MPI_Comm comm, const cosim::decomposition::CartesianDecomposition& decomposition,
+    const Vec<Dim>& origin, double cell_size)
+    : ParticleMigration(comm, cell_owner<Dim>(decomposition, origin, cell_size)) {
   if (ranks_ != decomposition.ranks())
     throw cosim::InputError("particle migration: a decomposition over another number of ranks");
-  outgoing_.resize(static_cast<std::size_t>(ranks_));
 }
 
 template <int Dim>
 ParticleMigration<Dim>::~ParticleMigration() {
   if (comm_ != MPI_COMM_NULL) MPI_Comm_free(&comm_);
-}
-
-template <int Dim>
-int ParticleMigration<Dim>::owner(const Vec<Dim>& x) const {
-  std::array<std::int64_t, 3> cell{0, 0, 0};
-  for (int d = 0; d < Dim; ++d) {
-    const auto du = static_cast<std::size_t>(d);
-    const double s = std::floor((x[d] - origin_[d]) / cell_size_);
-    const auto last = static_cast<double>(decomposition_.cells()[du] - 1);
-    cell[du] = static_cast<std::int64_t>(std::clamp(std::isfinite(s) ? s : 0.0, 0.0, last));
-  }
-  return decomposition_.owner(cell);
 }
 
 template <int Dim>

@@ -41,6 +41,9 @@ void Particles<Dim>::resize(std::size_t n) {
   external_force.resize(n, Vec<Dim>::Zero());
   external_heat.resize(n, 0.0);
   body.resize(n, 0);
+  const std::size_t old = id.size();
+  id.resize(n);
+  for (std::size_t i = old; i < n; ++i) id[i] = i;
 }
 
 template <int Dim>

@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "cosim/decomposition/cartesian_decomposition.hpp"
@@ -20,8 +21,11 @@ namespace mpm::parallel {
 template <int Dim>
 class ParticleMigration {
  public:
-  // `decomposition` splits the grid of cells of size `cell_size` from
-  // `origin`; `comm` holds its ranks (in its order).
+  // The rank (of `comm`) that owns the point at x.
+  using Owner = std::function<int(const Vec<Dim>&)>;
+  ParticleMigration(MPI_Comm comm, Owner owner);
+  // The blocks of `decomposition`, which splits the grid of cells of size
+  // `cell_size` from `origin`; `comm` holds its ranks (in its order).
   ParticleMigration(MPI_Comm comm,
                     const cosim::decomposition::CartesianDecomposition& decomposition,
                     const Vec<Dim>& origin, double cell_size);
@@ -29,9 +33,9 @@ class ParticleMigration {
   ParticleMigration(const ParticleMigration&) = delete;
   ParticleMigration& operator=(const ParticleMigration&) = delete;
 
-  // The rank owning the cell at x; points outside the grid belong to the
-  // rank of the nearest cell.
-  int owner(const Vec<Dim>& x) const;
+  // The rank owning the point at x (with a decomposition: the cell at x;
+  // points outside the grid belong to the rank of the nearest cell).
+  int owner(const Vec<Dim>& x) const { return owner_(x); }
 
   struct Moved {
     std::size_t sent = 0, received = 0;
@@ -44,9 +48,7 @@ class ParticleMigration {
  private:
   MPI_Comm comm_ = MPI_COMM_NULL;
   int rank_ = 0, ranks_ = 1;
-  cosim::decomposition::CartesianDecomposition decomposition_;
-  Vec<Dim> origin_;
-  double cell_size_;
+  Owner owner_;
   std::vector<int> destination_;  // per point, of the last migrate()
   std::vector<std::vector<std::byte>> outgoing_;
   std::vector<std::byte> send_, receive_;

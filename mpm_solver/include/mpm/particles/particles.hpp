@@ -15,8 +15,10 @@ Voigt to_voigt(const Tensor& t);
 Tensor from_voigt(const Voigt& v);
 
 // The material points, as structure-of-arrays: one vector per quantity,
-// indexed by particle. Particles of a body are contiguous and keep their
-// index (their id) for the whole run.
+// indexed by particle. On one process a point's index is its id for the
+// whole run, and the points of a body are contiguous. On a rank of a
+// decomposed run (issue 27) a rank holds the points of its cells, in id
+// order.
 template <int Dim>
 struct Particles {
   // Kinematics.
@@ -50,8 +52,11 @@ struct Particles {
   std::vector<double> external_heat;     // [W] (per unit depth in 2D)
   // Owner.
   std::vector<std::uint32_t> body;
+  // The point's index among all the run's points, in seeding order.
+  std::vector<std::uint64_t> id;
 
   std::size_t size() const { return mass.size(); }
+  // New points get the ids that follow the last index.
   void resize(std::size_t n);
   // Calls f(array) for every per-particle array above, in their order (a
   // particle's whole state: what migrates with it between ranks).
@@ -91,6 +96,7 @@ struct Particles {
     f(p.external_force);
     f(p.external_heat);
     f(p.body);
+    f(p.id);
   }
 };
 
