@@ -48,6 +48,13 @@ Vec<Dim> Grid<Dim>::position(std::size_t flat_index) const {
 }
 
 template <int Dim>
+int Grid<Dim>::cell_row_of_plane(int plane) const {
+  const int rows = cells[Dim - 1];
+  const double row = std::floor(dof_coordinate(shape, plane, rows));
+  return static_cast<int>(std::clamp(row, 0.0, static_cast<double>(rows - 1)));
+}
+
+template <int Dim>
 std::size_t Grid<Dim>::cell_count() const {
   std::size_t n = 1;
   for (int d = 0; d < Dim; ++d) n *= static_cast<std::size_t>(cells[d]);
@@ -87,10 +94,30 @@ bool Grid<Dim>::contains(const Vec<Dim>& x) const {
 }
 
 template <int Dim>
+std::size_t Grid<Dim>::plane_size() const {
+  std::size_t n = 1;
+  for (int d = 0; d + 1 < Dim; ++d) n *= static_cast<std::size_t>(dofs[d]);
+  return n;
+}
+
+template <int Dim>
+std::size_t Grid<Dim>::owned_begin() const {
+  return owned_planes == 0
+             ? 0
+             : static_cast<std::size_t>(owned_first_plane - first_plane) * plane_size();
+}
+
+template <int Dim>
+std::size_t Grid<Dim>::owned_end() const {
+  return owned_planes == 0 ? values
+                           : owned_begin() + static_cast<std::size_t>(owned_planes) * plane_size();
+}
+
+template <int Dim>
 void Grid<Dim>::allocate(int field_count) {
   fields = field_count;
-  values = 1;
-  for (int d = 0; d < Dim; ++d) values *= static_cast<std::size_t>(dofs[d]);
+  const int planes = stored_planes == 0 ? dofs[Dim - 1] : stored_planes;
+  values = plane_size() * static_cast<std::size_t>(planes);
   const std::size_t n = values * static_cast<std::size_t>(fields);
   mass.assign(n, 0.0);
   momentum.assign(n, Vec<Dim>::Zero());

@@ -19,12 +19,12 @@ namespace mpm::detail {
 // by friction [J].
 using FaceValues = std::array<std::vector<std::size_t>, 6>;
 
-// The grid values on each face, x-, x+, y-, y+, z-, z+.
+// The owned grid values (stored indices) on each face, x-, x+, y-, y+, z-, z+.
 template <int Dim>
 FaceValues face_values(const Grid<Dim>& grid) {
   FaceValues faces;
-  for (std::size_t v = 0; v < grid.size(); ++v) {
-    const auto index = grid.unflat(v);
+  for (std::size_t v = grid.owned_begin(); v < grid.owned_end(); ++v) {
+    const auto index = grid.unflat(grid.flat_of_stored(v));
     for (int d = 0; d < Dim; ++d) {
       if (index[d] == 0) faces[static_cast<std::size_t>(2 * d)].push_back(v);
       if (index[d] == grid.dofs[d] - 1) faces[static_cast<std::size_t>(2 * d + 1)].push_back(v);

@@ -28,17 +28,20 @@ struct ContactResult {
 // when friction is enough to stick (eq. 21). Between two deformable fields
 // the normals are opposite and the corrections conserve momentum exactly.
 // The friction force times the sliding distance is the dissipated work
-// (eq. 22). `impulse_on_field` receives, per field, the
-// momentum the others lost to it (the reaction on rigid bodies).
-template <int Dim>
+// (eq. 22). Runs on the owned values. `impulse_on_field` receives, per
+// slab of values (`slab_of_value`) and field (slab-major), the momentum the
+// others lost to the field: the reaction on rigid bodies, summed per slab so
+// that its total has the same bits on any number of ranks.
+template <int Dim, class SlabOfValue>
 ContactResult apply_grid_contact(const ContactFields& fields, Grid<Dim>& grid,
+                                 SlabOfValue&& slab_of_value,
                                  std::vector<Vec<Dim>>& impulse_on_field) {
   ContactResult result;
   const std::size_t n = grid.size();
   const int F = grid.fields;
   std::fill(impulse_on_field.begin(), impulse_on_field.end(), Vec<Dim>::Zero());
   constexpr double tiny = 1e-300;
-  for (std::size_t v = 0; v < n; ++v) {
+  for (std::size_t v = grid.owned_begin(); v < grid.owned_end(); ++v) {
     int present = 0;
     int rigid_field = -1;
     double mass = 0.0;
@@ -102,7 +105,8 @@ ContactResult apply_grid_contact(const ContactFields& fields, Grid<Dim>& grid,
       if (slip > mu * approach) result.dissipated += m * mu * approach * corrected.norm();
       const Vec<Dim> change = corrected - relative;
       grid.velocity[i] += change;
-      impulse_on_field[static_cast<std::size_t>(partner)] -= m * change;
+      impulse_on_field[slab_of_value(v) * static_cast<std::size_t>(F) +
+                       static_cast<std::size_t>(partner)] -= m * change;
     }
   }
   return result;

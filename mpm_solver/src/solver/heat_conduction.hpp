@@ -70,6 +70,9 @@ class HeatConduction {
     }
     for (const auto& [v, sum] : held) fixed_.push_back({v, sum.first / sum.second});
     change_at_fixed_.assign(fixed_.size(), 0.0);
+    odd_heat_capacity_.assign(grid.size(), 0.0);
+    odd_temperature_.assign(grid.size(), 0.0);
+    odd_heat_rate_.assign(grid.size(), 0.0);
     node_position_.resize(grid.size());
     for (std::size_t i = 0; i < grid.size(); ++i) node_position_[i] = grid.position(i);
   }
@@ -86,7 +89,7 @@ class HeatConduction {
     std::fill(grid.heat_capacity.begin(), grid.heat_capacity.end(), 0.0);
     std::fill(grid.temperature.begin(), grid.temperature.end(), 0.0);
     std::fill(grid.heat_rate.begin(), grid.heat_rate.end(), 0.0);
-    bins.scatter([&](std::size_t p) {
+    bins.scatter([&](std::size_t p, int parity) {
       const double C = particles.heat_capacity[p];
       if (C <= 0.0) return;
       Stencil<Dim, Kernel> stencil;
@@ -95,12 +98,18 @@ class HeatConduction {
       const Vec<Dim>& gradient = particles.temperature_gradient[p];
       const Vec<Dim>& x = particles.position[p];
       const double Q = particles.external_heat[p];
+      double* heat_capacity = parity == 0 ? grid.heat_capacity.data() : odd_heat_capacity_.data();
+      double* temperature = parity == 0 ? grid.temperature.data() : odd_temperature_.data();
+      double* heat_rate = parity == 0 ? grid.heat_rate.data() : odd_heat_rate_.data();
       stencil.for_each([&](std::size_t i, double N, const Vec<Dim>&) {
-        grid.heat_capacity[i] += N * C;
-        grid.temperature[i] += N * C * (T + gradient.dot(node_position_[i] - x));
-        grid.heat_rate[i] += N * Q;
+        heat_capacity[i] += N * C;
+        temperature[i] += N * C * (T + gradient.dot(node_position_[i] - x));
+        heat_rate[i] += N * Q;
       });
     });
+    add_odd_partials(grid.heat_capacity, odd_heat_capacity_, false);
+    add_odd_partials(grid.temperature, odd_temperature_, false);
+    add_odd_partials(grid.heat_rate, odd_heat_rate_, false);
     for (std::size_t i = 0; i < grid.size(); ++i)
       grid.temperature[i] =
           grid.heat_capacity[i] > 0.0 ? grid.temperature[i] / grid.heat_capacity[i] : 0.0;
@@ -113,8 +122,8 @@ class HeatConduction {
   // -sum_p V_p k_eff,p grad N_ip . grad T_p added to grid.heat_rate.
   template <class Kernel>
   void conduct(Particles<Dim>& particles, const ParticleBins& bins,
-               const GridGeometry<Dim>& geometry, Grid<Dim>& grid) const {
-    bins.scatter([&](std::size_t p) {
+               const GridGeometry<Dim>& geometry, Grid<Dim>& grid) {
+    bins.scatter([&](std::size_t p, int parity) {
       if (particles.heat_capacity[p] <= 0.0) return;
       Stencil<Dim, Kernel> stencil;
       stencil.evaluate(particles.position[p], particles.half_length[p], geometry);
@@ -126,10 +135,11 @@ class HeatConduction {
       const double Vk = particles.volume[p] * conductivity(particles, p);
       if (Vk <= 0.0) return;
       const Vec<Dim> flux = Vk * gradient;
-      stencil.for_each([&](std::size_t i, double, const Vec<Dim>& grad_N) {
-        grid.heat_rate[i] -= grad_N.dot(flux);
-      });
+      double* heat_rate = parity == 0 ? grid.heat_rate.data() : odd_heat_rate_.data();
+      stencil.for_each(
+          [&](std::size_t i, double, const Vec<Dim>& grad_N) { heat_rate[i] -= grad_N.dot(flux); });
     });
+    add_odd_partials(grid.heat_rate, odd_heat_rate_, false);
   }
 
   // dT_i over the step; returns the heat the fixed-temperature faces put in [J].
@@ -184,6 +194,8 @@ class HeatConduction {
   std::vector<FixedValue> fixed_;
   std::vector<double> change_at_fixed_;  // per fixed value, this step
   std::vector<Vec<Dim>> node_position_;  // per grid value
+  // The odd slabs' partial sums of the scattered arrays (ParticleBins).
+  std::vector<double> odd_heat_capacity_, odd_temperature_, odd_heat_rate_;
 };
 
 }  // namespace mpm::detail

@@ -35,6 +35,16 @@ struct Solver<Dim>::Impl {
   detail::ContactFields contact;
   detail::FaceValues faces;
   detail::ParticleBins bins;
+  // The odd slabs' partial sums of the arrays particle-to-grid scatters
+  // (ParticleBins); zero between scatters.
+  std::vector<double> odd_mass;
+  std::vector<Vec<Dim>> odd_momentum, odd_force, odd_mass_gradient, odd_remapped;
+  // On a rank of a decomposed run: the link to the other ranks.
+  std::shared_ptr<GridPartition<Dim>> partition;
+  // The scatter's slab of each stored plane of grid values, and the contact
+  // impulse per slab and field (slab-major).
+  std::vector<std::size_t> slab_of_plane;
+  std::vector<Vec<Dim>> impulse_by_slab;
   std::vector<ParticleForceSource> force_sources;
   std::vector<GridVelocityCorrection> grid_corrections;
   std::vector<ParticleHeatSource> heat_sources;
@@ -53,9 +63,20 @@ struct Solver<Dim>::Impl {
   // Faces with a wall keep the points inside; free faces let them leave (an error).
   Vec<Dim> wall_lower;
   Vec<Dim> wall_upper;
-  int threads = 1;
 
   explicit Impl(const CaseDescription& d);
+  void allocate_grid(int field_count);
+  void restrict_to(std::shared_ptr<GridPartition<Dim>> part);
+  // The stored index of the flat grid value `flat` of field `field`.
+  std::size_t stored(int field, std::size_t flat) const {
+    return static_cast<std::size_t>(field) * grid.size() + flat - grid.first_value();
+  }
+  // The slab of the stored value `v` (any field).
+  std::size_t slab_of_value(std::size_t v) const { return slab_of_plane[v / grid.plane_size()]; }
+  void sum_contact_impulse();
+  GridArray array_of(std::vector<double>& v) { return {v.data(), 1}; }
+  GridArray array_of(std::vector<Vec<Dim>>& v) { return {v.data()->data(), Dim}; }
+  std::size_t local_index(std::size_t id) const;
 
   Vec<Dim> gravity_at(double t) const;
   int field_of(std::size_t p) const { return field_of_body[particles.body[p]]; }
@@ -119,7 +140,6 @@ Vec<Dim> shrink(const Vec3d& v) {
 
 template <int Dim>
 Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
-  threads = d.threads > 0 ? d.threads : omp_get_max_threads();
   if (d.threads > 0) omp_set_num_threads(d.threads);
   std::array<int, Dim> cells{};
   for (int k = 0; k < Dim; ++k)
@@ -196,7 +216,7 @@ Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
     field_of_body.push_back(state.field);
   }
   if (field_count == 0) field_count = 1;
-  grid.allocate(field_count);
+  allocate_grid(field_count);
   contact.rigid.assign(static_cast<std::size_t>(field_count), false);
   contact.friction.assign(
       static_cast<std::size_t>(field_count),
@@ -211,6 +231,10 @@ Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
     }
   }
   impulse_on_field.assign(static_cast<std::size_t>(field_count), Vec<Dim>::Zero());
+  impulse_by_slab.assign(
+      static_cast<std::size_t>(detail::ParticleBins::slab_of_row(grid.cells[Dim - 1] - 1) + 1) *
+          static_cast<std::size_t>(field_count),
+      Vec<Dim>::Zero());
   if (d.gimp_domain == GimpDomain::deformed) initial_half_length = particles.half_length;
   faces = detail::face_values(grid);
   if (d.thermal.enabled) {
@@ -232,6 +256,71 @@ Solver<Dim>::Impl::Impl(const CaseDescription& d) : description(d) {
     wall_lower[k] = walled(2 * k) ? grid.origin[k] : -std::numeric_limits<double>::infinity();
     wall_upper[k] = walled(2 * k + 1) ? upper[k] : std::numeric_limits<double>::infinity();
   }
+}
+
+template <int Dim>
+void Solver<Dim>::Impl::allocate_grid(int field_count) {
+  grid.allocate(field_count);
+  odd_mass.assign(grid.mass.size(), 0.0);
+  odd_momentum.assign(grid.momentum.size(), Vec<Dim>::Zero());
+  odd_force.assign(grid.force.size(), Vec<Dim>::Zero());
+  odd_mass_gradient.assign(grid.mass_gradient.size(), Vec<Dim>::Zero());
+  odd_remapped.assign(grid.remapped_velocity.size(), Vec<Dim>::Zero());
+  const int planes = grid.stored_planes == 0 ? grid.dofs[Dim - 1] : grid.stored_planes;
+  slab_of_plane.resize(static_cast<std::size_t>(planes));
+  for (int j = 0; j < planes; ++j)
+    slab_of_plane[static_cast<std::size_t>(j)] = static_cast<std::size_t>(
+        detail::ParticleBins::slab_of_row(grid.cell_row_of_plane(grid.first_plane + j)));
+}
+
+// Keeps the points of the partition's cell rows and the planes of grid
+// values they touch (architecture.md §15).
+template <int Dim>
+void Solver<Dim>::Impl::restrict_to(std::shared_ptr<GridPartition<Dim>> part) {
+  if (heat)
+    throw cosim::InputError(
+        "thermal: a case that conducts heat runs on one process only, not decomposed over "
+        "ranks");
+  partition = std::move(part);
+  const auto rows = partition->owned_rows();
+  const auto owns = [&](int row) { return row >= rows[0] && row < rows[1]; };
+  std::size_t kept = 0;
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    if (!owns(grid.cell_of(particles.position[p])[Dim - 1])) continue;
+    if (kept != p) particles.for_each_array([&](auto& array) { array[kept] = array[p]; });
+    ++kept;
+  }
+  particles.for_each_array([&](auto& array) { array.resize(kept); });
+
+  const int planes = grid.dofs[Dim - 1];
+  PlaneRanges ranges;
+  ranges.owned_first = planes;
+  for (int j = 0; j < planes; ++j) {
+    if (!owns(grid.cell_row_of_plane(j))) continue;
+    ranges.owned_first = std::min(ranges.owned_first, j);
+    ranges.owned_end = j + 1;
+  }
+  // The points of row r touch the planes r - 1 to r + 2 (GIMP; fewer for
+  // the others).
+  ranges.stored_first = std::min(ranges.owned_first, std::max(0, rows[0] - 1));
+  ranges.stored_end = std::max(ranges.owned_end, std::min(planes, rows[1] + 2));
+  grid.first_plane = ranges.stored_first;
+  grid.stored_planes = ranges.stored_end - ranges.stored_first;
+  grid.owned_first_plane = ranges.owned_first;
+  grid.owned_planes = ranges.owned_end - ranges.owned_first;
+  allocate_grid(grid.fields);
+  faces = detail::face_values(grid);
+  partition->set_planes(ranges, grid.plane_size(), grid.fields);
+}
+
+// The local index of the point with id `id` (a point of a surface load),
+// or particles.size() when another rank holds it.
+template <int Dim>
+std::size_t Solver<Dim>::Impl::local_index(std::size_t id) const {
+  if (!partition) return id;
+  const auto at = std::lower_bound(particles.id.begin(), particles.id.end(), id);
+  return at != particles.id.end() && *at == id ? static_cast<std::size_t>(at - particles.id.begin())
+                                               : particles.size();
 }
 
 template <int Dim>
@@ -271,6 +360,7 @@ void Solver<Dim>::Impl::step(double dt) {
     }
     if (description.gimp_domain == GimpDomain::deformed) update_particle_domains();
     move_rigid_bodies(dt);
+    if (partition) partition->migrate(particles);
   });
   time += dt;
   ++steps;
@@ -283,7 +373,7 @@ void Solver<Dim>::Impl::bin_particles() {
   if (!std::all_of(particles.position.begin(), particles.position.end(),
                    [](const Vec<Dim>& x) { return x.allFinite(); }))
     check_state();
-  bins.build(particles, grid, threads);
+  bins.build(particles, grid);
 }
 
 template <int Dim>
@@ -293,7 +383,9 @@ void Solver<Dim>::Impl::apply_surface_loads(double /*dt*/) {
     const double ramp = load.ramp_factor(time);
     const int axis = load.face / 2;
     const double outward = load.face % 2 == 0 ? -1.0 : 1.0;
-    for (const std::size_t p : load.particles) {
+    for (const std::size_t id : load.particles) {
+      const std::size_t p = local_index(id);
+      if (p == particles.size()) continue;  // held by another rank
       // Face area of the particle's initial domain normal to the face.
       const Vec<Dim>& l0 =
           initial_half_length.empty() ? particles.half_length[p] : initial_half_length[p];
@@ -338,9 +430,9 @@ void Solver<Dim>::Impl::set_rigid_velocities(double dt) {
       case RigidMotion::Kind::free:
         break;  // set by move_rigid_bodies from the last step's forces
     }
-    for (std::size_t p = body.first; p < body.first + body.count; ++p)
-      particles.velocity[p] = body.rigid_velocity;
   }
+  for (std::size_t p = 0; p < particles.size(); ++p)
+    if (body_of(p).is_rigid()) particles.velocity[p] = body_of(p).rigid_velocity;
 }
 
 // Zheng et al., eqs. 14-17: lumped mass, momentum, and the internal, body
@@ -352,25 +444,42 @@ template <class Kernel>
 void Solver<Dim>::Impl::interpolate_particles_to_grid(double /*dt*/) {
   grid.clear();
   const Vec<Dim> g = gravity_at(time);
-  const std::size_t n = grid.size();
   const bool gradients = grid.fields > 1;
-  bins.scatter([&](std::size_t p) {
+  bins.scatter([&](std::size_t p, int parity) {
     Stencil<Dim, Kernel> stencil;
     stencil.evaluate(particles.position[p], particles.half_length[p], geometry);
-    const std::size_t offset = static_cast<std::size_t>(field_of(p)) * n;
+    const std::size_t offset = stored(field_of(p), 0);  // + flat index: stored index
     const double m = particles.mass[p];
     const Vec<Dim> mv = m * particles.velocity[p];
     const Mat<Dim> volume_stress =
         particles.volume[p] * from_voigt(particles.stress[p]).template topLeftCorner<Dim, Dim>();
     const Vec<Dim> external = m * g + particles.external_force[p];
+    double* mass = parity == 0 ? grid.mass.data() : odd_mass.data();
+    Vec<Dim>* momentum = parity == 0 ? grid.momentum.data() : odd_momentum.data();
+    Vec<Dim>* force = parity == 0 ? grid.force.data() : odd_force.data();
+    Vec<Dim>* mass_gradient = parity == 0 ? grid.mass_gradient.data() : odd_mass_gradient.data();
     stencil.for_each([&](std::size_t v, double w, const Vec<Dim>& grad) {
       const std::size_t i = offset + v;
-      grid.mass[i] += w * m;
-      grid.momentum[i] += w * mv;
-      grid.force[i] += w * external - volume_stress * grad;
-      if (gradients) grid.mass_gradient[i] += m * grad;
+      mass[i] += w * m;
+      momentum[i] += w * mv;
+      force[i] += w * external - volume_stress * grad;
+      if (gradients) mass_gradient[i] += m * grad;
     });
   });
+  if (partition) {
+    std::vector<GridArray> sums{array_of(grid.mass), array_of(grid.momentum), array_of(grid.force),
+                                array_of(odd_mass),  array_of(odd_momentum),  array_of(odd_force)};
+    if (gradients) {
+      sums.push_back(array_of(grid.mass_gradient));
+      sums.push_back(array_of(odd_mass_gradient));
+    }
+    partition->accumulate(sums);
+  }
+  const bool parallel = worth_threads(grid.mass.size());
+  detail::add_odd_partials(grid.mass, odd_mass, parallel);
+  detail::add_odd_partials(grid.momentum, odd_momentum, parallel);
+  detail::add_odd_partials(grid.force, odd_force, parallel);
+  if (gradients) detail::add_odd_partials(grid.mass_gradient, odd_mass_gradient, parallel);
 }
 
 // Zheng et al., eqs. 18-19: v^{n+1} = (p + dt f) / m, with optional local
@@ -418,8 +527,10 @@ void Solver<Dim>::Impl::apply_grid_corrections(double dt) {
 template <int Dim>
 void Solver<Dim>::Impl::apply_contact_and_boundaries(double /*dt*/) {
   if (grid.fields > 1) {
-    const auto result = detail::apply_grid_contact(contact, grid, impulse_on_field);
+    const auto result = detail::apply_grid_contact(
+        contact, grid, [&](std::size_t v) { return slab_of_value(v); }, impulse_by_slab);
     accumulated.contact_dissipation += result.dissipated;
+    sum_contact_impulse();
     for (auto& body : bodies)
       if (body.is_rigid())
         body.contact_impulse = impulse_on_field[static_cast<std::size_t>(body.field)];
@@ -431,6 +542,24 @@ void Solver<Dim>::Impl::apply_contact_and_boundaries(double /*dt*/) {
   for (std::size_t i = 0; i < total; ++i) {
     if (grid.mass[i] <= 1e-300) continue;
     grid.velocity_change[i] = grid.velocity[i] - grid.velocity_change[i];  // v^{n+1} - v^n
+  }
+  if (partition) {
+    const GridArray updated[] = {array_of(grid.velocity), array_of(grid.velocity_change)};
+    partition->exchange(updated);
+  }
+}
+
+// The reaction on each field summed slab by slab, in slab order, the slabs'
+// sums first added over the ranks (each slab has one owner, so exactly).
+template <int Dim>
+void Solver<Dim>::Impl::sum_contact_impulse() {
+  if (partition) partition->sum({impulse_by_slab.data()->data(), impulse_by_slab.size() * Dim});
+  const std::size_t fields = impulse_on_field.size();
+  for (std::size_t f = 0; f < fields; ++f) {
+    Vec<Dim> total = Vec<Dim>::Zero();
+    for (std::size_t slab = 0; slab * fields < impulse_by_slab.size(); ++slab)
+      total += impulse_by_slab[slab * fields + f];
+    impulse_on_field[f] = total;
   }
 }
 
@@ -503,11 +632,11 @@ void Solver<Dim>::Impl::interpolate_and_remap_velocities() {
   const double flip = description.flip_fraction;
   const std::size_t n = grid.size();
   std::fill(grid.remapped_velocity.begin(), grid.remapped_velocity.end(), Vec<Dim>::Zero());
-  bins.scatter([&](std::size_t p) {
+  bins.scatter([&](std::size_t p, int parity) {
     if (body_of(p).is_rigid()) return;
     Stencil<Dim, Kernel> stencil;
     stencil.evaluate(particles.position[p], particles.half_length[p], geometry);
-    const std::size_t offset = static_cast<std::size_t>(field_of(p)) * n;
+    const std::size_t offset = stored(field_of(p), 0);
     Vec<Dim> v_pic = Vec<Dim>::Zero();
     Vec<Dim> dv = Vec<Dim>::Zero();
     stencil.for_each([&](std::size_t v, double w, const Vec<Dim>&) {
@@ -516,11 +645,16 @@ void Solver<Dim>::Impl::interpolate_and_remap_velocities() {
     });
     particles.velocity[p] = flip * (particles.velocity[p] + dv) + (1.0 - flip) * v_pic;
     const Vec<Dim> mv = particles.mass[p] * particles.velocity[p];
-    stencil.for_each([&](std::size_t v, double w, const Vec<Dim>&) {
-      grid.remapped_velocity[offset + v] += w * mv;
-    });
+    Vec<Dim>* remapped = parity == 0 ? grid.remapped_velocity.data() : odd_remapped.data();
+    stencil.for_each(
+        [&](std::size_t v, double w, const Vec<Dim>&) { remapped[offset + v] += w * mv; });
   });
   const std::size_t total = grid.mass.size();
+  if (partition) {
+    const GridArray sums[] = {array_of(grid.remapped_velocity), array_of(odd_remapped)};
+    partition->accumulate(sums);
+  }
+  detail::add_odd_partials(grid.remapped_velocity, odd_remapped, worth_threads(total));
 #pragma omp parallel for schedule(static) if (worth_threads(total))
   for (std::size_t i = 0; i < total; ++i) {
     const int field = static_cast<int>(i / n);
@@ -535,11 +669,16 @@ void Solver<Dim>::Impl::interpolate_and_remap_velocities() {
   // The re-mapped velocity obeys the same contact and face conditions.
   std::swap(grid.velocity, grid.remapped_velocity);
   if (grid.fields > 1) {
-    std::vector<Vec<Dim>> unused(impulse_on_field.size(), Vec<Dim>::Zero());
-    detail::apply_grid_contact(contact, grid, unused);
+    std::vector<Vec<Dim>> unused(impulse_by_slab.size(), Vec<Dim>::Zero());
+    detail::apply_grid_contact(
+        contact, grid, [&](std::size_t v) { return slab_of_value(v); }, unused);
   }
   detail::apply_face_conditions(description.boundaries, faces, contact.rigid, grid);
   std::swap(grid.velocity, grid.remapped_velocity);
+  if (partition) {
+    const GridArray remapped[] = {array_of(grid.remapped_velocity)};
+    partition->exchange(remapped);
+  }
 }
 
 template <int Dim>
@@ -556,7 +695,6 @@ template <int Dim>
 template <class Kernel>
 void Solver<Dim>::Impl::update_kinematics_and_stress(double dt, bool use_remapped) {
   const double flip = description.flip_fraction;
-  const std::size_t n = grid.size();
   const std::vector<Vec<Dim>>& strain_velocity =
       use_remapped ? grid.remapped_velocity : grid.velocity;
   const LockingMitigation locking = description.locking;
@@ -572,8 +710,7 @@ void Solver<Dim>::Impl::update_kinematics_and_stress(double dt, bool use_remappe
       if (body_of(p).is_rigid()) return;
       Stencil<Dim, Kernel> stencil;
       stencil.evaluate(particles.position[p], particles.half_length[p], geometry);
-      const Mat<Dim> L =
-          velocity_gradient(stencil, strain_velocity, static_cast<std::size_t>(field_of(p)) * n);
+      const Mat<Dim> L = velocity_gradient(stencil, strain_velocity, stored(field_of(p), 0));
       const double x = locking == LockingMitigation::fbar
                            ? (Mat<Dim>::Identity() + dt * L).determinant()
                            : dt * L.trace();
@@ -592,7 +729,7 @@ void Solver<Dim>::Impl::update_kinematics_and_stress(double dt, bool use_remappe
     if (body.is_rigid()) continue;
     Stencil<Dim, Kernel> stencil;
     stencil.evaluate(particles.position[p], particles.half_length[p], geometry);
-    const std::size_t offset = static_cast<std::size_t>(body.field) * n;
+    const std::size_t offset = stored(body.field, 0);
     Vec<Dim> v_pic = Vec<Dim>::Zero();
     Vec<Dim> dv = Vec<Dim>::Zero();
     Mat<Dim> L = Mat<Dim>::Zero();
@@ -648,10 +785,11 @@ void Solver<Dim>::Impl::move_rigid_bodies(double dt) {
     if (!body.is_rigid()) continue;
     if (body.rigid->kind == RigidMotion::Kind::free && body.mass > 0.0)
       body.rigid_velocity += dt * g + body.contact_impulse / body.mass;
-    for (std::size_t p = body.first; p < body.first + body.count; ++p) {
-      particles.position[p] += dt * particles.velocity[p];
-      particles.velocity[p] = body.rigid_velocity;
-    }
+  }
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    if (!body_of(p).is_rigid()) continue;
+    particles.position[p] += dt * particles.velocity[p];
+    particles.velocity[p] = body_of(p).rigid_velocity;
   }
 }
 
@@ -670,6 +808,10 @@ double Solver<Dim>::Impl::stable_time_step() const {
     if (body.is_rigid() || particles.volume[p] <= 0.0) continue;
     const double density = particles.mass[p] / particles.volume[p];
     if (density > 0.0) wave = std::max(wave, std::sqrt(body.p_wave_modulus / density));
+  }
+  if (partition) {
+    wave = partition->max(wave);
+    speed = partition->max(speed);
   }
   // Zheng et al., eq. 23.
   const double denominator = wave + speed;
@@ -706,13 +848,34 @@ Totals<Dim> Solver<Dim>::Impl::totals() const {
   t.boundary_dissipation = accumulated.boundary_dissipation;
   t.external_work = accumulated.external_work;
   t.internal_work = accumulated.internal_work;
-  t.plastic_dissipation = accumulated.internal_work - (t.strain_energy - initial_strain_energy);
   if (heat) {
     for (std::size_t p = 0; p < particles.size(); ++p)
       t.thermal_energy += particles.heat_capacity[p] * particles.temperature[p];
     t.external_heat = accumulated.external_heat;
     t.heat_through_faces = accumulated.heat_through_faces;
   }
+  if (partition) {
+    std::vector<double> sums{t.mass,
+                             t.kinetic_energy,
+                             t.strain_energy,
+                             t.gravitational_energy,
+                             t.contact_dissipation,
+                             t.boundary_dissipation,
+                             t.external_work,
+                             t.internal_work};
+    for (int d = 0; d < Dim; ++d) sums.push_back(t.momentum[d]);
+    partition->sum(sums);
+    t.mass = sums[0];
+    t.kinetic_energy = sums[1];
+    t.strain_energy = sums[2];
+    t.gravitational_energy = sums[3];
+    t.contact_dissipation = sums[4];
+    t.boundary_dissipation = sums[5];
+    t.external_work = sums[6];
+    t.internal_work = sums[7];
+    for (int d = 0; d < Dim; ++d) t.momentum[d] = sums[8 + static_cast<std::size_t>(d)];
+  }
+  t.plastic_dissipation = t.internal_work - (t.strain_energy - initial_strain_energy);
   return t;
 }
 
@@ -730,14 +893,14 @@ void Solver<Dim>::Impl::check_state() const {
       throw cosim::NumericalError(fmt::format(
           "particle {} of body '{}' has a non-finite or collapsed state at t = {:.9g} s "
           "(position {}, volume {:.6g} m^{}, temperature {:.6g} K)",
-          p, body.name, time, fmt::join(particles.position[p], ", "), particles.volume[p], Dim,
-          particles.temperature[p]));
+          particles.id[p], body.name, time, fmt::join(particles.position[p], ", "),
+          particles.volume[p], Dim, particles.temperature[p]));
     }
     if (!grid.contains(particles.position[p])) {
       throw cosim::NumericalError(
           fmt::format("particle {} of body '{}' left the grid at t = {:.9g} s (position {}; grid "
                       "from {} to {})",
-                      p, body.name, time, fmt::join(particles.position[p], ", "),
+                      particles.id[p], body.name, time, fmt::join(particles.position[p], ", "),
                       fmt::join(grid.origin, ", "), fmt::join(grid.upper(), ", ")));
     }
   }
@@ -748,6 +911,12 @@ void Solver<Dim>::Impl::check_state() const {
 template <int Dim>
 Solver<Dim>::Solver(const CaseDescription& description)
     : impl_(std::make_unique<Impl>(description)) {}
+template <int Dim>
+Solver<Dim>::Solver(const CaseDescription& description,
+                    std::shared_ptr<GridPartition<Dim>> partition)
+    : impl_(std::make_unique<Impl>(description)) {
+  if (partition) impl_->restrict_to(std::move(partition));
+}
 template <int Dim>
 Solver<Dim>::~Solver() = default;
 template <int Dim>

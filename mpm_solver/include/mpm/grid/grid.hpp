@@ -46,9 +46,25 @@ struct Grid {
   std::vector<double> heat_rate;
   std::vector<double> temperature_change;
 
-  // Grid values per field.
+  // Grid values per field, stored.
   std::size_t size() const { return values; }
   std::size_t values = 0;
+  // The planes of grid values (along the last direction) the arrays hold:
+  // all of them on one process; on one rank of a grid decomposed into slabs
+  // of cell rows (issue 27), the planes of its rows and the ghost planes its
+  // points touch. A stored value's index is its flat index minus
+  // first_value(); owned_begin()..owned_end() are the stored values this
+  // rank sums and updates (all of them on one process).
+  int first_plane = 0;
+  int stored_planes = 0;  // 0: every plane
+  int owned_first_plane = 0;
+  int owned_planes = 0;  // 0: every stored plane
+  std::size_t plane_size() const;
+  std::size_t first_value() const { return static_cast<std::size_t>(first_plane) * plane_size(); }
+  std::size_t owned_begin() const;
+  std::size_t owned_end() const;
+  // Flat index of the stored value `i`.
+  std::size_t flat_of_stored(std::size_t i) const { return i + first_value(); }
   std::size_t flat(const std::array<int, Dim>& index) const;
   std::array<int, Dim> unflat(std::size_t flat_index) const;
   // Position of a grid value.
@@ -56,13 +72,17 @@ struct Grid {
   double cell_volume() const { return spacing.prod(); }
   double min_spacing() const { return spacing.minCoeff(); }
   std::size_t cell_count() const;
+  // The cell row (along the last direction) a plane of values lies in,
+  // clamped to the grid.
+  int cell_row_of_plane(int plane) const;
   // Cell holding x (clamped to the grid), and its flat index.
   std::array<int, Dim> cell_of(const Vec<Dim>& x) const;
   std::size_t cell_flat(const std::array<int, Dim>& cell) const;
   Vec<Dim> upper() const;
   bool contains(const Vec<Dim>& x) const;
 
-  // Sizes the arrays for `fields` velocity fields (values from dofs).
+  // Sizes the arrays for `fields` velocity fields (values from dofs and
+  // the stored planes).
   void allocate(int field_count);
   // Sizes the heat arrays (one field).
   void allocate_heat();

@@ -9,6 +9,7 @@
 #include "mpm/case/case_description.hpp"
 #include "mpm/grid/grid.hpp"
 #include "mpm/particles/particles.hpp"
+#include "mpm/solver/grid_partition.hpp"
 #include "mpm/solver/solver_state.hpp"
 
 namespace mpm {
@@ -45,6 +46,12 @@ template <int Dim>
 class Solver {
  public:
   explicit Solver(const CaseDescription& description);
+  // One rank's part of a decomposed run (issue 27): the points of the
+  // partition's cell rows and the grid values they touch. Every step then
+  // gives each point and each owned grid value the same bits as one process
+  // would; totals() are summed over the ranks (equal to round-off). A case
+  // that conducts heat is refused (cosim::InputError, key `thermal`).
+  Solver(const CaseDescription& description, std::shared_ptr<GridPartition<Dim>> partition);
   ~Solver();
   Solver(const Solver&) = delete;
   Solver& operator=(const Solver&) = delete;
@@ -84,6 +91,7 @@ class Solver {
   void add_grid_velocity_correction(GridVelocityCorrection correction);
   void add_particle_heat_source(ParticleHeatSource source);
 
+  // This process's points (on a rank: those of its cell rows, in id order).
   Particles<Dim>& particles();
   const Particles<Dim>& particles() const;
   const Grid<Dim>& grid() const;
