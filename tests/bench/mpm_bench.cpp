@@ -28,16 +28,13 @@
 #include <tuple>
 #include <vector>
 
-#include "cosim/config/document.hpp"
-#include "mpm/material/material_registry.hpp"
 #include "mpm/solver/solver.hpp"
 #include "mpm/solver/solver_state.hpp"
+#include "mpm_column.hpp"
 
 namespace {
 
-using mpm::CaseDescription;
 using mpm::ShapeKind;
-using mpm::Vec3d;
 
 constexpr int warm_up_steps = 3;
 
@@ -49,62 +46,6 @@ struct Setup {
 
   auto key() const { return std::tuple(dimension, column_cells, shape, threads); }
 };
-
-// Mohr-Coulomb sand with a small cohesion, so the free surfaces yield.
-std::shared_ptr<const mpm::Material> sand() {
-  const auto document = cosim::config::Document::load_string(
-      "type: mohr_coulomb\ndensity: 2000\nyoungs_modulus: 1.0e7\npoisson_ratio: 0.3\n"
-      "friction_angle: 30\ndilation_angle: 0\ncohesion: 100\ntensile_strength: 50\n",
-      "mpm_bench_sand.yaml");
-  return mpm::make_material(document.root());
-}
-
-CaseDescription column_case(const Setup& setup) {
-  const int dim = setup.dimension;
-  const double h = 0.1;
-  const int ppc = 2;  // per direction
-  const int wide = setup.column_cells;
-  const int high = dim == 2 ? 2 * wide : wide;
-  CaseDescription c;
-  c.name = "mpm_bench_column";
-  c.dimension = dim;
-  c.grid.spacing = Vec3d::Constant(h);
-  const int spread = wide + wide / 2;  // room for the toe
-  c.grid.cells = {spread, dim == 3 ? spread : high + 4, dim == 3 ? high + 4 : 1};
-  c.shape = setup.shape;
-  c.scheme = mpm::UpdateScheme::musl;
-  c.gravity = dim == 2 ? Vec3d(0, -9.81, 0) : Vec3d(0, 0, -9.81);
-  c.threads = setup.threads;
-  c.materials.push_back(sand());
-  c.material_names.push_back("sand");
-  const int up = dim - 1;
-  for (int d = 0; d < dim; ++d) {
-    c.boundaries[static_cast<std::size_t>(2 * d)].kind = mpm::FaceCondition::Kind::slip;
-    c.boundaries[static_cast<std::size_t>(2 * d + 1)].kind = mpm::FaceCondition::Kind::slip;
-  }
-  c.boundaries[static_cast<std::size_t>(2 * up)].kind = mpm::FaceCondition::Kind::fixed;
-
-  mpm::BodySpec body;
-  body.name = "column";
-  body.material = 0;
-  const double d = h / ppc;
-  const int n = wide * ppc;
-  const int nup = high * ppc;
-  const int nz = dim == 3 ? nup : 1;
-  const int ny = dim == 3 ? n : nup;
-  const auto count =
-      static_cast<std::size_t>(n) * static_cast<std::size_t>(ny) * static_cast<std::size_t>(nz);
-  body.positions.reserve(count);
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < n; ++i)
-        body.positions.emplace_back((i + 0.5) * d, (j + 0.5) * d, dim == 3 ? (k + 0.5) * d : 0.0);
-  body.volumes.assign(count, dim == 3 ? d * d * d : d * d);
-  body.half_lengths.assign(count, Vec3d::Constant(0.5 * d));
-  body.geostatic = mpm::GeostaticStress{};
-  c.bodies.push_back(std::move(body));
-  return c;
-}
 
 template <int Dim>
 double grid_bytes(const mpm::Grid<Dim>& g) {
@@ -124,7 +65,8 @@ mpm::Solver<Dim>& solver_for(const Setup& setup) {
   static decltype(setup.key()) key{};
   if (!solver || key != setup.key()) {
     solver.reset();
-    solver = std::make_unique<mpm::Solver<Dim>>(column_case(setup));
+    solver = std::make_unique<mpm::Solver<Dim>>(
+        bench::column_case(setup.dimension, setup.column_cells, setup.shape, setup.threads));
     key = setup.key();
     for (int s = 0; s < warm_up_steps; ++s) solver->step(solver->stable_time_step());
   }

@@ -60,14 +60,12 @@ void expect_the_whole_runs_bits(const CaseDescription& c, int steps) {
   auto partition = std::make_shared<parallel::MpiGridPartition<Dim>>(
       MPI_COMM_WORLD, cuts, c.grid.origin[Dim - 1], c.grid.spacing[Dim - 1]);
   Solver<Dim> part(c, partition);
-  unsigned long migrated = 0;
   for (int s = 0; s < steps; ++s) {
     const double dt = whole.stable_time_step();
     const double dt_part = part.stable_time_step();
     ASSERT_EQ(std::memcmp(&dt, &dt_part, sizeof dt), 0) << "step " << s;
     whole.step(dt);
     part.step(dt);
-    migrated += partition->points_sent();
     const Particles<Dim>& mine = part.particles();
     unsigned long held = mine.size();
     MPI_Allreduce(MPI_IN_PLACE, &held, 1, MPI_UNSIGNED_LONG, MPI_SUM, MPI_COMM_WORLD);
@@ -84,6 +82,7 @@ void expect_the_whole_runs_bits(const CaseDescription& c, int steps) {
     MPI_Allreduce(MPI_IN_PLACE, &differing, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
     ASSERT_EQ(differing, 0) << "points that differ after step " << s;
   }
+  unsigned long migrated = partition->points_sent();
   // Every id held once.
   std::vector<int> seen(whole.particles().size(), 0);
   for (const auto id : part.particles().id) ++seen[id];

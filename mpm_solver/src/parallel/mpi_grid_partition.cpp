@@ -16,6 +16,19 @@ namespace {
 
 using detail::ParticleBins;
 
+// Adds the wall time of its scope to `seconds`.
+class Stopwatch {
+ public:
+  explicit Stopwatch(double& seconds) : seconds_(seconds), start_(MPI_Wtime()) {}
+  ~Stopwatch() { seconds_ += MPI_Wtime() - start_; }
+  Stopwatch(const Stopwatch&) = delete;
+  Stopwatch& operator=(const Stopwatch&) = delete;
+
+ private:
+  double& seconds_;
+  double start_;
+};
+
 int row_count(const CaseDescription& d) {
   return d.grid.cells[static_cast<std::size_t>(d.dimension - 1)];
 }
@@ -136,6 +149,7 @@ std::array<int, 2> MpiGridPartition<Dim>::received_planes(int q, bool to_owners)
 
 template <int Dim>
 void MpiGridPartition<Dim>::transfer(std::span<const GridArray> arrays, bool to_owners) {
+  const Stopwatch watch(communication_seconds_);
   const PlaneRanges& me = planes_[static_cast<std::size_t>(rank_)];
   const auto stored_values =
       static_cast<std::size_t>(me.stored_end - me.stored_first) * plane_size_;
@@ -156,7 +170,6 @@ void MpiGridPartition<Dim>::transfer(std::span<const GridArray> arrays, bool to_
   };
   std::vector<MPI_Request> requests;
   const int neighbours[2] = {rank_ - 1, rank_ + 1};
-  values_sent_ = 0;
   for (int side = 0; side < 2; ++side) {
     const int q = neighbours[side];
     if (q < 0 || q >= ranks_) continue;
@@ -208,6 +221,7 @@ void MpiGridPartition<Dim>::exchange(std::span<const GridArray> arrays) {
 
 template <int Dim>
 double MpiGridPartition<Dim>::max(double local) {
+  const Stopwatch watch(communication_seconds_);
   double global = local;
   MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, comm_);
   return global;
@@ -215,6 +229,7 @@ double MpiGridPartition<Dim>::max(double local) {
 
 template <int Dim>
 void MpiGridPartition<Dim>::sum(std::span<double> values) {
+  const Stopwatch watch(communication_seconds_);
   MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM,
                 comm_);
 }
@@ -223,8 +238,9 @@ void MpiGridPartition<Dim>::sum(std::span<double> values) {
 // one sort by id puts them together as one process holds them.
 template <int Dim>
 void MpiGridPartition<Dim>::migrate(Particles<Dim>& particles) {
+  const Stopwatch watch(communication_seconds_);
   const auto moved = migration_->migrate(particles);
-  points_sent_ = moved.sent;
+  points_sent_ += moved.sent;
   if (moved.received == 0 || std::is_sorted(particles.id.begin(), particles.id.end())) return;
   order_.resize(particles.size());
   std::iota(order_.begin(), order_.end(), std::size_t{0});

@@ -49,10 +49,13 @@ class MpiGridPartition final : public GridPartition<Dim> {
   int rank() const { return rank_; }
   // The rank that owns the point at x.
   int owner(const Vec<Dim>& x) const;
-  // Grid values this rank sent in its last accumulate() or exchange(), and
-  // points it sent away in its last migrate().
+  // Grid values this rank has sent in accumulate() and exchange(), and
+  // points it has sent away in migrate(), since construction.
   std::size_t values_sent() const { return values_sent_; }
   std::size_t points_sent() const { return points_sent_; }
+  // Wall time spent in the partition's communication since construction
+  // (waiting for the other ranks included).
+  double communication_seconds() const { return communication_seconds_; }
 
  private:
   MPI_Comm comm_ = MPI_COMM_NULL;
@@ -66,6 +69,7 @@ class MpiGridPartition final : public GridPartition<Dim> {
   std::vector<std::size_t> order_;
   std::array<std::vector<double>, 2> send_, receive_;  // per neighbour: below, above
   std::size_t values_sent_ = 0, points_sent_ = 0;
+  double communication_seconds_ = 0.0;
 
   // Planes [first, end) this rank sends to neighbour q and receives from
   // it: ghosts to owners (`to_owners`) or owners to ghosts.
