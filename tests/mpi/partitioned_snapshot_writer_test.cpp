@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -106,6 +107,95 @@ TEST(PartitionedSnapshotWriter, WritesTheFilesOfOneProcessIn2D) {
 
 TEST(PartitionedSnapshotWriter, WritesTheFilesOfOneProcessIn3D) {
   check_against_one_process(3, {7, 6, 5}, "3d");
+}
+
+// The directory rank 0 made, on every rank.
+fs::path shared_directory(const std::string& name) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  std::string text;
+  if (rank == 0) text = testing::fresh_directory(name).string();
+  int length = static_cast<int>(text.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  text.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(text.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
+  return text;
+}
+
+// A moving cloud of 50 points whose rows are dealt to the ranks in runs of
+// 3, none to the last of several ranks, 2 snapshots of fields of 1, dim
+// and 6 components, against SnapshotWriter's of the whole cloud.
+void check_point_cloud_against_one_process(int dim) {
+  int ranks = 1, rank = 0;
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  const fs::path dir =
+      shared_directory("partitioned_cloud_" + std::to_string(dim) + "d_" + std::to_string(ranks));
+  constexpr std::size_t points = 50;
+  const int holding = std::max(1, ranks - 1);
+  const auto owner = [&](std::size_t row) { return static_cast<int>((row / 3) % 4) % holding; };
+  const auto fill = [&](bool all, int snapshot, std::vector<std::uint64_t>& rows,
+                        std::vector<double>& x, std::vector<double>& scalar,
+                        std::vector<double>& vector, std::vector<double>& tensor) {
+    for (std::size_t row = 0; row < points; ++row) {
+      if (!all && owner(row) != rank) continue;
+      rows.push_back(row);
+      for (int c = 0; c < dim; ++c)
+        x.push_back(value(static_cast<std::int64_t>(row), 0, 0, c, snapshot));
+      scalar.push_back(value(static_cast<std::int64_t>(row), 1, 0, 0, snapshot));
+      for (int c = 0; c < dim; ++c)
+        vector.push_back(value(static_cast<std::int64_t>(row), 2, 0, c, snapshot));
+      for (int c = 0; c < 6; ++c)
+        tensor.push_back(value(static_cast<std::int64_t>(row), 3, 0, c, snapshot));
+    }
+  };
+  PartitionedPointCloudWriter together(MPI_COMM_WORLD, dir / "together", "p", "particles", dim,
+                                       points);
+  for (int snapshot = 0; snapshot < 2; ++snapshot) {
+    std::vector<std::uint64_t> rows;
+    std::vector<double> x, mass, velocity, stress;
+    fill(false, snapshot, rows, x, mass, velocity, stress);
+    together.write(0.25 * snapshot, rows, x,
+                   {{"mass", {mass, 1, "kg"}},
+                    {"velocity", {velocity, dim, "m/s"}},
+                    {"stress", {stress, 6, "Pa"}}});
+  }
+  EXPECT_EQ(together.snapshots_written(), 2u);
+  if (rank != 0) return;
+  std::vector<std::uint64_t> rows;
+  std::vector<double> x0, m0, v0, s0;
+  fill(true, 0, rows, x0, m0, v0, s0);
+  const auto cloud = [&](const std::vector<double>& x) {
+    PointCloud c;
+    c.dim = dim;
+    c.positions = x;
+    c.volumes.assign(points, 1.0);
+    return Mesh{"particles", std::move(c)};
+  };
+  SnapshotWriter alone(dir / "alone", "p", cloud(x0));
+  for (int snapshot = 0; snapshot < 2; ++snapshot) {
+    std::vector<double> x, mass, velocity, stress;
+    rows.clear();
+    fill(true, snapshot, rows, x, mass, velocity, stress);
+    alone.write(0.25 * snapshot, cloud(x),
+                {{"mass", {mass, 1, "kg"}},
+                 {"velocity", {velocity, dim, "m/s"}},
+                 {"stress", {stress, 6, "Pa"}}});
+  }
+  for (const char* file : {"p_000000.h5", "p_000001.h5"})
+    EXPECT_EQ(testing::hdf5_contents(dir / "together" / file),
+              testing::hdf5_contents(dir / "alone" / file))
+        << file << " on " << ranks << " ranks";
+  EXPECT_EQ(testing::read_text(dir / "together" / "p.xdmf"),
+            testing::read_text(dir / "alone" / "p.xdmf"));
+}
+
+TEST(PartitionedPointCloudWriter, WritesTheFilesOfOneProcessIn2D) {
+  check_point_cloud_against_one_process(2);
+}
+
+TEST(PartitionedPointCloudWriter, WritesTheFilesOfOneProcessIn3D) {
+  check_point_cloud_against_one_process(3);
 }
 
 // A 2D grid of n x n unit cells with values at `location`, and its whole range.

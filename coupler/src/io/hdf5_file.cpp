@@ -58,12 +58,30 @@ void OutputFile::write(const std::string& dataset, std::span<const hsize_t> dims
   write_raw(dataset, dims, H5T_STD_I64LE, H5T_NATIVE_INT64, values.data(), values.size(), {});
 }
 
+void OutputFile::write(const std::string& dataset, std::span<const hsize_t> dims, const Rows& rows,
+                       std::span<const double> values, std::string_view unit) {
+  write_raw(dataset, dims, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.data(), values.size(), unit,
+            nullptr, &rows);
+}
+
+void OutputFile::write(const std::string& dataset, std::span<const hsize_t> dims, const Rows& rows,
+                       std::span<const std::int64_t> values) {
+  write_raw(dataset, dims, H5T_STD_I64LE, H5T_NATIVE_INT64, values.data(), values.size(), {},
+            nullptr, &rows);
+}
+
 void OutputFile::write_raw(const std::string& dataset, std::span<const hsize_t> dims,
                            hid_t file_type, hid_t memory_type, const void* values,
-                           std::size_t count, std::string_view unit, const Part* part) {
+                           std::size_t count, std::string_view unit, const Part* part,
+                           const Rows* rows) {
   const std::string where = "'" + path_ + ":/" + dataset + "'";
   hsize_t expected = 1;
   for (const hsize_t d : part ? part->count : dims) expected *= d;
+  if (rows) {
+    hsize_t held = 0;
+    for (std::size_t k = 1; k < rows->runs.size(); k += 2) held += rows->runs[k];
+    expected = dims.empty() || dims[0] == 0 ? 0 : expected / dims[0] * held;
+  }
   if (expected != count)
     throw Error(ExitCode::bad_input, "HDF5: " + where + ": " + std::to_string(count) +
                                          " values for a dataspace of " + std::to_string(expected));
@@ -87,6 +105,22 @@ void OutputFile::write_raw(const std::string& dataset, std::span<const hsize_t> 
       fail("a part of " + where);
     if (H5Dwrite(set.get(), memory_type, mine.get(), space.get(), part->transfer, values) < 0)
       fail("cannot write a part of dataset " + where);
+  } else if (rows) {
+    const hsize_t held[] = {std::max<hsize_t>(count, 1)};
+    const DataspaceHandle mine(H5Screate_simple(1, held, nullptr),
+                               "dataspace of the rows of " + where);
+    if (H5Sselect_none(space.get()) < 0) fail("the rows of " + where);
+    if (count == 0 && H5Sselect_none(mine.get()) < 0) fail("no row of " + where);
+    std::vector<hsize_t> start(dims.size(), 0), block(dims.begin(), dims.end());
+    for (std::size_t k = 0; k + 1 < rows->runs.size(); k += 2) {
+      start[0] = rows->runs[k];
+      block[0] = rows->runs[k + 1];
+      if (H5Sselect_hyperslab(space.get(), H5S_SELECT_OR, start.data(), nullptr, block.data(),
+                              nullptr) < 0)
+        fail("rows of " + where);
+    }
+    if (H5Dwrite(set.get(), memory_type, mine.get(), space.get(), rows->transfer, values) < 0)
+      fail("cannot write the rows of dataset " + where);
   } else if (count > 0 &&
              H5Dwrite(set.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) < 0) {
     fail("cannot write dataset " + where);

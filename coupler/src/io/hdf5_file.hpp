@@ -85,6 +85,18 @@ class OutputFile {
              std::span<const double> values, std::string_view unit = {});
   void write(const std::string& dataset, std::span<const hsize_t> dims,
              std::span<const std::int64_t> values);
+  // This process's rows of a dataset of `dims` (rows along the first
+  // dimension): `runs` holds (first row, rows) pairs in increasing order,
+  // the values are those rows one after the other; written with `transfer`
+  // (collective in a decomposed run, where a process may hold no row).
+  struct Rows {
+    std::span<const hsize_t> runs;
+    hid_t transfer = H5P_DEFAULT;
+  };
+  void write(const std::string& dataset, std::span<const hsize_t> dims, const Rows& rows,
+             std::span<const double> values, std::string_view unit = {});
+  void write(const std::string& dataset, std::span<const hsize_t> dims, const Rows& rows,
+             std::span<const std::int64_t> values);
   void set_attribute(const std::string& name, double value);
   void set_attribute(const std::string& name, std::int64_t value);
   void set_attribute(const std::string& name, std::string_view value);
@@ -96,7 +108,7 @@ class OutputFile {
   void create_groups_above(const std::string& dataset, const std::string& where);
   void write_raw(const std::string& dataset, std::span<const hsize_t> dims, hid_t file_type,
                  hid_t memory_type, const void* values, std::size_t count, std::string_view unit,
-                 const Part* part = nullptr);
+                 const Part* part = nullptr, const Rows* rows = nullptr);
   void set_scalar_attribute(hid_t object, const std::string& name, hid_t file_type,
                             hid_t memory_type, const void* value);
 

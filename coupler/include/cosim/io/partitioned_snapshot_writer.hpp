@@ -3,7 +3,9 @@
 #include <mpi.h>
 
 #include <array>
+#include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -48,6 +50,45 @@ class PartitionedSnapshotWriter final : public SnapshotSink {
   std::string base_name_;
   Mesh mesh_;
   std::array<decomposition::Range, 3> block_;
+  std::size_t written_ = 0;
+  std::vector<std::string> grids_;  // rank 0: the <Grid> of every snapshot
+};
+
+// The snapshots of a point cloud whose points are spread over the ranks of
+// a communicator (a decomposed MPM, issue 27): each rank passes its points
+// and their rows in the whole cloud, and each snapshot is one HDF5 file the
+// ranks write together, the same as SnapshotWriter's of the whole moving
+// cloud (geometry stored in every snapshot). Rank 0 keeps the index.
+class PartitionedPointCloudWriter {
+ public:
+  // A cloud of `points` points of dimension `dim` (2 or 3) named
+  // `mesh_name`. Collective. Throws InputError for another dimension or a
+  // bad base name, or when the ranks name different files.
+  PartitionedPointCloudWriter(MPI_Comm comm, std::filesystem::path directory, std::string base_name,
+                              std::string mesh_name, int dim, std::size_t points);
+  ~PartitionedPointCloudWriter();
+  PartitionedPointCloudWriter(const PartitionedPointCloudWriter&) = delete;
+  PartitionedPointCloudWriter& operator=(const PartitionedPointCloudWriter&) = delete;
+
+  // Appends a snapshot at `time` [s] of this rank's points: `rows`, their
+  // rows in the whole cloud (increasing), `positions` (rows x dim) and each
+  // field's rows x components values. Every rank calls it with the same
+  // fields (collective); InputError naming a field of another size.
+  void write(double time, std::span<const std::uint64_t> rows, std::span<const double> positions,
+             const SnapshotFields& fields);
+
+  std::size_t snapshots_written() const { return written_; }
+  std::filesystem::path index_path() const;
+  std::filesystem::path snapshot_path(std::size_t step) const;
+
+ private:
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  int rank_ = 0;
+  std::filesystem::path directory_;
+  std::string base_name_;
+  std::string mesh_name_;
+  int dim_;
+  std::size_t points_;
   std::size_t written_ = 0;
   std::vector<std::string> grids_;  // rank 0: the <Grid> of every snapshot
 };

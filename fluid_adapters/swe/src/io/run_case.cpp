@@ -32,6 +32,7 @@
 #include "swe/two_phase/two_phase_exchange.hpp"
 
 #ifdef SWE_WITH_MPI
+#include "cosim/runtime/mpi_session.hpp"
 #include "swe/parallel/decomposed_run.hpp"
 #endif
 
@@ -632,9 +633,9 @@ CaseDescription read_case(const RunOptions& options, cosim::RunSummary& summary)
 // its block into each snapshot; rank r keeps its own log and summary in
 // ranks/rank_<r>/. The job ends with the largest exit code of
 // its ranks; a rank that fails while the others still run ends them all
-// (MpiSession::finish).
+// (cosim::runtime::MpiSession::finish).
 int run_decomposed(const RunOptions& options, const cosim::CouplingEndpoint& endpoint) {
-  const parallel::MpiSession mpi;
+  const cosim::runtime::MpiSession mpi;
   const bool root = mpi.rank() == 0;
   int prepared = 0;
   if (root) {
@@ -677,7 +678,7 @@ int run_decomposed(const RunOptions& options, const cosim::CouplingEndpoint& end
 
 int run_case(const RunOptions& options, const cosim::CouplingEndpoint& endpoint) {
 #ifdef SWE_WITH_MPI
-  if (endpoint.is_standalone() && parallel::ranks_from_launcher() > 1)
+  if (endpoint.is_standalone() && cosim::runtime::ranks_from_launcher() > 1)
     return run_decomposed(options, endpoint);
 #endif
   cosim::prepare_output_directory(options.output, options.reuse);

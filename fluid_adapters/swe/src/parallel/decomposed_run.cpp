@@ -2,49 +2,12 @@
 
 #include <fmt/format.h>
 
-#include <cstdlib>
 #include <string>
-#include <thread>
 
 #include "cosim/error.hpp"
 #include "cosim/io/partitioned_snapshot_writer.hpp"
 
 namespace swe::parallel {
-
-int ranks_from_launcher() {
-  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
-    if (const char* value = std::getenv(variable)) return std::max(1, std::atoi(value));
-  return 1;
-}
-
-MpiSession::MpiSession() {
-  int provided = 0;
-  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks_);
-}
-
-MpiSession::~MpiSession() {
-  MPI_Finalize();
-}
-
-int MpiSession::finish(int code, std::chrono::milliseconds grace) const {
-  MPI_Request all_ended = MPI_REQUEST_NULL;
-  MPI_Ibarrier(MPI_COMM_WORLD, &all_ended);
-  const auto deadline = std::chrono::steady_clock::now() + grace;
-  for (int ended = 0;;) {
-    MPI_Test(&all_ended, &ended, MPI_STATUS_IGNORE);
-    if (ended) break;
-    if (code != 0 && std::chrono::steady_clock::now() > deadline) {
-      MPI_Abort(MPI_COMM_WORLD, code);
-      std::_Exit(code);
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  int job = code;
-  MPI_Allreduce(&code, &job, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  return job;
-}
 
 namespace {
 

@@ -2,7 +2,6 @@
 
 #include <mpi.h>
 
-#include <chrono>
 #include <memory>
 
 #include "swe/case/case_description.hpp"
@@ -15,32 +14,6 @@
 // process: each snapshot collectively into one HDF5 file, the tables by
 // rank 0 from reductions. No rank holds more than its block.
 namespace swe::parallel {
-
-// The ranks mpirun started (from its environment, before MPI starts); 1
-// outside mpirun.
-int ranks_from_launcher();
-
-// MPI for the run: initialised by the constructor, finalised by the
-// destructor.
-class MpiSession {
- public:
-  MpiSession();
-  ~MpiSession();
-  MpiSession(const MpiSession&) = delete;
-  MpiSession& operator=(const MpiSession&) = delete;
-
-  int rank() const { return rank_; }
-  int ranks() const { return ranks_; }
-  // The end of the run on this rank with exit code `code`: waits for every
-  // rank to end and returns the largest code. A rank that failed waits at
-  // most `grace` for the others, then ends them all with its code
-  // (MPI_Abort): failing alone, it would leave them waiting in a
-  // collective forever.
-  int finish(int code, std::chrono::milliseconds grace = std::chrono::seconds(2)) const;
-
- private:
-  int rank_ = 0, ranks_ = 1;
-};
 
 // This rank's block of the case's grid, and the reductions over the ranks.
 // Throws cosim::InputError, naming the case file and key, for a case that

@@ -1,0 +1,35 @@
+#pragma once
+
+#include <chrono>
+
+// A solver started by `mpirun -np N` on its own (issue 27): whether it was,
+// and MPI for the run, with an end that no rank can leave hanging.
+namespace cosim::runtime {
+
+// The ranks mpirun started (from its environment, before MPI starts); 1
+// outside mpirun.
+int ranks_from_launcher();
+
+// MPI for the run: initialised by the constructor, finalised by the
+// destructor.
+class MpiSession {
+ public:
+  MpiSession();
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+
+  int rank() const { return rank_; }
+  int ranks() const { return ranks_; }
+  // The end of the run on this rank with exit code `code`: waits for every
+  // rank to end and returns the largest code. A rank that failed waits at
+  // most `grace` for the others, then ends them all with its code
+  // (MPI_Abort): failing alone, it would leave them waiting in a
+  // collective forever.
+  int finish(int code, std::chrono::milliseconds grace = std::chrono::seconds(2)) const;
+
+ private:
+  int rank_ = 0, ranks_ = 1;
+};
+
+}  // namespace cosim::runtime
