@@ -31,6 +31,8 @@ int main(int argc, char** argv) {
              options.reuse = line.reuse;
              if (mpm::is_depth_averaged_case(line.config))
                return mpm::run_depth_averaged_case(options, line.endpoint);
+             if (line.endpoint.is_standalone() && mpm::started_on_several_ranks())
+               return mpm::run_decomposed_case(options);
              // Coupled (an endpoint from `cosim run`), or standalone in
              // windows: the coupling concept's observers drive a
              // cosim::Participant alongside the time loop.

@@ -27,6 +27,16 @@ void append(std::vector<double>& out, const Vec<Dim>& v) {
   for (int d = 0; d < Dim; ++d) out.push_back(v[d]);
 }
 
+// Every point's seeded position, by id (the decomposed run's ranks hold
+// only theirs).
+template <int Dim>
+std::vector<Vec<Dim>> seeded_positions(const CaseDescription& description) {
+  std::vector<Vec<Dim>> positions;
+  for (const BodySpec& body : description.bodies)
+    for (const Vec3d& x : body.positions) positions.push_back(x.head<Dim>());
+  return positions;
+}
+
 }  // namespace
 
 Tensor logarithmic_strain(const Tensor& deformation_gradient) {
@@ -39,8 +49,14 @@ Tensor logarithmic_strain(const Tensor& deformation_gradient) {
 template <int Dim>
 ParticleSnapshotWriter<Dim>::ParticleSnapshotWriter(const std::filesystem::path& directory,
                                                     const Solver<Dim>& solver)
-    : initial_position_(solver.particles().position),
-      writer_(directory, "particles", point_cloud(solver.particles())) {}
+    : initial_position_(solver.particles().position) {
+  writer_.emplace(directory, "particles", point_cloud(solver.particles()));
+}
+
+template <int Dim>
+ParticleSnapshotWriter<Dim>::ParticleSnapshotWriter(std::unique_ptr<cosim::PointCloudSink> ranks,
+                                                    const Solver<Dim>& solver)
+    : initial_position_(seeded_positions<Dim>(solver.description())), ranks_(std::move(ranks)) {}
 
 template <int Dim>
 void ParticleSnapshotWriter<Dim>::write(const Solver<Dim>& solver) {
@@ -66,6 +82,7 @@ void ParticleSnapshotWriter<Dim>::take(const Solver<Dim>& solver, Snapshot& snap
   const Particles<Dim>& p = solver.particles();
   const std::size_t n = p.size();
   snapshot.time = solver.time();
+  snapshot.id = p.id;
   snapshot.position.clear();
   for (const auto& x : p.position) append<Dim>(snapshot.position, x);
   snapshot.volume = p.volume;
@@ -84,7 +101,7 @@ void ParticleSnapshotWriter<Dim>::take(const Solver<Dim>& solver, Snapshot& snap
   for (std::size_t i = 0; i < n; ++i) append<Dim>(velocity, p.velocity[i]);
   auto& displacement = field("displacement", Dim, "m");
   for (std::size_t i = 0; i < n; ++i)
-    append<Dim>(displacement, Vec<Dim>(p.position[i] - initial_position_[i]));
+    append<Dim>(displacement, Vec<Dim>(p.position[i] - initial_position_[p.id[i]]));
   auto& stress = field("stress", 6, "Pa");
   for (std::size_t i = 0; i < n; ++i) append(stress, to_voigt(solver.total_stress(i)));
   auto& effective_stress = field("effective_stress", 6, "Pa");
@@ -109,6 +126,15 @@ void ParticleSnapshotWriter<Dim>::take(const Solver<Dim>& solver, Snapshot& snap
 
 template <int Dim>
 void ParticleSnapshotWriter<Dim>::write(const Snapshot& snapshot) {
+  if (ranks_) {
+    cosim::SnapshotFields fields;
+    for (std::size_t k = 0; k < snapshot.field_count; ++k) {
+      const Field& f = snapshot.fields[k];
+      fields.emplace(f.name, cosim::FieldView{f.values, f.components, f.unit});
+    }
+    ranks_->write(snapshot.time, snapshot.id, snapshot.position, fields);
+    return;
+  }
   cosim::PointCloud cloud;
   cloud.dim = Dim;
   cloud.positions = snapshot.position;
@@ -118,7 +144,7 @@ void ParticleSnapshotWriter<Dim>::write(const Snapshot& snapshot) {
     const Field& f = snapshot.fields[k];
     fields.emplace(f.name, cosim::FieldView{f.values, f.components, f.unit});
   }
-  writer_.write(snapshot.time, cosim::Mesh{"particles", std::move(cloud)}, fields);
+  writer_->write(snapshot.time, cosim::Mesh{"particles", std::move(cloud)}, fields);
 }
 
 template class ParticleSnapshotWriter<2>;

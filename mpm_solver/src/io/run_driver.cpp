@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <memory>
 #include <optional>
 
 #include "cosim/error.hpp"
@@ -23,6 +25,14 @@
 #include "mpm/io/grid_snapshot_writer.hpp"
 #include "mpm/io/particle_snapshot_writer.hpp"
 #include "mpm/io/probe_recorder.hpp"
+
+#ifdef MPM_WITH_MPI
+#include <mpi.h>
+
+#include "cosim/io/partitioned_snapshot_writer.hpp"
+#include "cosim/runtime/mpi_session.hpp"
+#include "mpm/parallel/mpi_grid_partition.hpp"
+#endif
 
 namespace mpm {
 
@@ -103,15 +113,24 @@ struct LoopProgress {
   double max_stable = 0.0;
 };
 
+// How a rank of a decomposed run (issue 27) joins the others: its part of
+// the grid, and the particle snapshots the ranks write together.
+template <int Dim>
+struct RunRanks {
+  std::shared_ptr<GridPartition<Dim>> partition;
+  std::function<std::unique_ptr<cosim::PointCloudSink>()> particle_snapshots;
+};
+
 template <int Dim>
 class CaseRun {
  public:
   CaseRun(const CaseDescription& description, const RunOptions& options, cosim::RunSummary& summary,
-          std::unique_ptr<StepObserver<Dim>> observer)
+          std::unique_ptr<StepObserver<Dim>> observer, RunRanks<Dim> ranks = {})
       : options_(options),
         summary_(summary),
         observer_(std::move(observer)),
-        solver_(description),
+        ranks_(std::move(ranks)),
+        solver_(description, ranks_.partition),
         end_time_(description.time.end_time),
         min_time_step_(description.time.min_time_step),
         progress_{cosim::OutputSchedule(description.output.every, end_time_),
@@ -142,18 +161,24 @@ class CaseRun {
       finish_outputs();
       if (observer_) observer_->finalize();
     } catch (const std::exception& e) {
-      record_end();
+      // On a rank of a decomposed run the others may be stepping still: no
+      // collective sums now (MpiSession::finish ends them).
+      record_end(/*together=*/!ranks_.partition);
       if (observer_) observer_->abort(e.what());
       throw;
     }
-    record_end();
+    record_end(/*together=*/true);
     spdlog::info("completed: t = {:.6g} s in {} steps; {} particle snapshots", solver_.time(),
                  solver_.step_count(), particles_->snapshots_written());
   }
 
  private:
   void open_outputs() {
-    particles_.emplace(options_.output, solver_);
+    if (ranks_.particle_snapshots) {
+      particles_.emplace(ranks_.particle_snapshots(), solver_);
+    } else {
+      particles_.emplace(options_.output, solver_);
+    }
     if (!solver_.description().probes.empty())
       probes_.emplace(options_.output / "probes.csv", solver_);
     if (solver_.description().output.grid) {
@@ -340,16 +365,19 @@ class CaseRun {
     }
   }
 
-  void record_end() noexcept {
+  // `together`: every rank of a decomposed run is here, so the totals can
+  // be summed over them.
+  void record_end(bool together) noexcept {
     try {
-      record_conserved(summary_, solver_.totals(), solver_.conducts_heat(), false);
+      if (together) record_conserved(summary_, solver_.totals(), solver_.conducts_heat(), false);
       const auto steps = solver_.step_count();
       summary_.set_steps(static_cast<std::int64_t>(steps));
       const double advance = summary_.phases().seconds("advance");
-      const double updates =
-          static_cast<double>(steps_taken_) * static_cast<double>(solver_.particles().size());
+      double particles = static_cast<double>(solver_.particles().size());
+      if (together && ranks_.partition) ranks_.partition->sum(std::span<double>(&particles, 1));
+      const double updates = static_cast<double>(steps_taken_) * particles;
       summary_.set_metric("simulated_time", solver_.time(), "s");
-      summary_.set_metric("particles", static_cast<double>(solver_.particles().size()), "1");
+      summary_.set_metric("particles", particles, "1");
       summary_.set_metric("particle_updates_per_second", advance > 0.0 ? updates / advance : 0.0,
                           "1/s");
       if (steps > 0) {
@@ -379,6 +407,7 @@ class CaseRun {
   const RunOptions& options_;
   cosim::RunSummary& summary_;
   std::unique_ptr<StepObserver<Dim>> observer_;
+  RunRanks<Dim> ranks_;
   Solver<Dim> solver_;
   double end_time_;
   double min_time_step_;
@@ -437,7 +466,133 @@ void run_loaded(const RunOptions& options, const StepObservers& observers,
   }
 }
 
+#ifdef MPM_WITH_MPI
+// What a decomposed run cannot do yet; each refusal names the case file and
+// the key (exit 2).
+void refuse_what_ranks_cannot_run(const CaseDescription& c, int ranks) {
+  const auto refuse = [&](const char* key, const char* what) {
+    throw cosim::InputError(fmt::format("{}: key '{}': {} runs on one process; mpirun started {}",
+                                        c.file.string(), key, what, ranks));
+  };
+  if (c.thermal.enabled) refuse("thermal", "a case that conducts heat");
+  if (!c.probes.empty()) refuse("probes", "a case with probes");
+  if (c.output.grid) refuse("output.grid", "a case with grid snapshots");
+  if (c.time.window > 0.0) refuse("time.window", "a case in coupling windows");
+}
+
+template <int Dim>
+void run_decomposed_dimension(const CaseDescription& description, const RunOptions& options,
+                              cosim::RunSummary& summary, const std::vector<int>& cuts) {
+  std::size_t points = 0;
+  for (const auto& b : description.bodies) points += b.positions.size();
+  const auto last = static_cast<Eigen::Index>(Dim - 1);
+  RunRanks<Dim> ranks;
+  ranks.partition = std::make_shared<parallel::MpiGridPartition<Dim>>(
+      MPI_COMM_WORLD, cuts, description.grid.origin[last], description.grid.spacing[last]);
+  ranks.particle_snapshots = [&options, points] {
+    return std::make_unique<cosim::PartitionedPointCloudWriter>(
+        MPI_COMM_WORLD, options.output, "particles", "particles", Dim, points);
+  };
+  std::optional<CaseRun<Dim>> run;
+  {
+    auto scope = summary.phases().measure("setup");
+    run.emplace(description, options, summary, nullptr, std::move(ranks));
+  }
+  run->run();
+}
+
+// mpm_solver standalone under `mpirun -np N`, N > 1 (issue 27): the grid's
+// cell rows cut into N parts balanced by the seeded points; rank 0 prepares
+// the output directory and writes the summary; every rank writes its points
+// into each particle snapshot; rank r keeps its own log and summary in
+// ranks/rank_<r>/. The job ends with the largest exit code of its ranks; a
+// rank that fails while the others still run ends them all
+// (cosim::runtime::MpiSession::finish).
+int run_decomposed(const RunOptions& options) {
+  const cosim::runtime::MpiSession mpi;
+  const bool root = mpi.rank() == 0;
+  int prepared = 0;
+  if (root) {
+    try {
+      cosim::prepare_output_directory(options.output, options.reuse);
+    } catch (const cosim::Error& e) {
+      std::fprintf(stderr, "mpm_solver: %s\n", e.what());
+      prepared = cosim::to_int(e.code());
+    }
+  }
+  MPI_Bcast(&prepared, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  if (prepared != 0) return prepared;
+  RunOptions mine = options;
+  if (!root) {
+    mine.output = options.output / "ranks" / fmt::format("rank_{}", mpi.rank());
+    cosim::create_output_directory(mine.output);
+    mine.verbosity = cosim::Verbosity::quiet;
+  }
+  cosim::init_logging(mine.output, "mpm_solver", mine.verbosity);
+  cosim::RunSummary summary(mine.output, "mpm_solver");
+  summary.write();
+  const int code = cosim::run_and_finish(summary, [&] {
+    CaseDescription description;
+    {
+      auto scope = summary.phases().measure("setup");
+      description = load_case(options.config);
+      summary.set_config(std::filesystem::absolute(options.config),
+                         cosim::hash_file(options.config));
+    }
+    refuse_what_ranks_cannot_run(description, mpi.ranks());
+    std::vector<int> cuts;
+    try {
+      cuts = parallel::balanced_row_cuts(description, mpi.ranks());
+    } catch (const cosim::InputError& e) {
+      throw cosim::InputError(
+          fmt::format("{}: key 'grid.cells': {}", description.file.string(), e.what()));
+    }
+    const int threads = options.threads >= 0 ? options.threads : description.threads;
+    if (threads > 0) omp_set_num_threads(threads);
+    const double imbalance = parallel::row_imbalance(description, cuts);
+    nlohmann::json section = case_section(description);
+    section["ranks"] = mpi.ranks();
+    section["row_cuts"] = cuts;
+    section["point_imbalance"] = imbalance;
+    summary.set_section("case", section);
+    summary.set_section("size", description.size.to_json());
+    summary.write();
+    spdlog::info(
+        "case '{}' ({}): {}D on {} ranks, cell rows cut at {} (points: largest part {:.3f} of "
+        "the mean), {} threads each, end time {} s",
+        description.name, options.config.string(), description.dimension, mpi.ranks(),
+        fmt::join(cuts, ", "), imbalance, omp_get_max_threads(), description.time.end_time);
+    spdlog::info("rank {}: cell rows [{}, {})", mpi.rank(),
+                 cuts[static_cast<std::size_t>(mpi.rank())],
+                 cuts[static_cast<std::size_t>(mpi.rank()) + 1]);
+    if (description.dimension == 2) {
+      run_decomposed_dimension<2>(description, options, summary, cuts);
+    } else {
+      run_decomposed_dimension<3>(description, options, summary, cuts);
+    }
+  });
+  spdlog::default_logger()->flush();
+  return mpi.finish(code);
+}
+#endif
+
 }  // namespace
+
+bool started_on_several_ranks() {
+#ifdef MPM_WITH_MPI
+  return cosim::runtime::ranks_from_launcher() > 1;
+#else
+  return false;
+#endif
+}
+
+int run_decomposed_case(const RunOptions& options) {
+#ifdef MPM_WITH_MPI
+  return run_decomposed(options);
+#else
+  return run_case(options);
+#endif
+}
 
 int run_case(const RunOptions& options, const StepObservers& observers) {
   cosim::prepare_output_directory(options.output, options.reuse);

@@ -59,7 +59,7 @@ std::vector<int> balanced_row_cuts(const CaseDescription& description, int ranks
   const std::vector<double> weights = points_per_slab(description);
   if (static_cast<int>(weights.size()) < ranks)
     throw cosim::InputError(fmt::format(
-        "grid.cells: {} cell rows along the last direction make {} slabs of {} rows, fewer "
+        "{} cell rows along the last direction make {} slabs of {} rows, fewer "
         "than the {} ranks (each rank needs at least one slab)",
         rows, weights.size(), ParticleBins::slab_rows, ranks));
   const auto slab_cuts = cosim::decomposition::balanced_cuts(weights, ranks, 1);

@@ -59,7 +59,7 @@ class PartitionedSnapshotWriter final : public SnapshotSink {
 // and their rows in the whole cloud, and each snapshot is one HDF5 file the
 // ranks write together, the same as SnapshotWriter's of the whole moving
 // cloud (geometry stored in every snapshot). Rank 0 keeps the index.
-class PartitionedPointCloudWriter {
+class PartitionedPointCloudWriter final : public PointCloudSink {
  public:
   // A cloud of `points` points of dimension `dim` (2 or 3) named
   // `mesh_name`. Collective. Throws InputError for another dimension or a
@@ -75,9 +75,9 @@ class PartitionedPointCloudWriter {
   // field's rows x components values. Every rank calls it with the same
   // fields (collective); InputError naming a field of another size.
   void write(double time, std::span<const std::uint64_t> rows, std::span<const double> positions,
-             const SnapshotFields& fields);
+             const SnapshotFields& fields) override;
 
-  std::size_t snapshots_written() const { return written_; }
+  std::size_t snapshots_written() const override { return written_; }
   std::filesystem::path index_path() const;
   std::filesystem::path snapshot_path(std::size_t step) const;
 

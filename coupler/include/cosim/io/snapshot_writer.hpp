@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <span>
@@ -29,6 +30,18 @@ class SnapshotSink {
   virtual ~SnapshotSink() = default;
   // Appends a snapshot at `time` [s] (see the writers for the fields' sizes).
   virtual void write(double time, const SnapshotFields& fields) = 0;
+  virtual std::size_t snapshots_written() const = 0;
+};
+
+// Where the snapshots of a moving point cloud spread over ranks go
+// (PartitionedPointCloudWriter): each rank passes its points, their rows in
+// the whole cloud (increasing), positions (rows x dim) and each field's rows
+// x components values; every rank calls write() together.
+class PointCloudSink {
+ public:
+  virtual ~PointCloudSink() = default;
+  virtual void write(double time, std::span<const std::uint64_t> rows,
+                     std::span<const double> positions, const SnapshotFields& fields) = 0;
   virtual std::size_t snapshots_written() const = 0;
 };
 

@@ -2,6 +2,8 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include "cosim/io/snapshot_writer.hpp"
@@ -17,11 +19,16 @@ namespace mpm {
 //   (logarithmic (Hencky) strain 1/2 ln(F F^T), Tensor6; plane strain
 //   F_zz = 1), plastic_strain [-], damage [-], porosity [-],
 //   pore_pressure [Pa], mass [kg], volume [m^3], body (index).
-// In 2D, mass and volume are per unit depth.
+// In 2D, mass and volume are per unit depth. On a rank of a decomposed run
+// (issue 27) each snapshot's file is written by all ranks together, each
+// its points at their ids' rows: the files of one process.
 template <int Dim>
 class ParticleSnapshotWriter {
  public:
   ParticleSnapshotWriter(const std::filesystem::path& directory, const Solver<Dim>& solver);
+  // The snapshots of a decomposed run, written through `ranks` (a
+  // cosim::PartitionedPointCloudWriter).
+  ParticleSnapshotWriter(std::unique_ptr<cosim::PointCloudSink> ranks, const Solver<Dim>& solver);
 
   void write(const Solver<Dim>& solver);
 
@@ -34,8 +41,9 @@ class ParticleSnapshotWriter {
   void drop_held() { held_ = 0; }
   std::size_t held() const { return held_; }
 
-  std::size_t snapshots_written() const { return writer_.snapshots_written(); }
-  std::filesystem::path index_path() const { return writer_.index_path(); }
+  std::size_t snapshots_written() const {
+    return writer_ ? writer_->snapshots_written() : ranks_->snapshots_written();
+  }
 
  private:
   // What one snapshot writes: the point cloud and its fields, element-major.
@@ -47,6 +55,7 @@ class ParticleSnapshotWriter {
   };
   struct Snapshot {
     double time = 0.0;
+    std::vector<std::uint64_t> id;
     std::vector<double> position;
     std::vector<double> volume;
     std::vector<Field> fields;  // the first field_count are this snapshot's
@@ -55,8 +64,9 @@ class ParticleSnapshotWriter {
   void take(const Solver<Dim>& solver, Snapshot& snapshot) const;
   void write(const Snapshot& snapshot);
 
-  std::vector<Vec<Dim>> initial_position_;
-  cosim::SnapshotWriter writer_;
+  std::vector<Vec<Dim>> initial_position_;  // by id
+  std::optional<cosim::SnapshotWriter> writer_;
+  std::unique_ptr<cosim::PointCloudSink> ranks_;
   std::vector<Snapshot> snapshots_;  // the first held_ are held
   std::size_t held_ = 0;
 };

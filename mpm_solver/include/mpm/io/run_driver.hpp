@@ -34,4 +34,17 @@ struct RunOptions {
 // repeat; outputs inside such a window are written once it is complete.
 int run_case(const RunOptions& options, const StepObservers& observers = {});
 
+// The same run, standalone, by each rank mpirun started (issue 27): the grid
+// cut into slabs of cell rows, one per rank, the points migrating between
+// them, and the files of a run on one process (particle snapshots written
+// by all ranks together; summary.json by rank 0; rank r's log and summary
+// in <output>/ranks/rank_<r>/). The totals in the summary are summed over
+// the ranks (equal to round-off). Cases with heat conduction, probes, grid
+// snapshots or coupling windows are refused (exit 2). Without MPI in the
+// build, run_case.
+int run_decomposed_case(const RunOptions& options);
+// Whether mpirun started this process as one of several ranks (false
+// without MPI in the build).
+bool started_on_several_ranks();
+
 }  // namespace mpm

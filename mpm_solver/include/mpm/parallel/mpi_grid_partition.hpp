@@ -18,8 +18,7 @@ namespace mpm::parallel {
 // that the weight of the points seeded in each part is as even as the slabs
 // allow (cosim::decomposition::balanced_cuts). Returns ranks + 1 rows, 0
 // first and the row count last; rank r owns [cuts[r], cuts[r + 1]).
-// Throws cosim::InputError naming `grid.cells` when the grid has fewer
-// slabs than ranks.
+// Throws cosim::InputError when the grid has fewer slabs than ranks.
 std::vector<int> balanced_row_cuts(const CaseDescription& description, int ranks);
 
 // The largest part's point count over the mean part's, for the cuts above.

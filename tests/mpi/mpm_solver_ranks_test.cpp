@@ -1,0 +1,145 @@
+// mpm_solver standalone under `mpirun -np N` (label mpi): a sand column
+// collapsing (GIMP, MUSL, Mohr-Coulomb), on 1 process and on 2, 3 and 4
+// ranks, must write the same particle snapshots bit for bit (every dataset
+// and attribute, written together by the ranks) and the same XDMF index,
+// the same steps, and the totals of one process to round-off (the ranks sum
+// them in another order); cases a decomposed run cannot take, and an output
+// directory already in use, are refused with exit 2, nothing lost.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "hdf5_contents.hpp"
+#include "replaced_text.hpp"
+#include "run_process.hpp"
+#include "text_files.hpp"
+
+namespace cosim::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* column_case = R"(kind: mpm_case
+name: sand_column_on_ranks
+dimension: 2
+grid: {origin: [0, 0], upper: [0.5, 0.25], cells: [50, 25]}
+shape: gimp
+scheme: musl
+time: {end_time: 0.06, safety_factor: 0.4}
+gravity: [0, -9.81]
+materials:
+  sand:
+    type: mohr_coulomb
+    density: 1800
+    youngs_modulus: 2.0e6
+    poisson_ratio: 0.3
+    friction_angle: 30
+    dilation_angle: 0
+    cohesion: 0
+bodies:
+  - name: column
+    material: sand
+    geometry: {box: {min: [0, 0], max: [0.1, 0.2]}}
+    particles_per_cell: 2
+    initial_velocity: [0.5, -0.3]
+    geostatic: {}
+boundaries: {x_min: slip, x_max: slip, y_min: fixed, y_max: free}
+output: {every: 0.02}
+threads: 1
+)";
+
+ProcessResult run_mpm(const fs::path& config, const fs::path& output, int ranks) {
+  std::vector<std::string> args;
+  if (ranks > 0) args = {MPIEXEC, "--oversubscribe", "-np", std::to_string(ranks)};
+  for (const std::string& a : {binary("mpm_solver").string(), std::string("--config"),
+                               config.string(), std::string("--output"), output.string()})
+    args.push_back(a);
+  return run(args, std::chrono::seconds(120));
+}
+
+fs::path write_case(const fs::path& dir, const std::string& text) {
+  fs::create_directories(dir);
+  const fs::path file = dir / "case.yaml";
+  write_text(file, text);
+  return file;
+}
+
+TEST(MpmSolverRanks, EveryRankCountWritesTheFilesOfOneProcess) {
+  const fs::path dir = fresh_directory("mpm_solver_ranks");
+  const fs::path config = write_case(dir, column_case);
+  const ProcessResult whole = run_mpm(config, dir / "one_process", 0);
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  const auto reference = nlohmann::json::parse(read_text(dir / "one_process" / "summary.json"));
+  const std::size_t snapshots = reference["metrics"]["snapshots"]["value"].get<std::size_t>();
+  ASSERT_EQ(snapshots, 4u);
+  for (int ranks : {2, 3, 4}) {
+    const fs::path out = dir / ("ranks_" + std::to_string(ranks));
+    const ProcessResult split = run_mpm(config, out, ranks);
+    ASSERT_EQ(split.exit_code, 0) << split.output;
+    EXPECT_EQ(read_text(out / "particles.xdmf"), read_text(dir / "one_process" / "particles.xdmf"))
+        << ranks << " ranks";
+    for (std::size_t s = 0; s < snapshots; ++s) {
+      const std::string file = "particles_00000" + std::to_string(s) + ".h5";
+      EXPECT_EQ(hdf5_contents(out / file), hdf5_contents(dir / "one_process" / file))
+          << file << " on " << ranks << " ranks";
+    }
+    const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+    EXPECT_EQ(summary["steps"], reference["steps"]);
+    EXPECT_EQ(summary["case"]["ranks"], ranks);
+    EXPECT_EQ(summary["metrics"]["particles"]["value"], reference["metrics"]["particles"]["value"]);
+    const double scale =
+        std::abs(reference["conserved"]["gravitational_energy"]["end"].get<double>());
+    for (const char* quantity : {"mass", "momentum_x", "momentum_y", "kinetic_energy",
+                                 "strain_energy", "plastic_dissipation", "energy_balance"})
+      for (const char* when : {"start", "end"})
+        EXPECT_NEAR(summary["conserved"][quantity][when].get<double>(),
+                    reference["conserved"][quantity][when].get<double>(), 1e-12 * scale)
+            << quantity << " at the " << when << " on " << ranks << " ranks";
+    for (int r = 1; r < ranks; ++r)
+      EXPECT_TRUE(fs::exists(out / "ranks" / ("rank_" + std::to_string(r)) / "log.txt"));
+  }
+}
+
+void expect_refused(const std::string& case_text, const std::string& key, int ranks) {
+  const fs::path dir = fresh_directory("mpm_solver_ranks_refused");
+  const fs::path config = write_case(dir, case_text);
+  const ProcessResult result = run_mpm(config, dir / "run", ranks);
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  const std::string summary = read_text(dir / "run" / "summary.json");
+  EXPECT_NE(summary.find("bad_input"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("case.yaml: key '" + key + "'"), std::string::npos) << summary;
+  EXPECT_FALSE(fs::exists(dir / "run" / "particles_000000.h5"));
+}
+
+TEST(MpmSolverRanks, RefusesWhatADecomposedRunCannotTake) {
+  expect_refused(std::string(column_case) +
+                     "probes:\n  - {name: toe, body: column, position: "
+                     "[0.095, 0.005]}\n",
+                 "probes", 2);
+  expect_refused(
+      replaced(column_case, "output: {every: 0.02}", "output: {every: 0.02, grid: true}"),
+      "output.grid", 2);
+  expect_refused(replaced(column_case, "    cohesion: 0\n",
+                          "    cohesion: 0\n    specific_heat: 800\n    thermal_conductivity: 2\n"),
+                 "thermal", 2);
+  // 25 rows make 7 slabs of 4 rows: not enough for 8 ranks.
+  expect_refused(column_case, "grid.cells", 8);
+}
+
+TEST(MpmSolverRanks, LeavesAnOutputDirectoryInUseAsItWas) {
+  const fs::path dir = fresh_directory("mpm_solver_ranks_in_use");
+  const fs::path config = write_case(dir, column_case);
+  fs::create_directories(dir / "run");
+  write_text(dir / "run" / "earlier.txt", "an earlier run's file\n");
+  const ProcessResult result = run_mpm(config, dir / "run", 2);
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_EQ(read_text(dir / "run" / "earlier.txt"), "an earlier run's file\n");
+  EXPECT_FALSE(fs::exists(dir / "run" / "ranks"));
+  EXPECT_FALSE(fs::exists(dir / "run" / "summary.json"));
+}
+
+}  // namespace
+}  // namespace cosim::testing
