@@ -29,34 +29,6 @@ std::size_t block_cells(const std::array<decomposition::Range, 3>& block) {
   return static_cast<std::size_t>(block[0].size() * block[1].size() * block[2].size());
 }
 
-// The communicator of a partitioned writer (a duplicate of `comm`) once
-// every rank has checked that all name the same files, and the directory
-// exists (collective).
-MPI_Comm shared_output(MPI_Comm comm, const fs::path& directory, const std::string& base_name) {
-  if (base_name.empty() || base_name.find('/') != std::string::npos)
-    throw InputError("snapshot base name '" + base_name + "' is empty or contains '/'");
-  MPI_Comm shared = MPI_COMM_NULL;
-  MPI_Comm_dup(comm, &shared);
-  int rank = 0;
-  MPI_Comm_rank(shared, &rank);
-  // Ranks that name different files would wait forever in MPI-IO's open
-  // (Open MPI's OMPIO, when the open fails on some of them): all refuse now.
-  const std::string where = (directory / base_name).lexically_normal().string();
-  unsigned long long name[2] = {std::hash<std::string>{}(where), 0};
-  name[1] = ~name[0];
-  MPI_Allreduce(MPI_IN_PLACE, name, 2, MPI_UNSIGNED_LONG_LONG, MPI_MAX, shared);
-  if (name[0] != ~name[1]) {
-    MPI_Comm_free(&shared);
-    throw InputError(
-        fmt::format("partitioned snapshots '{}': the ranks name different files (this rank: '{}')",
-                    base_name, where));
-  }
-  hdf5::silence_error_printing();
-  if (rank == 0) create_output_directory(directory);
-  MPI_Barrier(shared);
-  return shared;
-}
-
 // File access through MPI-IO and collective transfers.
 struct CollectiveIo {
   hdf5::PropertyListHandle access, transfer;
@@ -70,15 +42,102 @@ struct CollectiveIo {
   }
 };
 
+// Writes each field under fields/, 2D vectors padded to 3 components, with
+// `dims_of(stored components)` and this rank's `selection` (a Part or Rows).
+template <class Selection, class Dims>
+void write_fields(hdf5::OutputFile& file, const SnapshotFields& fields, Dims&& dims_of,
+                  Selection&& selection_of) {
+  for (const auto& [name, field] : fields) {
+    const int stored = xdmf::stored_components(field.components);
+    const std::vector<hsize_t> dims = dims_of(stored);
+    const auto selection = selection_of(stored);
+    if (stored == field.components)
+      file.write("fields/" + name, dims, selection, field.values, field.unit);
+    else
+      file.write("fields/" + name, dims, selection, xdmf::padded_to_three_components(field.values),
+                 field.unit);
+  }
+}
+
 }  // namespace
+
+class PartitionedFiles {
+ public:
+  PartitionedFiles(MPI_Comm comm, fs::path directory, std::string base_name)
+      : directory_(std::move(directory)), base_name_(std::move(base_name)) {
+    if (base_name_.empty() || base_name_.find('/') != std::string::npos)
+      throw InputError("snapshot base name '" + base_name_ + "' is empty or contains '/'");
+    MPI_Comm_dup(comm, &comm_);
+    MPI_Comm_rank(comm_, &rank_);
+    // Ranks that name different files would wait forever in MPI-IO's open
+    // (Open MPI's OMPIO, when the open fails on some of them): all refuse now.
+    const std::string where = (directory_ / base_name_).lexically_normal().string();
+    unsigned long long name[2] = {std::hash<std::string>{}(where), 0};
+    name[1] = ~name[0];
+    MPI_Allreduce(MPI_IN_PLACE, name, 2, MPI_UNSIGNED_LONG_LONG, MPI_MAX, comm_);
+    if (name[0] != ~name[1]) {
+      MPI_Comm_free(&comm_);
+      throw InputError(fmt::format(
+          "partitioned snapshots '{}': the ranks name different files (this rank: '{}')",
+          base_name_, where));
+    }
+    hdf5::silence_error_printing();
+    if (rank_ == 0) create_output_directory(directory_);
+    MPI_Barrier(comm_);
+  }
+  ~PartitionedFiles() {
+    if (comm_ != MPI_COMM_NULL) MPI_Comm_free(&comm_);
+  }
+  PartitionedFiles(const PartitionedFiles&) = delete;
+  PartitionedFiles& operator=(const PartitionedFiles&) = delete;
+
+  std::size_t written() const { return written_; }
+  fs::path index_path() const { return directory_ / (base_name_ + ".xdmf"); }
+  fs::path snapshot_path(std::size_t step) const {
+    return directory_ / fmt::format("{}_{:06}.h5", base_name_, step);
+  }
+
+  // The next snapshot at `time`: fill(file, transfer) adds its datasets to
+  // the staged file, which every rank opens through MPI-IO; once all have
+  // closed it, rank 0 renames it into place and adds grid(step, file name),
+  // its <Grid>, to the index (collective).
+  template <class Fill, class Grid>
+  void write(double time, Fill&& fill, Grid&& grid) {
+    hdf5::silence_error_printing();
+    const std::size_t step = written_;
+    const fs::path path = snapshot_path(step);
+    const fs::path staged = staging_path(path);
+    {
+      const CollectiveIo io(comm_);
+      hdf5::OutputFile file(staged, io.access.get());
+      file.set_attribute("time", time);
+      file.set_attribute("step", static_cast<std::int64_t>(step));
+      fill(file, io.transfer.get());
+      file.close();
+    }
+    MPI_Barrier(comm_);
+    ++written_;
+    if (rank_ != 0) return;
+    commit_staged_file(staged, path);
+    grids_.push_back(grid(step, path.filename().string()));
+    xdmf::write_temporal_index(index_path(), base_name_, grids_);
+  }
+
+  const std::string& base_name() const { return base_name_; }
+
+ private:
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  int rank_ = 0;
+  fs::path directory_;
+  std::string base_name_;
+  std::size_t written_ = 0;
+  std::vector<std::string> grids_;  // rank 0: the <Grid> of every snapshot
+};
 
 PartitionedSnapshotWriter::PartitionedSnapshotWriter(
     MPI_Comm comm, fs::path directory, std::string base_name, Mesh mesh,
     const std::array<decomposition::Range, 3>& block)
-    : directory_(std::move(directory)),
-      base_name_(std::move(base_name)),
-      mesh_(std::move(mesh)),
-      block_(block) {
+    : mesh_(std::move(mesh)), block_(block) {
   validate(mesh_);
   const UniformGrid& grid = cell_grid(mesh_);
   for (std::size_t d = 0; d < 3; ++d) {
@@ -89,20 +148,21 @@ PartitionedSnapshotWriter::PartitionedSnapshotWriter(
                       "in direction {}",
                       mesh_.name, block_[d].begin, block_[d].end, cells, d));
   }
-  comm_ = shared_output(comm, directory_, base_name_);
-  MPI_Comm_rank(comm_, &rank_);
+  files_ = std::make_unique<PartitionedFiles>(comm, std::move(directory), std::move(base_name));
 }
 
-PartitionedSnapshotWriter::~PartitionedSnapshotWriter() {
-  if (comm_ != MPI_COMM_NULL) MPI_Comm_free(&comm_);
+PartitionedSnapshotWriter::~PartitionedSnapshotWriter() = default;
+
+std::size_t PartitionedSnapshotWriter::snapshots_written() const {
+  return files_->written();
 }
 
 fs::path PartitionedSnapshotWriter::index_path() const {
-  return directory_ / (base_name_ + ".xdmf");
+  return files_->index_path();
 }
 
 fs::path PartitionedSnapshotWriter::snapshot_path(std::size_t step) const {
-  return directory_ / fmt::format("{}_{:06}.h5", base_name_, step);
+  return files_->snapshot_path(step);
 }
 
 void PartitionedSnapshotWriter::write(double time, const SnapshotFields& fields) {
@@ -113,74 +173,58 @@ void PartitionedSnapshotWriter::write(double time, const SnapshotFields& fields)
       throw InputError(fmt::format(
           "partitioned snapshots '{}': field '{}' has {} values; the block has {} cells x {} "
           "components",
-          base_name_, name, field.values.size(), cells, field.components));
-  hdf5::silence_error_printing();
-  const std::size_t step = written_;
-  const fs::path path = snapshot_path(step);
-  const fs::path staged = staging_path(path);
-  {
-    const CollectiveIo io(comm_);
-    hdf5::OutputFile file(staged, io.access.get());
-    file.set_attribute("time", time);
-    file.set_attribute("step", static_cast<std::int64_t>(step));
-    const int dim = cell_grid(mesh_).dim;
-    for (const auto& [name, field] : fields) {
-      const int stored = xdmf::stored_components(field.components);
-      const std::vector<hsize_t> dims = xdmf::field_dims(mesh_, stored);
-      // dims are slowest first: (z,) y, x [, components]
-      std::vector<hsize_t> start, count;
-      for (int d = dim - 1; d >= 0; --d) {
-        start.push_back(static_cast<hsize_t>(block_[static_cast<std::size_t>(d)].begin));
-        count.push_back(static_cast<hsize_t>(block_[static_cast<std::size_t>(d)].size()));
-      }
-      if (dims.size() > start.size()) {
-        start.push_back(0);
-        count.push_back(static_cast<hsize_t>(stored));
-      }
-      const hdf5::OutputFile::Part part{start, count, io.transfer.get()};
-      if (stored == field.components)
-        file.write("fields/" + name, dims, part, field.values, field.unit);
-      else
-        file.write("fields/" + name, dims, part, xdmf::padded_to_three_components(field.values),
-                   field.unit);
-    }
-    file.close();
-  }
-  MPI_Barrier(comm_);
-  ++written_;
-  if (rank_ != 0) return;
-  commit_staged_file(staged, path);
-  grids_.push_back(
-      xdmf::snapshot_grid(base_name_, step, time, mesh_, "", path.filename().string(), fields));
-  xdmf::write_temporal_index(index_path(), base_name_, grids_);
+          files_->base_name(), name, field.values.size(), cells, field.components));
+  const int dim = cell_grid(mesh_).dim;
+  files_->write(
+      time,
+      [&](hdf5::OutputFile& file, hid_t transfer) {
+        // dims are slowest first: (z,) y, x [, components]
+        std::vector<hsize_t> start, count;
+        for (int d = dim - 1; d >= 0; --d) {
+          start.push_back(static_cast<hsize_t>(block_[static_cast<std::size_t>(d)].begin));
+          count.push_back(static_cast<hsize_t>(block_[static_cast<std::size_t>(d)].size()));
+        }
+        const std::size_t spatial = start.size();
+        write_fields(
+            file, fields, [&](int stored) { return xdmf::field_dims(mesh_, stored); },
+            [&, spatial](int stored) {
+              start.resize(spatial);
+              count.resize(spatial);
+              if (stored > 1) {
+                start.push_back(0);
+                count.push_back(static_cast<hsize_t>(stored));
+              }
+              return hdf5::OutputFile::Part{start, count, transfer};
+            });
+      },
+      [&](std::size_t step, const std::string& file) {
+        return xdmf::snapshot_grid(files_->base_name(), step, time, mesh_, "", file, fields);
+      });
 }
 
 PartitionedPointCloudWriter::PartitionedPointCloudWriter(MPI_Comm comm, fs::path directory,
                                                          std::string base_name,
                                                          std::string mesh_name, int dim,
                                                          std::size_t points)
-    : directory_(std::move(directory)),
-      base_name_(std::move(base_name)),
-      mesh_name_(std::move(mesh_name)),
-      dim_(dim),
-      points_(points) {
+    : mesh_name_(std::move(mesh_name)), dim_(dim), points_(points) {
   if (dim_ != 2 && dim_ != 3)
     throw InputError(
         fmt::format("partitioned snapshots of point cloud '{}': dimension {}", mesh_name_, dim_));
-  comm_ = shared_output(comm, directory_, base_name_);
-  MPI_Comm_rank(comm_, &rank_);
+  files_ = std::make_unique<PartitionedFiles>(comm, std::move(directory), std::move(base_name));
 }
 
-PartitionedPointCloudWriter::~PartitionedPointCloudWriter() {
-  if (comm_ != MPI_COMM_NULL) MPI_Comm_free(&comm_);
+PartitionedPointCloudWriter::~PartitionedPointCloudWriter() = default;
+
+std::size_t PartitionedPointCloudWriter::snapshots_written() const {
+  return files_->written();
 }
 
 fs::path PartitionedPointCloudWriter::index_path() const {
-  return directory_ / (base_name_ + ".xdmf");
+  return files_->index_path();
 }
 
 fs::path PartitionedPointCloudWriter::snapshot_path(std::size_t step) const {
-  return directory_ / fmt::format("{}_{:06}.h5", base_name_, step);
+  return files_->snapshot_path(step);
 }
 
 // The datasets of SnapshotWriter's snapshot of a moving point cloud, in its
@@ -190,16 +234,17 @@ void PartitionedPointCloudWriter::write(double time, std::span<const std::uint64
                                         std::span<const double> positions,
                                         const SnapshotFields& fields) {
   const std::size_t n = rows.size();
+  const std::string& base_name = files_->base_name();
   if (positions.size() != n * static_cast<std::size_t>(dim_))
     throw InputError(fmt::format("partitioned snapshots '{}': {} positions for {} points",
-                                 base_name_, positions.size(), n));
+                                 base_name, positions.size(), n));
   for (const auto& [name, field] : fields)
     if (field.components < 1 ||
         field.values.size() != n * static_cast<std::size_t>(field.components))
       throw InputError(fmt::format(
           "partitioned snapshots '{}': field '{}' has {} values; this rank has {} points x {} "
           "components",
-          base_name_, name, field.values.size(), n, field.components));
+          base_name, name, field.values.size(), n, field.components));
   // Runs of consecutive rows: (first, count) pairs.
   std::vector<hsize_t> runs;
   for (std::size_t k = 0; k < n; ++k) {
@@ -216,48 +261,36 @@ void PartitionedPointCloudWriter::write(double time, std::span<const std::uint64
   }
   std::vector<double> xyz(3 * n, 0.0);
   std::vector<std::int64_t> connectivity(n);
+  const auto dim = static_cast<std::size_t>(dim_);
   for (std::size_t k = 0; k < n; ++k) {
-    for (int d = 0; d < dim_; ++d)
-      xyz[3 * k + static_cast<std::size_t>(d)] = positions[dim_ * k + static_cast<std::size_t>(d)];
+    for (std::size_t d = 0; d < dim; ++d) xyz[3 * k + d] = positions[dim * k + d];
     connectivity[k] = static_cast<std::int64_t>(rows[k]);
   }
-  hdf5::silence_error_printing();
-  const std::size_t step = written_;
-  const fs::path path = snapshot_path(step);
-  const fs::path staged = staging_path(path);
-  {
-    const CollectiveIo io(comm_);
-    const hdf5::OutputFile::Rows mine{runs, io.transfer.get()};
-    hdf5::OutputFile file(staged, io.access.get());
-    file.set_attribute("time", time);
-    file.set_attribute("step", static_cast<std::int64_t>(step));
-    const hsize_t xyz_dims[] = {points_, 3};
-    file.write("geometry/xyz", xyz_dims, mine, xyz, "m");
-    const hsize_t point_dims[] = {points_};
-    file.write("topology/connectivity", point_dims, mine, connectivity);
-    for (const auto& [name, field] : fields) {
-      const int stored = xdmf::stored_components(field.components);
-      std::vector<hsize_t> dims{points_};
-      if (stored > 1) dims.push_back(static_cast<hsize_t>(stored));
-      if (stored == field.components)
-        file.write("fields/" + name, dims, mine, field.values, field.unit);
-      else
-        file.write("fields/" + name, dims, mine, xdmf::padded_to_three_components(field.values),
-                   field.unit);
-    }
-    file.close();
-  }
-  MPI_Barrier(comm_);
-  ++written_;
-  if (rank_ != 0) return;
-  commit_staged_file(staged, path);
-  // The XDMF text needs the cloud's size only.
-  PointCloud sized;
-  sized.dim = dim_;
-  sized.volumes.assign(points_, 0.0);
-  grids_.push_back(xdmf::snapshot_grid(base_name_, step, time, Mesh{mesh_name_, std::move(sized)},
-                                       path.filename().string(), path.filename().string(), fields));
-  xdmf::write_temporal_index(index_path(), base_name_, grids_);
+  files_->write(
+      time,
+      [&](hdf5::OutputFile& file, hid_t transfer) {
+        const hdf5::OutputFile::Rows mine{runs, transfer};
+        const hsize_t xyz_dims[] = {points_, 3};
+        file.write("geometry/xyz", xyz_dims, mine, xyz, "m");
+        const hsize_t point_dims[] = {points_};
+        file.write("topology/connectivity", point_dims, mine, connectivity);
+        write_fields(
+            file, fields,
+            [&](int stored) {
+              std::vector<hsize_t> dims{points_};
+              if (stored > 1) dims.push_back(static_cast<hsize_t>(stored));
+              return dims;
+            },
+            [&](int) { return mine; });
+      },
+      [&](std::size_t step, const std::string& file) {
+        // The XDMF text needs the cloud's size only.
+        PointCloud sized;
+        sized.dim = dim_;
+        sized.volumes.assign(points_, 0.0);
+        return xdmf::snapshot_grid(base_name, step, time, Mesh{mesh_name_, std::move(sized)}, file,
+                                   file, fields);
+      });
 }
 
 }  // namespace cosim

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -14,6 +15,10 @@
 #include "cosim/mesh.hpp"
 
 namespace cosim {
+
+// The files of a partitioned writer: the ranks naming them, each snapshot
+// written together, rank 0's index (partitioned_snapshot_writer.cpp).
+class PartitionedFiles;
 
 // The snapshots of a uniform grid of cells decomposed over the ranks of a
 // communicator (issue 27): every rank passes its block's values, and each
@@ -39,19 +44,14 @@ class PartitionedSnapshotWriter final : public SnapshotSink {
   // field otherwise). Every rank calls it with the same fields (collective).
   void write(double time, const SnapshotFields& fields) override;
 
-  std::size_t snapshots_written() const override { return written_; }
+  std::size_t snapshots_written() const override;
   std::filesystem::path index_path() const;
   std::filesystem::path snapshot_path(std::size_t step) const;
 
  private:
-  MPI_Comm comm_ = MPI_COMM_NULL;
-  int rank_ = 0;
-  std::filesystem::path directory_;
-  std::string base_name_;
   Mesh mesh_;
   std::array<decomposition::Range, 3> block_;
-  std::size_t written_ = 0;
-  std::vector<std::string> grids_;  // rank 0: the <Grid> of every snapshot
+  std::unique_ptr<PartitionedFiles> files_;
 };
 
 // The snapshots of a point cloud whose points are spread over the ranks of
@@ -77,20 +77,15 @@ class PartitionedPointCloudWriter final : public PointCloudSink {
   void write(double time, std::span<const std::uint64_t> rows, std::span<const double> positions,
              const SnapshotFields& fields) override;
 
-  std::size_t snapshots_written() const override { return written_; }
+  std::size_t snapshots_written() const override;
   std::filesystem::path index_path() const;
   std::filesystem::path snapshot_path(std::size_t step) const;
 
  private:
-  MPI_Comm comm_ = MPI_COMM_NULL;
-  int rank_ = 0;
-  std::filesystem::path directory_;
-  std::string base_name_;
   std::string mesh_name_;
   int dim_;
   std::size_t points_;
-  std::size_t written_ = 0;
-  std::vector<std::string> grids_;  // rank 0: the <Grid> of every snapshot
+  std::unique_ptr<PartitionedFiles> files_;
 };
 
 }  // namespace cosim
