@@ -1,10 +1,15 @@
 #include "cosim/runtime/mpi_session.hpp"
 
+#include <fmt/format.h>
 #include <mpi.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <thread>
+
+#include "cosim/error.hpp"
 
 namespace cosim::runtime {
 
@@ -41,6 +46,25 @@ int MpiSession::finish(int code, std::chrono::milliseconds grace) const {
   int job = code;
   MPI_Allreduce(&code, &job, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
   return job;
+}
+
+RankOutput prepare_rank_output(const MpiSession& mpi, const std::filesystem::path& output,
+                               OutputReuse reuse, Verbosity verbosity, std::string_view program) {
+  RankOutput mine{0, output, verbosity};
+  if (mpi.rank() == 0) {
+    try {
+      prepare_output_directory(output, reuse);
+    } catch (const Error& e) {
+      std::fprintf(stderr, "%s: %s\n", std::string(program).c_str(), e.what());
+      mine.refused = to_int(e.code());
+    }
+  }
+  MPI_Bcast(&mine.refused, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  if (mine.refused != 0 || mpi.rank() == 0) return mine;
+  mine.directory = output / "ranks" / fmt::format("rank_{}", mpi.rank());
+  create_output_directory(mine.directory);
+  mine.verbosity = Verbosity::quiet;
+  return mine;
 }
 
 }  // namespace cosim::runtime

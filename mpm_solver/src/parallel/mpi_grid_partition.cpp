@@ -58,10 +58,10 @@ std::vector<int> balanced_row_cuts(const CaseDescription& description, int ranks
   const int rows = row_count(description);
   const std::vector<double> weights = points_per_slab(description);
   if (static_cast<int>(weights.size()) < ranks)
-    throw cosim::InputError(fmt::format(
-        "{} cell rows along the last direction make {} slabs of {} rows, fewer "
-        "than the {} ranks (each rank needs at least one slab)",
-        rows, weights.size(), ParticleBins::slab_rows, ranks));
+    throw cosim::InputError(
+        fmt::format("{} cell rows along the last direction make {} slabs of {} rows, fewer "
+                    "than the {} ranks (each rank needs at least one slab)",
+                    rows, weights.size(), ParticleBins::slab_rows, ranks));
   const auto slab_cuts = cosim::decomposition::balanced_cuts(weights, ranks, 1);
   std::vector<int> cuts;
   for (const auto slab : slab_cuts)

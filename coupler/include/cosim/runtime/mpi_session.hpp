@@ -1,6 +1,11 @@
 #pragma once
 
 #include <chrono>
+#include <filesystem>
+#include <string_view>
+
+#include "cosim/io/files.hpp"
+#include "cosim/io/logging.hpp"
 
 // A solver started by `mpirun -np N` on its own (issue 27): whether it was,
 // and MPI for the run, with an end that no rank can leave hanging.
@@ -31,5 +36,19 @@ class MpiSession {
  private:
   int rank_ = 0, ranks_ = 1;
 };
+
+// Where one rank of a run that writes one set of files keeps its own log
+// and summary: rank 0 prepares `output` (as `reuse` allows) and keeps them
+// there; rank r > 0 keeps them, quiet on the console, in
+// output/ranks/rank_<r>/. `refused` is the exit code of an output directory
+// rank 0 could not prepare (0 when ready): every rank learns it, and then
+// nothing is written (collective).
+struct RankOutput {
+  int refused = 0;
+  std::filesystem::path directory;
+  Verbosity verbosity = Verbosity::normal;
+};
+RankOutput prepare_rank_output(const MpiSession& mpi, const std::filesystem::path& output,
+                               OutputReuse reuse, Verbosity verbosity, std::string_view program);
 
 }  // namespace cosim::runtime

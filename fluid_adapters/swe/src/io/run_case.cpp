@@ -636,26 +636,11 @@ CaseDescription read_case(const RunOptions& options, cosim::RunSummary& summary)
 // (cosim::runtime::MpiSession::finish).
 int run_decomposed(const RunOptions& options, const cosim::CouplingEndpoint& endpoint) {
   const cosim::runtime::MpiSession mpi;
-  const bool root = mpi.rank() == 0;
-  int prepared = 0;
-  if (root) {
-    try {
-      cosim::prepare_output_directory(options.output, options.reuse);
-    } catch (const cosim::Error& e) {
-      std::fprintf(stderr, "swe_fluid: %s\n", e.what());
-      prepared = cosim::to_int(e.code());
-    }
-  }
-  MPI_Bcast(&prepared, 1, MPI_INT, 0, MPI_COMM_WORLD);
-  if (prepared != 0) return prepared;
-  RunOptions mine = options;
-  if (!root) {
-    mine.output = options.output / "ranks" / fmt::format("rank_{}", mpi.rank());
-    cosim::create_output_directory(mine.output);
-    mine.verbosity = cosim::Verbosity::quiet;
-  }
-  cosim::init_logging(mine.output, "swe_fluid", mine.verbosity);
-  cosim::RunSummary summary(mine.output, "swe_fluid");
+  const cosim::runtime::RankOutput mine = cosim::runtime::prepare_rank_output(
+      mpi, options.output, options.reuse, options.verbosity, "swe_fluid");
+  if (mine.refused != 0) return mine.refused;
+  cosim::init_logging(mine.directory, "swe_fluid", mine.verbosity);
+  cosim::RunSummary summary(mine.directory, "swe_fluid");
   const int code = cosim::run_and_finish(summary, [&] {
     const CaseDescription description = read_case(options, summary);
     parallel::DecomposedRun part(MPI_COMM_WORLD, description);
