@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "mpi_bench_support.hpp"
 #include "mpm/parallel/mpi_grid_partition.hpp"
 #include "mpm/solver/solver.hpp"
 #include "mpm/solver/solver_state.hpp"
@@ -29,16 +30,6 @@ namespace {
 
 constexpr int repetitions = 5;
 constexpr int steps = 10;
-
-double max_over_ranks(double value) {
-  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-  return value;
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
 
 // 8 wide^2 points in 2D (2 x 2 per cell of a column 2 wide high).
 void run_case(const char* scaling, int wide) {
@@ -66,24 +57,24 @@ void run_case(const char* scaling, int wide) {
     const double wall = MPI_Wtime() - begin;
     const double values = static_cast<double>(partition->values_sent()) - values_before;
     const double points = static_cast<double>(partition->points_sent()) - points_before;
-    wall_per_step.push_back(max_over_ranks(wall) / steps);
+    wall_per_step.push_back(bench::max_over_ranks(wall) / steps);
     communication_per_step.push_back(
-        max_over_ranks(partition->communication_seconds() - communication_before) / steps);
+        bench::max_over_ranks(partition->communication_seconds() - communication_before) / steps);
     values_per_step = values / steps;
     points_per_step = points / steps;
   }
   unsigned long total = solver.particles().size();
   MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_UNSIGNED_LONG, MPI_SUM, MPI_COMM_WORLD);
-  const double values_max = max_over_ranks(values_per_step);
-  const double points_max = max_over_ranks(points_per_step);
+  const double values_max = bench::max_over_ranks(values_per_step);
+  const double points_max = bench::max_over_ranks(points_per_step);
   if (rank != 0) return;
-  const double ms = 1e3 * median(wall_per_step);
+  const double ms = 1e3 * bench::median(wall_per_step);
   std::printf(
       "%-6s %d rank(s) x 1 thread  %8lu points  %8.1f ms/step  %6.2f M particle-updates/s  "
       "comm %6.2f ms/step  %7.0f grid values and %5.0f points sent/rank/step  imbalance "
       "%.3f\n",
       scaling, ranks, total, ms, static_cast<double>(total) / (ms * 1e-3) / 1e6,
-      1e3 * median(communication_per_step), values_max, points_max,
+      1e3 * bench::median(communication_per_step), values_max, points_max,
       mpm::parallel::row_imbalance(c, cuts));
   std::fflush(stdout);
 }

@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "mpi_bench_support.hpp"
 #include "radial_dam_break.hpp"
 #include "swe/parallel/mpi_subdomain_link.hpp"
 
@@ -23,16 +24,6 @@ namespace {
 
 constexpr int repetitions = 5;
 constexpr int steps = 40;
-
-double max_over_ranks(double value) {
-  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-  return value;
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
 
 void run_case(const char* scaling, int nx, int ny) {
   int ranks = 1, rank = 0;
@@ -60,18 +51,18 @@ void run_case(const char* scaling, int nx, int ny) {
     const double start = MPI_Wtime();
     for (int s = 0; s < steps; ++s) solver.step(solver.stable_time_step());
     const double elapsed = MPI_Wtime() - start;
-    wall_per_step.push_back(max_over_ranks(elapsed) / steps);
+    wall_per_step.push_back(bench::max_over_ranks(elapsed) / steps);
     communication_per_step.push_back(
-        max_over_ranks(part.link->communication_seconds() - communication_before) / steps);
+        bench::max_over_ranks(part.link->communication_seconds() - communication_before) / steps);
     values_per_step = (part.link->values_sent() - values_before) / steps;
   }
-  const double sent = max_over_ranks(static_cast<double>(values_per_step));
+  const double sent = bench::max_over_ranks(static_cast<double>(values_per_step));
   const double cells = static_cast<double>(nx) * ny;
-  const double step = median(wall_per_step);
+  const double step = bench::median(wall_per_step);
   if (rank == 0)
     std::printf("%-6s %5d %9.0f %9.0f %10.3f %12.2f %10.3f %10.1f\n", scaling, ranks, cells,
-                cells / ranks, 1e3 * step, cells / step / 1e6, 1e3 * median(communication_per_step),
-                8.0 * sent / 1024.0);
+                cells / ranks, 1e3 * step, cells / step / 1e6,
+                1e3 * bench::median(communication_per_step), 8.0 * sent / 1024.0);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "hdf5_contents.hpp"
+#include "launched_program.hpp"
 #include "replaced_text.hpp"
 #include "run_process.hpp"
 #include "text_files.hpp"
@@ -52,19 +53,7 @@ threads: 1
 )";
 
 ProcessResult run_mpm(const fs::path& config, const fs::path& output, int ranks) {
-  std::vector<std::string> args;
-  if (ranks > 0) args = {MPIEXEC, "--oversubscribe", "-np", std::to_string(ranks)};
-  for (const std::string& a : {binary("mpm_solver").string(), std::string("--config"),
-                               config.string(), std::string("--output"), output.string()})
-    args.push_back(a);
-  return run(args, std::chrono::seconds(120));
-}
-
-fs::path write_case(const fs::path& dir, const std::string& text) {
-  fs::create_directories(dir);
-  const fs::path file = dir / "case.yaml";
-  write_text(file, text);
-  return file;
+  return run_launched("mpm_solver", config, output, ranks);
 }
 
 TEST(MpmSolverRanks, EveryRankCountWritesTheFilesOfOneProcess) {
