@@ -52,8 +52,23 @@ int first_difference(const Particles<Dim>& part, std::size_t p, const Particles<
   return -1;
 }
 
+// The cuts moved by one slab: each interior cut up a slab where the parts
+// keep one, else down.
+std::vector<int> shifted(std::vector<int> cuts) {
+  for (std::size_t k = 1; k + 1 < cuts.size(); ++k) {
+    if (cuts[k] + 4 < cuts[k + 1])
+      cuts[k] += 4;
+    else if (cuts[k] - 4 > cuts[k - 1])
+      cuts[k] -= 4;
+  }
+  return cuts;
+}
+
+// `recut_every` > 0: every so many steps the cuts move (alternately by a
+// slab, and to the balance of the points where they are then) and the
+// solver repartitions.
 template <int Dim>
-void expect_the_whole_runs_bits(const CaseDescription& c, int steps) {
+void expect_the_whole_runs_bits(const CaseDescription& c, int steps, int recut_every = 0) {
   const int ranks = world_size();
   Solver<Dim> whole(c);
   const auto cuts = parallel::balanced_row_cuts(c, ranks);
@@ -66,6 +81,14 @@ void expect_the_whole_runs_bits(const CaseDescription& c, int steps) {
     ASSERT_EQ(std::memcmp(&dt, &dt_part, sizeof dt), 0) << "step " << s;
     whole.step(dt);
     part.step(dt);
+    if (recut_every > 0 && (s + 1) % recut_every == 0) {
+      if ((s + 1) / recut_every % 2 == 1) {
+        partition->recut(shifted(partition->cuts()));
+        part.repartition();
+      } else if (partition->rebalance(part.particles(), 1.0)) {
+        part.repartition();
+      }
+    }
     const Particles<Dim>& mine = part.particles();
     unsigned long held = mine.size();
     MPI_Allreduce(MPI_IN_PLACE, &held, 1, MPI_UNSIGNED_LONG, MPI_SUM, MPI_COMM_WORLD);
@@ -175,6 +198,31 @@ TEST(MpmDecomposed, AColumnUnderASurfaceLoadIn2D) {
   c.boundaries[1].kind = FaceCondition::Kind::slip;
   c.boundaries[2].kind = FaceCondition::Kind::fixed;
   expect_the_whole_runs_bits<2>(c, 150);
+}
+
+// The column again, its cuts moved every 7 steps: repartitioning keeps every
+// point's bits, and the balance of the points is restored.
+TEST(MpmDecomposed, MovingTheCutsKeepsTheBits) {
+  CaseDescription c = empty_case(2, {4, 32, 1}, 0.05);
+  c.shape = ShapeKind::linear;
+  c.materials = {elastic(1500.0, 5e5, 0.2)};
+  c.bodies.push_back(box_body("column", 0, 2, Vec3d(0.0, 0.0, 0.0), Vec3d(0.2, 1.5, 0.0), 0.05, 2));
+  c.bodies[0].initial_velocity = Vec3d(0.0, -2.0, 0.0);
+  c.gravity = Vec3d(0.0, -9.81, 0.0);
+  c.boundaries[2].kind = FaceCondition::Kind::fixed;
+  expect_the_whole_runs_bits<2>(c, 100, 7);
+  const auto cuts = parallel::balanced_row_cuts(c, world_size());
+  auto partition = std::make_shared<parallel::MpiGridPartition<2>>(MPI_COMM_WORLD, cuts, 0.0, 0.05);
+  Solver<2> part(c, partition);
+  partition->recut(shifted(cuts));
+  part.repartition();
+  const double unbalanced = partition->imbalance(part.particles());
+  if (partition->rebalance(part.particles(), 1.0)) part.repartition();
+  EXPECT_LE(partition->imbalance(part.particles()), unbalanced);
+  if (world_size() > 1) {
+    EXPECT_GT(unbalanced, 1.0);
+    EXPECT_EQ(partition->cuts(), cuts);
+  }
 }
 
 TEST(MpmDecomposed, MoreRanksThanSlabsIsAnInputError) {

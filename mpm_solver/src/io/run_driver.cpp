@@ -119,6 +119,10 @@ template <int Dim>
 struct RunRanks {
   std::shared_ptr<GridPartition<Dim>> partition;
   std::function<std::unique_ptr<cosim::PointCloudSink>()> particle_snapshots;
+  // The points of the fullest rank over the mean, and new cuts when that
+  // passes the threshold (true: the solver must repartition); collective.
+  std::function<double(const Particles<Dim>&)> imbalance;
+  std::function<bool(const Particles<Dim>&)> rebalance;
 };
 
 template <int Dim>
@@ -238,9 +242,9 @@ class CaseRun {
       const double now = solver_.time();
       const bool snapshot = progress_.snapshots.due(now, tolerance_);
       const bool probe = progress_.probe_times.due(now, tolerance_);
-      if (snapshot || probe ||
-          solver_.step_count() % static_cast<std::size_t>(options_.check_every) == 0)
-        solver_.check_state();
+      const bool check = solver_.step_count() % static_cast<std::size_t>(options_.check_every) == 0;
+      if (snapshot || probe || check) solver_.check_state();
+      if (check && ranks_.rebalance) balance_ranks();
       if (snapshot) hold_snapshot();
       if (probe) hold_probes();
       // Inside a window that may run again, outputs and progress wait for its end.
@@ -262,6 +266,16 @@ class CaseRun {
         summary_.write();
       }
     }
+  }
+
+  // The points' balance over the ranks, measured; new cuts when it is off.
+  void balance_ranks() {
+    imbalance_max_ = std::max(imbalance_max_, ranks_.imbalance(solver_.particles()));
+    if (!ranks_.rebalance(solver_.particles())) return;
+    solver_.repartition();
+    ++rebalances_;
+    spdlog::info("t = {:.6g} s: the cuts moved to balance the points (now {:.3f} of the mean)",
+                 solver_.time(), ranks_.imbalance(solver_.particles()));
   }
 
   bool restarts() const { return observer_ && !observer_->restart_directory().empty(); }
@@ -374,7 +388,15 @@ class CaseRun {
       summary_.set_steps(static_cast<std::int64_t>(steps));
       const double advance = summary_.phases().seconds("advance");
       double particles = static_cast<double>(solver_.particles().size());
-      if (together && ranks_.partition) ranks_.partition->sum(std::span<double>(&particles, 1));
+      if (together && ranks_.partition) {
+        ranks_.partition->sum(std::span<double>(&particles, 1));
+        // The points of the fullest rank over the mean: the largest measured
+        // (at each check) and at the end; and how often the cuts moved.
+        const double now = ranks_.imbalance(solver_.particles());
+        summary_.set_metric("point_imbalance_max", std::max(imbalance_max_, now), "1");
+        summary_.set_metric("point_imbalance_end", now, "1");
+        summary_.set_metric("rebalances", static_cast<double>(rebalances_), "1");
+      }
       const double updates = static_cast<double>(steps_taken_) * particles;
       summary_.set_metric("simulated_time", solver_.time(), "s");
       summary_.set_metric("particles", particles, "1");
@@ -421,6 +443,8 @@ class CaseRun {
   std::optional<LoopProgress> saved_progress_;
   bool window_may_repeat_ = false;
   std::size_t steps_taken_ = 0;  // those of repeated windows too
+  double imbalance_max_ = 0.0;
+  std::size_t rebalances_ = 0;
   std::size_t saves_ = 0;
   std::size_t restores_ = 0;
 };
@@ -467,6 +491,10 @@ void run_loaded(const RunOptions& options, const StepObservers& observers,
 }
 
 #ifdef MPM_WITH_MPI
+// The cuts move when the fullest rank holds this many times the mean of
+// the points (checked every check_every steps).
+constexpr double rebalance_threshold = 1.1;
+
 // What a decomposed run cannot do yet; each refusal names the case file and
 // the key (exit 2).
 void refuse_what_ranks_cannot_run(const CaseDescription& c, int ranks) {
@@ -486,12 +514,17 @@ void run_decomposed_dimension(const CaseDescription& description, const RunOptio
   std::size_t points = 0;
   for (const auto& b : description.bodies) points += b.positions.size();
   const auto last = static_cast<Eigen::Index>(Dim - 1);
-  RunRanks<Dim> ranks;
-  ranks.partition = std::make_shared<parallel::MpiGridPartition<Dim>>(
+  const auto partition = std::make_shared<parallel::MpiGridPartition<Dim>>(
       MPI_COMM_WORLD, cuts, description.grid.origin[last], description.grid.spacing[last]);
+  RunRanks<Dim> ranks;
+  ranks.partition = partition;
   ranks.particle_snapshots = [&options, points] {
     return std::make_unique<cosim::PartitionedPointCloudWriter>(
         MPI_COMM_WORLD, options.output, "particles", "particles", Dim, points);
+  };
+  ranks.imbalance = [partition](const Particles<Dim>& p) { return partition->imbalance(p); };
+  ranks.rebalance = [partition](const Particles<Dim>& p) {
+    return partition->rebalance(p, rebalance_threshold);
   };
   std::optional<CaseRun<Dim>> run;
   {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numeric>
 
 #include "../solver/particle_bins.hpp"
@@ -80,13 +81,11 @@ double row_imbalance(const CaseDescription& description, const std::vector<int>&
 template <int Dim>
 MpiGridPartition<Dim>::MpiGridPartition(MPI_Comm comm, std::vector<int> cuts, double origin,
                                         double spacing)
-    : cuts_(std::move(cuts)), origin_(origin), spacing_(spacing) {
+    : origin_(origin), spacing_(spacing) {
   MPI_Comm_dup(comm, &comm_);
   MPI_Comm_rank(comm_, &rank_);
   MPI_Comm_size(comm_, &ranks_);
-  if (static_cast<int>(cuts_.size()) != ranks_ + 1 || !std::is_sorted(cuts_.begin(), cuts_.end()))
-    throw cosim::Error(cosim::ExitCode::internal_error,
-                       "MPM grid partition: cuts that do not match the ranks");
+  recut(std::move(cuts));
   migration_ = std::make_unique<ParticleMigration<Dim>>(
       comm_, [this](const Vec<Dim>& x) { return owner(x); });
 }
@@ -98,16 +97,73 @@ MpiGridPartition<Dim>::~MpiGridPartition() {
 }
 
 template <int Dim>
+void MpiGridPartition<Dim>::recut(std::vector<int> cuts) {
+  const bool whole_slabs = std::all_of(cuts.begin(), cuts.end() - 1,
+                                       [](int row) { return row % ParticleBins::slab_rows == 0; });
+  if (static_cast<int>(cuts.size()) != ranks_ + 1 || cuts.front() != 0 || !whole_slabs ||
+      std::adjacent_find(cuts.begin(), cuts.end(), std::greater_equal<>()) != cuts.end() ||
+      (!cuts_.empty() && cuts.back() != cuts_.back()))
+    throw cosim::Error(cosim::ExitCode::internal_error,
+                       "MPM grid partition: cuts that do not match the ranks and slabs");
+  cuts_ = std::move(cuts);
+}
+
+// This rank's points per slab, summed over the ranks.
+template <int Dim>
+std::vector<double> MpiGridPartition<Dim>::points_per_slab(const Particles<Dim>& particles) const {
+  std::vector<double> weights(
+      static_cast<std::size_t>(ParticleBins::slab_of_row(cuts_.back() - 1) + 1), 0.0);
+  for (const Vec<Dim>& x : particles.position)
+    weights[static_cast<std::size_t>(ParticleBins::slab_of_row(row_of(x)))] += 1.0;
+  MPI_Allreduce(MPI_IN_PLACE, weights.data(), static_cast<int>(weights.size()), MPI_DOUBLE, MPI_SUM,
+                comm_);
+  return weights;
+}
+
+template <int Dim>
+double MpiGridPartition<Dim>::imbalance(const Particles<Dim>& particles) const {
+  double counts[2] = {static_cast<double>(particles.size()), static_cast<double>(particles.size())};
+  MPI_Allreduce(MPI_IN_PLACE, &counts[0], 1, MPI_DOUBLE, MPI_MAX, comm_);
+  MPI_Allreduce(MPI_IN_PLACE, &counts[1], 1, MPI_DOUBLE, MPI_SUM, comm_);
+  return counts[1] > 0.0 ? counts[0] / (counts[1] / ranks_) : 0.0;
+}
+
+template <int Dim>
+bool MpiGridPartition<Dim>::rebalance(const Particles<Dim>& particles, double threshold) {
+  const Stopwatch watch(communication_seconds_);
+  const std::vector<double> weights = points_per_slab(particles);
+  const auto slab_cuts_of = [](const std::vector<int>& rows) {
+    std::vector<std::int64_t> slabs;
+    for (const int row : rows)
+      slabs.push_back((row + ParticleBins::slab_rows - 1) / ParticleBins::slab_rows);
+    return slabs;
+  };
+  const double now = cosim::decomposition::imbalance(weights, slab_cuts_of(cuts_));
+  if (!(now > threshold)) return false;
+  const auto balanced = cosim::decomposition::balanced_cuts(weights, ranks_, 1);
+  std::vector<int> rows;
+  for (const auto slab : balanced)
+    rows.push_back(std::min(cuts_.back(), static_cast<int>(slab) * ParticleBins::slab_rows));
+  if (rows == cuts_ || !(cosim::decomposition::imbalance(weights, balanced) < now)) return false;
+  recut(std::move(rows));
+  return true;
+}
+
+template <int Dim>
 std::array<int, 2> MpiGridPartition<Dim>::owned_rows() const {
   return {cuts_[static_cast<std::size_t>(rank_)], cuts_[static_cast<std::size_t>(rank_) + 1]};
 }
 
 template <int Dim>
-int MpiGridPartition<Dim>::owner(const Vec<Dim>& x) const {
+int MpiGridPartition<Dim>::row_of(const Vec<Dim>& x) const {
   const double row = std::floor((x[Dim - 1] - origin_) / spacing_);
   const double last = static_cast<double>(cuts_.back() - 1);
-  const int r = static_cast<int>(std::clamp(std::isfinite(row) ? row : 0.0, 0.0, last));
-  const auto above = std::upper_bound(cuts_.begin(), cuts_.end(), r);
+  return static_cast<int>(std::clamp(std::isfinite(row) ? row : 0.0, 0.0, last));
+}
+
+template <int Dim>
+int MpiGridPartition<Dim>::owner(const Vec<Dim>& x) const {
+  const auto above = std::upper_bound(cuts_.begin(), cuts_.end(), row_of(x));
   return static_cast<int>(above - cuts_.begin()) - 1;
 }
 

@@ -67,6 +67,7 @@ struct Solver<Dim>::Impl {
   explicit Impl(const CaseDescription& d);
   void allocate_grid(int field_count);
   void restrict_to(std::shared_ptr<GridPartition<Dim>> part);
+  void store_planes_of_owned_rows();
   // The stored index of the flat grid value `flat` of field `field`.
   std::size_t stored(int field, std::size_t flat) const {
     return static_cast<std::size_t>(field) * grid.size() + flat - grid.first_value();
@@ -291,7 +292,14 @@ void Solver<Dim>::Impl::restrict_to(std::shared_ptr<GridPartition<Dim>> part) {
     ++kept;
   }
   particles.for_each_array([&](auto& array) { array.resize(kept); });
+  store_planes_of_owned_rows();
+}
 
+// The planes of grid values the partition's rows own and their points touch.
+template <int Dim>
+void Solver<Dim>::Impl::store_planes_of_owned_rows() {
+  const auto rows = partition->owned_rows();
+  const auto owns = [&](int row) { return row >= rows[0] && row < rows[1]; };
   const int planes = grid.dofs[Dim - 1];
   PlaneRanges ranges;
   ranges.owned_first = planes;
@@ -926,6 +934,13 @@ double Solver<Dim>::stable_time_step() const {
 template <int Dim>
 void Solver<Dim>::step(double dt) {
   impl_->step(dt);
+}
+template <int Dim>
+void Solver<Dim>::repartition() {
+  Impl& s = *impl_;
+  if (!s.partition) return;
+  s.store_planes_of_owned_rows();
+  s.partition->migrate(s.particles);
 }
 template <int Dim>
 double Solver<Dim>::time() const {

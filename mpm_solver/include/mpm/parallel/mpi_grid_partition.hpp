@@ -45,6 +45,18 @@ class MpiGridPartition final : public GridPartition<Dim> {
   void sum(std::span<double> values) override;
   void migrate(Particles<Dim>& particles) override;
 
+  // The points of the fullest rank over the mean (1: balanced) (collective).
+  double imbalance(const Particles<Dim>& particles) const;
+  // Cuts balanced for the ranks' `particles` now (balanced_cuts of the points
+  // per slab); when the current cuts' imbalance exceeds `threshold` and the
+  // new ones do better, takes them and returns true: the solver must then
+  // repartition() (collective).
+  bool rebalance(const Particles<Dim>& particles, double threshold);
+  // Takes `cuts` (ranks + 1 rows at whole slabs, as balanced_row_cuts gives)
+  // as the rows of each rank; the solver must then repartition().
+  void recut(std::vector<int> cuts);
+  const std::vector<int>& cuts() const { return cuts_; }
+
   int rank() const { return rank_; }
   // The rank that owns the point at x.
   int owner(const Vec<Dim>& x) const;
@@ -70,6 +82,9 @@ class MpiGridPartition final : public GridPartition<Dim> {
   std::size_t values_sent_ = 0, points_sent_ = 0;
   double communication_seconds_ = 0.0;
 
+  // The cell row of a point, clamped to the grid.
+  int row_of(const Vec<Dim>& x) const;
+  std::vector<double> points_per_slab(const Particles<Dim>& particles) const;
   // Planes [first, end) this rank sends to neighbour q and receives from
   // it: ghosts to owners (`to_owners`) or owners to ghosts.
   std::array<int, 2> sent_planes(int q, bool to_owners) const;

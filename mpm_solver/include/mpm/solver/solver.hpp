@@ -62,6 +62,11 @@ class Solver {
   double stable_time_step() const;
   // Advances by dt (<= stable_time_step() for stability; not enforced).
   void step(double dt);
+  // On a rank of a decomposed run, after the partition's rows changed (load
+  // balance): takes the grid planes of the new rows and moves the points to
+  // their new ranks (collective). The state keeps its bits, and so do the
+  // steps after. Nothing on one process.
+  void repartition();
 
   double time() const;
   std::size_t step_count() const;
