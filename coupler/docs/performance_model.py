@@ -85,17 +85,18 @@ def mpm_step(ranks, nx, ny, seconds_per_point, points):
     (4) and re-mapped velocities (2), over 3 planes of nx + 1 nodes (GIMP: 1
     below, 2 above): 60 (nx + 1) doubles a rank, in 8 messages (measured:
     18,088 values a step on 2 ranks of the 531-cell-wide column, which this
-    gives); the time step's 2 reductions; the migration, whose counts go by
-    MPI_Alltoall (P - 1 latencies each, 3 collectives) and whose points (one
-    layer in twenty of a face's points a step, 330 B a point) by
-    Alltoallv. Runs on at most ny / 4 ranks (mpm_ranks)."""
+    gives); the time step's 2 reductions; the migration: a reduction that
+    agrees no point goes past a neighbour, then a count and the points (one
+    layer in twenty of a face's points a step, 330 B a point) to each
+    neighbour. Runs on at most ny / 4 ranks (mpm_ranks)."""
     ranks = mpm_ranks(ranks, ny)
     compute = seconds_per_point * points / ranks
     if ranks == 1:
         return compute, 0.0
     grid = 8 * ALPHA + 60 * (nx + 1) * 8.0 / BETA
     points_per_cell = points / (nx * ny)
-    migration = 3 * (ranks - 1) * ALPHA + 0.05 * points_per_cell * 2 * nx * 330.0 / BETA
+    migration = (allreduce(ranks) + 4 * ALPHA
+                 + 0.05 * points_per_cell * 2 * nx * 330.0 / BETA)
     return compute, grid + migration + 2 * allreduce(ranks)
 
 

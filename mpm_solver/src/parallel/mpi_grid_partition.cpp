@@ -88,6 +88,10 @@ MpiGridPartition<Dim>::MpiGridPartition(MPI_Comm comm, std::vector<int> cuts, do
   recut(std::move(cuts));
   migration_ = std::make_unique<ParticleMigration<Dim>>(
       comm_, [this](const Vec<Dim>& x) { return owner(x); });
+  std::vector<int> neighbours;
+  for (const int q : {rank_ - 1, rank_ + 1})
+    if (q >= 0 && q < ranks_) neighbours.push_back(q);
+  migration_->set_neighbours(std::move(neighbours));
 }
 
 template <int Dim>
@@ -294,6 +298,7 @@ void MpiGridPartition<Dim>::sum(std::span<double> values) {
 // one sort by id puts them together as one process holds them.
 template <int Dim>
 void MpiGridPartition<Dim>::migrate(Particles<Dim>& particles) {
+  if (ranks_ == 1) return;
   const Stopwatch watch(communication_seconds_);
   const auto moved = migration_->migrate(particles);
   points_sent_ += moved.sent;

@@ -102,6 +102,17 @@ typename ParticleMigration<Dim>::Moved ParticleMigration<Dim>::migrate(Particles
   }
   particles.for_each_array([&](auto& array) { array.resize(kept); });
 
+  // Only to neighbours, when every rank's points stay among its neighbours.
+  int far = 0;
+  for (std::size_t r = 0; r < outgoing_.size(); ++r)
+    if (!outgoing_[r].empty() &&
+        !std::binary_search(neighbours_.begin(), neighbours_.end(), static_cast<int>(r)))
+      far = 1;
+  if (!neighbours_.empty()) {
+    MPI_Allreduce(MPI_IN_PLACE, &far, 1, MPI_INT, MPI_MAX, comm_);
+    if (far == 0) return exchange_with_neighbours(particles, sent_points, moved);
+  }
+
   // Bytes to and from every rank, then the points themselves.
   std::vector<int> send_counts(static_cast<std::size_t>(ranks_)),
       receive_counts(static_cast<std::size_t>(ranks_)),
@@ -129,6 +140,64 @@ typename ParticleMigration<Dim>::Moved ParticleMigration<Dim>::migrate(Particles
   const std::byte* at = receive_.data();
   for (std::size_t r = 0; r < received_points.size(); ++r)
     for (int k = 0; k < received_points[r]; ++k) {
+      particles.for_each_array([&](auto& array) { at = unpack(array, at); });
+      ++moved.received;
+    }
+  return moved;
+}
+
+template <int Dim>
+void ParticleMigration<Dim>::set_neighbours(std::vector<int> neighbours) {
+  std::sort(neighbours.begin(), neighbours.end());
+  neighbours_ = std::move(neighbours);
+}
+
+// The points packed for the neighbours go to them point to point: first
+// how many, then their bytes (every point packs to the same size).
+template <int Dim>
+typename ParticleMigration<Dim>::Moved ParticleMigration<Dim>::exchange_with_neighbours(
+    Particles<Dim>& particles, const std::vector<int>& sent_points, Moved moved) {
+  const std::size_t k = neighbours_.size();
+  std::vector<int> incoming(k, 0);
+  std::vector<MPI_Request> requests;
+  requests.reserve(2 * k);
+  for (std::size_t i = 0; i < k; ++i) {
+    requests.emplace_back();
+    MPI_Irecv(&incoming[i], 1, MPI_INT, neighbours_[i], 1, comm_, &requests.back());
+  }
+  for (std::size_t i = 0; i < k; ++i) {
+    requests.emplace_back();
+    MPI_Isend(&sent_points[static_cast<std::size_t>(neighbours_[i])], 1, MPI_INT, neighbours_[i], 1,
+              comm_, &requests.back());
+  }
+  MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+  std::size_t bytes_per_point = 0;
+  particles.for_each_array([&](const auto& array) {
+    bytes_per_point += sizeof(typename std::decay_t<decltype(array)>::value_type);
+  });
+  std::vector<std::size_t> offset(k + 1, 0);
+  for (std::size_t i = 0; i < k; ++i)
+    offset[i + 1] = offset[i] + static_cast<std::size_t>(incoming[i]) * bytes_per_point;
+  receive_.resize(offset[k]);
+  requests.clear();
+  for (std::size_t i = 0; i < k; ++i) {
+    if (incoming[i] == 0) continue;
+    requests.emplace_back();
+    MPI_Irecv(receive_.data() + offset[i], static_cast<int>(offset[i + 1] - offset[i]), MPI_BYTE,
+              neighbours_[i], 2, comm_, &requests.back());
+  }
+  for (const int q : neighbours_) {
+    const auto& bytes = outgoing_[static_cast<std::size_t>(q)];
+    if (bytes.empty()) continue;
+    requests.emplace_back();
+    MPI_Isend(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, q, 2, comm_,
+              &requests.back());
+    moved.bytes_sent += bytes.size();
+  }
+  MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+  const std::byte* at = receive_.data();
+  for (std::size_t i = 0; i < k; ++i)
+    for (int n = 0; n < incoming[i]; ++n) {
       particles.for_each_array([&](auto& array) { at = unpack(array, at); });
       ++moved.received;
     }

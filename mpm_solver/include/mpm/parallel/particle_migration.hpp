@@ -45,10 +45,20 @@ class ParticleMigration {
   // those it sends here (collective).
   Moved migrate(Particles<Dim>& particles);
 
+  // The ranks this rank's points usually move to (a slab's two
+  // neighbours). When no point of any rank goes further, a migration talks
+  // to them alone (point to point) instead of to every rank (MPI_Alltoall,
+  // P - 1 latencies); whether one does is agreed by a small reduction.
+  void set_neighbours(std::vector<int> neighbours);
+
  private:
   MPI_Comm comm_ = MPI_COMM_NULL;
   int rank_ = 0, ranks_ = 1;
   Owner owner_;
+  std::vector<int> neighbours_;  // increasing
+  Moved exchange_with_neighbours(Particles<Dim>& particles, const std::vector<int>& sent_points,
+                                 Moved moved);
+
   std::vector<int> destination_;  // per point, of the last migrate()
   std::vector<std::vector<std::byte>> outgoing_;
   std::vector<std::byte> send_, receive_;
