@@ -1,11 +1,11 @@
 // mpm_solver standalone under `mpirun -np N` (label mpi): a sand column
 // collapsing (GIMP, MUSL, Mohr-Coulomb), on 1 process and on 2, 3 and 4
 // ranks whose cuts move to balance the points, must write the same particle
-// snapshots bit for bit (every dataset
-// and attribute, written together by the ranks) and the same XDMF index,
-// the same steps, and the totals of one process to round-off (the ranks sum
-// them in another order); cases a decomposed run cannot take, and an output
-// directory already in use, are refused with exit 2, nothing lost.
+// snapshots bit for bit (every dataset and attribute, written together by
+// the ranks), the same XDMF index and probes.csv (each probe's point sampled
+// by the rank holding it), the same steps, and the totals of one process to round-off (the ranks
+// sum them in another order); cases a decomposed run cannot take, and an output directory already
+// in use, are refused with exit 2, nothing lost.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -49,7 +49,10 @@ bodies:
     initial_velocity: [0.5, -0.3]
     geostatic: {}
 boundaries: {x_min: slip, x_max: slip, y_min: fixed, y_max: free}
-output: {every: 0.02}
+probes:
+  - {name: toe, body: column, position: [0.095, 0.005]}
+  - {name: top, body: column, position: [0.005, 0.195]}
+output: {every: 0.02, probe_every: 0.005}
 threads: 1
 )";
 
@@ -70,8 +73,9 @@ TEST(MpmSolverRanks, EveryRankCountWritesTheFilesOfOneProcess) {
     const fs::path out = dir / ("ranks_" + std::to_string(ranks));
     const ProcessResult split = run_mpm(config, out, ranks);
     ASSERT_EQ(split.exit_code, 0) << split.output;
-    EXPECT_EQ(read_text(out / "particles.xdmf"), read_text(dir / "one_process" / "particles.xdmf"))
-        << ranks << " ranks";
+    for (const char* file : {"particles.xdmf", "probes.csv"})
+      EXPECT_EQ(read_text(out / file), read_text(dir / "one_process" / file))
+          << file << " on " << ranks << " ranks";
     for (std::size_t s = 0; s < snapshots; ++s) {
       const std::string file = "particles_00000" + std::to_string(s) + ".h5";
       EXPECT_EQ(hdf5_contents(out / file), hdf5_contents(dir / "one_process" / file))
@@ -111,13 +115,10 @@ void expect_refused(const std::string& case_text, const std::string& key, int ra
 }
 
 TEST(MpmSolverRanks, RefusesWhatADecomposedRunCannotTake) {
-  expect_refused(std::string(column_case) +
-                     "probes:\n  - {name: toe, body: column, position: "
-                     "[0.095, 0.005]}\n",
-                 "probes", 2);
-  expect_refused(
-      replaced(column_case, "output: {every: 0.02}", "output: {every: 0.02, grid: true}"),
-      "output.grid", 2);
+  expect_refused(replaced(column_case, "safety_factor: 0.4}", "safety_factor: 0.4, window: 0.01}"),
+                 "time.window", 2);
+  expect_refused(replaced(column_case, "probe_every: 0.005}", "probe_every: 0.005, grid: true}"),
+                 "output.grid", 2);
   expect_refused(replaced(column_case, "    cohesion: 0\n",
                           "    cohesion: 0\n    specific_heat: 800\n    thermal_conductivity: 2\n"),
                  "thermal", 2);

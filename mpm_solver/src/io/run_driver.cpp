@@ -123,6 +123,8 @@ struct RunRanks {
   // passes the threshold (true: the solver must repartition); collective.
   std::function<double(const Particles<Dim>&)> imbalance;
   std::function<bool(const Particles<Dim>&)> rebalance;
+  // Whether this rank writes the tables (probes.csv): rank 0.
+  bool writes_tables = true;
 };
 
 template <int Dim>
@@ -184,7 +186,8 @@ class CaseRun {
       particles_.emplace(options_.output, solver_);
     }
     if (!solver_.description().probes.empty())
-      probes_.emplace(options_.output / "probes.csv", solver_);
+      probes_.emplace(options_.output / "probes.csv", solver_, sum_over_ranks(),
+                      ranks_.writes_tables);
     if (solver_.description().output.grid) {
       if (GridSnapshotWriter<Dim>::supports(solver_.description().shape)) {
         grid_.emplace(options_.output, solver_.grid());
@@ -266,6 +269,12 @@ class CaseRun {
         summary_.write();
       }
     }
+  }
+
+  // On a rank of a decomposed run: the sum of its values and the others'.
+  ProbeRecorder<Dim>::SumOverRanks sum_over_ranks() const {
+    if (!ranks_.partition) return {};
+    return [partition = ranks_.partition](std::span<double> values) { partition->sum(values); };
   }
 
   // The points' balance over the ranks, measured; new cuts when it is off.
@@ -503,7 +512,6 @@ void refuse_what_ranks_cannot_run(const CaseDescription& c, int ranks) {
                                         c.file.string(), key, what, ranks));
   };
   if (c.thermal.enabled) refuse("thermal", "a case that conducts heat");
-  if (!c.probes.empty()) refuse("probes", "a case with probes");
   if (c.output.grid) refuse("output.grid", "a case with grid snapshots");
   if (c.time.window > 0.0) refuse("time.window", "a case in coupling windows");
 }
@@ -518,6 +526,7 @@ void run_decomposed_dimension(const CaseDescription& description, const RunOptio
       MPI_COMM_WORLD, cuts, description.grid.origin[last], description.grid.spacing[last]);
   RunRanks<Dim> ranks;
   ranks.partition = partition;
+  ranks.writes_tables = partition->rank() == 0;
   ranks.particle_snapshots = [&options, points] {
     return std::make_unique<cosim::PartitionedPointCloudWriter>(
         MPI_COMM_WORLD, options.output, "particles", "particles", Dim, points);

@@ -1043,6 +1043,10 @@ const Particles<Dim>& Solver<Dim>::particles() const {
   return impl_->particles;
 }
 template <int Dim>
+std::size_t Solver<Dim>::local_index(std::size_t id) const {
+  return impl_->local_index(id);
+}
+template <int Dim>
 const Grid<Dim>& Solver<Dim>::grid() const {
   return impl_->grid;
 }

@@ -1,6 +1,9 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "cosim/io/time_series_writer.hpp"
@@ -14,12 +17,19 @@ namespace mpm {
 // (xx yy zz xy, and yz xz in 3D; tension positive), `<probe>_pore_pressure [Pa]`
 // and `<probe>_plastic_strain [-]`, and `<probe>_temperature [K]` when the
 // case conducts heat.
+//
+// On the ranks of a decomposed run (issue 27) every rank holds the rows
+// together: the rank holding a probe's point gives its values, the others
+// -0.0, and `sum_over_ranks` adds them (exactly: x + -0.0 is x); only the
+// rank that `writes` keeps the file.
 template <int Dim>
 class ProbeRecorder {
  public:
-  ProbeRecorder(const std::filesystem::path& file, const Solver<Dim>& solver);
+  using SumOverRanks = std::function<void(std::span<double>)>;
+  ProbeRecorder(const std::filesystem::path& file, const Solver<Dim>& solver,
+                SumOverRanks sum_over_ranks = {}, bool writes = true);
   void record(const Solver<Dim>& solver);
-  std::size_t rows_written() const { return writer_.rows_written(); }
+  std::size_t rows_written() const { return writer_ ? writer_->rows_written() : 0; }
 
   // A row taken now and kept in memory until write_held() appends it, or
   // drop_held() forgets it (the outputs of a coupling window that may run
@@ -35,8 +45,9 @@ class ProbeRecorder {
  private:
   std::vector<ProbeSpec> probes_;
   bool thermal_;
+  SumOverRanks sum_over_ranks_;
   std::vector<Vec<Dim>> initial_position_;  // per probe
-  cosim::TimeSeriesWriter writer_;
+  std::optional<cosim::TimeSeriesWriter> writer_;
   std::size_t columns_;
   std::vector<double> held_;  // held rows, one after the other
 };

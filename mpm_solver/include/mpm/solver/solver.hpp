@@ -98,6 +98,9 @@ class Solver {
 
   // This process's points (on a rank: those of its cell rows, in id order).
   Particles<Dim>& particles();
+  // The index among them of the point with id `id`, or particles().size()
+  // when another rank holds it.
+  std::size_t local_index(std::size_t id) const;
   const Particles<Dim>& particles() const;
   const Grid<Dim>& grid() const;
   const CaseDescription& description() const;
