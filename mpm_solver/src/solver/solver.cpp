@@ -82,6 +82,9 @@ struct Solver<Dim>::Impl {
   Vec<Dim> gravity_at(double t) const;
   int field_of(std::size_t p) const { return field_of_body[particles.body[p]]; }
   const detail::BodyState<Dim>& body_of(std::size_t p) const { return bodies[particles.body[p]]; }
+  bool has_rigid_body() const {
+    return std::any_of(bodies.begin(), bodies.end(), [](const auto& b) { return b.is_rigid(); });
+  }
 
   // The time step, in order (Uintah style).
   void step(double dt);
@@ -439,6 +442,7 @@ void Solver<Dim>::Impl::set_rigid_velocities(double dt) {
         break;  // set by move_rigid_bodies from the last step's forces
     }
   }
+  if (!has_rigid_body()) return;  // no pass over the points for nothing
   for (std::size_t p = 0; p < particles.size(); ++p)
     if (body_of(p).is_rigid()) particles.velocity[p] = body_of(p).rigid_velocity;
 }
@@ -794,6 +798,7 @@ void Solver<Dim>::Impl::move_rigid_bodies(double dt) {
     if (body.rigid->kind == RigidMotion::Kind::free && body.mass > 0.0)
       body.rigid_velocity += dt * g + body.contact_impulse / body.mass;
   }
+  if (!has_rigid_body()) return;
   for (std::size_t p = 0; p < particles.size(); ++p) {
     if (!body_of(p).is_rigid()) continue;
     particles.position[p] += dt * particles.velocity[p];
