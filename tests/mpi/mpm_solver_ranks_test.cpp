@@ -104,14 +104,7 @@ TEST(MpmSolverRanks, EveryRankCountWritesTheFilesOfOneProcess) {
 }
 
 void expect_refused(const std::string& case_text, const std::string& key, int ranks) {
-  const fs::path dir = fresh_directory("mpm_solver_ranks_refused");
-  const fs::path config = write_case(dir, case_text);
-  const ProcessResult result = run_mpm(config, dir / "run", ranks);
-  EXPECT_EQ(result.exit_code, 2) << result.output;
-  const std::string summary = read_text(dir / "run" / "summary.json");
-  EXPECT_NE(summary.find("bad_input"), std::string::npos) << summary;
-  EXPECT_NE(summary.find("case.yaml: key '" + key + "'"), std::string::npos) << summary;
-  EXPECT_FALSE(fs::exists(dir / "run" / "particles_000000.h5"));
+  expect_refused_on_ranks("mpm_solver", case_text, key, ranks, "particles_000000.h5");
 }
 
 TEST(MpmSolverRanks, RefusesWhatADecomposedRunCannotTake) {
@@ -127,15 +120,7 @@ TEST(MpmSolverRanks, RefusesWhatADecomposedRunCannotTake) {
 }
 
 TEST(MpmSolverRanks, LeavesAnOutputDirectoryInUseAsItWas) {
-  const fs::path dir = fresh_directory("mpm_solver_ranks_in_use");
-  const fs::path config = write_case(dir, column_case);
-  fs::create_directories(dir / "run");
-  write_text(dir / "run" / "earlier.txt", "an earlier run's file\n");
-  const ProcessResult result = run_mpm(config, dir / "run", 2);
-  EXPECT_EQ(result.exit_code, 2) << result.output;
-  EXPECT_EQ(read_text(dir / "run" / "earlier.txt"), "an earlier run's file\n");
-  EXPECT_FALSE(fs::exists(dir / "run" / "ranks"));
-  EXPECT_FALSE(fs::exists(dir / "run" / "summary.json"));
+  expect_directory_in_use_kept("mpm_solver", column_case);
 }
 
 }  // namespace
