@@ -25,12 +25,12 @@ double value(std::int64_t i, std::int64_t j, std::int64_t k, int c) {
 // `components` values per cell side by side in one field, or, with
 // `separate_fields`, one field per component exchanged together (SoA).
 void check_exchange(int dim, std::array<std::int64_t, 3> cells, int halo, int components,
-                    bool separate_fields = false) {
+                    bool separate_fields = false, GhostSides sides = GhostSides::every_side) {
   int ranks = 0;
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   const auto dims = process_grid(ranks, std::span<const std::int64_t>(cells.data(), dim));
   const CartesianDecomposition decomposition(dim, cells, dims);
-  const HaloExchange exchange(MPI_COMM_WORLD, decomposition, halo);
+  const HaloExchange exchange(MPI_COMM_WORLD, decomposition, halo, sides);
   const Block& b = exchange.block();
   const std::size_t padded = exchange.padded_size();
   std::vector<double> field(padded * static_cast<std::size_t>(components),
@@ -56,13 +56,17 @@ void check_exchange(int dim, std::array<std::int64_t, 3> cells, int halo, int co
   std::array<std::int64_t, 3> lo{0, 0, 0}, hi{1, 1, 1};
   for (std::size_t d = 0; d < 3; ++d)
     if (static_cast<int>(d) < dim) {
-      lo[d] = b.cells[d].begin - halo;
-      hi[d] = b.cells[d].end + halo;
+      lo[d] = b.cells[d].begin - exchange.ghosts_below()[d];
+      hi[d] = lo[d] + exchange.padded_extent()[d];
     }
   int wrong = 0;
   for (auto k = lo[2]; k < hi[2]; ++k)
     for (auto j = lo[1]; j < hi[1]; ++j)
       for (auto i = lo[0]; i < hi[0]; ++i) {
+        if (sides == GhostSides::toward_neighbours) {
+          // Only the sides toward a neighbour hold ghosts.
+          EXPECT_TRUE(i >= 0 && i < cells[0] && j >= 0 && j < cells[1] && k >= 0 && k < cells[2]);
+        }
         const bool inside = i >= 0 && i < cells[0] && (dim < 2 || (j >= 0 && j < cells[1])) &&
                             (dim < 3 || (k >= 0 && k < cells[2]));
         for (int c = 0; c < components; ++c) {
@@ -86,16 +90,22 @@ TEST(HaloExchange, FillsTheGhostsOfSeveralFieldsInOneMessagePerFace) {
 TEST(HaloExchange, FillsEveryGhostInsideTheGridIn3D) {
   check_exchange(3, {7, 6, 5}, 1, 2);
 }
+TEST(HaloExchange, FillsTheGhostsOfABlockWidenedTowardItsNeighboursOnly) {
+  check_exchange(1, {23, 1, 1}, 3, 1, false, GhostSides::toward_neighbours);
+  check_exchange(2, {13, 9, 1}, 2, 2, true, GhostSides::toward_neighbours);
+  check_exchange(3, {7, 6, 5}, 1, 2, false, GhostSides::toward_neighbours);
+}
 
 // Every rank adds 1 + the cell's index to every cell of its padded block
 // inside the grid; after accumulate() each owned cell holds that times the
 // number of padded blocks that cover it (exact: small integers).
-void check_accumulate(int dim, std::array<std::int64_t, 3> cells, int halo) {
+void check_accumulate(int dim, std::array<std::int64_t, 3> cells, int halo,
+                      GhostSides sides = GhostSides::every_side) {
   int ranks = 0;
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   const auto dims = process_grid(ranks, std::span<const std::int64_t>(cells.data(), dim));
   const CartesianDecomposition decomposition(dim, cells, dims);
-  const HaloExchange exchange(MPI_COMM_WORLD, decomposition, halo);
+  const HaloExchange exchange(MPI_COMM_WORLD, decomposition, halo, sides);
   auto padded = [&](const Block& b, std::size_t d) {
     return static_cast<int>(d) < dim ? Range{b.cells[d].begin - halo, b.cells[d].end + halo}
                                      : Range{0, 1};
@@ -143,6 +153,10 @@ TEST(HaloExchange, AccumulateAddsEveryGhostToItsOwnerIn2D) {
 }
 TEST(HaloExchange, AccumulateAddsEveryGhostToItsOwnerIn3D) {
   check_accumulate(3, {7, 6, 5}, 1);
+}
+TEST(HaloExchange, AccumulateAddsTheGhostsOfABlockWidenedTowardItsNeighbours) {
+  check_accumulate(2, {13, 9, 1}, 2, GhostSides::toward_neighbours);
+  check_accumulate(3, {7, 6, 5}, 1, GhostSides::toward_neighbours);
 }
 
 TEST(HaloExchange, RefusesAHaloWiderThanABlock) {

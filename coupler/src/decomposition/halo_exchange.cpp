@@ -9,7 +9,8 @@
 
 namespace cosim::decomposition {
 
-HaloExchange::HaloExchange(MPI_Comm comm, const CartesianDecomposition& decomposition, int halo)
+HaloExchange::HaloExchange(MPI_Comm comm, const CartesianDecomposition& decomposition, int halo,
+                           GhostSides sides)
     : dim_(decomposition.dimension()), halo_(halo) {
   int size = 0;
   MPI_Comm_size(comm, &size);
@@ -24,11 +25,16 @@ HaloExchange::HaloExchange(MPI_Comm comm, const CartesianDecomposition& decompos
   block_ = decomposition.block(rank_);
   for (std::size_t d = 0; d < 3; ++d) {
     if (static_cast<int>(d) >= dim_) continue;
-    if (block_.cells[d].size() < halo)
+    const bool divided = block_.neighbour[2 * d] >= 0 || block_.neighbour[2 * d + 1] >= 0;
+    if ((sides == GhostSides::every_side || divided) && block_.cells[d].size() < halo)
       throw InputError(
           fmt::format("rank {} owns {} cells along direction {}, fewer than the halo's {} layers",
                       rank_, block_.cells[d].size(), d, halo));
-    extent_[d] = block_.cells[d].size() + 2 * halo;
+    const auto ghosts = [&](int side) {
+      return sides == GhostSides::every_side || block_.neighbour[2 * d + side] >= 0 ? halo : 0;
+    };
+    below_[d] = ghosts(0);
+    extent_[d] = below_[d] + block_.cells[d].size() + ghosts(1);
   }
 }
 
@@ -44,7 +50,7 @@ std::size_t HaloExchange::index(std::int64_t i, std::int64_t j, std::int64_t k) 
   const std::array<std::int64_t, 3> global{i, j, k};
   std::array<std::int64_t, 3> local{0, 0, 0};
   for (std::size_t d = 0; d < 3; ++d)
-    local[d] = static_cast<int>(d) < dim_ ? global[d] - block_.cells[d].begin + halo_ : 0;
+    local[d] = static_cast<int>(d) < dim_ ? global[d] - block_.cells[d].begin + below_[d] : 0;
   return static_cast<std::size_t>((local[2] * extent_[1] + local[1]) * extent_[0] + local[0]);
 }
 
@@ -101,8 +107,8 @@ void HaloExchange::exchange(std::span<const std::span<double>> fields, int compo
     // Towards the upper neighbour: its lower ghosts get my last owned layers;
     // then towards the lower one.
     for (int side = 0; side < 2; ++side) {
-      const std::int64_t send_first = side == 0 ? owned : halo_;
-      const std::int64_t receive_first = side == 0 ? 0 : owned + halo_;
+      const std::int64_t send_first = side == 0 ? below_[d] + owned - halo_ : below_[d];
+      const std::int64_t receive_first = side == 0 ? 0 : below_[d] + owned;
       transfer(fields, per_cell, d, side == 0, send_first, receive_first,
                [](double* field, const double* buffer, std::size_t n) {
                  std::copy_n(buffer, n, field);
@@ -123,8 +129,8 @@ void HaloExchange::accumulate(std::span<const std::span<double>> fields) const {
     // My upper ghosts to the upper neighbour's first owned layers; then my
     // lower ghosts to the lower neighbour's last owned layers.
     for (int side = 0; side < 2; ++side) {
-      const std::int64_t send_first = side == 0 ? owned + halo_ : 0;
-      const std::int64_t receive_first = side == 0 ? halo_ : owned;
+      const std::int64_t send_first = side == 0 ? below_[d] + owned : 0;
+      const std::int64_t receive_first = side == 0 ? below_[d] : below_[d] + owned - halo_;
       transfer(fields, 1, d, side == 0, send_first, receive_first,
                [](double* field, const double* buffer, std::size_t n) {
                  for (std::size_t v = 0; v < n; ++v) field[v] += buffer[v];

@@ -12,11 +12,16 @@
 
 namespace cosim::decomposition {
 
+// Where a block stores ghost layers: on every side (a ghost layer on the
+// grid's own edge is then left to the solver's boundary conditions), or only
+// on the sides another block lies across (a solver whose grid is its block
+// widened toward its neighbours, its own sides keeping their conditions).
+enum class GhostSides { every_side, toward_neighbours };
+
 // One rank's block of a CartesianDecomposition with `halo` layers of ghost
-// cells on every side, and the exchange that fills the ghost cells on the
-// faces it shares with other ranks from their owned cells. The block is
-// stored with its ghosts, x fastest (padded_extent()); a ghost layer on the
-// grid's own edge is left to the solver's boundary conditions. Corners and
+// cells on its sides (GhostSides), and the exchange that fills the ghost
+// cells on the faces it shares with other ranks from their owned cells. The
+// block is stored with its ghosts, x fastest (padded_extent()). Corners and
 // edges are filled too: the directions are exchanged one after the other,
 // each over the whole padded extent of the others, so a later direction
 // carries what an earlier one brought.
@@ -26,7 +31,8 @@ class HaloExchange {
   // made from it in the decomposition's order (MPI_Cart_create without
   // reordering). Throws cosim::InputError for a communicator of another
   // size, a negative halo, or a halo wider than a block.
-  HaloExchange(MPI_Comm comm, const CartesianDecomposition& decomposition, int halo);
+  HaloExchange(MPI_Comm comm, const CartesianDecomposition& decomposition, int halo,
+               GhostSides sides = GhostSides::every_side);
   ~HaloExchange();
   HaloExchange(const HaloExchange&) = delete;
   HaloExchange& operator=(const HaloExchange&) = delete;
@@ -34,8 +40,11 @@ class HaloExchange {
   int rank() const { return rank_; }
   const Block& block() const { return block_; }
   int halo() const { return halo_; }
-  // Cells per direction with the ghosts (owned + 2 halo; 1 beyond the grid's dim).
+  // Cells per direction with the ghosts (owned + the ghost layers below and
+  // above; 1 beyond the grid's dim).
   const std::array<std::int64_t, 3>& padded_extent() const { return extent_; }
+  // Ghost layers below the first owned cell per direction (halo or 0).
+  const std::array<std::int64_t, 3>& ghosts_below() const { return below_; }
   std::size_t padded_size() const;
   // Index in the padded block of the cell with global indices (i, j, k),
   // which may lie in the ghost layers.
@@ -67,6 +76,7 @@ class HaloExchange {
   int halo_ = 0;
   Block block_;
   std::array<std::int64_t, 3> extent_{1, 1, 1};
+  std::array<std::int64_t, 3> below_{0, 0, 0};
   mutable std::vector<double> send_, receive_;
   mutable std::size_t values_sent_ = 0;
 

@@ -12,7 +12,8 @@
 namespace ice {
 
 template <int Dim>
-double advection_rate(const CellGrid<Dim>& grid, const FaceField<Dim>& face_velocity) {
+double advection_rate(const CellGrid<Dim>& grid, const FaceField<Dim>& face_velocity,
+                      std::span<const unsigned char> counted) {
   for (int d = 0; d < Dim; ++d) {
     if (face_velocity[d].size() != static_cast<std::size_t>(grid.face_count(d))) {
       throw std::invalid_argument("advection_rate: " + std::to_string(face_velocity[d].size()) +
@@ -34,7 +35,8 @@ double advection_rate(const CellGrid<Dim>& grid, const FaceField<Dim>& face_velo
         const double* u = lower[d];
         cell_rate += std::max(std::abs(u[c]), std::abs(u[c + grid.stride(d)])) / grid.spacing()[d];
       }
-      rate = std::max(rate, cell_rate);
+      if (counted.empty() || counted[static_cast<std::size_t>(c)] != 0)
+        rate = std::max(rate, cell_rate);
     }
   });
   return rate;
@@ -47,9 +49,12 @@ double advection_time_step(const CellGrid<Dim>& grid, const FaceField<Dim>& face
   return rate > 0.0 ? courant / rate : std::numeric_limits<double>::infinity();
 }
 
-template double advection_rate(const CellGrid<1>&, const FaceField<1>&);
-template double advection_rate(const CellGrid<2>&, const FaceField<2>&);
-template double advection_rate(const CellGrid<3>&, const FaceField<3>&);
+template double advection_rate(const CellGrid<1>&, const FaceField<1>&,
+                               std::span<const unsigned char>);
+template double advection_rate(const CellGrid<2>&, const FaceField<2>&,
+                               std::span<const unsigned char>);
+template double advection_rate(const CellGrid<3>&, const FaceField<3>&,
+                               std::span<const unsigned char>);
 template double advection_time_step(const CellGrid<1>&, const FaceField<1>&, double);
 template double advection_time_step(const CellGrid<2>&, const FaceField<2>&, double);
 template double advection_time_step(const CellGrid<3>&, const FaceField<3>&, double);

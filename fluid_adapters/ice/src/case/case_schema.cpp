@@ -110,10 +110,17 @@ Schema numerics_schema() {
                 "Relative residual of conjugate gradients.")
       .optional("max_iterations", Schema::integer().range(1, 1e6).default_value("2000"),
                 "Iterations before a numerical failure (exit 4).")
-      .optional(
-          "preconditioner",
-          Schema::one_of({"multigrid", "jacobi", "incomplete_cholesky"}).default_value("multigrid"),
-          "Preconditioner of conjugate gradients.");
+      .optional("solver", Schema::one_of({"builtin", "petsc"}),
+                "builtin: the solver's own conjugate gradients (one process); petsc: PETSc's, "
+                "over every rank. Default: builtin on one process, petsc on several ranks.")
+      .optional("preconditioner",
+                Schema::one_of({"multigrid", "jacobi", "incomplete_cholesky", "gamg", "boomeramg"}),
+                "Preconditioner of conjugate gradients. builtin: multigrid (default), jacobi or "
+                "incomplete_cholesky; petsc: gamg (default; PETSc's algebraic multigrid), "
+                "boomeramg (hypre's) or jacobi.")
+      .optional("petsc_options", Schema::string(),
+                "With petsc: further PETSc options, prefix ice_pressure_ (e.g. "
+                "\"-ice_pressure_ksp_monitor\").");
   Schema equilibration =
       Schema::object("The per-cell pressure equilibration (eqs. 42-43).").default_value("{}");
   equilibration

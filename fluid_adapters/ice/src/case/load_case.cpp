@@ -282,14 +282,39 @@ class CaseReader {
     const Node pressure = node["pressure"];
     n.pressure.tolerance = pressure.get<double>("tolerance");
     n.pressure.max_iterations = pressure.get<int>("max_iterations");
-    n.pressure.preconditioner =
-        pressure_preconditioner_from_name(pressure.get<std::string>("preconditioner"));
+    read_pressure_solver(pressure, n);
     const Node equilibration = node["equilibration"];
     n.equilibration.tolerance = equilibration.get<double>("tolerance");
     n.equilibration.max_iterations = equilibration.get<int>("max_iterations");
     if (auto t = node.find("turbulence"); t && !t->is_scalar()) {
       n.smagorinsky_constant = t->get<double>("constant");
     }
+  }
+
+  // The pressure solve's solver and preconditioner, which must belong to it.
+  static void read_pressure_solver(const Node& pressure, NumericsDescription& n) {
+    using Kind = NumericsDescription::PressureSolverKind;
+    if (auto solver = pressure.find("solver"))
+      n.pressure_solver = solver->as<std::string>() == "petsc" ? Kind::petsc : Kind::builtin;
+    if (auto options = pressure.find("petsc_options")) {
+      if (n.pressure_solver == Kind::builtin)
+        options->fail_at_key("petsc_options are for `solver: petsc`");
+      n.petsc_options = options->as<std::string>();
+    }
+    const auto preconditioner = pressure.find("preconditioner");
+    if (!preconditioner) return;
+    const std::string name = preconditioner->as<std::string>();
+    const bool petsc_only = name == "gamg" || name == "boomeramg";
+    const bool builtin_only = name == "multigrid" || name == "incomplete_cholesky";
+    if (petsc_only && n.pressure_solver != Kind::petsc)
+      preconditioner->fail(fmt::format("'{}' is PETSc's: it needs `solver: petsc`", name));
+    if (builtin_only && n.pressure_solver == Kind::petsc)
+      preconditioner->fail(fmt::format(
+          "'{}' is the built-in solver's; with `solver: petsc` take gamg, boomeramg or jacobi",
+          name));
+    if (n.pressure_solver == Kind::petsc || name == "jacobi") n.petsc_preconditioner = name;
+    if (n.pressure_solver != Kind::petsc)
+      n.pressure.preconditioner = pressure_preconditioner_from_name(name);
   }
 
   void read_window(CaseDescription& c) {

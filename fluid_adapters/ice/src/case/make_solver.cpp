@@ -6,10 +6,8 @@
 
 namespace ice {
 
-namespace {
-
 template <int Dim>
-CellGrid<Dim> grid_of(const CaseDescription& c) {
+CellGrid<Dim> case_grid(const CaseDescription& c) {
   typename CellGrid<Dim>::Point origin, spacing;
   typename CellGrid<Dim>::CellIndex cells;
   for (int d = 0; d < Dim; ++d) {
@@ -21,12 +19,17 @@ CellGrid<Dim> grid_of(const CaseDescription& c) {
   return CellGrid<Dim>(origin, spacing, cells);
 }
 
-// The case's initial state: fill, regions in order, then the pressure
-// (given, or the discrete hydrostatic column of hydrostatic_pressure).
 template <int Dim>
-FluidState<Dim> initial_state(const CaseDescription& c, const CellGrid<Dim>& grid,
-                              const Eigen::Matrix<double, Dim, 1>& gravity) {
+Eigen::Matrix<double, Dim, 1> case_gravity(const CaseDescription& c) {
+  Eigen::Matrix<double, Dim, 1> gravity;
+  for (int d = 0; d < Dim; ++d) gravity[d] = c.gravity[static_cast<std::size_t>(d)];
+  return gravity;
+}
+
+template <int Dim>
+CellFill<Dim> case_fill(const CaseDescription& c, const CellGrid<Dim>& grid) {
   const InitialDescription& i = c.initial;
+  const Eigen::Matrix<double, Dim, 1> gravity = case_gravity<Dim>(c);
   const auto cells = static_cast<std::size_t>(grid.cell_count());
   CellFill<Dim> fill;
   fill.material.assign(cells, i.fill);
@@ -58,30 +61,45 @@ FluidState<Dim> initial_state(const CaseDescription& c, const CellGrid<Dim>& gri
     fill.pressure = hydrostatic_pressure(grid, c.materials, fill.material, fill.temperature,
                                          gravity, i.reference_pressure, i.minimum_volume_fraction);
   }
-  return make_initial_state(grid, c.materials, fill, i.minimum_volume_fraction);
+  return fill;
 }
 
-}  // namespace
-
-template <int Dim>
-std::unique_ptr<IceSolver<Dim>> make_solver(const CaseDescription& c) {
-  if (c.dimension != Dim) throw std::invalid_argument("make_solver: the case's dimension differs");
-  const CellGrid<Dim> grid = grid_of<Dim>(c);
-  Eigen::Matrix<double, Dim, 1> gravity;
-  for (int d = 0; d < Dim; ++d) gravity[d] = c.gravity[static_cast<std::size_t>(d)];
-  typename IceSolver<Dim>::Sides sides;
-  std::copy(c.sides.begin(), c.sides.end(), sides.begin());
+IceSolverOptions case_solver_options(const CaseDescription& c) {
   IceSolverOptions options;
   options.limiter = c.numerics.limiter;
   options.pressure = c.numerics.pressure;
   options.equilibration = c.numerics.equilibration;
   options.smagorinsky_constant = c.numerics.smagorinsky_constant;
-  return std::make_unique<IceSolver<Dim>>(grid, c.materials, c.exchange, sides, gravity,
-                                          initial_state<Dim>(c, grid, gravity), options);
+  return options;
 }
 
-template std::unique_ptr<IceSolver<1>> make_solver<1>(const CaseDescription&);
-template std::unique_ptr<IceSolver<2>> make_solver<2>(const CaseDescription&);
-template std::unique_ptr<IceSolver<3>> make_solver<3>(const CaseDescription&);
+template <int Dim>
+typename IceSolver<Dim>::Sides case_sides(const CaseDescription& c) {
+  typename IceSolver<Dim>::Sides sides;
+  std::copy_n(c.sides.begin(), sides.size(), sides.begin());
+  return sides;
+}
+
+template <int Dim>
+std::unique_ptr<IceSolver<Dim>> make_solver(const CaseDescription& c) {
+  if (c.dimension != Dim) throw std::invalid_argument("make_solver: the case's dimension differs");
+  const CellGrid<Dim> grid = case_grid<Dim>(c);
+  return std::make_unique<IceSolver<Dim>>(
+      grid, c.materials, c.exchange, case_sides<Dim>(c), case_gravity<Dim>(c),
+      make_initial_state(grid, c.materials, case_fill<Dim>(c, grid),
+                         c.initial.minimum_volume_fraction),
+      case_solver_options(c));
+}
+
+#define ICE_INSTANTIATE_CASE(D)                                                  \
+  template CellGrid<D> case_grid<D>(const CaseDescription&);                     \
+  template Eigen::Matrix<double, D, 1> case_gravity<D>(const CaseDescription&);  \
+  template CellFill<D> case_fill<D>(const CaseDescription&, const CellGrid<D>&); \
+  template IceSolver<D>::Sides case_sides<D>(const CaseDescription&);            \
+  template std::unique_ptr<IceSolver<D>> make_solver<D>(const CaseDescription&);
+ICE_INSTANTIATE_CASE(1)
+ICE_INSTANTIATE_CASE(2)
+ICE_INSTANTIATE_CASE(3)
+#undef ICE_INSTANTIATE_CASE
 
 }  // namespace ice

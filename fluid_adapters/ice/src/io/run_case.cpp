@@ -23,9 +23,15 @@
 #include "ice/case/load_case.hpp"
 #include "ice/case/make_solver.hpp"
 #include "ice/coupling/porous_coupling.hpp"
+#include "ice/io/run_ranks.hpp"
 #include "ice/io/state_output.hpp"
 #include "ice/solver/saved_state.hpp"
 #include "ice/solver/saved_state_file.hpp"
+
+#ifdef ICE_WITH_MPI
+#include "cosim/runtime/mpi_session.hpp"
+#include "ice/parallel/decomposed_run.hpp"
+#endif
 
 namespace ice {
 
@@ -56,10 +62,11 @@ class CaseRun {
   using Vector = Eigen::Matrix<double, Dim, 1>;
 
   CaseRun(const CaseDescription& description, const cosim::SolverCommandLine& options,
-          const cosim::CouplingEndpoint& endpoint, cosim::RunSummary& summary)
+          const cosim::CouplingEndpoint& endpoint, cosim::RunSummary& summary, RunRanks<Dim>& ranks)
       : c_(description),
         options_(options),
         summary_(summary),
+        ranks_(ranks),
         participant_(endpoint.name_or(description.name), endpoint),
         coupling_(description.coupling),
         run_{.snapshots = {description.output_every, description.end_time},
@@ -99,21 +106,39 @@ class CaseRun {
     }
     spdlog::info("completed: t = {:.6g} s in {} steps ({} rejected), {} snapshots",
                  participant_.time(), run_.steps, run_.rejected,
-                 snapshot_writer_ ? snapshot_writer_->snapshots_written() : 0);
+                 snapshots_ ? snapshots_->snapshots_written() : 0);
   }
 
  private:
   void build_solver() {
-    solver_ = make_solver<Dim>(c_);
-    const CellGrid<Dim>& grid = solver_->grid();
-    summary_.set_section("case", {{"name", c_.name},
-                                  {"dimension", Dim},
-                                  {"cells", grid.cell_count()},
-                                  {"materials", material_names()},
-                                  {"cfl", c_.numerics.cfl},
-                                  {"acoustic", c_.numerics.acoustic},
-                                  {"limiter", std::string(to_string(c_.numerics.limiter))},
-                                  {"end_time_s", c_.end_time}});
+    solver_ = ranks_.make_solver(c_);
+    if (!solver_->linked() &&
+        c_.numerics.pressure_solver == NumericsDescription::PressureSolverKind::petsc) {
+#ifdef ICE_WITH_MPI
+      petsc_.emplace();
+      solver_->use_pressure_solver(parallel::petsc_pressure_on_one_process<Dim>(c_));
+#else
+      throw cosim::InputError(
+          fmt::format("{}: key 'numerics.pressure.solver': petsc needs a build with MPI and PETSc",
+                      c_.file.string()));
+#endif
+    }
+    const CellGrid<Dim> grid = case_grid<Dim>(c_);
+    summary_.set_section(
+        "case", {{"name", c_.name},
+                 {"dimension", Dim},
+                 {"cells", grid.cell_count()},
+                 {"ranks", ranks_.ranks()},
+                 {"pressure_solver",
+                  c_.numerics.pressure_solver == NumericsDescription::PressureSolverKind::petsc ||
+                          solver_->linked()
+                      ? "petsc"
+                      : "builtin"},
+                 {"materials", material_names()},
+                 {"cfl", c_.numerics.cfl},
+                 {"acoustic", c_.numerics.acoustic},
+                 {"limiter", std::string(to_string(c_.numerics.limiter))},
+                 {"end_time_s", c_.end_time}});
     spdlog::info("case '{}': {}D, {} cells, materials {}, end time {} s", c_.name, Dim,
                  grid.cell_count(), material_names().dump(), c_.end_time);
   }
@@ -125,11 +150,12 @@ class CaseRun {
   }
 
   void open_outputs() {
-    if (c_.snapshots) {
-      snapshot_writer_.emplace(options_.output, "ice", cell_mesh(solver_->grid(), cells_mesh));
-    }
+    if (c_.snapshots)
+      snapshots_ =
+          ranks_.snapshots(options_.output, "ice", cell_mesh(case_grid<Dim>(c_), cells_mesh));
     if (!c_.gauges.empty() || !c_.wave_gauges.empty())
       gauges_.emplace(options_.output / "gauges.csv", c_.gauges, *solver_, c_.wave_gauges);
+    if (!ranks_.writes_outputs()) return;
     steps_csv_.emplace(
         options_.output / "steps.csv",
         std::vector<std::string>{cosim::column_name("time", "s"), cosim::column_name("dt", "s"),
@@ -229,7 +255,9 @@ class CaseRun {
     }
   }
 
-  bool restarts() const { return !participant_.restart_directory().empty(); }
+  bool restarts() const {
+    return !participant_.restart_directory().empty();
+  }
 
   // The run's part of a coupled checkpoint (architecture.md §14): the
   // solver's state as save_state() copies it (into the buffer of the window
@@ -310,8 +338,8 @@ class CaseRun {
                             static_cast<double>(report.equilibration_iterations),
                             report.volume_closure,
                             report.courant};
-      outputs_.append(*steps_csv_, row);
-      if (snapshot_writer_) outputs_.write(*snapshot_writer_, t, fields_.fields(*solver_));
+      if (steps_csv_) outputs_.append(*steps_csv_, row);
+      if (snapshots_) outputs_.write(*snapshots_, t, ranks_.owned(fields_.fields(*solver_)));
       last_snapshot_time_ = t;
       if (t > 0.0) run_.snapshots.passed(t, tolerance_);
     }
@@ -322,10 +350,10 @@ class CaseRun {
   // looked at; not inside a window that may run again (its outputs are held
   // until it converges) nor twice at one time.
   void write_failure_snapshot(double t) {
-    if (!snapshot_writer_ || outputs_.holding() || !(t > last_snapshot_time_)) return;
-    snapshot_writer_->write(t, fields_.fields(*solver_));
+    if (!snapshots_ || outputs_.holding() || !(t > last_snapshot_time_)) return;
+    snapshots_->write(t, ranks_.owned(fields_.fields(*solver_)));
     spdlog::warn("the state at t = {:.9g} s, where the steps were refused, is snapshot {}", t,
-                 snapshot_writer_->snapshots_written() - 1);
+                 snapshots_->snapshots_written() - 1);
   }
 
   void record_conserved(bool start) {
@@ -385,7 +413,11 @@ class CaseRun {
   const CaseDescription& c_;
   const cosim::SolverCommandLine& options_;
   cosim::RunSummary& summary_;
+  RunRanks<Dim>& ranks_;
   cosim::Participant participant_;
+#ifdef ICE_WITH_MPI
+  std::optional<parallel::PetscLibrary> petsc_;  // `solver: petsc` on one process
+#endif
   std::unique_ptr<IceSolver<Dim>> solver_;
   PorousCoupling<Dim> coupling_;
   RunBookkeeping run_;
@@ -397,7 +429,7 @@ class CaseRun {
   std::size_t windows_saved_ = 0;
   SnapshotFieldSet<Dim> fields_;
   cosim::HeldOutputs outputs_;
-  std::optional<cosim::SnapshotWriter> snapshot_writer_;
+  std::unique_ptr<cosim::SnapshotSink> snapshots_;
   std::optional<GaugeRecorder<Dim>> gauges_;
   std::optional<cosim::TimeSeriesWriter> steps_csv_;
 };
@@ -405,26 +437,92 @@ class CaseRun {
 template <int Dim>
 void run_dimension(const CaseDescription& c, const cosim::SolverCommandLine& options,
                    const cosim::CouplingEndpoint& endpoint, cosim::RunSummary& summary) {
-  CaseRun<Dim> run(c, options, endpoint, summary);
+  RunRanks<Dim> one_process;
+  CaseRun<Dim> run(c, options, endpoint, summary, one_process);
   run.run();
 }
+
+CaseDescription read_case(const cosim::SolverCommandLine& options, cosim::RunSummary& summary) {
+  CaseDescription description = [&] {
+    auto scope = summary.phases().measure("read_case");
+    return load_case(options.config);
+  }();
+  summary.set_config(options.config, description.config_hash);
+  spdlog::info("size: {} (limits.memory_gib {:g})", description.size.describe(),
+               description.size.memory_limit_gib);
+  summary.set_section("size", description.size.to_json());
+  return description;
+}
+
+#ifdef ICE_WITH_MPI
+template <int Dim>
+void run_decomposed_dimension(const CaseDescription& c, const cosim::SolverCommandLine& options,
+                              const cosim::CouplingEndpoint& endpoint, cosim::RunSummary& summary) {
+  parallel::DecomposedRun<Dim> part(MPI_COMM_WORLD, c);
+  const auto& dims = part.decomposition().dims();
+  spdlog::info("case '{}': {}D on {} ranks ({} x {} x {} blocks), pressure by PETSc (CG, {})",
+               c.name, Dim, part.ranks(), dims[0], dims[1], dims[2],
+               c.numerics.petsc_preconditioner);
+  const auto& b = part.link().halo().block();
+  spdlog::info("rank {}: cells [{}, {}) x [{}, {}) x [{}, {})", part.rank(), b.cells[0].begin,
+               b.cells[0].end, b.cells[1].begin, b.cells[1].end, b.cells[2].begin, b.cells[2].end);
+  CaseRun<Dim> run(c, options, endpoint, summary, part);
+  run.run();
+  summary.set_metric("communication_seconds", part.link().communication_seconds(), "s");
+  summary.set_metric("halo_values_sent", static_cast<double>(part.link().values_sent()), "1");
+}
+
+// ice_fluid standalone under `mpirun -np N`, N > 1: rank 0 prepares the
+// output directory and writes the tables and the summary; every rank writes
+// its block into each snapshot; rank r keeps its own log and summary in
+// ranks/rank_<r>/. The job ends with the largest exit code of its ranks; a
+// rank that fails while the others still run ends them all
+// (cosim::runtime::MpiSession::finish).
+int run_decomposed(const cosim::SolverCommandLine& options) {
+  const cosim::runtime::MpiSession mpi;
+  const cosim::runtime::RankOutput mine = cosim::runtime::prepare_rank_output(
+      mpi, options.output, options.reuse, options.verbosity, "ice_fluid");
+  if (mine.refused != 0) return mine.refused;
+  cosim::init_logging(mine.directory, "ice_fluid", mine.verbosity);
+  cosim::RunSummary summary(mine.directory, "ice_fluid");
+  int code = 0;
+  {
+    const parallel::PetscLibrary petsc;
+    code = cosim::run_and_finish(summary, [&] {
+      const CaseDescription description = read_case(options, summary);
+      switch (description.dimension) {
+        case 1:
+          throw cosim::InputError(
+              fmt::format("{}: key 'dimension': a 1D case runs on one "
+                          "process; mpirun started {}",
+                          description.file.string(), mpi.ranks()));
+        case 2:
+          run_decomposed_dimension<2>(description, options, options.endpoint, summary);
+          break;
+        default:
+          run_decomposed_dimension<3>(description, options, options.endpoint, summary);
+          break;
+      }
+    });
+  }
+  spdlog::default_logger()->flush();
+  return mpi.finish(code);
+}
+#endif
 
 }  // namespace
 
 int run_case(const cosim::SolverCommandLine& options) {
   const cosim::CouplingEndpoint& endpoint = options.endpoint;
+#ifdef ICE_WITH_MPI
+  if (endpoint.is_standalone() && cosim::runtime::ranks_from_launcher() > 1)
+    return run_decomposed(options);
+#endif
   cosim::prepare_output_directory(options.output, options.reuse);
   cosim::init_logging(options.output, "ice_fluid", options.verbosity);
   cosim::RunSummary summary(options.output, "ice_fluid");
   return cosim::run_and_finish(summary, [&] {
-    const CaseDescription description = [&] {
-      auto scope = summary.phases().measure("read_case");
-      return load_case(options.config);
-    }();
-    summary.set_config(options.config, description.config_hash);
-    spdlog::info("size: {} (limits.memory_gib {:g})", description.size.describe(),
-                 description.size.memory_limit_gib);
-    summary.set_section("size", description.size.to_json());
+    const CaseDescription description = read_case(options, summary);
     switch (description.dimension) {
       case 1:
         run_dimension<1>(description, options, endpoint, summary);

@@ -27,17 +27,6 @@ void check_porosity(std::span<const double> porosity) {
   }
 }
 
-template <int Dim>
-typename PressureSolver<Dim>::Boundaries pressure_boundaries(
-    const typename IceSolver<Dim>::Sides& sides) {
-  typename PressureSolver<Dim>::Boundaries boundaries{};
-  for (std::size_t s = 0; s < sides.size(); ++s) {
-    boundaries[s] = sides[s].type == SideType::fixed_pressure ? PressureBoundary::fixed_pressure
-                                                              : PressureBoundary::wall;
-  }
-  return boundaries;
-}
-
 // Eqs. 44-45 on the interior faces first <= f < end of a row (upper cell
 // f - upper_offset, lower one stride below); see compute_face_velocities.
 // A function of its own, with restrict-qualified outputs, so that the loop
@@ -190,7 +179,7 @@ IceSolver<Dim>::IceSolver(const CellGrid<Dim>& grid, std::vector<FluidMaterial> 
       gravity_(gravity),
       options_(options),
       state_(std::move(state)),
-      pressure_solver_(grid, pressure_boundaries<Dim>(sides), options.pressure),
+      pressure_solver_(grid, pressure_boundaries(sides), options.pressure),
       advector_(grid, options.limiter),
       diffusion_(grid, sides) {
   const std::size_t n = materials_.size();
@@ -242,6 +231,7 @@ IceSolver<Dim>::IceSolver(const CellGrid<Dim>& grid, std::vector<FluidMaterial> 
     }
   }
 
+  owned_.assign(cells, 1);
   kappa_.assign(n, CellField(cells, 0.0));
   face_velocity_.assign(n, make_face_field(grid_));
   face_correction_.assign(n, make_face_field(grid_));
@@ -502,6 +492,7 @@ double IceSolver<Dim>::stable_time_step(double courant, bool acoustic) const {
     }
     rate = std::max(rate, cell_rate);
   }
+  rate = max_over_blocks(rate);
   double step = rate > 0.0 ? courant / rate : std::numeric_limits<double>::infinity();
   if (viscous_ || conducting_) {
     // Explicit viscous and conductive fluxes: the largest kinematic viscosity
@@ -517,7 +508,7 @@ double IceSolver<Dim>::stable_time_step(double courant, bool acoustic) const {
                       materials_[m].thermal_conductivity / (rho * eos_[m]->specific_heat())});
       }
     }
-    step = std::min(step, diffusion_time_step(grid_, diffusivity));
+    step = std::min(step, diffusion_time_step(grid_, max_over_blocks(diffusivity)));
   }
   return step;
 }
@@ -564,6 +555,12 @@ StepReport IceSolver<Dim>::advance(double dt) {
   compute_lagrangian_specific_volume(dt);
   advect_and_update(dt, report);
   if (solid_drag_on_) previous_face_velocity_ = face_velocity_;
+  if (link_) {
+    refresh_ghosts();
+    report.volume_closure = link_->max(report.volume_closure);
+    report.equilibration_iterations =
+        static_cast<int>(link_->max(static_cast<double>(report.equilibration_iterations)));
+  }
   time_ += dt;
   ++steps_;
   return report;
@@ -755,6 +752,7 @@ bool IceSolver<Dim>::upwind_side_changed(double dt) const {
       for_each_face(
           grid_, d,
           [&](int f, int lower, int upper) {
+            if (owned_[at(lower)] == 0 && owned_[at(upper)] == 0) return;
             const double upwind = phi[at(u[f] >= 0.0 ? lower : upper)];
             largest = std::max(largest, std::abs(upwind - carried[f]) * std::abs(u[f]));
           },
@@ -762,7 +760,7 @@ bool IceSolver<Dim>::upwind_side_changed(double dt) const {
       changed = changed || largest * factor > 1e-10;
     }
   }
-  return changed;
+  return any_block(changed);
 }
 
 // Tran et al., MPMICE, eqs. 52-53 and 125, then each material's face
@@ -779,9 +777,15 @@ PressureSolution IceSolver<Dim>::solve_pressure_increment(double dt) {
   } else {
     displacement_rate_.clear();
   }
-  const PressureSolution solution =
-      pressure_solver_.solve(mixture_kappa_, face_density_, mixture_velocity_, dt,
-                             pressure_increment_, displacement_rate_);
+  PressureSystemSolver<Dim>& system =
+      pressure_system_ ? *pressure_system_
+                       : static_cast<PressureSystemSolver<Dim>&>(pressure_solver_);
+  const PressureSolution solution = system.solve(mixture_kappa_, face_density_, mixture_velocity_,
+                                                 dt, pressure_increment_, displacement_rate_);
+  if (link_) {
+    const std::span<double> increment[1] = {pressure_increment_};
+    link_->fill_ghosts(increment);
+  }
   correct_face_velocities(dt, 1.0);
   for (std::size_t c = 0; c < new_pressure_.size(); ++c) {
     new_pressure_[c] = state_.pressure[c] + pressure_increment_[c];
@@ -844,9 +848,11 @@ template <int Dim>
 double IceSolver<Dim>::face_courant(double dt) const {
   double rate = 0.0;
   for (std::size_t m = 0; m < count(); ++m) {
-    rate = std::max(rate, advection_rate(grid_, face_velocity_[m]));
+    rate = std::max(rate, advection_rate(grid_, face_velocity_[m],
+                                         link_ ? std::span<const unsigned char>(owned_)
+                                               : std::span<const unsigned char>()));
   }
-  return rate * dt;
+  return max_over_blocks(rate) * dt;
 }
 
 // Tran et al., MPMICE, eq. 54 with the mixture bulk densities
@@ -963,6 +969,7 @@ bool IceSolver<Dim>::compute_lagrangian_energy(double dt) {
     }
     return heat / capacity;
   };
+  bool empty = false;  // some owned cell left without internal energy
   for (std::size_t m = 0; m < count(); ++m) {
     const MaterialState<Dim>& material = state_.materials[m];
     const double c_v = eos_[m]->specific_heat();
@@ -1003,12 +1010,13 @@ bool IceSolver<Dim>::compute_lagrangian_energy(double dt) {
     // A compression too strong for the step (or work that empties a
     // material) leaves no internal energy: the step is refused.
     if (refused > 0) {
-      for (std::size_t i = 0; i < cells; ++i) {
-        if (!(energy[i] > 0.0) || !std::isfinite(energy[i])) return false;
+      for (std::size_t i = 0; i < cells && !empty; ++i) {
+        empty = owned_[i] != 0 && (!(energy[i] > 0.0) || !std::isfinite(energy[i]));
       }
     }
+    if (empty) break;
   }
-  return true;
+  return !any_block(empty);
 }
 
 // Tran et al., MPMICE, eqs. 73-76 per unit volume: each material's share
@@ -1091,6 +1099,7 @@ void IceSolver<Dim>::advect_and_update(double dt, StepReport& report) {
                                 material.temperature.data(), material.specific_volume.data()) > 0;
     if (!bad) continue;
     for (std::size_t c = 0; c < cells; ++c) {
+      if (owned_[c] == 0) continue;  // a ghost's own step is the owner's to judge
       const double mass = mass_[m][c];
       if (!(mass > 0.0) || !std::isfinite(mass)) {
         throw cosim::NumericalError(
@@ -1107,6 +1116,7 @@ void IceSolver<Dim>::advect_and_update(double dt, StepReport& report) {
   }
   double closure = 0.0;
   for (std::size_t c = 0; c < cells; ++c) {
+    if (owned_[c] == 0) continue;
     double volume = 0.0;
     for (std::size_t m = 0; m < n; ++m) volume += volume_[m][c];
     closure = std::max(closure, std::abs(volume - state_.porosity[c]));
@@ -1198,6 +1208,7 @@ std::vector<MaterialTotals> IceSolver<Dim>::totals() const {
     const MaterialState<Dim>& material = state_.materials[m];
     const double c_v = eos_[m]->specific_heat();
     for (std::size_t c = 0; c < material.bulk_density.size(); ++c) {
+      if (owned_[c] == 0) continue;
       const double mass = material.bulk_density[c] * volume;
       result[m].mass += mass;
       for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
@@ -1207,7 +1218,79 @@ std::vector<MaterialTotals> IceSolver<Dim>::totals() const {
       result[m].internal_energy += mass * c_v * material.temperature[c];
     }
   }
+  if (link_) {
+    std::vector<double> sums;
+    for (const MaterialTotals& t : result) {
+      sums.insert(sums.end(), {t.mass, t.momentum[0], t.momentum[1], t.momentum[2],
+                               t.internal_energy, t.kinetic_energy});
+    }
+    link_->sum(sums);
+    for (std::size_t m = 0; m < count(); ++m) {
+      const double* t = sums.data() + 6 * m;
+      result[m] = {t[0], {t[1], t[2], t[3]}, t[4], t[5]};
+    }
+  }
   return result;
+}
+
+template <int Dim>
+typename PressureSolver<Dim>::Boundaries IceSolver<Dim>::pressure_boundaries(const Sides& sides) {
+  typename PressureSolver<Dim>::Boundaries boundaries{};
+  for (std::size_t s = 0; s < sides.size(); ++s) {
+    boundaries[s] = sides[s].type == SideType::fixed_pressure ? PressureBoundary::fixed_pressure
+                                                              : PressureBoundary::wall;
+  }
+  return boundaries;
+}
+
+template <int Dim>
+void IceSolver<Dim>::use_pressure_solver(std::unique_ptr<PressureSystemSolver<Dim>> pressure) {
+  pressure_system_ = std::move(pressure);
+}
+
+template <int Dim>
+void IceSolver<Dim>::link_blocks(std::shared_ptr<BlockLink<Dim>> link,
+                                 std::unique_ptr<PressureSystemSolver<Dim>> pressure) {
+  require(link != nullptr && pressure != nullptr,
+          "a linked block needs its link and pressure solver");
+  const auto owned = link->owned_cells();
+  std::fill(owned_.begin(), owned_.end(), 0);
+  for (int c = 0; c < grid_.cell_count(); ++c) {
+    const auto ijk = grid_.cell_ijk(c);
+    bool inside = true;
+    for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
+      require(owned[d][0] >= 0 && owned[d][0] < owned[d][1] && owned[d][1] <= grid_.cells()[d],
+              "the owned cells must lie in the block's grid");
+      inside = inside && ijk[d] >= owned[d][0] && ijk[d] < owned[d][1];
+    }
+    owned_[at(c)] = inside ? 1 : 0;
+  }
+  link_ = std::move(link);
+  pressure_system_ = std::move(pressure);
+}
+
+template <int Dim>
+bool IceSolver<Dim>::any_block(bool local) const {
+  return link_ ? link_->max(local ? 1.0 : 0.0) > 0.0 : local;
+}
+
+template <int Dim>
+double IceSolver<Dim>::max_over_blocks(double local) const {
+  return link_ ? link_->max(local) : local;
+}
+
+// Everything SavedIceState lists as cell fields, as their owners hold them.
+template <int Dim>
+void IceSolver<Dim>::refresh_ghosts() {
+  std::vector<std::span<double>> fields{state_.pressure, state_.porosity, mixture_kappa_};
+  for (auto& component : state_.solid_velocity) fields.emplace_back(component);
+  for (std::size_t m = 0; m < count(); ++m) {
+    MaterialState<Dim>& material = state_.materials[m];
+    fields.insert(fields.end(), {material.bulk_density, material.temperature, material.density,
+                                 material.volume_fraction, material.specific_volume, kappa_[m]});
+    for (auto& component : material.velocity) fields.emplace_back(component);
+  }
+  link_->fill_ghosts(fields);
 }
 
 template class IceSolver<1>;

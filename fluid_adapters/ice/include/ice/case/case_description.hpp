@@ -54,6 +54,14 @@ struct NumericsDescription {
   double max_step_growth = 1.2;
   Limiter limiter = Limiter::van_leer;
   PressureSolverOptions pressure;
+  // Who solves the pressure equation: the built-in solver (one process) or
+  // PETSc (any number of ranks); none given: built-in on one process, PETSc
+  // on several. With PETSc: its preconditioner (gamg, boomeramg, jacobi)
+  // and further options (prefix ice_pressure_).
+  enum class PressureSolverKind { builtin, petsc };
+  std::optional<PressureSolverKind> pressure_solver;
+  std::string petsc_preconditioner = "gamg";
+  std::string petsc_options;
   EquilibrationOptions equilibration;
   double smagorinsky_constant = 0.0;  // 0: no turbulence model
 };

@@ -12,6 +12,7 @@
 #include "ice/grid/cell_grid.hpp"
 #include "ice/grid/grid_fields.hpp"
 #include "ice/pressure/multigrid_preconditioner.hpp"
+#include "ice/pressure/pressure_system_solver.hpp"
 
 namespace ice {
 
@@ -54,12 +55,6 @@ struct PressureSolverOptions {
   MultigridOptions multigrid;
 };
 
-struct PressureSolution {
-  int iterations = 0;
-  // ||b - A dP|| / ||b|| of the returned dP (0 for b = 0).
-  double relative_residual = 0.0;
-};
-
 // The implicit pressure increment of the ICE step, Tran et al., MPMICE,
 // eq. 125 (derived in eqs. 120-125; eq. 52 for several materials), written
 // dimensionally consistent (the printed eq. 125 drops a 1/dt on kappa):
@@ -83,7 +78,7 @@ struct PressureSolution {
 //
 // Sides are indexed 2 d (lower) and 2 d + 1 (upper) for direction d.
 template <int Dim>
-class PressureSolver {
+class PressureSolver final : public PressureSystemSolver<Dim> {
  public:
   using Boundaries = std::array<PressureBoundary, 2 * Dim>;
 
@@ -108,7 +103,12 @@ class PressureSolver {
   PressureSolution solve(std::span<const double> kappa, const FaceField<Dim>& face_density,
                          const FaceField<Dim>& predicted_velocity, double dt,
                          std::span<double> pressure_increment,
-                         std::span<const double> volume_source = {});
+                         std::span<const double> volume_source) override;
+  PressureSolution solve(std::span<const double> kappa, const FaceField<Dim>& face_density,
+                         const FaceField<Dim>& predicted_velocity, double dt,
+                         std::span<double> pressure_increment) {
+    return solve(kappa, face_density, predicted_velocity, dt, pressure_increment, {});
+  }
 
   // U^{n+1}_FC = U*_FC - (dt / rho_FC) grad^FC dP on interior faces and
   // fixed_pressure sides (half-cell gradient to dP = 0); walls unchanged.

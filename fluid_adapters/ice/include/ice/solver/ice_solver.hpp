@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -13,6 +14,8 @@
 #include "ice/grid/cell_grid.hpp"
 #include "ice/grid/grid_fields.hpp"
 #include "ice/pressure/pressure_solver.hpp"
+#include "ice/pressure/pressure_system_solver.hpp"
+#include "ice/solver/block_link.hpp"
 #include "ice/solver/fluid_material.hpp"
 #include "ice/solver/fluid_state.hpp"
 #include "ice/solver/saved_state.hpp"
@@ -174,7 +177,29 @@ class IceSolver {
   // pressure solve or equilibration that does not converge and non-finite or non-positive results.
   StepReport advance(double dt);
 
+  // Totals over the owned cells (over every block when linked: collective).
   std::vector<MaterialTotals> totals() const;
+
+  // What each side is to the pressure equation: fixed_pressure sides fix
+  // dP, every other side is a wall to it.
+  static typename PressureSolver<Dim>::Boundaries pressure_boundaries(const Sides& sides);
+  // Solves the pressure equation with `pressure` instead of the built-in
+  // PressureSolver (e.g. PETSc's, selected by the case file).
+  void use_pressure_solver(std::unique_ptr<PressureSystemSolver<Dim>> pressure);
+  // Runs this solver as one block of a decomposed grid (issue 27): grid() is
+  // the block widened by the link's ghost layers, the state must hold the
+  // ghosts' values as their owners do, and `pressure` solves the pressure
+  // equation together with the other blocks, giving dP in the owned cells.
+  // The time step, the Courant number, a refused step, the totals and the
+  // step's report are then reduced over every block, so all blocks take the
+  // same steps (advance, stable_time_step and totals are collective). Throws
+  // std::invalid_argument for owned ranges outside the grid.
+  void link_blocks(std::shared_ptr<BlockLink<Dim>> link,
+                   std::unique_ptr<PressureSystemSolver<Dim>> pressure);
+  bool linked() const { return link_ != nullptr; }
+  // One flag per cell of grid(): 1 for the cells this block owns (every
+  // cell unless linked).
+  const std::vector<unsigned char>& owned_cells() const { return owned_; }
 
   // Copies everything the next steps read into `saved` (reusing its
   // buffers) and back: after restore_state the solver steps exactly as it
@@ -217,6 +242,10 @@ class IceSolver {
   void add_heat_conduction(double dt);  // eq. 60's div q
   double face_courant(double dt) const;
   bool upwind_side_changed(double dt) const;
+  // Over every block when linked (collective), else the value itself.
+  bool any_block(bool local) const;
+  double max_over_blocks(double local) const;
+  void refresh_ghosts();  // what the next step reads, from the owners
   void correct_face_velocities(double dt, double sign);
   double face_fraction(std::size_t material, int direction, int face) const;
   void check_state(const FluidState<Dim>& state) const;
@@ -239,6 +268,9 @@ class IceSolver {
   long steps_ = 0;
 
   PressureSolver<Dim> pressure_solver_;
+  std::unique_ptr<PressureSystemSolver<Dim>> pressure_system_;  // none: pressure_solver_
+  std::shared_ptr<BlockLink<Dim>> link_;
+  std::vector<unsigned char> owned_;
   Advector<Dim> advector_;
   Diffusion<Dim> diffusion_;
   bool viscous_ = false;

@@ -1,0 +1,118 @@
+#include "ice/parallel/decomposed_run.hpp"
+
+#include <fmt/format.h>
+
+#include <string>
+
+#include "cosim/error.hpp"
+#include "cosim/io/partitioned_snapshot_writer.hpp"
+#include "ice/case/make_solver.hpp"
+
+namespace ice::parallel {
+
+namespace {
+
+// What a decomposed run does not do yet: refused before any rank builds.
+const CaseDescription& runnable(const CaseDescription& c, MPI_Comm comm) {
+  int ranks = 1;
+  MPI_Comm_size(comm, &ranks);
+  const auto refuse = [&](const std::string& key, const std::string& what) {
+    throw cosim::InputError(fmt::format("{}: key '{}': {} runs on one process; mpirun started {}",
+                                        c.file.string(), key, what, ranks));
+  };
+  if (!c.gauges.empty()) refuse("output.gauges", "a case with gauges");
+  if (!c.wave_gauges.empty()) refuse("output.wave_gauges", "a case with wave gauges");
+  if (c.window > 0.0) refuse("window", "a case with a standalone coupling window");
+  if (c.numerics.pressure_solver == NumericsDescription::PressureSolverKind::builtin)
+    refuse("numerics.pressure.solver", "the built-in pressure solver");
+  return c;
+}
+
+template <int Dim>
+BlockSolver<Dim> block_of(MPI_Comm comm, const CaseDescription& c) {
+  try {
+    return make_block_solver<Dim>(comm, runnable(c, comm), petsc_pressure_options(c));
+  } catch (const cosim::InputError& e) {
+    if (std::string(e.what()).find(c.file.string()) == 0) throw;
+    throw cosim::InputError(fmt::format("{}: key 'grid.cells': {}", c.file.string(), e.what()));
+  }
+}
+
+}  // namespace
+
+PetscPressureOptions petsc_pressure_options(const CaseDescription& c) {
+  PetscPressureOptions options;
+  options.tolerance = c.numerics.pressure.tolerance;
+  options.max_iterations = c.numerics.pressure.max_iterations;
+  options.preconditioner = c.numerics.petsc_preconditioner;
+  options.petsc_options = c.numerics.petsc_options;
+  return options;
+}
+
+template <int Dim>
+DecomposedRun<Dim>::DecomposedRun(MPI_Comm comm, const CaseDescription& description)
+    : comm_(comm), block_(block_of<Dim>(comm, description)) {}
+
+template <int Dim>
+std::unique_ptr<IceSolver<Dim>> DecomposedRun<Dim>::make_solver(const CaseDescription&) {
+  if (!block_.solver) throw std::logic_error("DecomposedRun: the block's solver was taken");
+  return std::move(block_.solver);
+}
+
+template <int Dim>
+std::unique_ptr<cosim::SnapshotSink> DecomposedRun<Dim>::snapshots(
+    const std::filesystem::path& directory, const std::string& base_name,
+    const cosim::Mesh& cells) {
+  return std::make_unique<cosim::PartitionedSnapshotWriter>(comm_, directory, base_name, cells,
+                                                            block_.link->halo().block().cells);
+}
+
+template <int Dim>
+const cosim::SnapshotFields& DecomposedRun<Dim>::owned(const cosim::SnapshotFields& fields) {
+  const auto& halo = block_.link->halo();
+  const auto& extent = halo.padded_extent();
+  const auto& below = halo.ghosts_below();
+  const auto& cells = halo.block().cells;
+  owned_values_.resize(fields.size());
+  owned_fields_.clear();
+  std::size_t f = 0;
+  for (const auto& [name, field] : fields) {
+    const auto components = static_cast<std::size_t>(field.components);
+    std::vector<double>& values = owned_values_[f++];
+    values.clear();
+    for (std::int64_t k = 0; k < cells[2].size(); ++k)
+      for (std::int64_t j = 0; j < cells[1].size(); ++j) {
+        const auto row = static_cast<std::size_t>(
+            ((k + below[2]) * extent[1] + j + below[1]) * extent[0] + below[0]);
+        const auto first = field.values.begin() + static_cast<std::ptrdiff_t>(row * components);
+        values.insert(values.end(), first,
+                      first + static_cast<std::ptrdiff_t>(
+                                  static_cast<std::size_t>(cells[0].size()) * components));
+      }
+    owned_fields_.emplace(name, cosim::FieldView{values, field.components, field.unit});
+  }
+  return owned_fields_;
+}
+
+template <int Dim>
+std::unique_ptr<PressureSystemSolver<Dim>> petsc_pressure_on_one_process(const CaseDescription& c) {
+  const CellGrid<Dim> grid = case_grid<Dim>(c);
+  std::array<std::int64_t, 3> cells{1, 1, 1};
+  for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) cells[d] = grid.cells()[d];
+  const cosim::decomposition::CartesianDecomposition whole(Dim, cells, {1, 1, 1});
+  return std::make_unique<PetscPressureSolver<Dim>>(
+      MPI_COMM_SELF, whole, grid, IceSolver<Dim>::pressure_boundaries(case_sides<Dim>(c)), grid,
+      typename PetscPressureSolver<Dim>::Offset{}, petsc_pressure_options(c));
+}
+
+template class DecomposedRun<1>;
+template class DecomposedRun<2>;
+template class DecomposedRun<3>;
+template std::unique_ptr<PressureSystemSolver<1>> petsc_pressure_on_one_process<1>(
+    const CaseDescription&);
+template std::unique_ptr<PressureSystemSolver<2>> petsc_pressure_on_one_process<2>(
+    const CaseDescription&);
+template std::unique_ptr<PressureSystemSolver<3>> petsc_pressure_on_one_process<3>(
+    const CaseDescription&);
+
+}  // namespace ice::parallel
