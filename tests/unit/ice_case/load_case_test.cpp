@@ -100,6 +100,15 @@ TEST(IceCase, ReadsEveryKeyAndTheDefaults) {
   EXPECT_TRUE(c.coupling.heat_exchange);
   EXPECT_FALSE(
       load_case_text(replaced(dam_break, "drag: ice, ", ""), "case.yaml").coupling.drag_in_solver);
+  EXPECT_FALSE(c.numerics.pressure_solver);  // built-in on one process, PETSc on several ranks
+  const CaseDescription petsc = load_case_text(
+      replaced(
+          dam_break, "preconditioner: incomplete_cholesky",
+          "solver: petsc, preconditioner: boomeramg, petsc_options: \"-ice_pressure_ksp_view\""),
+      "case.yaml");
+  EXPECT_EQ(petsc.numerics.pressure_solver, NumericsDescription::PressureSolverKind::petsc);
+  EXPECT_EQ(petsc.numerics.petsc_preconditioner, "boomeramg");
+  EXPECT_EQ(petsc.numerics.petsc_options, "-ice_pressure_ksp_view");
   const auto solver = make_solver<2>(c);
   EXPECT_GT(solver->state().materials[0].volume_fraction[0], 0.99);  // water in the corner
   EXPECT_LT(solver->state().materials[0].volume_fraction[7], 1e-5);
@@ -140,6 +149,14 @@ TEST(IceCase, ErrorsNameTheKeyAndTheLine) {
        "wave_gauges: [{name: w, point: [0.2, 0.0], material: oil}]", "no material 'oil'"},
       {"gauges: [{name: g1, point: [0.2, 0.01]}]", "wave_gauges: [{name: w, point: [0.5, 0.0]}]",
        "outside the domain along x"},
+      {"preconditioner: incomplete_cholesky", "preconditioner: gamg",
+       "numerics.pressure.preconditioner': 'gamg' is PETSc's: it needs `solver: petsc`"},
+      {"preconditioner: incomplete_cholesky", "preconditioner: incomplete_cholesky, solver: petsc",
+       "'incomplete_cholesky' is the built-in solver's"},
+      {"preconditioner: incomplete_cholesky",
+       "preconditioner: jacobi, solver: builtin, petsc_options: \"-ice_pressure_ksp_monitor\"",
+       "numerics.pressure.petsc_options"},
+      {"preconditioner: incomplete_cholesky", "solver: hypre", "numerics.pressure.solver"},
   };
   for (const auto& c : cases) {
     const std::string message = error_of(replaced(dam_break, c.from, c.to));

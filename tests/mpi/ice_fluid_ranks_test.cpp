@@ -1,0 +1,156 @@
+// ice_fluid standalone under `mpirun -np N` (label mpi): a dam break in air,
+// on 1 process with the built-in pressure solver and on 2, 3 and 4 ranks
+// with PETSc's, must write the same files: the XDMF index as it is, every
+// snapshot field to the pressure solvers' tolerance, the same steps, the
+// totals to round-off; on one process `solver: petsc` gives the same too.
+// Cases a decomposed run cannot take, and an output directory already in
+// use, are refused with exit 2 by every rank, nothing lost.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "hdf5_reader.hpp"
+#include "launched_program.hpp"
+#include "replaced_text.hpp"
+#include "run_process.hpp"
+#include "text_files.hpp"
+
+namespace cosim::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* dam_break_case = R"(kind: ice_case
+name: dam_break
+dimension: 2
+grid: {origin: [0.0, 0.0], upper: [0.28575, 0.142875], cells: [40, 20]}
+gravity: [0.0, -9.81]
+end_time: 0.03
+materials:
+  water:
+    eos: {type: linear_water, bulk_modulus: 2.15e9, reference_density: 999.8}
+    viscosity: 1.0e-3
+  air:
+    eos: {type: ideal_gas, gas_constant: 287.0, heat_capacity_ratio: 1.4}
+    viscosity: 1.8e-5
+exchange:
+  - {materials: [water, air], momentum: 1.0e15}
+initial:
+  fill: air
+  pressure: hydrostatic
+  temperature: 293.15
+  regions:
+    - {box: {lower: [0.0, 0.0], upper: [0.1, 0.1143]}, fill: water}
+boundaries:
+  y_max: {type: fixed_pressure, pressure: 101325}
+numerics:
+  pressure: {tolerance: 1.0e-12}
+output:
+  every: 0.01
+)";
+
+const std::vector<std::string> snapshots{"ice_000000.h5", "ice_000001.h5", "ice_000002.h5",
+                                         "ice_000003.h5"};
+const std::vector<std::string> fields{"pressure",         "density",
+                                      "velocity",         "bulk_density_water",
+                                      "bulk_density_air", "temperature_water",
+                                      "velocity_water",   "velocity_air",
+                                      "density_water",    "volume_fraction_water"};
+
+// max over the snapshots and fields of |run - reference| / max |reference|.
+double worst_difference(const fs::path& run, const fs::path& reference) {
+  double worst = 0.0;
+  for (const std::string& snapshot : snapshots) {
+    const Hdf5Reader mine(run / snapshot), theirs(reference / snapshot);
+    for (const std::string& field : fields) {
+      const auto a = mine.doubles("fields/" + field);
+      const auto b = theirs.doubles("fields/" + field);
+      EXPECT_EQ(a.dims, b.dims) << field;
+      if (a.values.size() != b.values.size()) return 1.0;
+      double scale = 0.0, difference = 0.0;
+      for (std::size_t i = 0; i < b.values.size(); ++i) {
+        scale = std::max(scale, std::abs(b.values[i]));
+        difference = std::max(difference, std::abs(a.values[i] - b.values[i]));
+      }
+      worst = std::max(worst, difference / scale);
+    }
+  }
+  return worst;
+}
+
+void expect_same_run(const fs::path& run, const fs::path& reference, const std::string& what,
+                     int ranks) {
+  const double worst = worst_difference(run, reference);
+  std::printf("ice_fluid %s: worst relative difference of the snapshots %.3g (tolerance 1e-8)\n",
+              what.c_str(), worst);
+  EXPECT_LT(worst, 1e-8) << what;
+  EXPECT_EQ(read_text(run / "ice.xdmf"), read_text(reference / "ice.xdmf")) << what;
+  const auto summary = nlohmann::json::parse(read_text(run / "summary.json"));
+  const auto expected = nlohmann::json::parse(read_text(reference / "summary.json"));
+  EXPECT_EQ(summary["steps"], expected["steps"]) << what;
+  EXPECT_EQ(summary["case"]["ranks"], ranks) << what;
+  EXPECT_EQ(summary["case"]["pressure_solver"], "petsc") << what;
+  for (const char* quantity : {"mass_water", "mass_air"})
+    for (const char* when : {"start", "end"}) {
+      const double reference_value = expected["conserved"][quantity][when].get<double>();
+      EXPECT_NEAR(summary["conserved"][quantity][when].get<double>(), reference_value,
+                  1e-13 * reference_value)
+          << quantity << " at the " << when << ", " << what;
+    }
+  EXPECT_EQ(read_csv(run / "steps.csv").size(), read_csv(reference / "steps.csv").size()) << what;
+}
+
+TEST(IceFluidRanks, EveryRankCountWritesTheFilesOfOneProcess) {
+  const fs::path dir = fresh_directory("ice_fluid_ranks");
+  const fs::path config = write_case(dir, dam_break_case);
+  const ProcessResult whole = run_launched("ice_fluid", config, dir / "one_process", 0);
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  for (int ranks : {2, 3, 4}) {
+    const fs::path out = dir / ("ranks_" + std::to_string(ranks));
+    const ProcessResult split = run_launched("ice_fluid", config, out, ranks);
+    ASSERT_EQ(split.exit_code, 0) << split.output;
+    expect_same_run(out, dir / "one_process", std::to_string(ranks) + " ranks", ranks);
+    for (int r = 1; r < ranks; ++r)
+      EXPECT_TRUE(fs::exists(out / "ranks" / ("rank_" + std::to_string(r)) / "log.txt"));
+  }
+  // PETSc on one process, asked for by the case.
+  const fs::path petsc_config =
+      write_case(dir / "petsc", replaced(dam_break_case, "pressure: {tolerance: 1.0e-12}",
+                                         "pressure: {tolerance: 1.0e-12, solver: petsc, "
+                                         "preconditioner: boomeramg}"));
+  const ProcessResult petsc = run_launched("ice_fluid", petsc_config, dir / "petsc" / "run", 0);
+  ASSERT_EQ(petsc.exit_code, 0) << petsc.output;
+  expect_same_run(dir / "petsc" / "run", dir / "one_process", "one process, PETSc", 1);
+}
+
+void expect_refused(const std::string& case_text, const std::string& key, int ranks) {
+  expect_refused_on_ranks("ice_fluid", case_text, key, ranks, "ice_000000.h5");
+}
+
+TEST(IceFluidRanks, RefusesBlocksNarrowerThanTheGhostLayers) {
+  expect_refused(replaced(dam_break_case, "cells: [40, 20]", "cells: [8, 4]"), "grid.cells", 2);
+}
+
+TEST(IceFluidRanks, RefusesWhatADecomposedRunCannotTakeYet) {
+  expect_refused(replaced(dam_break_case, "output:\n", R"(output:
+  gauges:
+    - {name: wall, point: [0.2, 0.01]}
+)"),
+                 "output.gauges", 2);
+  expect_refused(replaced(dam_break_case, "pressure: {tolerance: 1.0e-12}",
+                          "pressure: {tolerance: 1.0e-12, solver: builtin}"),
+                 "numerics.pressure.solver", 2);
+  expect_refused(read_text(fs::path(COSIM_SOURCE_DIR) / "configs/ice/sod_shock_tube.yaml"),
+                 "dimension", 2);
+}
+
+TEST(IceFluidRanks, LeavesAnOutputDirectoryInUseAsItWas) {
+  expect_directory_in_use_kept("ice_fluid", dam_break_case);
+}
+
+}  // namespace
+}  // namespace cosim::testing
