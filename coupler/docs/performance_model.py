@@ -51,20 +51,33 @@ def multigrid_levels(ranks, nx, ny):
     return max(1, int(math.log2(max(2.0, min(nx / px, ny / py)))))
 
 
+ICE_GHOSTS = 5  # ice_fluid's ghost layers toward each neighbouring block
+
+
 def ice_step(ranks, nx, ny, seconds_per_cell, cg_iterations):
-    """ICE (Tran et al., MPMICE, Sec. 3): 4 halo exchanges of the materials'
-    fields (2 layers, 12 values: 2 fluids x rho, u, v, e, alpha, plus the
-    solid fraction and velocity), 2 reductions (dt, equilibration); the
-    pressure solve: per CG iteration one halo of the pressure (1 layer) for the
-    matrix product, a V-cycle with 5 halos per level (smoothing down and up,
-    residual, restriction, prolongation) and its coarse solve, 2 dot
-    products."""
-    compute = seconds_per_cell * nx * ny / ranks
+    """ICE as ice_fluid is built (Tran et al., MPMICE, Sec. 3): each rank
+    steps its block widened by 5 ghost layers toward each neighbour (that
+    redundant work counts as compute); per step two halo exchanges of 5
+    layers, dP (1 value) after the pressure solve and the state the next step
+    reads at its end (19 values in 2D with two fluids: pressure, porosity,
+    mixture kappa, 2 solid velocity components, and per fluid bulk density,
+    temperature, density, volume fraction, specific volume, kappa and 2
+    velocity components); 6 reductions (time step, Courant number, upwind
+    check, refused step, volume closure, equilibration report). The pressure
+    solve (PETSc's CG with an algebraic multigrid): per CG iteration one
+    halo of the pressure (1 layer) for the matrix product, a V-cycle with 5
+    halos per level (smoothing down and up, residual, restriction,
+    prolongation) and its coarse solve, 2 dot products."""
+    px, py = process_grid(ranks, nx, ny)
+    widened_x = nx / px + ICE_GHOSTS * min(px - 1, 2)
+    widened_y = ny / py + ICE_GHOSTS * min(py - 1, 2)
+    compute = seconds_per_cell * widened_x * widened_y
     levels = multigrid_levels(ranks, nx, ny)
     coarse = allreduce(ranks)  # the gathered coarse grid
     per_iteration = ((1 + 5 * levels) * halo(ranks, nx, ny, 1, 1) + coarse
                      + 2 * allreduce(ranks))
-    explicit = 4 * halo(ranks, nx, ny, 2, 12) + 2 * allreduce(ranks)
+    explicit = (halo(ranks, nx, ny, ICE_GHOSTS, 1) + halo(ranks, nx, ny, ICE_GHOSTS, 19)
+                + 6 * allreduce(ranks))
     return compute, explicit + cg_iterations * per_iteration
 
 

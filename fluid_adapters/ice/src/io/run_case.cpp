@@ -153,8 +153,14 @@ class CaseRun {
     if (c_.snapshots)
       snapshots_ =
           ranks_.snapshots(options_.output, "ice", cell_mesh(case_grid<Dim>(c_), cells_mesh));
-    if (!c_.gauges.empty() || !c_.wave_gauges.empty())
-      gauges_.emplace(options_.output / "gauges.csv", c_.gauges, *solver_, c_.wave_gauges);
+    if (!c_.gauges.empty() || !c_.wave_gauges.empty()) {
+      const auto file = options_.output / "gauges.csv";
+      if (const auto decomposed = ranks_.gauge_cells(*solver_))
+        gauges_.emplace(file, c_.gauges, *solver_, c_.wave_gauges, *decomposed,
+                        ranks_.writes_outputs());
+      else
+        gauges_.emplace(file, c_.gauges, *solver_, c_.wave_gauges);
+    }
     if (!ranks_.writes_outputs()) return;
     steps_csv_.emplace(
         options_.output / "steps.csv",
@@ -327,7 +333,8 @@ class CaseRun {
 
   void write_outputs(double t, const StepReport& report, double dt = 0.0) {
     if (gauges_ && (t == 0.0 || c_.gauge_every <= 0.0 || run_.gauge_times.due(t, tolerance_))) {
-      outputs_.append(gauges_->writer(), gauges_->row(t, *solver_));
+      const auto row = gauges_->row(t, *solver_, [this](std::span<double> v) { ranks_.sum(v); });
+      if (gauges_->writes()) outputs_.append(gauges_->writer(), row);
     }
     if (t > 0.0) run_.gauge_times.passed(t, tolerance_);
     if (t == 0.0 || run_.snapshots.due(t, tolerance_)) {

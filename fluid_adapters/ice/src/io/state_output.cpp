@@ -109,10 +109,29 @@ template <int Dim>
 GaugeRecorder<Dim>::GaugeRecorder(const std::filesystem::path& file,
                                   const std::vector<GaugePoint>& gauges,
                                   const IceSolver<Dim>& solver,
-                                  const std::vector<WaveGauge>& wave_gauges)
-    : writer_(file, gauge_columns(gauges, wave_gauges, solver)) {
-  const CellGrid<Dim>& grid = solver.grid();
-  for (const GaugePoint& g : gauges) cells_.push_back(cell_holding(grid, g));
+                                  const std::vector<WaveGauge>& wave_gauges) {
+  locate(gauges, solver, wave_gauges, solver.grid(), [](int cell) { return cell; });
+  writer_.emplace(file, gauge_columns(gauges, wave_gauges, solver));
+  row_.resize(writer_->columns().size());
+}
+
+template <int Dim>
+GaugeRecorder<Dim>::GaugeRecorder(const std::filesystem::path& file,
+                                  const std::vector<GaugePoint>& gauges,
+                                  const IceSolver<Dim>& solver,
+                                  const std::vector<WaveGauge>& wave_gauges,
+                                  const Decomposed& decomposed, bool writes) {
+  locate(gauges, solver, wave_gauges, decomposed.whole, decomposed.local);
+  const auto columns = gauge_columns(gauges, wave_gauges, solver);
+  row_.resize(columns.size());
+  if (writes) writer_.emplace(file, columns);
+}
+
+template <int Dim>
+void GaugeRecorder<Dim>::locate(const std::vector<GaugePoint>& gauges, const IceSolver<Dim>& solver,
+                                const std::vector<WaveGauge>& wave_gauges,
+                                const CellGrid<Dim>& grid, const std::function<int(int)>& local) {
+  for (const GaugePoint& g : gauges) cells_.push_back(local(cell_holding(grid, g)));
   for (const WaveGauge& g : wave_gauges) {
     const auto& materials = solver.materials();
     const auto material =
@@ -133,44 +152,59 @@ GaugeRecorder<Dim>::GaugeRecorder(const std::filesystem::path& file,
                   grid.origin()[g.vertical],
                   grid.spacing()[g.vertical]};
     for (int j = 0; j < grid.cells()[static_cast<std::size_t>(g.vertical)]; ++j)
-      column.cells.push_back(first + j * grid.stride(g.vertical));
+      column.cells.push_back(local(first + j * grid.stride(g.vertical)));
     columns_.push_back(std::move(column));
   }
-  row_.resize(writer_.columns().size());
 }
 
 template <int Dim>
 void GaugeRecorder<Dim>::record(double time, const IceSolver<Dim>& solver) {
-  writer_.append(row(time, solver));
+  writer_->append(row(time, solver));
 }
 
 template <int Dim>
-std::span<const double> GaugeRecorder<Dim>::row(double time, const IceSolver<Dim>& solver) {
+std::span<const double> GaugeRecorder<Dim>::row(double time, const IceSolver<Dim>& solver,
+                                                const Sum& sum) {
   const FluidState<Dim>& state = solver.state();
-  std::size_t k = 0;
-  row_[k++] = time;
+  const std::size_t per_gauge = 1 + static_cast<std::size_t>(Dim) + state.materials.size();
+  values_.clear();
   for (const int cell : cells_) {
+    if (cell < 0) {
+      values_.insert(values_.end(), per_gauge, -0.0);
+      continue;
+    }
     const auto c = static_cast<std::size_t>(cell);
-    row_[k++] = state.pressure[c];
+    values_.push_back(state.pressure[c]);
     double mass = 0.0;
     for (const MaterialState<Dim>& m : state.materials) mass += m.bulk_density[c];
     for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
       double momentum = 0.0;
       for (const MaterialState<Dim>& m : state.materials)
         momentum += m.bulk_density[c] * m.velocity[d][c];
-      row_[k++] = momentum / mass;
+      values_.push_back(momentum / mass);
     }
-    for (const MaterialState<Dim>& m : state.materials) row_[k++] = m.volume_fraction[c];
+    for (const MaterialState<Dim>& m : state.materials) values_.push_back(m.volume_fraction[c]);
   }
   for (const Column& column : columns_) {
     const CellField& fraction = state.materials[column.material].volume_fraction;
-    double height = column.bottom;
     for (const int cell : column.cells) {
+      if (cell < 0) {
+        values_.push_back(-0.0);
+        continue;
+      }
       const auto c = static_cast<std::size_t>(cell);
       // A cell the solid fills counts as the saturated soil's cells do: whole.
       const double pores = state.porosity.empty() ? 1.0 : state.porosity[c];
-      height += (pores > 1e-9 ? fraction[c] / pores : 1.0) * column.cell_height;
+      values_.push_back((pores > 1e-9 ? fraction[c] / pores : 1.0) * column.cell_height);
     }
+  }
+  if (sum) sum(values_);
+  std::size_t k = 0, v = 0;
+  row_[k++] = time;
+  for (; v < per_gauge * cells_.size(); ++v) row_[k++] = values_[v];
+  for (const Column& column : columns_) {
+    double height = column.bottom;
+    for (std::size_t j = 0; j < column.cells.size(); ++j) height += values_[v++];
     row_[k++] = height;
   }
   return row_;

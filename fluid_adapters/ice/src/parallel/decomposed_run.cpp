@@ -20,8 +20,6 @@ const CaseDescription& runnable(const CaseDescription& c, MPI_Comm comm) {
     throw cosim::InputError(fmt::format("{}: key '{}': {} runs on one process; mpirun started {}",
                                         c.file.string(), key, what, ranks));
   };
-  if (!c.gauges.empty()) refuse("output.gauges", "a case with gauges");
-  if (!c.wave_gauges.empty()) refuse("output.wave_gauges", "a case with wave gauges");
   if (c.window > 0.0) refuse("window", "a case with a standalone coupling window");
   if (c.numerics.pressure_solver == NumericsDescription::PressureSolverKind::builtin)
     refuse("numerics.pressure.solver", "the built-in pressure solver");
@@ -51,7 +49,31 @@ PetscPressureOptions petsc_pressure_options(const CaseDescription& c) {
 
 template <int Dim>
 DecomposedRun<Dim>::DecomposedRun(MPI_Comm comm, const CaseDescription& description)
-    : comm_(comm), block_(block_of<Dim>(comm, description)) {}
+    : comm_(comm), whole_(case_grid<Dim>(description)), block_(block_of<Dim>(comm, description)) {}
+
+template <int Dim>
+std::optional<typename GaugeRecorder<Dim>::Decomposed> DecomposedRun<Dim>::gauge_cells(
+    const IceSolver<Dim>& solver) const {
+  const auto offset = block_.link->offset();
+  const auto owned = block_.link->owned_cells();
+  const CellGrid<Dim>& block = solver.grid();
+  const CellGrid<Dim>& whole = whole_;
+  return typename GaugeRecorder<Dim>::Decomposed{
+      whole_, [offset, owned, block, whole](int cell) {
+        auto ijk = whole.cell_ijk(cell);
+        for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
+          ijk[d] -= offset[d];
+          if (ijk[d] < owned[d][0] || ijk[d] >= owned[d][1]) return -1;
+        }
+        return block.cell(ijk);
+      }};
+}
+
+template <int Dim>
+void DecomposedRun<Dim>::sum(std::span<double> values) {
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM,
+                comm_);
+}
 
 template <int Dim>
 std::unique_ptr<IceSolver<Dim>> DecomposedRun<Dim>::make_solver(const CaseDescription&) {

@@ -2,11 +2,14 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <span>
 #include <string>
 
 #include "cosim/io/snapshot_writer.hpp"
 #include "cosim/mesh.hpp"
 #include "ice/case/case_description.hpp"
+#include "ice/io/state_output.hpp"
 #include "ice/solver/ice_solver.hpp"
 
 namespace ice {
@@ -34,6 +37,13 @@ class RunRanks {
   // The values of this process's own cells in `fields` (fields of the
   // solver's grid).
   virtual const cosim::SnapshotFields& owned(const cosim::SnapshotFields& fields) { return fields; }
+  // Where the gauges lie when the grid is decomposed (none: one process).
+  virtual std::optional<typename GaugeRecorder<Dim>::Decomposed> gauge_cells(
+      const IceSolver<Dim>& /*solver*/) const {
+    return std::nullopt;
+  }
+  // Elementwise sums over the ranks, in place (collective).
+  virtual void sum(std::span<double> /*values*/) {}
 };
 
 extern template class RunRanks<1>;

@@ -2,6 +2,8 @@
 
 #include <array>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -56,28 +58,54 @@ struct WaveGauge {
 // then per wave gauge `eta_<gauge> [m]`: the columns every backend writes.
 // Throws cosim::InputError for a point outside the grid or a wave gauge's
 // unknown material.
+//
+// Decomposed over MPI ranks (issue 27), each rank computes the values of the
+// cells it holds and -0.0 for the others; `sum` adds them over the ranks,
+// exactly (x + -0.0 is x), before a wave gauge's column is summed bottom to
+// top: every rank count writes the rows of one process.
 template <int Dim>
 class GaugeRecorder {
  public:
+  // Where the gauges lie in a decomposed run: the whole grid, and the cell
+  // of the solver's grid holding a cell of the whole grid, or -1 where
+  // another rank holds it.
+  struct Decomposed {
+    CellGrid<Dim> whole;
+    std::function<int(int)> local;
+  };
+  using Sum = std::function<void(std::span<double>)>;
+
   GaugeRecorder(const std::filesystem::path& file, const std::vector<GaugePoint>& gauges,
                 const IceSolver<Dim>& solver, const std::vector<WaveGauge>& wave_gauges = {});
+  // A decomposed run's: with `writes` false (ranks other than 0) no file is
+  // written, but row() takes part in the sums.
+  GaugeRecorder(const std::filesystem::path& file, const std::vector<GaugePoint>& gauges,
+                const IceSolver<Dim>& solver, const std::vector<WaveGauge>& wave_gauges,
+                const Decomposed& decomposed, bool writes);
   void record(double time, const IceSolver<Dim>& solver);
   // The row record() appends, for a caller that writes it later
-  // (HeldOutputs); valid until the next call.
-  std::span<const double> row(double time, const IceSolver<Dim>& solver);
-  cosim::TimeSeriesWriter& writer() { return writer_; }
-  std::size_t rows() const { return writer_.rows_written(); }
+  // (HeldOutputs); valid until the next call. Decomposed, `sum` adds values
+  // over the ranks in place (collective).
+  std::span<const double> row(double time, const IceSolver<Dim>& solver, const Sum& sum = {});
+  bool writes() const { return writer_.has_value(); }
+  cosim::TimeSeriesWriter& writer() { return *writer_; }
+  std::size_t rows() const { return writer_ ? writer_->rows_written() : 0; }
 
  private:
   struct Column {
-    std::vector<int> cells;  // bottom to top
+    std::vector<int> cells;  // bottom to top; -1: another rank's
     std::size_t material = 0;
     double bottom = 0.0;
     double cell_height = 0.0;
   };
-  std::vector<int> cells_;
+  void locate(const std::vector<GaugePoint>& gauges, const IceSolver<Dim>& solver,
+              const std::vector<WaveGauge>& wave_gauges, const CellGrid<Dim>& grid,
+              const std::function<int(int)>& local);
+
+  std::vector<int> cells_;  // -1: another rank's
   std::vector<Column> columns_;
-  cosim::TimeSeriesWriter writer_;
+  std::optional<cosim::TimeSeriesWriter> writer_;
+  std::vector<double> values_;  // the cells' values, then the columns' cells' heights
   std::vector<double> row_;
 };
 

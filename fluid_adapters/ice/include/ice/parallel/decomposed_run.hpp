@@ -18,9 +18,9 @@ template <int Dim>
 class DecomposedRun final : public RunRanks<Dim> {
  public:
   // Collective. Throws cosim::InputError, naming the case file and key, for
-  // a case that cannot run decomposed yet (gauges, a standalone window, the
-  // built-in pressure solver asked for) and for blocks narrower than the
-  // ghost layers (grid.cells).
+  // a case that cannot run decomposed yet (a standalone window, the built-in
+  // pressure solver asked for) and for blocks narrower than the ghost layers
+  // (grid.cells).
   DecomposedRun(MPI_Comm comm, const CaseDescription& description);
 
   int ranks() const override { return block_.decomposition.ranks(); }
@@ -30,6 +30,9 @@ class DecomposedRun final : public RunRanks<Dim> {
                                                  const std::string& base_name,
                                                  const cosim::Mesh& cells) override;
   const cosim::SnapshotFields& owned(const cosim::SnapshotFields& fields) override;
+  std::optional<typename GaugeRecorder<Dim>::Decomposed> gauge_cells(
+      const IceSolver<Dim>& solver) const override;
+  void sum(std::span<double> values) override;
 
   const MpiBlockLink<Dim>& link() const { return *block_.link; }
   const cosim::decomposition::CartesianDecomposition& decomposition() const {
@@ -38,6 +41,7 @@ class DecomposedRun final : public RunRanks<Dim> {
 
  private:
   MPI_Comm comm_;
+  CellGrid<Dim> whole_;
   BlockSolver<Dim> block_;
   std::vector<std::vector<double>> owned_values_;
   cosim::SnapshotFields owned_fields_;
