@@ -60,10 +60,10 @@ TEST(IceCaseSchemaDefaults, ACaseWithoutTheOptionalKeysReadsTheSchemaDefaults) {
   EXPECT_EQ(n.limiter, limiter_from_name(schema_default<std::string>("numerics.limiter")));
   EXPECT_EQ(n.pressure.tolerance, schema_default<double>("numerics.pressure.tolerance"));
   EXPECT_EQ(n.pressure.max_iterations, schema_default<int>("numerics.pressure.max_iterations"));
-  // The preconditioner's default depends on the solver (schema text: multigrid built-in, gamg
-  // with PETSc); the solver's on the rank count.
+  // The preconditioner's default depends on the solver (schema text: multigrid built-in,
+  // boomeramg with PETSc); the solver's on the rank count.
   EXPECT_EQ(n.pressure.preconditioner, PressurePreconditioner::multigrid);
-  EXPECT_EQ(n.petsc_preconditioner, "gamg");
+  EXPECT_EQ(n.petsc_preconditioner, "boomeramg");
   EXPECT_FALSE(n.pressure_solver);
   EXPECT_EQ(n.equilibration.tolerance, schema_default<double>("numerics.equilibration.tolerance"));
   EXPECT_EQ(n.equilibration.max_iterations,

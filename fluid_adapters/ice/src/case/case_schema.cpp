@@ -116,8 +116,8 @@ Schema numerics_schema() {
       .optional("preconditioner",
                 Schema::one_of({"multigrid", "jacobi", "incomplete_cholesky", "gamg", "boomeramg"}),
                 "Preconditioner of conjugate gradients. builtin: multigrid (default), jacobi or "
-                "incomplete_cholesky; petsc: gamg (default; PETSc's algebraic multigrid), "
-                "boomeramg (hypre's) or jacobi.")
+                "incomplete_cholesky; petsc: boomeramg (default; hypre's algebraic multigrid), "
+                "gamg (PETSc's) or jacobi.")
       .optional("petsc_options", Schema::string(),
                 "With petsc: further PETSc options, prefix ice_pressure_ (e.g. "
                 "\"-ice_pressure_ksp_monitor\").");

@@ -310,7 +310,7 @@ class CaseReader {
       preconditioner->fail(fmt::format("'{}' is PETSc's: it needs `solver: petsc`", name));
     if (builtin_only && n.pressure_solver == Kind::petsc)
       preconditioner->fail(fmt::format(
-          "'{}' is the built-in solver's; with `solver: petsc` take gamg, boomeramg or jacobi",
+          "'{}' is the built-in solver's; with `solver: petsc` take boomeramg, gamg or jacobi",
           name));
     if (n.pressure_solver == Kind::petsc || name == "jacobi") n.petsc_preconditioner = name;
     if (n.pressure_solver != Kind::petsc)

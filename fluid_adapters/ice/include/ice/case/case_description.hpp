@@ -56,11 +56,11 @@ struct NumericsDescription {
   PressureSolverOptions pressure;
   // Who solves the pressure equation: the built-in solver (one process) or
   // PETSc (any number of ranks); none given: built-in on one process, PETSc
-  // on several. With PETSc: its preconditioner (gamg, boomeramg, jacobi)
+  // on several. With PETSc: its preconditioner (boomeramg, gamg, jacobi)
   // and further options (prefix ice_pressure_).
   enum class PressureSolverKind { builtin, petsc };
   std::optional<PressureSolverKind> pressure_solver;
-  std::string petsc_preconditioner = "gamg";
+  std::string petsc_preconditioner = "boomeramg";
   std::string petsc_options;
   EquilibrationOptions equilibration;
   double smagorinsky_constant = 0.0;  // 0: no turbulence model
