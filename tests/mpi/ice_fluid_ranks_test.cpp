@@ -169,6 +169,47 @@ TEST(IceFluidRanks, RefusesWhatADecomposedRunCannotTakeYet) {
                  "dimension", 2);
 }
 
+// `solver: petsc` on one process of an MPMD coupled job (the Darcy column
+// over the MPI transport): PETSc takes this process alone, starts after the
+// transport and ends before it; the fields are the built-in solver's.
+TEST(IceFluidRanks, PetscOnOneProcessOfACoupledJobOverMpi) {
+  const fs::path dir = fresh_directory("ice_fluid_petsc_coupled");
+  const fs::path darcy = fs::path(COSIM_SOURCE_DIR) / "configs/ice_coupled/darcy";
+  const std::string job =
+      replaced(read_text(darcy / "job.yaml"), "end_time: 0.3", "end_time: 0.01\ntransport: mpi");
+  write_text(dir / "column.yaml", read_text(darcy / "column.yaml"));
+  const std::string water = read_text(darcy / "water.yaml");
+  write_text(dir / "water.yaml", water);
+  write_text(dir / "petsc" / "water.yaml",
+             replaced(water, "  initial_time_step: 1.0e-4\n",
+                      "  initial_time_step: 1.0e-4\n  pressure: {solver: petsc}\n"));
+  write_text(dir / "petsc" / "column.yaml", read_text(darcy / "column.yaml"));
+  write_text(dir / "job.yaml", job);
+  write_text(dir / "petsc" / "job.yaml", job);
+  for (const fs::path& run_dir : {dir, dir / "petsc"}) {
+    const ProcessResult result =
+        run({binary("cosim").string(), "run", (run_dir / "job.yaml").string(), "--output",
+             (run_dir / "run").string()},
+            std::chrono::seconds(120));
+    ASSERT_EQ(result.exit_code, 0) << result.output << read_text(run_dir / "run" / "mpirun.log");
+  }
+  const auto summary = nlohmann::json::parse(read_text(dir / "petsc/run/water/summary.json"));
+  EXPECT_EQ(summary["case"]["pressure_solver"], "petsc");
+  const Hdf5Reader mine(dir / "petsc/run/water/ice_000001.h5");
+  const Hdf5Reader theirs(dir / "run/water/ice_000001.h5");
+  for (const char* field : {"pressure", "velocity_water"}) {
+    const auto a = mine.doubles(std::string("fields/") + field);
+    const auto b = theirs.doubles(std::string("fields/") + field);
+    ASSERT_EQ(a.values.size(), b.values.size());
+    double scale = 0.0, difference = 0.0;
+    for (std::size_t i = 0; i < b.values.size(); ++i) {
+      scale = std::max(scale, std::abs(b.values[i]));
+      difference = std::max(difference, std::abs(a.values[i] - b.values[i]));
+    }
+    EXPECT_LT(difference, 1e-8 * scale) << field;
+  }
+}
+
 TEST(IceFluidRanks, LeavesAnOutputDirectoryInUseAsItWas) {
   expect_directory_in_use_kept("ice_fluid", dam_break_case);
 }

@@ -85,6 +85,7 @@ class CaseRun {
         participant_.declare_checkpointable();
         if (c_.window > 0.0) participant_.set_standalone_window(c_.window);
         participant_.initialize(0.0, c_.end_time);
+        use_petsc_if_asked();  // after the MPI transport, if any, has started MPI
         // Coupled, the job's end time replaces the case's: the schedules end there.
         const double end = participant_.end_time();
         run_.snapshots = cosim::OutputSchedule(c_.output_every, end);
@@ -98,9 +99,11 @@ class CaseRun {
       summary_.write();
       loop();
       record_conserved(false);
+      end_petsc();
       participant_.finalize();
     } catch (const std::exception& e) {
       if (solver_) record_conserved(false);
+      end_petsc();
       participant_.abort(e.what());
       throw;
     }
@@ -112,17 +115,6 @@ class CaseRun {
  private:
   void build_solver() {
     solver_ = ranks_.make_solver(c_);
-    if (!solver_->linked() &&
-        c_.numerics.pressure_solver == NumericsDescription::PressureSolverKind::petsc) {
-#ifdef ICE_WITH_MPI
-      petsc_.emplace();
-      solver_->use_pressure_solver(parallel::petsc_pressure_on_one_process<Dim>(c_));
-#else
-      throw cosim::InputError(
-          fmt::format("{}: key 'numerics.pressure.solver': petsc needs a build with MPI and PETSc",
-                      c_.file.string()));
-#endif
-    }
     const CellGrid<Dim> grid = case_grid<Dim>(c_);
     summary_.set_section(
         "case", {{"name", c_.name},
@@ -141,6 +133,30 @@ class CaseRun {
                  {"end_time_s", c_.end_time}});
     spdlog::info("case '{}': {}D, {} cells, materials {}, end time {} s", c_.name, Dim,
                  grid.cell_count(), material_names().dump(), c_.end_time);
+  }
+
+  // `solver: petsc` on one process.
+  void use_petsc_if_asked() {
+    if (solver_->linked() ||
+        c_.numerics.pressure_solver != NumericsDescription::PressureSolverKind::petsc)
+      return;
+#ifdef ICE_WITH_MPI
+    petsc_.emplace(MPI_COMM_SELF);  // this process alone, even inside an MPMD job
+    solver_->use_pressure_solver(parallel::petsc_pressure_on_one_process<Dim>(c_));
+#else
+    throw cosim::InputError(
+        fmt::format("{}: key 'numerics.pressure.solver': petsc needs a build with MPI and PETSc",
+                    c_.file.string()));
+#endif
+  }
+
+  // PETSc ends before the participant, whose MPI transport may end MPI.
+  void end_petsc() {
+#ifdef ICE_WITH_MPI
+    if (!petsc_) return;
+    solver_->use_pressure_solver(nullptr);
+    petsc_.reset();
+#endif
   }
 
   nlohmann::json material_names() const {

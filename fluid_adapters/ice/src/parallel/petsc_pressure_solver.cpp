@@ -26,10 +26,13 @@ void check_petsc_preconditioner(const std::string& name) {
                                 "' (known: gamg, boomeramg, jacobi)");
 }
 
-PetscLibrary::PetscLibrary() {
+PetscLibrary::PetscLibrary(MPI_Comm world) {
   PetscBool initialised = PETSC_FALSE;
   check(PetscInitialized(&initialised), "PetscInitialized");
   if (initialised) return;
+  int mpi = 0;
+  MPI_Initialized(&mpi);
+  if (mpi != 0) PETSC_COMM_WORLD = world;  // else PETSc starts MPI, for this process alone
   // The run's own handlers stop it on SIGINT and SIGTERM (a clean stop,
   // outputs kept); PETSc's would abort it.
   check(PetscOptionsSetValue(nullptr, "-no_signal_handler", nullptr), "PetscOptionsSetValue");

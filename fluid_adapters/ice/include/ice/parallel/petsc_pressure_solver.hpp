@@ -37,10 +37,15 @@ void check_petsc_preconditioner(const std::string& name);
 
 // PETSc for the process: initialised by the first instance (on MPI as it
 // stands, or starting it), finalised when the instance that initialised it
-// ends. Keep it inside the MPI session.
+// ends. Keep it inside the MPI session. `world` is the communicator PETSc
+// takes for its own (PETSC_COMM_WORLD): the ranks that initialise it
+// together, when MPI runs already (else PETSc starts it for this process
+// alone). A solver on one process inside a larger MPI job (a participant of
+// an MPMD coupled run) passes MPI_COMM_SELF, so that PETSc waits for no
+// other program.
 class PetscLibrary {
  public:
-  PetscLibrary();
+  explicit PetscLibrary(MPI_Comm world = MPI_COMM_WORLD);
   ~PetscLibrary();
   PetscLibrary(const PetscLibrary&) = delete;
   PetscLibrary& operator=(const PetscLibrary&) = delete;
