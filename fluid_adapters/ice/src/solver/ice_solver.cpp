@@ -1254,15 +1254,15 @@ void IceSolver<Dim>::link_blocks(std::shared_ptr<BlockLink<Dim>> link,
   require(link != nullptr && pressure != nullptr,
           "a linked block needs its link and pressure solver");
   const auto owned = link->owned_cells();
-  std::fill(owned_.begin(), owned_.end(), 0);
+  for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
+    require(owned[d][0] >= 0 && owned[d][0] < owned[d][1] && owned[d][1] <= grid_.cells()[d],
+            "the owned cells must lie in the block's grid");
+  }
   for (int c = 0; c < grid_.cell_count(); ++c) {
     const auto ijk = grid_.cell_ijk(c);
     bool inside = true;
-    for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
-      require(owned[d][0] >= 0 && owned[d][0] < owned[d][1] && owned[d][1] <= grid_.cells()[d],
-              "the owned cells must lie in the block's grid");
+    for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d)
       inside = inside && ijk[d] >= owned[d][0] && ijk[d] < owned[d][1];
-    }
     owned_[at(c)] = inside ? 1 : 0;
   }
   link_ = std::move(link);
