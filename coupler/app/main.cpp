@@ -30,10 +30,18 @@ int main(int argc, char** argv) {
   run_cmd->add_option("job", run_options.job_file, "the job's YAML file (kind: job)")->required();
   run_cmd->add_option("-o,--output", run_options.output, "run directory")->required();
   run_cmd->add_option("--verbosity", run_options.verbosity, "quiet | normal | verbose | trace");
-  run_cmd->add_flag("--print-mpi-command", run_options.print_mpi_command,
-                    "print the mpirun line of an MPI job and exit");
+  auto* print_mpi = run_cmd->add_flag("--print-mpi-command", run_options.print_mpi_command,
+                                      "print the mpirun line of an MPI job and exit");
+  run_cmd
+      ->add_option("--slurm-script", run_options.slurm_script,
+                   "write a Slurm batch script of an MPI job to FILE (and its srun multi-prog "
+                   "configuration to FILE.multi-prog.conf) and exit, running nothing; submit it "
+                   "with `sbatch FILE`")
+      ->type_name("FILE")
+      ->excludes(print_mpi);
   run_cmd->add_flag("--overwrite", run_options.overwrite,
-                    "replace the earlier run a non-empty --output directory holds");
+                    "replace the earlier run a non-empty --output directory holds (with "
+                    "--slurm-script: an existing script)");
   run_cmd
       ->add_option("--connect-timeout", run_options.connect_timeout_s,
                    "seconds to wait for every participant's hello (participants wait as long "

@@ -131,7 +131,8 @@ std::string stopped_ranks(const std::vector<RankProcess>& below) {
 
 // The participant Open MPI names in its report of a rank that died ("process
 // rank 2 with PID 4242 on node x exited on signal 9 (Killed)."): the launch
-// line puts participant i at rank i + 1.
+// line puts the participants' ranks after the coupler's, in job order
+// (runtime::rank_peer_names: `soil[1]` for the second rank of `soil`).
 std::string dead_rank_report(const job::Job& job, const fs::path& mpirun_log) {
   constexpr std::string_view rank_marker = "process rank ";
   constexpr std::string_view pid_marker = " with PID ";
@@ -153,10 +154,10 @@ std::string dead_rank_report(const job::Job& job, const fs::path& mpirun_log) {
     if (const auto e = line.find("exited"); e != std::string::npos) what = " " + line.substr(e);
     while (!what.empty() && (what.back() == '.' || what.back() == ' ')) what.pop_back();
     if (rank == 0) return fmt::format("the coupler (world rank 0, pid {}){}", pid, what);
-    if (rank > 0 && rank <= static_cast<int>(job.participants.size()))
+    const auto peers = runtime::rank_peer_names(job);
+    if (rank > 0 && rank <= static_cast<int>(peers.size()))
       return fmt::format("participant '{}' (world rank {}, pid {}){}",
-                         job.participants[static_cast<std::size_t>(rank - 1)].name, rank, pid,
-                         what);
+                         peers[static_cast<std::size_t>(rank - 1)], rank, pid, what);
   }
   return {};
 }

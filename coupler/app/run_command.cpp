@@ -23,8 +23,10 @@
 #include "cosim/runtime/supervisor.hpp"
 #include "cplscheme/coupler.hpp"
 #include "job/job.hpp"
+#include "m2n/partitioned_hub.hpp"
 #include "mpi_launcher.hpp"
 #include "runtime/mpi_launch.hpp"
+#include "runtime/slurm_script.hpp"
 
 namespace cosim::app {
 
@@ -58,10 +60,11 @@ std::string new_run_token() {
   return hex;
 }
 
+// The peers of the MpiHub, one per world rank after the coupler's: a
+// participant on N > 1 ranks as `name[0]` ... `name[N-1]`, on one rank as
+// `name`.
 std::vector<std::string> participant_names(const job::Job& job) {
-  std::vector<std::string> names;
-  for (const auto& p : job.participants) names.push_back(p.name);
-  return names;
+  return runtime::rank_peer_names(job);
 }
 
 // Ends every participant still running after a failed or interrupted run:
@@ -212,11 +215,11 @@ void run_with_zmq(const job::Job& job, const RunOptions& o, RunSummary& summary)
 int run_under_mpirun(const job::Job& job, const RunOptions& o, RunSummary& summary) {
   com::MpiHub hub(participant_names(job));
   const int code = run_and_finish(summary, [&] {
-    const int expected = 1 + static_cast<int>(job.participants.size());
+    const int expected = runtime::mpi_world_size(job);
     if (hub.world_size() != expected)
       throw InputError(
-          fmt::format("the mpirun line has {} processes; job '{}' needs {} (the "
-                      "coupler and one per participant): use `cosim run {} "
+          fmt::format("the MPI job has {} processes; job '{}' needs {} (1 for the "
+                      "coupler + the sum of the participants' ranks): use `cosim run {} "
                       "--print-mpi-command`",
                       hub.world_size(), job.name, expected, o.job_file));
     cplscheme::CouplerOptions options;
@@ -224,7 +227,8 @@ int run_under_mpirun(const job::Job& job, const RunOptions& o, RunSummary& summa
     options.job_id = o.job_id;
     options.connect_timeout_s = o.connect_timeout_s;
     options.interrupted = &runtime::stop_flag();
-    cplscheme::Coupler coupler(job, hub, nullptr, summary, options);
+    m2n::PartitionedHub parts(hub, runtime::part_peer_name);
+    cplscheme::Coupler coupler(job, parts, nullptr, summary, options);
     coupler.run();
   });
   if (code != 0) {
@@ -263,6 +267,16 @@ int run_job(const RunOptions& o) {
                 << "\n";
       return 0;
     }
+    if (!o.slurm_script.empty()) {
+      check_checkpoint_options(job, opts);
+      runtime::write_slurm_script(job, o.job_file, o.output, opts.job_id, o.connect_timeout_s,
+                                  o.slurm_script, o.overwrite);
+      std::cout << "cosim: wrote " << o.slurm_script << " and "
+                << runtime::multi_prog_path(o.slurm_script).string() << " (job '" << job.name
+                << "', id " << opts.job_id << ", " << runtime::mpi_world_size(job)
+                << " tasks); submit it with `sbatch " << o.slurm_script << "`\n";
+      return 0;
+    }
     prepare_output_directory(o.output, o.overwrite ? OutputReuse::overwrite : OutputReuse::refuse);
     // The coupler rank rewrites it once it runs; until then (and if it
     // never does) the record is this process's.
@@ -270,11 +284,11 @@ int run_job(const RunOptions& o) {
     return launch_mpirun(job, opts);
   }
   check_checkpoint_options(job, opts);
-  if (o.print_mpi_command)
-    throw InputError(
-        fmt::format("{}: job '{}' uses transport '{}'; --print-mpi-command "
-                    "needs 'transport: mpi'",
-                    o.job_file, job.name, "zmq"));
+  for (const auto& [given, option] : {std::pair{o.print_mpi_command, "--print-mpi-command"},
+                                      std::pair{!o.slurm_script.empty(), "--slurm-script"}})
+    if (given)
+      throw InputError(fmt::format("{}: job '{}' uses transport '{}'; {} needs 'transport: mpi'",
+                                   o.job_file, job.name, "zmq", option));
 
   // Under mpirun the launching cosim has prepared the directory (and writes
   // mpirun.log into it); this rank dies with mpirun.

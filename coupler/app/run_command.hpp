@@ -19,7 +19,12 @@ struct RunOptions {
   std::string job_id;  // set by the MPI launch; a fresh one otherwise
   std::string verbosity = "normal";
   bool print_mpi_command = false;
-  bool overwrite = false;  // clear the earlier run a non-empty --output holds
+  // Write a Slurm batch script of the MPI job to this file (and its srun
+  // multi-prog configuration next to it) instead of running it.
+  std::string slurm_script;
+  // clear the earlier run a non-empty --output holds; with --slurm-script,
+  // replace an existing script
+  bool overwrite = false;
   double connect_timeout_s = 120.0;
   std::string checkpoint_every;  // empty: no checkpoints
   std::size_t checkpoints_kept = 2;

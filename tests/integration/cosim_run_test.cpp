@@ -85,6 +85,44 @@ TEST(CosimRun, DemoJobOverMpiUnderOneMpmdLaunch) {
   EXPECT_EQ(summary["job"]["transport"], "mpi");
 }
 
+// `--slurm-script` writes the batch script and its multi-prog file of an MPI
+// job, runs nothing and prepares no output directory; a ZeroMQ job has no
+// MPMD launch to write (exit 2).
+TEST(CosimRun, SlurmScriptOfAnMpiJobIsWrittenAndNothingRuns) {
+  const fs::path dir = fresh_directory("e2e_slurm");
+  JobOptions o;
+  o.transport = "mpi";
+  const auto job = write_job(dir, o);
+  const fs::path script = dir / "run.slurm";
+  const std::vector<std::string> args{
+      binary("cosim").string(), "run",          job.string(), "--output", (dir / "run").string(),
+      "--slurm-script",         script.string()};
+  const auto r = run(args, std::chrono::seconds(30));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("sbatch " + script.string()));
+  EXPECT_THAT(read_text(script), HasSubstr("#SBATCH --ntasks=3\n"));
+  const std::string conf = read_text(script.string() + ".multi-prog.conf");
+  EXPECT_THAT(conf, HasSubstr("\n0 env COSIM_APP_INDEX=0 " + binary("cosim").string() + " run "));
+  EXPECT_THAT(conf, HasSubstr("\n2 env COSIM_APP_INDEX=2 "));
+  EXPECT_FALSE(fs::exists(dir / "run"));
+
+  const auto again = run(args, std::chrono::seconds(30));
+  EXPECT_EQ(again.exit_code, 2) << again.output;
+  EXPECT_THAT(again.output, HasSubstr("--overwrite"));
+}
+
+TEST(CosimRun, SlurmScriptOfAZmqJobIsRefusedWithExit2) {
+  const fs::path dir = fresh_directory("e2e_slurm_zmq");
+  const auto job = write_job(dir, {});
+  const auto r = run({binary("cosim").string(), "run", job.string(), "--output",
+                      (dir / "run").string(), "--slurm-script", (dir / "run.slurm").string()},
+                     std::chrono::seconds(30));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("--slurm-script needs 'transport: mpi'"));
+  EXPECT_FALSE(fs::exists(dir / "run.slurm"));
+  EXPECT_FALSE(fs::exists(dir / "run"));
+}
+
 // A run that would last long (end time 1000 s), started in the background,
 // with both participants up.
 struct LongRun {

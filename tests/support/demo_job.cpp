@@ -20,10 +20,12 @@ transport: {}
 extrapolation: {}
 zmq: {{scheme: {}, host: '{}'}}
 window_timeout: {}
+output: {{every: {}}}
 participants:
   left:
     executable: cosim_test_participant
     config: left.yaml
+    ranks: {}
     args: {}
     meshes: {{grid: {{kind: uniform_grid, dim: 2}}}}
     writes: {{temperature: grid, heat: grid}}
@@ -31,6 +33,7 @@ participants:
   right:
     executable: cosim_test_participant
     config: right.yaml
+    ranks: {}
     args: {}
     meshes: {{grid: {{kind: uniform_grid, dim: 2}}}}
     writes: {{pressure: grid}}
@@ -41,7 +44,8 @@ exchange:
   - {{field: pressure, from: right, to: left, mapping: consistent}}
 )",
                                       o.name, o.end_time, o.transport, o.extrapolation, o.scheme,
-                                      o.host, o.window_timeout, o.left_args, o.right_args);
+                                      o.host, o.window_timeout, o.output_every, o.left_ranks,
+                                      o.left_args, o.right_ranks, o.right_args);
   write_text(dir / "job.yaml", job);
   return dir / "job.yaml";
 }

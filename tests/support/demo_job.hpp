@@ -19,6 +19,9 @@ struct JobOptions {
   double window_timeout = 60.0;
   std::string left_args = "[]";
   std::string right_args = "[]";
+  int left_ranks = 1;  // MPI ranks of each participant (transport: mpi)
+  int right_ranks = 1;
+  double output_every = 0.0;  // snapshots of the exchanged fields
 };
 
 // Writes the job and its participants' configs into `dir`; returns the job

@@ -30,6 +30,9 @@
 #include "cosim/io/time_series_writer.hpp"
 #include "cosim/participant.hpp"
 #include "cosim/runtime/stop_request.hpp"
+#ifdef COSIM_TEST_PARTICIPANT_MPI
+#include "cosim/runtime/mpi_session.hpp"
+#endif
 
 namespace {
 
@@ -238,6 +241,14 @@ struct Capabilities {
   bool checkpointable = true;
 };
 
+// On several ranks (an MPMD job's program on `ranks` ranks): this rank holds
+// the values of a contiguous range of the grid's flat indices.
+struct Part {
+  int rank = 0;
+  int ranks = 1;
+  bool declared = true;  // false: declares its mesh whole, as a program that cannot run on ranks
+};
+
 // Fault injection: what the participant does besides its fields.
 struct Faults {
   long crash_at_window = 0;
@@ -247,7 +258,7 @@ struct Faults {
 };
 
 int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std::string& output,
-        const Faults& faults, Capabilities capabilities, cosim::RunSummary& summary) {
+        const Faults& faults, Capabilities capabilities, cosim::RunSummary& summary, Part part) {
   const long crash_at_window = faults.crash_at_window;
   const long hang_at_window = faults.hang_at_window;
   const RaisedSignal& raised = faults.raised;
@@ -279,20 +290,37 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
     pending_rows.clear();
   };
 
+  const cosim::Mesh& mesh = config.mesh;
+  cosim::MeshPart elements;
+  const auto whole = static_cast<std::int64_t>(mesh.size());
+  const Part held_part = part.declared ? part : Part{};  // else the whole mesh on every rank
+  for (std::int64_t e = whole * held_part.rank / held_part.ranks;
+       e < whole * (held_part.rank + 1) / held_part.ranks; ++e)
+    elements.elements.push_back(e);
+  auto position = [&](std::size_t e) {
+    return mesh.position(static_cast<std::size_t>(elements.elements[e]));
+  };
+  auto control_volume = [&](std::size_t e) {
+    return mesh.control_volume(static_cast<std::size_t>(elements.elements[e]));
+  };
+  const std::size_t held = elements.size();
+
   cosim::Participant participant(endpoint.name_or("test_participant"), endpoint);
-  participant.declare_mesh(config.mesh);
+  if (part.ranks > 1 && part.declared)
+    participant.declare_mesh(config.mesh, elements);
+  else
+    participant.declare_mesh(config.mesh);
   for (const auto& w : config.writes) participant.declare_write(w.spec);
   for (const auto& r : config.reads) participant.declare_read(r.spec);
   if (capabilities.repeatable) participant.declare_repeatable();
   if (capabilities.checkpointable) participant.declare_checkpointable();
 
-  const cosim::Mesh& mesh = config.mesh;
   auto values_of = [&](const FieldConfig& f, double t) {
     const auto components = static_cast<std::size_t>(f.spec.components);
-    std::vector<double> v(mesh.size() * components);
-    for (std::size_t e = 0; e < mesh.size(); ++e) {
-      double value = f.function(mesh.position(e), t);
-      if (f.spec.time == cosim::TimeTreatment::integral) value *= mesh.control_volume(e);
+    std::vector<double> v(held * components);
+    for (std::size_t e = 0; e < held; ++e) {
+      double value = f.function(position(e), t);
+      if (f.spec.time == cosim::TimeTreatment::integral) value *= control_volume(e);
       for (std::size_t c = 0; c < components; ++c) v[e * components + c] = value;
     }
     return v;
@@ -327,8 +355,8 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
     const auto comps = static_cast<std::size_t>(velocity_components);
     std::vector<double> mean(3, 0.0);
     for (std::size_t i = 0; i < velocity.size(); ++i) {
-      velocity[i] += impulse[i] / (config.dynamics->bulk_density * mesh.control_volume(i / comps));
-      mean[i % comps] += velocity[i] / static_cast<double>(mesh.size());
+      velocity[i] += impulse[i] / (config.dynamics->bulk_density * control_volume(i / comps));
+      mean[i % comps] += velocity[i] / static_cast<double>(held);
     }
     log(config.dynamics->velocity, "after_exchange",
         static_cast<double>(participant.window_index()), participant.time(), mean[0],
@@ -353,8 +381,8 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
         const double t_written = participant.time();
         const auto components = static_cast<std::size_t>(r.spec.components);
         for (std::size_t i = 0; i < v.size(); ++i)
-          max_error = std::max(
-              max_error, std::abs(v[i] - r.function(mesh.position(i / components), t_written)));
+          max_error =
+              std::max(max_error, std::abs(v[i] - r.function(position(i / components), t_written)));
         if (max_error > r.tolerance)
           throw cosim::NumericalError(
               fmt::format("read '{}' at t = {} s: error {:.3e} exceeds {:.3e}", r.spec.name,
@@ -475,7 +503,7 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
           const auto comps = static_cast<std::size_t>(velocity_components);
           std::vector<double> mean(comps, 0.0);
           for (std::size_t i = 0; i < velocity.size(); ++i)
-            mean[i % comps] += velocity[i] / static_cast<double>(mesh.size());
+            mean[i % comps] += velocity[i] / static_cast<double>(held);
           log(config.dynamics->velocity, "window_end", static_cast<double>(window),
               participant.time(), mean[0], comps > 1 ? mean[1] : 0.0);
         }
@@ -505,6 +533,8 @@ int main(int argc, char** argv) {
   std::string config_file, output, raise_signal;
   bool validate = false, not_repeatable = false, not_checkpointable = false;
   Faults faults;
+  int fault_rank = -1;
+  bool whole_mesh = false;
   cosim::CouplingEndpoint endpoint;
   app.add_option("--config", config_file, "test_participant YAML")->required();
   app.add_option("--output", output, "output directory");
@@ -515,6 +545,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 10.0));
   app.add_option("--raise", raise_signal, "send itself this signal (SIGKILL, SIGSTOP, SIGSEGV...)");
   app.add_option("--raise-at", faults.raised.phase, "when: startup | window:<N> | end");
+  app.add_option("--fault-rank", fault_rank,
+                 "on several ranks: only this rank crashes, hangs or raises (default: every rank)");
+  app.add_flag("--whole-mesh", whole_mesh,
+               "on several ranks, declare the mesh whole (a program that cannot run on ranks)");
   app.add_flag("--not-repeatable", not_repeatable,
                "do not declare that windows can be repeated (implicit schemes refuse it)");
   app.add_flag("--not-checkpointable", not_checkpointable,
@@ -534,12 +568,30 @@ int main(int argc, char** argv) {
     }
     if (output.empty()) throw cosim::InputError("--output is required");
     if (!raise_signal.empty()) faults.raised.signal = signal_number(raise_signal);
+    // In an MPMD job this program may run on several ranks, each holding a
+    // part of the grid; rank r > 0 keeps its files in <output>/ranks/rank_<r>.
+    Part part;
+#ifdef COSIM_TEST_PARTICIPANT_MPI
+    std::optional<cosim::runtime::MpiSession> mpi;
+    if (endpoint.uri == "mpi://") {
+      mpi.emplace();
+      part = {mpi->rank(), mpi->ranks()};
+    }
+#endif
+    part.declared = !whole_mesh;
+    if (fault_rank >= 0 && fault_rank != part.rank) {
+      faults.crash_at_window = faults.hang_at_window = 0;
+      faults.raised = {};
+    }
+    if (part.rank > 0)
+      output =
+          (std::filesystem::path(output) / "ranks" / fmt::format("rank_{}", part.rank)).string();
     cosim::create_output_directory(output);
     cosim::RunSummary summary(output, "cosim_test_participant");
     summary.write();
     return cosim::run_and_finish(summary, [&] {
       run(config, endpoint, output, faults,
-          {.repeatable = !not_repeatable, .checkpointable = !not_checkpointable}, summary);
+          {.repeatable = !not_repeatable, .checkpointable = !not_checkpointable}, summary, part);
     });
   } catch (const cosim::Error& e) {
     std::cerr << "cosim_test_participant: error: " << e.what() << "\n";

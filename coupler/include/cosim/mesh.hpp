@@ -86,6 +86,19 @@ struct Mesh {
   Vec3 position(std::size_t element) const;
 };
 
+// The part of a mesh that one rank of a participant on several ranks holds
+// (architecture.md §15): the whole mesh's indices of its elements, in the
+// order of this rank's values. A grid is declared whole (every rank the same
+// geometry) with the part it holds; a cloud by this rank's own elements.
+struct MeshPart {
+  std::vector<std::int64_t> elements;
+
+  std::size_t size() const { return elements.size(); }
+  // The values with indices lower <= (i, j, k) < upper of a grid (value
+  // indices: cells, or nodes for a nodal grid), x fastest.
+  static MeshPart box(const UniformGrid& grid, const Index3& lower, const Index3& upper);
+};
+
 const char* to_string(MeshKind kind);
 const char* to_string(GridLocation location);
 

@@ -121,6 +121,12 @@ class Participant {
 
   // Declarations (before initialize).
   void declare_mesh(Mesh mesh);
+  // A participant on several ranks (architecture.md §15): each rank declares
+  // the part of the mesh it holds, and its fields hold the values of that
+  // part, in the part's order. A grid is declared whole with the part; a
+  // cloud by this rank's elements. Every rank declares every mesh, even with
+  // an empty part, and makes the same calls in the same order.
+  void declare_mesh(Mesh mesh, MeshPart part);
   void declare_write(FieldSpec field);
   // `default_value` fills the field until the first exchange, and always
   // when standalone.
@@ -157,6 +163,9 @@ class Participant {
   // A moving mesh (point cloud) gives its new geometry before the window's
   // last advance; the coupler rebuilds the mappings that involve it.
   void update_mesh(const Mesh& mesh);
+  // A cloud's part may change size too (points moved to another rank): the
+  // fields on it are resized, a read holds zeros until the next exchange.
+  void update_mesh(const Mesh& mesh, MeshPart part);
 
   // State fields: the last values written in a window are sent at its end.
   // Integral fields: write the rate before every advance(dt); the window's

@@ -92,7 +92,10 @@ std::string to_json(const Hello& h) {
          {"reads", json::array()},
          {"repeatable", h.repeatable},
          {"checkpointable", h.checkpointable},
-         {"restart_window", h.restart_window}};
+         {"restart_window", h.restart_window},
+         {"part", h.part},
+         {"parts", h.parts},
+         {"partitioned", h.partitioned}};
   for (const auto& m : h.meshes)
     j["meshes"].push_back({{"name", m.name}, {"kind", to_string(m.kind)}, {"dim", m.dim}});
   for (const auto& f : h.writes) j["writes"].push_back(field_to_json(f));
@@ -133,6 +136,11 @@ Hello parse_hello(const std::string& text, const std::string& peer) {
     h.checkpointable = j.at("checkpointable").get<bool>();
     h.restart_window = static_cast<std::uint64_t>(whole_number(
         j.at("restart_window"), 0, std::numeric_limits<std::int64_t>::max(), "restart_window"));
+    if (j.contains("parts")) {
+      h.parts = static_cast<int>(whole_number(j.at("parts"), 1, 1 << 24, "parts"));
+      h.part = static_cast<int>(whole_number(j.at("part"), 0, h.parts - 1, "part"));
+      h.partitioned = j.value("partitioned", false);
+    }
     return h;
   } catch (const std::exception& e) {
     throw ProtocolError(peer, std::string("malformed hello: ") + e.what());

@@ -37,6 +37,14 @@ struct Hello {
   bool checkpointable = false;
   // Started from a checkpoint: the last window it holds (0: a fresh start).
   std::uint64_t restart_window = 0;
+  // A participant on several ranks says hello from each: this rank's part
+  // and how many there are (m2n::PartitionedHub merges them into one).
+  int part = 0;
+  int parts = 1;
+  // Its meshes are declared in parts (Participant::declare_mesh with a
+  // MeshPart); a program on several ranks that declares them whole cannot
+  // run so in a coupled job.
+  bool partitioned = false;
 };
 
 enum class Extrapolation { constant, linear };

@@ -184,6 +184,8 @@ const char* to_string(MessageType type) {
       return "window_repeat";
     case MessageType::checkpoint_done:
       return "checkpoint_done";
+    case MessageType::mesh_part:
+      return "mesh_part";
   }
   return "unknown";
 }
@@ -217,7 +219,7 @@ Header decode_header(std::span<const std::byte> bytes, const std::string& peer) 
                                           h.version, protocol_version));
   const auto type = r.get<std::uint8_t>("type");
   if (type < static_cast<std::uint8_t>(MessageType::hello) ||
-      type > static_cast<std::uint8_t>(MessageType::checkpoint_done))
+      type > static_cast<std::uint8_t>(MessageType::mesh_part))
     throw ProtocolError(peer, fmt::format("unknown message type {}", type));
   h.type = static_cast<MessageType>(type);
   const auto element = r.get<std::uint8_t>("element type");

@@ -15,7 +15,8 @@ namespace cosim::com {
 // `implicit` and `time_interpolation`).
 // 3: checkpoints (checkpoint_done; window_begin's payload naming the
 // checkpoint directory; hello's `checkpointable` and `restart_window`).
-inline constexpr std::uint16_t protocol_version = 3;
+// 4: participants on several ranks (mesh_part; hello's `part` and `parts`).
+inline constexpr std::uint16_t protocol_version = 4;
 
 enum class MessageType : std::uint8_t {
   hello = 1,        // participant -> coupler: name, job, declarations (JSON payload)
@@ -31,6 +32,8 @@ enum class MessageType : std::uint8_t {
                     // start with the fields just sent (implicit schemes)
   checkpoint_done,  // participant -> coupler: its part of the checkpoint the last window_begin
                     // asked for is written (architecture.md §14)
+  mesh_part,        // participant rank -> coupler: the whole mesh's indices of the elements this
+                    // rank holds (float64 payload), before the mesh's geometry whenever it changes
 };
 
 enum class ElementType : std::uint8_t { none = 0, float64 = 1, text = 2 };

@@ -12,12 +12,16 @@
 
 #ifdef COSIM_HAVE_MPI
 #include <mpi.h>
+
+#include "cosim/runtime/application_communicator.hpp"
 #endif
 
 namespace cosim::com {
 
 bool launched_by_mpirun() {
-  return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("PMI_RANK") != nullptr;
+  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMI_RANK", "PMIX_RANK"})
+    if (std::getenv(variable) != nullptr) return true;
+  return false;
 }
 
 #ifdef COSIM_HAVE_MPI
@@ -48,18 +52,12 @@ class MpiEnvironment {
       owns_ = true;
     }
     MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
-    int* appnum = nullptr;
-    int flag = 0;
-    MPI_Comm_get_attr(MPI_COMM_WORLD, MPI_APPNUM, &appnum, &flag);
-    int rank = 0;
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_split(MPI_COMM_WORLD, flag ? *appnum : 0, rank, &local_);
+    local_ = runtime::application_communicator();
     MPI_Comm_dup(MPI_COMM_WORLD, &coupling_);
   }
   void release() {
     if (--users_ > 0) return;
     MPI_Comm_free(&coupling_);
-    MPI_Comm_free(&local_);
     if (owns_) {
       int finalized = 0;
       MPI_Finalized(&finalized);
@@ -67,6 +65,7 @@ class MpiEnvironment {
     }
   }
   MPI_Comm coupling() const { return coupling_; }
+  MPI_Comm local() const { return local_; }
 
  private:
   int users_ = 0;
@@ -156,7 +155,7 @@ Received receive_from(MPI_Comm comm, int source, const std::string& peer_hint) {
 }  // namespace
 
 struct MpiHub::Impl {
-  std::vector<std::string> participants;  // by world rank - 1
+  std::vector<std::string> participants;  // by world rank - 1 (a part's peer name, e.g. "soil[1]")
   std::map<std::string, int> rank_of;     // admitted participants
   std::map<int, std::string> name_of;
   int world_size = 0;
@@ -199,8 +198,8 @@ void MpiHub::abort_job(int exit_code) {
   std::_Exit(exit_code);  // MPI_Abort does not return; in case it does
 }
 
-// The launch line puts participant i at world rank i + 1: a rank is admitted
-// as that participant only.
+// The launch line says which participant (or which part of one) runs at each
+// world rank: a rank is admitted as that one only.
 void MpiHub::admit(const std::string& connection, const std::string& participant) {
   for (int rank = 1; rank < impl_->world_size; ++rank) {
     if (Impl::label(rank) != connection) continue;
@@ -270,6 +269,18 @@ std::string MpiClient::describe() const {
   return "MPI client of world rank 0";
 }
 
+int MpiClient::application_rank() const {
+  int rank = 0;
+  MPI_Comm_rank(MpiEnvironment::instance().local(), &rank);
+  return rank;
+}
+
+int MpiClient::application_size() const {
+  int size = 1;
+  MPI_Comm_size(MpiEnvironment::instance().local(), &size);
+  return size;
+}
+
 void MpiClient::send(const std::string& peer, const Message& message) {
   if (peer != coupler_peer)
     throw std::logic_error("a participant sends only to the coupler, not to '" + peer + "'");
@@ -329,6 +340,12 @@ std::optional<Received> MpiClient::receive(std::chrono::milliseconds) {
 }
 std::string MpiClient::describe() const {
   return "MPI (not built)";
+}
+int MpiClient::application_rank() const {
+  return 0;
+}
+int MpiClient::application_size() const {
+  return 1;
 }
 
 #endif  // COSIM_HAVE_MPI

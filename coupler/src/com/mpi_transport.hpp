@@ -20,8 +20,9 @@ bool launched_by_mpirun();
 
 class MpiHub final : public Hub {
  public:
-  // `participants` in the order of the mpirun line: participant i runs at
-  // world rank i + 1, and a rank is admitted as that participant only.
+  // The peer the mpirun line starts at each world rank from 1 on, in order:
+  // a participant's name, or for one on several ranks its parts' names
+  // (runtime::part_peer_name); a rank is admitted as that peer only.
   explicit MpiHub(std::vector<std::string> participants);
   ~MpiHub() override;
   MpiHub(const MpiHub&) = delete;
@@ -56,6 +57,10 @@ class MpiClient final : public Transport {
   void send(const std::string& peer, const Message& message) override;
   std::optional<Received> receive(std::chrono::milliseconds timeout) override;
   std::string describe() const override;
+  // This rank and the number of ranks of this program (its own communicator,
+  // MPI_COMM_WORLD split by the launch line's applications).
+  int application_rank() const;
+  int application_size() const;
 
  private:
   struct Impl;

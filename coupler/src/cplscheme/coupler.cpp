@@ -252,6 +252,24 @@ struct Coupler::Impl {
       return;
     }
     Peer& peer = peers.at(h.sender);
+    const bool whole_on_ranks = hello.parts > 1 && !hello.partitioned;
+    if (hello.parts != peer.spec->ranks || whole_on_ranks) {
+      const std::string what =
+          whole_on_ranks
+              ? fmt::format(
+                    "participant '{}' ({}) runs on {} ranks, but its program declares its "
+                    "meshes whole: it does not run on several ranks in a coupled job; "
+                    "give it `ranks: 1`",
+                    h.sender, hello.program, hello.parts)
+              : fmt::format("participant '{}' ({}) runs on {} rank{}, the job gives it {}",
+                            h.sender, hello.program, hello.parts, hello.parts == 1 ? "" : "s",
+                            peer.spec->ranks);
+      refuse(r.peer, what);
+      if (peer.spec->ranks_where.line > 0)
+        throw InputError(peer.spec->ranks_where, fmt::format("participants.{}.ranks", h.sender),
+                         what);
+      throw InputError(what);
+    }
     if (peer.connected) {
       refuse(r.peer, fmt::format("participant '{}' is already connected", h.sender));
       return;

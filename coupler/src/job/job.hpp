@@ -31,6 +31,8 @@ struct ParticipantSpec {
   std::map<std::string, MeshSpec> meshes;
   std::map<std::string, std::string> writes;  // field -> mesh
   std::map<std::string, std::string> reads;   // field -> mesh
+  int ranks = 1;  // MPI ranks of the participant's program (transport: mpi only when > 1)
+  SourceLocation ranks_where;  // of the `ranks` key (line 0 when the default)
   SourceLocation where;
 };
 

@@ -26,6 +26,9 @@ Schema participant_schema() {
                 "The solver's own config file, passed as --config (relative to this file).")
       .optional("args", Schema::sequence(Schema::string()).default_value("[]"),
                 "Extra command-line arguments.")
+      .optional("ranks", Schema::integer().range(1, 100000).default_value("1"),
+                "MPI ranks the participant's program runs on (its MPMD count under mpirun or "
+                "srun); more than 1 needs `transport: mpi` and a program that runs decomposed.")
       .optional("meshes", Schema::map_of(mesh_schema()).default_value("{}"),
                 "Meshes the participant declares: name -> {kind, dim}.")
       .optional("writes", Schema::map_of(Schema::string().non_empty()).default_value("{}"),

@@ -50,6 +50,8 @@ ParticipantSpec read_participant(const std::string& name, const config::Node& p)
   spec.executable = p["executable"].as<std::string>();
   if (auto c = p.find("config")) spec.config = c->as_path();
   spec.args = p.get<std::vector<std::string>>("args");
+  spec.ranks = p.get<int>("ranks");
+  spec.ranks_where = p["ranks"].location();
   for (const auto& [mesh_name, m] : p["meshes"].entries())
     spec.meshes[mesh_name] = {mesh_kind_from(m["kind"]), m["dim"].as<int>(), m.key_location()};
   spec.writes = field_map(p, "writes", spec.meshes);
@@ -331,6 +333,13 @@ Job load_job(const std::filesystem::path& file) {
                       "'-'",
                       name.size() > 64 ? name.substr(0, 64) + "..." : name));
     job.participants.push_back(read_participant(name, p));
+    // Several ranks of one participant are one MPMD launch with the coupler;
+    // a ZeroMQ job starts each participant as one process.
+    if (job.participants.back().ranks > 1 && job.transport != TransportKind::mpi)
+      p["ranks"].fail(fmt::format(
+          "participant '{}' on {} ranks needs 'transport: mpi' (one MPMD launch of the coupler "
+          "and every participant's ranks); the job's transport is 'zmq'",
+          name, job.participants.back().ranks));
   }
   check_exchanges(job, root);
   if (auto m = root.find("momentum_exchange"); m && m->is_map())

@@ -1,6 +1,7 @@
 #include "cosim/mesh.hpp"
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "cosim/error.hpp"
@@ -112,6 +113,21 @@ Vec3 Mesh::position(std::size_t e) const {
           return g.centre(e);
       },
       geometry);
+}
+
+MeshPart MeshPart::box(const UniformGrid& grid, const Index3& lower, const Index3& upper) {
+  const Index3 n = grid.extent();
+  MeshPart part;
+  for (int d = 0; d < 3; ++d)
+    if (lower[d] < 0 || upper[d] > n[d] || lower[d] > upper[d])
+      throw std::invalid_argument("MeshPart::box: the box is not inside the grid");
+  part.elements.reserve(static_cast<std::size_t>((upper[0] - lower[0]) * (upper[1] - lower[1]) *
+                                                 (upper[2] - lower[2])));
+  for (std::int64_t k = lower[2]; k < upper[2]; ++k)
+    for (std::int64_t j = lower[1]; j < upper[1]; ++j)
+      for (std::int64_t i = lower[0]; i < upper[0]; ++i)
+        part.elements.push_back(static_cast<std::int64_t>(grid.flat(i, j, k)));
+  return part;
 }
 
 const char* to_string(MeshKind kind) {

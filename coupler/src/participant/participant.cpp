@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "com/handshake.hpp"
 #include "com/mpi_transport.hpp"
@@ -81,8 +82,33 @@ struct ReadBuffer {
 
 struct MeshEntry {
   Mesh mesh;
+  std::optional<MeshPart> part;  // this rank's, on a participant on several ranks
   bool changed = true;
+
+  // The values a field on this mesh holds per component on this rank.
+  std::size_t values() const { return part ? part->size() : mesh.size(); }
 };
+
+// A part names elements of its mesh, each once: a grid's values, or one per
+// element of a cloud's part.
+void check_part(const std::string& participant, const Mesh& mesh, const MeshPart& part) {
+  const bool whole_geometry = mesh.kind() == MeshKind::uniform_grid;
+  if (!whole_geometry && part.size() != mesh.size())
+    usage_error(participant,
+                fmt::format("mesh '{}' has {} elements on this rank, its part names {}", mesh.name,
+                            mesh.size(), part.size()));
+  std::vector<std::int64_t> sorted = part.elements;
+  std::sort(sorted.begin(), sorted.end());
+  if (!sorted.empty() && sorted.front() < 0)
+    usage_error(participant,
+                fmt::format("the part of mesh '{}' names element {}", mesh.name, sorted.front()));
+  if (whole_geometry && !sorted.empty() && sorted.back() >= static_cast<std::int64_t>(mesh.size()))
+    usage_error(participant, fmt::format("the part of mesh '{}' names element {} of {}", mesh.name,
+                                         sorted.back(), mesh.size()));
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+    usage_error(participant,
+                fmt::format("the part of mesh '{}' names an element twice", mesh.name));
+}
 
 struct Participant::Impl {
   std::string name;
@@ -112,8 +138,12 @@ struct Participant::Impl {
   bool write_checkpoint = false;
 
   std::size_t size_of(const FieldSpec& f) const {
-    return meshes.at(f.mesh).mesh.size() * static_cast<std::size_t>(f.components);
+    return meshes.at(f.mesh).values() * static_cast<std::size_t>(f.components);
   }
+  // This rank's part and the participant's ranks, from the transport (one
+  // part standalone and over ZeroMQ).
+  int part = 0;
+  int parts = 1;
 
   // Computed from the window's index, as the coupler does, never accumulated:
   // over thousands of windows a running sum drifts past the coupler's tolerance.
@@ -201,6 +231,7 @@ struct Participant::Impl {
   void send_window_data() {
     for (auto& [mesh_name, entry] : meshes) {
       if (!entry.changed) continue;
+      if (parts > 1) send(part_message(entry));
       send(com::make_mesh_message(endpoint.job_id, name, window, time, entry.mesh));
       entry.changed = false;
     }
@@ -212,6 +243,39 @@ struct Participant::Impl {
         std::fill(w.integral.begin(), w.integral.end(), 0.0);
     }
     send(header_only(MessageType::window_end));
+  }
+
+  com::Message part_message(const MeshEntry& entry) const {
+    const std::vector<double> ids(entry.part->elements.begin(), entry.part->elements.end());
+    com::Message m =
+        com::make_field_message(endpoint.job_id, name, window, time, "", entry.mesh.name, ids, 1);
+    m.header.type = MessageType::mesh_part;
+    return m;
+  }
+
+  // Learns this rank's part from an MPI transport. A participant on several
+  // ranks declares every mesh with its part (a program that declares them
+  // whole says so in its hello, and the coupler refuses it); one on a single
+  // rank has none but the whole mesh.
+  bool find_part() {
+    if (const auto* mpi = dynamic_cast<const com::MpiClient*>(transport.get())) {
+      part = mpi->application_rank();
+      parts = mpi->application_size();
+    }
+    bool partitioned = !meshes.empty();
+    for (const auto& [mesh_name, entry] : meshes) {
+      partitioned = partitioned && entry.part.has_value();
+      if (parts == 1 && entry.part) {
+        bool whole =
+            entry.part->size() == entry.mesh.size() || entry.mesh.kind() != MeshKind::uniform_grid;
+        for (std::size_t i = 0; whole && i < entry.part->size(); ++i)
+          whole = entry.part->elements[i] == static_cast<std::int64_t>(i);
+        if (!whole)
+          usage_error(name, fmt::format("runs on one rank, but declares only a part of mesh '{}'",
+                                        mesh_name));
+      }
+    }
+    return partitioned;
   }
 
   // Receives the mapped fields for the next window, then window_begin or
@@ -419,7 +483,14 @@ void Participant::declare_mesh(Mesh mesh) {
   if (impl_->meshes.count(mesh.name))
     usage_error(impl_->name, fmt::format("mesh '{}' is declared twice", mesh.name));
   std::string key = mesh.name;
-  impl_->meshes.emplace(std::move(key), MeshEntry{std::move(mesh), true});
+  impl_->meshes.emplace(std::move(key), MeshEntry{std::move(mesh), std::nullopt, true});
+}
+
+void Participant::declare_mesh(Mesh mesh, MeshPart part) {
+  check_part(impl_->name, mesh, part);
+  const std::string mesh_name = mesh.name;
+  declare_mesh(std::move(mesh));
+  impl_->meshes.at(mesh_name).part = std::move(part);
 }
 
 void Participant::declare_write(FieldSpec field) {
@@ -491,6 +562,7 @@ void Participant::initialize(double start_time, double end_time) {
     s.transport = std::make_unique<com::MpiClient>(s.name);
   else
     s.transport = std::make_unique<com::ZmqClient>(uri, s.name);
+  const bool partitioned = s.find_part();
 
   com::Hello hello;
   hello.participant = s.name;
@@ -504,6 +576,9 @@ void Participant::initialize(double start_time, double end_time) {
   for (const auto& [field_name, r] : s.reads) hello.reads.push_back(r.spec);
   hello.repeatable = s.repeatable;
   hello.checkpointable = s.checkpointable;
+  hello.part = s.part;
+  hello.parts = s.parts;
+  hello.partitioned = partitioned;
   std::size_t restart_window = 0;
   if (restarts) restart_window = s.read_state(s.endpoint.restart);
   hello.restart_window = restart_window;
@@ -585,6 +660,41 @@ void Participant::update_mesh(const Mesh& mesh) {
                 fmt::format("mesh '{}' may move but not change kind or size", mesh.name));
   validate(mesh);
   it->second.mesh = mesh;
+  it->second.changed = true;
+}
+
+void Participant::update_mesh(const Mesh& mesh, MeshPart part) {
+  Impl& s = *impl_;
+  auto it = s.meshes.find(mesh.name);
+  if (it == s.meshes.end() || !it->second.part)
+    usage_error(s.name,
+                fmt::format("updates mesh '{}', which is not declared with a part", mesh.name));
+  if (mesh.kind() != it->second.mesh.kind())
+    usage_error(s.name, fmt::format("mesh '{}' may move but not change kind", mesh.name));
+  validate(mesh);
+  check_part(s.name, mesh, part);
+  const std::size_t n = part.size();
+  if (n != it->second.values()) {
+    for (auto& [field_name, w] : s.writes) {
+      if (w.spec.mesh != mesh.name) continue;
+      if (w.spec.time == TimeTreatment::integral && s.time > s.window_start())
+        usage_error(s.name, fmt::format("the part of mesh '{}' changed size within a window, "
+                                        "while integral field '{}' accumulates on it",
+                                        mesh.name, field_name));
+      const std::size_t size = n * static_cast<std::size_t>(w.spec.components);
+      w.values.assign(size, 0.0);
+      w.integral.assign(size, 0.0);
+    }
+    for (auto& [field_name, r] : s.reads) {
+      if (r.spec.mesh != mesh.name) continue;
+      const std::size_t size = n * static_cast<std::size_t>(r.spec.components);
+      for (auto* buffer : {&r.current, &r.previous, &r.start, &r.delivered})
+        buffer->assign(size, 0.0);
+      r.has_previous = false;
+    }
+  }
+  it->second.mesh = mesh;
+  it->second.part = std::move(part);
   it->second.changed = true;
 }
 

@@ -1,7 +1,11 @@
 #include "runtime/mpi_launch.hpp"
 
 #include <fmt/format.h>
+#include <sched.h>
 #include <unistd.h>
+
+#include <algorithm>
+#include <thread>
 
 #include "cosim/runtime/supervisor.hpp"
 
@@ -26,26 +30,86 @@ std::vector<std::string> participant_arguments(const job::ParticipantSpec& parti
   return args;
 }
 
+std::vector<MpmdApplication> mpmd_applications(const job::Job& job,
+                                               const std::filesystem::path& job_file,
+                                               const std::filesystem::path& output_dir,
+                                               const std::string& job_id,
+                                               double connect_timeout_s) {
+  namespace fs = std::filesystem;
+  std::vector<MpmdApplication> apps;
+  const auto self = self_directory() / "cosim";
+  apps.push_back({"coupler",
+                  1,
+                  {self.string(), "run", fs::absolute(job_file).string(), "--output",
+                   fs::absolute(output_dir).string(), "--job-id", job_id, "--connect-timeout",
+                   fmt::format("{}", connect_timeout_s)}});
+  const auto base = job_file.parent_path();
+  for (const auto& p : job.participants) {
+    MpmdApplication app{p.name, p.ranks, {resolve_executable(p.executable, base).string()}};
+    const auto args = participant_arguments(p, fs::absolute(output_dir), "mpi://", job_id,
+                                            job.config_hash, connect_timeout_s);
+    app.command.insert(app.command.end(), args.begin(), args.end());
+    apps.push_back(std::move(app));
+  }
+  return apps;
+}
+
+int mpi_world_size(const job::Job& job) {
+  int size = 1;
+  for (const auto& p : job.participants) size += p.ranks;
+  return size;
+}
+
+std::vector<std::string> binding_options(int world_size, unsigned cores) {
+  const bool fits = cores > 0 && world_size > 0 && static_cast<unsigned>(world_size) <= cores;
+  return {"--bind-to", fits ? "core" : "none"};
+}
+
+unsigned available_cores() {
+  const unsigned hardware = std::thread::hardware_concurrency();
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (::sched_getaffinity(0, sizeof(set), &set) != 0) return hardware;
+  const auto allowed = static_cast<unsigned>(CPU_COUNT(&set));
+  return hardware == 0 ? allowed : std::min(allowed, hardware);
+}
+
+std::vector<std::string> mpi_command(const job::Job& job, const std::filesystem::path& job_file,
+                                     const std::filesystem::path& output_dir,
+                                     const std::string& job_id, double connect_timeout_s,
+                                     unsigned cores) {
+  std::vector<std::string> cmd{"mpirun", "--oversubscribe"};
+  if (::geteuid() == 0) cmd.push_back("--allow-run-as-root");
+  const auto binding = binding_options(mpi_world_size(job), cores);
+  cmd.insert(cmd.end(), binding.begin(), binding.end());
+  // Waiting ranks yield their core: participants sub-cycle while others wait.
+  cmd.insert(cmd.end(), {"--mca", "mpi_yield_when_idle", "1"});
+  bool first = true;
+  for (const auto& app : mpmd_applications(job, job_file, output_dir, job_id, connect_timeout_s)) {
+    if (!first) cmd.push_back(":");
+    first = false;
+    cmd.insert(cmd.end(), {"-np", fmt::format("{}", app.ranks)});
+    cmd.insert(cmd.end(), app.command.begin(), app.command.end());
+  }
+  return cmd;
+}
+
 std::vector<std::string> mpi_command(const job::Job& job, const std::filesystem::path& job_file,
                                      const std::filesystem::path& output_dir,
                                      const std::string& job_id, double connect_timeout_s) {
-  std::vector<std::string> cmd{"mpirun", "--oversubscribe"};
-  if (::geteuid() == 0) cmd.push_back("--allow-run-as-root");
-  // Waiting ranks yield their core: participants sub-cycle while others wait.
-  cmd.insert(cmd.end(), {"--mca", "mpi_yield_when_idle", "1"});
-  const auto self = self_directory() / "cosim";
-  cmd.insert(cmd.end(),
-             {"-np", "1", self.string(), "run", std::filesystem::absolute(job_file).string(),
-              "--output", std::filesystem::absolute(output_dir).string(), "--job-id", job_id,
-              "--connect-timeout", fmt::format("{}", connect_timeout_s)});
-  const auto base = job_file.parent_path();
-  for (const auto& p : job.participants) {
-    cmd.insert(cmd.end(), {":", "-np", "1", resolve_executable(p.executable, base).string()});
-    auto args = participant_arguments(p, std::filesystem::absolute(output_dir), "mpi://", job_id,
-                                      job.config_hash, connect_timeout_s);
-    cmd.insert(cmd.end(), args.begin(), args.end());
-  }
-  return cmd;
+  return mpi_command(job, job_file, output_dir, job_id, connect_timeout_s, available_cores());
+}
+
+std::string part_peer_name(const std::string& participant, int part, int parts) {
+  return parts > 1 ? fmt::format("{}[{}]", participant, part) : participant;
+}
+
+std::vector<std::string> rank_peer_names(const job::Job& job) {
+  std::vector<std::string> names;
+  for (const auto& p : job.participants)
+    for (int part = 0; part < p.ranks; ++part)
+      names.push_back(part_peer_name(p.name, part, p.ranks));
+  return names;
 }
 
 std::string shell_join(const std::vector<std::string>& words) {

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "cosim/error.hpp"
+#include "cosim/runtime/application_communicator.hpp"
 
 namespace cosim::runtime {
 
@@ -22,8 +23,9 @@ int ranks_from_launcher() {
 MpiSession::MpiSession() {
   int provided = 0;
   MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks_);
+  comm_ = application_communicator();
+  MPI_Comm_rank(comm_, &rank_);
+  MPI_Comm_size(comm_, &ranks_);
 }
 
 MpiSession::~MpiSession() {
@@ -32,7 +34,7 @@ MpiSession::~MpiSession() {
 
 int MpiSession::finish(int code, std::chrono::milliseconds grace) const {
   MPI_Request all_ended = MPI_REQUEST_NULL;
-  MPI_Ibarrier(MPI_COMM_WORLD, &all_ended);
+  MPI_Ibarrier(comm_, &all_ended);
   const auto deadline = std::chrono::steady_clock::now() + grace;
   for (int ended = 0;;) {
     MPI_Test(&all_ended, &ended, MPI_STATUS_IGNORE);
@@ -44,7 +46,7 @@ int MpiSession::finish(int code, std::chrono::milliseconds grace) const {
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   int job = code;
-  MPI_Allreduce(&code, &job, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Allreduce(&code, &job, 1, MPI_INT, MPI_MAX, comm_);
   return job;
 }
 
@@ -59,7 +61,7 @@ RankOutput prepare_rank_output(const MpiSession& mpi, const std::filesystem::pat
       mine.refused = to_int(e.code());
     }
   }
-  MPI_Bcast(&mine.refused, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  MPI_Bcast(&mine.refused, 1, MPI_INT, 0, mpi.comm());
   if (mine.refused != 0 || mpi.rank() == 0) return mine;
   mine.directory = output / "ranks" / fmt::format("rank_{}", mpi.rank());
   create_output_directory(mine.directory);

@@ -52,6 +52,8 @@ TEST(JobSchemaDefaults, AJobWithoutTheOptionalKeysReadsTheSchemaDefaults) {
   EXPECT_FALSE(job.momentum_exchange.has_value());
   const ParticipantSpec& soil = job.participants.at(0);
   EXPECT_EQ(soil.args, schema_default<std::vector<std::string>>("participants.<name>.args"));
+  EXPECT_EQ(soil.ranks, schema_default<int>("participants.<name>.ranks"));
+  EXPECT_EQ(soil.ranks, 1);
   EXPECT_TRUE(soil.meshes.empty());
   EXPECT_EQ(job_schema().default_of("participants.<name>.meshes"), "{}");
   EXPECT_EQ(job_schema().default_of("momentum_exchange.solved_by"), "coupler");

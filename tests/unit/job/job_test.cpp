@@ -114,6 +114,48 @@ TEST_F(JobFile, ConsistentMappingCannotHaveBounds) {
               HasSubstr("bounds apply to conservative transfers"));
 }
 
+// `ranks` of a participant: its MPI ranks in the MPMD launch. Lines 7 and 12
+// of the valid job are soil's and water's `executable`: a `ranks` key put
+// after one is on line 8 or 13.
+TEST_F(JobFile, RanksDefaultsToOneAndIsRead) {
+  const Job one = load_job(write(valid_job));
+  ASSERT_EQ(one.participants.size(), 2u);
+  EXPECT_EQ(one.participants[0].ranks, 1);
+  EXPECT_EQ(one.participants[1].ranks, 1);
+
+  std::string text =
+      cosim::testing::replaced(valid_job, "window: 0.01", "window: 0.01\ntransport: mpi");
+  text = cosim::testing::replaced(text, "executable: mpm_solver",
+                                  "executable: mpm_solver\n    ranks: 4");
+  const Job four = load_job(write(text));
+  EXPECT_EQ(four.transport, TransportKind::mpi);
+  EXPECT_EQ(four.participant("soil")->ranks, 4);
+  EXPECT_EQ(four.participant("soil")->ranks_where.line, 9);
+  EXPECT_EQ(four.participant("water")->ranks, 1);
+}
+
+TEST_F(JobFile, RanksBelowOneIsRefusedAtItsKeyAndLine) {
+  for (const char* value : {"0", "-3"}) {
+    const std::string e = error_of(variant(
+        "executable: mpm_solver", std::string("executable: mpm_solver\n    ranks: ") + value));
+    EXPECT_THAT(e, HasSubstr("job.yaml:8:")) << e;
+    EXPECT_THAT(e, HasSubstr("participants.soil.ranks")) << e;
+    EXPECT_THAT(e, HasSubstr("must be in [1, 100000]")) << e;
+  }
+  const std::string e =
+      error_of(variant("executable: mpm_solver", "executable: mpm_solver\n    ranks: 1.5"));
+  EXPECT_THAT(e, HasSubstr("job.yaml:8:"));
+  EXPECT_THAT(e, HasSubstr("participants.soil.ranks"));
+}
+
+TEST_F(JobFile, SeveralRanksNeedTheMpiTransport) {
+  const std::string e =
+      error_of(variant("executable: ice_fluid", "executable: ice_fluid\n    ranks: 2"));
+  EXPECT_THAT(e, HasSubstr("job.yaml:13:")) << e;
+  EXPECT_THAT(e, HasSubstr("participants.water.ranks")) << e;
+  EXPECT_THAT(e, HasSubstr("needs 'transport: mpi'")) << e;
+}
+
 TEST_F(JobFile, YamlSyntaxErrorsAreLocated) {
   EXPECT_THAT(error_of("kind: job\nname: [unclosed\n"), HasSubstr("job.yaml:"));
 }

@@ -205,5 +205,45 @@ TEST(Participant, MeshesAreValidatedWhenDeclared) {
                InputError);
 }
 
+// A rank's part of a mesh: its fields hold the part's values; a part that
+// names an element outside the mesh or twice, or a cloud's part that does
+// not name each of its points, is a usage error.
+TEST(Participant, AMeshPartSizesTheFieldsAndIsChecked) {
+  const UniformGrid grid{2, {0, 0, 0}, {1, 1, 1}, {4, 3, 1}};
+  const MeshPart part = MeshPart::box(grid, {1, 1, 0}, {3, 3, 1});
+  EXPECT_EQ(part.elements, (std::vector<std::int64_t>{5, 6, 9, 10}));
+  Participant p("soil", CouplingEndpoint{});
+  p.declare_mesh(Mesh{"grid", grid}, part);
+  p.declare_write(field("solid_velocity"));
+  EXPECT_EQ(p.field_size("solid_velocity"), 4u);
+
+  Participant q("soil", CouplingEndpoint{});
+  EXPECT_THROW(q.declare_mesh(Mesh{"grid", grid}, MeshPart{{0, 12}}), Error);
+  EXPECT_THROW(q.declare_mesh(Mesh{"grid", grid}, MeshPart{{3, 3}}), Error);
+  const PointCloud cloud{2, {0.5, 0.5, 1.5, 0.5}, {0.1, 0.1}};
+  EXPECT_THROW(q.declare_mesh(Mesh{"points", cloud}, MeshPart{{7}}), Error);
+  EXPECT_THROW(MeshPart::box(grid, {0, 0, 0}, {5, 1, 1}), std::invalid_argument);
+}
+
+// A cloud's part changes size when points move to another rank: the fields
+// on it follow, a state read holding zeros until the next exchange.
+TEST(Participant, ACloudsPartMayChangeSize) {
+  Participant p("soil", CouplingEndpoint{});
+  p.declare_mesh(Mesh{"points", PointCloud{1, {0.5, 1.5}, {1.0, 1.0}}}, MeshPart{{4, 9}});
+  FieldSpec v = field("solid_velocity");
+  v.mesh = "points";
+  FieldSpec pressure = field("pore_pressure");
+  pressure.mesh = "points";
+  p.declare_write(v);
+  p.declare_read(pressure, 5.0);
+  p.initialize(0.0, 1.0);
+  p.update_mesh(Mesh{"points", PointCloud{1, {0.5, 1.5, 2.5}, {1.0, 1.0, 1.0}}},
+                MeshPart{{4, 9, 2}});
+  EXPECT_EQ(p.field_size("solid_velocity"), 3u);
+  EXPECT_EQ(p.read("pore_pressure"), std::vector<double>(3, 0.0));
+  p.write("solid_velocity", std::vector<double>(3, 1.0));
+  EXPECT_THROW(p.update_mesh(Mesh{"grid", line_grid().geometry}, MeshPart{{0}}), Error);
+}
+
 }  // namespace
 }  // namespace cosim

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <mpi.h>
+
 #include <chrono>
 #include <filesystem>
 #include <string_view>
@@ -24,6 +26,9 @@ class MpiSession {
   MpiSession(const MpiSession&) = delete;
   MpiSession& operator=(const MpiSession&) = delete;
 
+  // This program's ranks: MPI_COMM_WORLD, or within an MPMD job (a coupled
+  // participant on several ranks) this program's share of it.
+  MPI_Comm comm() const { return comm_; }
   int rank() const { return rank_; }
   int ranks() const { return ranks_; }
   // The end of the run on this rank with exit code `code`: waits for every
@@ -34,6 +39,7 @@ class MpiSession {
   int finish(int code, std::chrono::milliseconds grace = std::chrono::seconds(2)) const;
 
  private:
+  MPI_Comm comm_ = MPI_COMM_NULL;
   int rank_ = 0, ranks_ = 1;
 };
 

@@ -1,0 +1,160 @@
+// Participants on several ranks in a coupled job (label mpi): the demo job
+// of two test participants over the MPI transport, each participant on 1, 2
+// or 3 ranks that hold contiguous parts of its grid. The coupler assembles
+// the parts and splits what it sends (m2n::PartitionedHub), so every rank
+// count must give the one-rank run's exchange bit for bit: the snapshots of
+// the exchanged fields, and the heat each window's writer integrated and the
+// reader applied (summed over the ranks, to round-off). A program that does
+// not run on ranks, and a rank that dies, end the job with a clear error and
+// no process left.
+#include <fmt/format.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "demo_job.hpp"
+#include "hdf5_contents.hpp"
+#include "run_process.hpp"
+#include "text_files.hpp"
+
+namespace cosim::testing {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+constexpr double end_time = 0.025;  // 10 windows
+
+JobOptions job_on(int left_ranks, int right_ranks) {
+  JobOptions o;
+  o.transport = "mpi";
+  o.end_time = end_time;
+  o.output_every = 0.005;
+  o.left_ranks = left_ranks;
+  o.right_ranks = right_ranks;
+  o.name = fmt::format("parts_{}_{}", left_ranks, right_ranks);
+  return o;
+}
+
+// Column `column` of a participant's CSV log, summed over its ranks' files
+// row by row.
+std::vector<double> summed_over_ranks(const fs::path& participant_dir, const std::string& file,
+                                      int ranks, std::size_t column) {
+  std::vector<double> sum;
+  for (int r = 0; r < ranks; ++r) {
+    const fs::path dir =
+        r == 0 ? participant_dir : participant_dir / "ranks" / fmt::format("rank_{}", r);
+    const auto rows = read_csv(dir / file);
+    sum.resize(rows.size(), 0.0);
+    for (std::size_t i = 0; i < rows.size(); ++i) sum[i] += rows[i][column];
+  }
+  return sum;
+}
+
+std::vector<fs::path> snapshots_in(const fs::path& dir) {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().extension() == ".h5") files.push_back(entry.path().filename());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+TEST(PartitionedParticipants, EveryRankCountExchangesWhatOneRankDoes) {
+  const fs::path dir = fresh_directory("partitioned_participants");
+  const fs::path one_dir = dir / "one";
+  fs::create_directories(one_dir);
+  const auto one = cosim_run(write_job(one_dir, job_on(1, 1)), one_dir / "run", 300);
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  const auto reference_snapshots = snapshots_in(one_dir / "run" / "exchanged");
+  ASSERT_GE(reference_snapshots.size(), 5u);
+  const auto heat_sent = read_csv(one_dir / "run" / "left" / "heat_sent.csv");
+  ASSERT_EQ(heat_sent.size(), 10u);
+
+  for (const auto& [left, right] : {std::pair{2, 2}, std::pair{3, 1}, std::pair{1, 3}}) {
+    SCOPED_TRACE(fmt::format("left on {} ranks, right on {}", left, right));
+    const fs::path case_dir = dir / fmt::format("ranks_{}_{}", left, right);
+    fs::create_directories(case_dir);
+    const auto job = write_job(case_dir, job_on(left, right));
+    const auto printed = run({binary("cosim").string(), "run", job.string(), "--output",
+                              (case_dir / "run").string(), "--print-mpi-command"},
+                             std::chrono::seconds(30));
+    ASSERT_EQ(printed.exit_code, 0) << printed.output;
+    EXPECT_THAT(printed.output, HasSubstr(fmt::format("-np {} ", left)));
+    EXPECT_THAT(printed.output, HasSubstr(fmt::format("-np {} ", right)));
+
+    const auto r = cosim_run(job, case_dir / "run", 300);
+    ASSERT_EQ(r.exit_code, 0) << r.output << read_text(case_dir / "run" / "mpirun.log");
+    // The coupler's snapshots of what it sent: the same bits.
+    const auto snapshots = snapshots_in(case_dir / "run" / "exchanged");
+    ASSERT_EQ(snapshots, reference_snapshots);
+    for (const auto& file : snapshots)
+      EXPECT_EQ(hdf5_contents(case_dir / "run" / "exchanged" / file),
+                hdf5_contents(one_dir / "run" / "exchanged" / file))
+          << file;
+    // The heat integrated by the writer's ranks together, and applied by the
+    // reader's ranks together in the next window: conserved, and as on one rank.
+    const auto sent = summed_over_ranks(case_dir / "run" / "left", "heat_sent.csv", left, 2);
+    const auto applied =
+        summed_over_ranks(case_dir / "run" / "right", "heat_applied.csv", right, 2);
+    ASSERT_EQ(sent.size(), heat_sent.size());
+    ASSERT_EQ(applied.size(), heat_sent.size());
+    double worst_sent = 0.0, worst_conserved = 0.0;
+    for (std::size_t k = 0; k + 1 < sent.size(); ++k) {
+      worst_sent =
+          std::max(worst_sent, std::abs(sent[k] - heat_sent[k][2]) / std::abs(heat_sent[k][2]));
+      worst_conserved =
+          std::max(worst_conserved, std::abs(applied[k + 1] - sent[k]) / std::abs(sent[k]));
+    }
+    std::printf("left %d ranks, right %d: heat sent vs one rank %.2e, applied vs sent %.2e\n", left,
+                right, worst_sent, worst_conserved);
+    EXPECT_LE(worst_sent, 1e-12);
+    EXPECT_LE(worst_conserved, 1e-12);
+    const auto summary = nlohmann::json::parse(read_text(case_dir / "run" / "summary.json"));
+    EXPECT_EQ(summary["windows"], 10);
+    EXPECT_LE(summary["metrics"]["max_conservative_mapping_error"]["value"].get<double>(), 1e-12);
+  }
+}
+
+TEST(PartitionedParticipants, AProgramThatDoesNotRunOnRanksIsRefusedWithExit2) {
+  const fs::path dir = fresh_directory("partitioned_whole_mesh");
+  JobOptions o = job_on(2, 1);
+  o.left_args = "[--whole-mesh]";
+  const auto r = cosim_run(write_job(dir, o), dir / "run", 120);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  const std::string all = r.output + read_text(dir / "run" / "summary.json") +
+                          read_text(dir / "run" / "left" / "summary.json");
+  EXPECT_THAT(all, HasSubstr("does not run on several ranks"));
+  EXPECT_THAT(all, HasSubstr("participants.left.ranks"));
+}
+
+TEST(PartitionedParticipants, ARankThatDiesEndsTheJobWithExit3AndNoProcessLeft) {
+  const fs::path dir = fresh_directory("partitioned_rank_dies");
+  JobOptions o = job_on(2, 2);
+  o.end_time = 1000.0;
+  o.right_args = "[--raise, SIGKILL, --raise-at, 'window:3', --fault-rank, '1']";
+  const auto r = cosim_run(write_job(dir, o), dir / "run", 120);
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("participant 'right[1]'"));
+  const auto summary = nlohmann::json::parse(read_text(dir / "run" / "summary.json"));
+  EXPECT_EQ(summary["status"]["exit_code"], 3);
+  for (const fs::path& pid_file :
+       {dir / "run" / "left" / "pid", dir / "run" / "left" / "ranks" / "rank_1" / "pid",
+        dir / "run" / "right" / "pid"}) {
+    ASSERT_TRUE(fs::exists(pid_file)) << pid_file;
+    // Ended by mpirun, or by the kernel when mpirun is gone (their parent-death
+    // signal): a moment after the job ends.
+    const pid_t pid = std::stoi(read_text(pid_file));
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (process_exists(pid) && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    EXPECT_FALSE(process_exists(pid)) << pid_file << " outlived the job";
+  }
+}
+
+}  // namespace
+}  // namespace cosim::testing
