@@ -1,11 +1,16 @@
 // A soak run: the demo job over 10^5 windows (about a minute), the resident
-// memory of the coupler and of both participants sampled throughout. Once
-// warm (a tenth of the run) none may grow by more than 1 %: a leak of even a
-// few bytes per window or message would show.
+// memory of the coupler and of both participants sampled throughout (every
+// 200 ms, some 300 windows apart). Once warm (a tenth of the run) none may
+// grow by more than 1 % besides its one largest step between two samples: a
+// leak of even a few bytes per window or message grows a little at every
+// sample and would show, while a single step (an allocator's arena grown, a
+// buffer's pages first touched: once, not per window) is not a leak. That
+// step is held to 5 %.
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -23,6 +28,7 @@ namespace fs = std::filesystem;
 constexpr std::size_t soak_windows = 100000;
 constexpr double window_s = 2.5e-3;  // the demo job's
 constexpr double allowed_growth = 0.01;
+constexpr double allowed_step = 0.05;
 
 // VmRSS of /proc/<pid>/status [kB], 0 when the process is gone.
 long resident_kib(pid_t pid) {
@@ -62,16 +68,15 @@ TEST(Soak, MemoryStaysFlatOverManyWindows) {
       {"cosim", cosim},
       {"left", wait_for_pid_file(dir / "run" / "left" / "pid", std::chrono::seconds(30))},
       {"right", wait_for_pid_file(dir / "run" / "right" / "pid", std::chrono::seconds(30))}};
-  // Per process: the resident size once warm, and the largest after.
-  std::map<std::string, long> warm, largest;
+  // Per process: the resident sizes sampled once warm.
+  std::map<std::string, std::vector<long>> samples;
   const auto start = std::chrono::steady_clock::now();
   while (std::chrono::steady_clock::now() - start < std::chrono::minutes(20)) {
     const double done = progress(dir / "run" / "summary.json");
     for (const auto& [name, pid] : processes) {
       const long kib = resident_kib(pid);
       if (kib == 0) continue;
-      if (done >= 0.1 && !warm.count(name)) warm[name] = kib;
-      if (warm.count(name)) largest[name] = std::max(largest[name], kib);
+      if (done >= 0.1) samples[name].push_back(kib);
     }
     if (resident_kib(cosim) == 0) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
@@ -84,14 +89,21 @@ TEST(Soak, MemoryStaysFlatOverManyWindows) {
   std::printf("soak: %zu windows in %.1f s (%.0f windows/s)\n", soak_windows, seconds,
               static_cast<double>(soak_windows) / seconds);
   for (const auto& [name, pid] : processes) {
-    ASSERT_TRUE(warm.count(name)) << name << " was never sampled warm";
-    const double growth =
-        static_cast<double>(largest[name] - warm[name]) / static_cast<double>(warm[name]);
+    const std::vector<long>& kib = samples[name];
+    ASSERT_GE(kib.size(), 10u) << name << " was hardly sampled warm";
+    const long warm = kib.front();
+    const long largest = *std::max_element(kib.begin(), kib.end());
+    long step = 0;
+    for (std::size_t i = 1; i < kib.size(); ++i) step = std::max(step, kib[i] - kib[i - 1]);
+    const double growth = static_cast<double>(largest - warm - step) / static_cast<double>(warm);
+    const double step_share = static_cast<double>(step) / static_cast<double>(warm);
     std::printf(
-        "soak: %-6s resident %ld kB warm, %ld kB at most after: growth %+.3f %% "
-        "(limit %.0f %%)\n",
-        name.c_str(), warm[name], largest[name], 100.0 * growth, 100.0 * allowed_growth);
+        "soak: %-6s resident %ld kB warm, %ld kB at most after (%zu samples): growth %+.3f %% "
+        "besides its largest step of %.3f %% (limits %.0f %% and %.0f %%)\n",
+        name.c_str(), warm, largest, kib.size(), 100.0 * growth, 100.0 * step_share,
+        100.0 * allowed_growth, 100.0 * allowed_step);
     EXPECT_LE(growth, allowed_growth) << name;
+    EXPECT_LE(step_share, allowed_step) << name;
   }
 }
 
