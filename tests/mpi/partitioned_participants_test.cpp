@@ -2,7 +2,8 @@
 // of two test participants over the MPI transport, each participant on 1, 2
 // or 3 ranks that hold contiguous parts of its grid. The coupler assembles
 // the parts and splits what it sends (m2n::PartitionedHub), so every rank
-// count must give the one-rank run's exchange bit for bit: the snapshots of
+// count must give the one-rank run's exchange bit for bit, also when ranks
+// hold ghosts (elements they read but do not own): the snapshots of
 // the exchanged fields, and the heat each window's writer integrated and the
 // reader applied (summed over the ranks, to round-off). A program that does
 // not run on ranks, and a rank that dies, end the job with a clear error and
@@ -15,6 +16,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "demo_job.hpp"
@@ -75,11 +77,15 @@ TEST(PartitionedParticipants, EveryRankCountExchangesWhatOneRankDoes) {
   const auto heat_sent = read_csv(one_dir / "run" / "left" / "heat_sent.csv");
   ASSERT_EQ(heat_sent.size(), 10u);
 
-  for (const auto& [left, right] : {std::pair{2, 2}, std::pair{3, 1}, std::pair{1, 3}}) {
-    SCOPED_TRACE(fmt::format("left on {} ranks, right on {}", left, right));
-    const fs::path case_dir = dir / fmt::format("ranks_{}_{}", left, right);
+  // Ranks that also hold (read, never send) 7 elements of each neighbour's.
+  for (const auto& [left, right, ghosts] :
+       {std::tuple{2, 2, 0}, std::tuple{3, 1, 0}, std::tuple{1, 3, 0}, std::tuple{2, 3, 7}}) {
+    SCOPED_TRACE(fmt::format("left on {} ranks, right on {}, {} ghosts", left, right, ghosts));
+    const fs::path case_dir = dir / fmt::format("ranks_{}_{}_{}", left, right, ghosts);
     fs::create_directories(case_dir);
-    const auto job = write_job(case_dir, job_on(left, right));
+    JobOptions options = job_on(left, right);
+    options.left_args = options.right_args = fmt::format("[--ghosts, '{}']", ghosts);
+    const auto job = write_job(case_dir, options);
     const auto printed = run({binary("cosim").string(), "run", job.string(), "--output",
                               (case_dir / "run").string(), "--print-mpi-command"},
                              std::chrono::seconds(30));

@@ -247,6 +247,7 @@ struct Part {
   int rank = 0;
   int ranks = 1;
   bool declared = true;  // false: declares its mesh whole, as a program that cannot run on ranks
+  int ghosts = 0;        // elements of each neighbour's range also held (read, never sent)
 };
 
 // Fault injection: what the participant does besides its fields.
@@ -294,9 +295,13 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
   cosim::MeshPart elements;
   const auto whole = static_cast<std::int64_t>(mesh.size());
   const Part held_part = part.declared ? part : Part{};  // else the whole mesh on every rank
-  for (std::int64_t e = whole * held_part.rank / held_part.ranks;
-       e < whole * (held_part.rank + 1) / held_part.ranks; ++e)
+  const std::int64_t first = whole * held_part.rank / held_part.ranks;
+  const std::int64_t end = whole * (held_part.rank + 1) / held_part.ranks;
+  for (std::int64_t e = std::max<std::int64_t>(0, first - part.ghosts);
+       e < std::min(whole, end + part.ghosts); ++e) {
     elements.elements.push_back(e);
+    elements.owned.push_back(e >= first && e < end ? 1 : 0);
+  }
   auto position = [&](std::size_t e) {
     return mesh.position(static_cast<std::size_t>(elements.elements[e]));
   };
@@ -304,6 +309,14 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
     return mesh.control_volume(static_cast<std::size_t>(elements.elements[e]));
   };
   const std::size_t held = elements.size();
+  // A field's total over the elements this rank owns.
+  auto owned_total = [&](const std::vector<double>& v) {
+    const std::size_t components = held == 0 ? 1 : v.size() / held;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < v.size(); ++i)
+      if (elements.owns(i / components)) sum += v[i];
+    return sum;
+  };
 
   cosim::Participant participant(endpoint.name_or("test_participant"), endpoint);
   if (part.ranks > 1 && part.declared)
@@ -390,7 +403,7 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
       }
       if (!sub_step)
         log(r.spec.name, "read", static_cast<double>(participant.window_index()),
-            participant.time(), total(v), max_error);
+            participant.time(), owned_total(v), max_error);
     }
   };
 
@@ -489,13 +502,13 @@ int run(const Config& config, const cosim::CouplingEndpoint& endpoint, const std
         for (const auto& w : config.writes) {
           if (w.spec.time != cosim::TimeTreatment::integral) continue;
           log(w.spec.name, "sent", static_cast<double>(window), participant.time(),
-              total(sent_integral[w.spec.name]), 0.0);
+              owned_total(sent_integral[w.spec.name]), 0.0);
           std::fill(sent_integral[w.spec.name].begin(), sent_integral[w.spec.name].end(), 0.0);
         }
         for (const auto& r : config.reads) {
           if (r.spec.time != cosim::TimeTreatment::integral) continue;
           log(r.spec.name, "applied", static_cast<double>(window), participant.time(),
-              total(received_integral[r.spec.name]), 0.0);
+              owned_total(received_integral[r.spec.name]), 0.0);
           std::fill(received_integral[r.spec.name].begin(), received_integral[r.spec.name].end(),
                     0.0);
         }
@@ -535,6 +548,7 @@ int main(int argc, char** argv) {
   Faults faults;
   int fault_rank = -1;
   bool whole_mesh = false;
+  int ghosts = 0;
   cosim::CouplingEndpoint endpoint;
   app.add_option("--config", config_file, "test_participant YAML")->required();
   app.add_option("--output", output, "output directory");
@@ -549,6 +563,9 @@ int main(int argc, char** argv) {
                  "on several ranks: only this rank crashes, hangs or raises (default: every rank)");
   app.add_flag("--whole-mesh", whole_mesh,
                "on several ranks, declare the mesh whole (a program that cannot run on ranks)");
+  app.add_option("--ghosts", ghosts,
+                 "on several ranks, also hold this many elements of each neighbour's range")
+      ->check(CLI::Range(0, 1000));
   app.add_flag("--not-repeatable", not_repeatable,
                "do not declare that windows can be repeated (implicit schemes refuse it)");
   app.add_flag("--not-checkpointable", not_checkpointable,
@@ -579,6 +596,7 @@ int main(int argc, char** argv) {
     }
 #endif
     part.declared = !whole_mesh;
+    part.ghosts = ghosts;
     if (fault_rank >= 0 && fault_rank != part.rank) {
       faults.crash_at_window = faults.hang_at_window = 0;
       faults.raised = {};

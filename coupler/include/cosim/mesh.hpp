@@ -90,13 +90,22 @@ struct Mesh {
 // (architecture.md §15): the whole mesh's indices of its elements, in the
 // order of this rank's values. A grid is declared whole (every rank the same
 // geometry) with the part it holds; a cloud by this rank's own elements.
+// A grid's part may hold ghosts, elements another rank owns: the rank reads
+// their values (the coupler sends every element held) but its writes of
+// them are not sent. Every element is owned by one rank.
 struct MeshPart {
   std::vector<std::int64_t> elements;
+  std::vector<std::uint8_t> owned = {};  // per element, 0 for a ghost; empty: all owned
 
   std::size_t size() const { return elements.size(); }
+  bool owns(std::size_t i) const { return owned.empty() || owned[i] != 0; }
+  bool has_ghosts() const;
   // The values with indices lower <= (i, j, k) < upper of a grid (value
   // indices: cells, or nodes for a nodal grid), x fastest.
   static MeshPart box(const UniformGrid& grid, const Index3& lower, const Index3& upper);
+  // The same box held, of which the rank owns owned_lower <= (i, j, k) < owned_upper.
+  static MeshPart box(const UniformGrid& grid, const Index3& lower, const Index3& upper,
+                      const Index3& owned_lower, const Index3& owned_upper);
 };
 
 const char* to_string(MeshKind kind);

@@ -48,7 +48,8 @@ struct Group {
   std::vector<std::optional<Received>> hellos;
   std::vector<std::string> peers;  // by part, once admitted
   std::vector<std::deque<Message>> queues;
-  std::map<std::string, Parts> elements;         // mesh -> each part's element indices
+  std::map<std::string, Parts> elements;         // mesh -> each part's owned elements
+  std::map<std::string, Parts> held;             // mesh -> each part's elements, ghosts too
   std::map<std::string, std::size_t> mesh_size;  // mesh -> elements of the whole mesh
   bool aborted = false;
 
@@ -183,18 +184,30 @@ struct PartitionedHub::Impl {
     return out;
   }
 
+  // A mesh_part names, in the rank's order, the element of each value it
+  // holds; with two components, also whether the rank owns it (a ghost's
+  // value is sent to it but never taken from it).
   void store_parts(Group& g, const std::vector<Message>& heads) {
-    Parts parts(heads.size());
+    Parts owned(heads.size()), held(heads.size());
     for (std::size_t p = 0; p < heads.size(); ++p) {
       com::validate_payload(heads[p], g.name, false);
-      for (const double e : heads[p].payload.doubles()) {
+      const std::size_t c = heads[p].header.components;
+      if (c != 1 && c != 2)
+        throw ProtocolError(g.name, fmt::format("rank {} sent the part of mesh '{}' with {} values "
+                                                "an element",
+                                                p, heads[p].header.mesh, c));
+      const std::vector<double> v = heads[p].payload.doubles();
+      for (std::size_t i = 0; i < v.size(); i += c) {
+        const double e = v[i];
         if (!(e >= 0.0) || e != std::floor(e) || e > 0x1p52)
           throw ProtocolError(g.name, fmt::format("rank {} named element {} of mesh '{}'", p, e,
                                                   heads[p].header.mesh));
-        parts[p].push_back(static_cast<std::int64_t>(e));
+        held[p].push_back(static_cast<std::int64_t>(e));
+        if (c == 1 || v[i + 1] != 0.0) owned[p].push_back(static_cast<std::int64_t>(e));
       }
     }
-    g.elements[heads[0].header.mesh] = std::move(parts);
+    g.elements[heads[0].header.mesh] = std::move(owned);
+    g.held[heads[0].header.mesh] = std::move(held);
   }
 
   Message merge_field(Group& g, const std::vector<Message>& heads) {
@@ -340,8 +353,8 @@ void PartitionedHub::send(const std::string& peer, const Message& message) {
     return;
   }
   const Group& g = group->second;
-  auto parts = g.elements.find(message.header.mesh);
-  if (message.header.type != MessageType::field || parts == g.elements.end()) {
+  auto parts = g.held.find(message.header.mesh);
+  if (message.header.type != MessageType::field || parts == g.held.end()) {
     for (const auto& part : g.peers) impl_->connections.send(part, message);
     return;
   }

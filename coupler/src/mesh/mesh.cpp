@@ -1,5 +1,6 @@
 #include "cosim/mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -128,6 +129,23 @@ MeshPart MeshPart::box(const UniformGrid& grid, const Index3& lower, const Index
       for (std::int64_t i = lower[0]; i < upper[0]; ++i)
         part.elements.push_back(static_cast<std::int64_t>(grid.flat(i, j, k)));
   return part;
+}
+
+MeshPart MeshPart::box(const UniformGrid& grid, const Index3& lower, const Index3& upper,
+                       const Index3& owned_lower, const Index3& owned_upper) {
+  MeshPart part = box(grid, lower, upper);
+  part.owned.reserve(part.size());
+  for (const std::int64_t e : part.elements) {
+    const Index3 at = grid.unflat(static_cast<std::size_t>(e));
+    bool owned = true;
+    for (int d = 0; d < 3; ++d) owned = owned && at[d] >= owned_lower[d] && at[d] < owned_upper[d];
+    part.owned.push_back(owned ? 1 : 0);
+  }
+  return part;
+}
+
+bool MeshPart::has_ghosts() const {
+  return std::find(owned.begin(), owned.end(), std::uint8_t{0}) != owned.end();
 }
 
 const char* to_string(MeshKind kind) {

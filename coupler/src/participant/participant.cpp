@@ -93,6 +93,15 @@ struct MeshEntry {
 // element of a cloud's part.
 void check_part(const std::string& participant, const Mesh& mesh, const MeshPart& part) {
   const bool whole_geometry = mesh.kind() == MeshKind::uniform_grid;
+  if (!part.owned.empty() && part.owned.size() != part.size())
+    usage_error(participant, fmt::format("the part of mesh '{}' says of {} of its {} elements "
+                                         "whether it owns them",
+                                         mesh.name, part.owned.size(), part.size()));
+  if (!whole_geometry && part.has_ghosts())
+    usage_error(participant,
+                fmt::format("the part of cloud '{}' has ghosts: a cloud's part is the points "
+                            "the rank owns",
+                            mesh.name));
   if (!whole_geometry && part.size() != mesh.size())
     usage_error(participant,
                 fmt::format("mesh '{}' has {} elements on this rank, its part names {}", mesh.name,
@@ -238,17 +247,39 @@ struct Participant::Impl {
     for (auto& [field_name, w] : writes) {
       const auto& values = w.spec.time == TimeTreatment::integral ? w.integral : w.values;
       send(com::make_field_message(endpoint.job_id, name, window, time, field_name, w.spec.mesh,
-                                   values, static_cast<std::uint32_t>(w.spec.components)));
+                                   owned_values(w.spec, values),
+                                   static_cast<std::uint32_t>(w.spec.components)));
       if (w.spec.time == TimeTreatment::integral)
         std::fill(w.integral.begin(), w.integral.end(), 0.0);
     }
     send(header_only(MessageType::window_end));
   }
 
+  // The values a rank sends of a field: those of the elements it owns.
+  std::span<const double> owned_values(const FieldSpec& f, const std::vector<double>& values) {
+    const MeshEntry& entry = meshes.at(f.mesh);
+    if (!entry.part || !entry.part->has_ghosts() || parts == 1) return values;
+    const auto c = static_cast<std::size_t>(f.components);
+    owned_buffer.clear();
+    for (std::size_t i = 0; i < entry.part->size(); ++i)
+      if (entry.part->owns(i))
+        owned_buffer.insert(owned_buffer.end(), values.begin() + static_cast<std::ptrdiff_t>(i * c),
+                            values.begin() + static_cast<std::ptrdiff_t>((i + 1) * c));
+    return owned_buffer;
+  }
+  std::vector<double> owned_buffer;
+
+  // The part's elements, and with ghosts whether each is owned.
   com::Message part_message(const MeshEntry& entry) const {
-    const std::vector<double> ids(entry.part->elements.begin(), entry.part->elements.end());
-    com::Message m =
-        com::make_field_message(endpoint.job_id, name, window, time, "", entry.mesh.name, ids, 1);
+    const MeshPart& mine = *entry.part;
+    const bool ghosts = mine.has_ghosts();
+    std::vector<double> record;
+    for (std::size_t i = 0; i < mine.size(); ++i) {
+      record.push_back(static_cast<double>(mine.elements[i]));
+      if (ghosts) record.push_back(mine.owns(i) ? 1.0 : 0.0);
+    }
+    com::Message m = com::make_field_message(endpoint.job_id, name, window, time, "",
+                                             entry.mesh.name, record, ghosts ? 2u : 1u);
     m.header.type = MessageType::mesh_part;
     return m;
   }
@@ -266,8 +297,8 @@ struct Participant::Impl {
     for (const auto& [mesh_name, entry] : meshes) {
       partitioned = partitioned && entry.part.has_value();
       if (parts == 1 && entry.part) {
-        bool whole =
-            entry.part->size() == entry.mesh.size() || entry.mesh.kind() != MeshKind::uniform_grid;
+        bool whole = !entry.part->has_ghosts() && (entry.part->size() == entry.mesh.size() ||
+                                                   entry.mesh.kind() != MeshKind::uniform_grid);
         for (std::size_t i = 0; whole && i < entry.part->size(); ++i)
           whole = entry.part->elements[i] == static_cast<std::int64_t>(i);
         if (!whole)

@@ -145,6 +145,30 @@ TEST_F(TwoRanks, AssemblesAGridFieldFromItsPartsAndSplitsTheAnswer) {
   EXPECT_EQ(below.sent.at("soil[1]").size(), 2u);
 }
 
+// Parts with ghosts: rank 0 holds cells 0-3 and owns 0-2, rank 1 holds 2-5
+// and owns 3-5. The field is assembled from the owned values; every rank is
+// sent the values of every cell it holds.
+TEST_F(TwoRanks, TakesOwnedValuesAndSendsGhostsToo) {
+  connect();
+  const Mesh whole{"grid", grid};
+  const std::vector<std::vector<double>> records{{0, 1, 1, 1, 2, 1, 3, 0},
+                                                 {2, 0, 3, 1, 4, 1, 5, 1}};
+  for (int rank : {0, 1}) {
+    arrive(rank, doubles(com::MessageType::mesh_part, "grid", "", records[rank], 2));
+    arrive(rank, com::make_mesh_message("job", "soil", 0, 0.0, whole));
+  }
+  next();
+  arrive(0, doubles(com::MessageType::field, "grid", "p", {0, 10, 20}));
+  arrive(1, doubles(com::MessageType::field, "grid", "p", {30, 40, 50}));
+  const com::Received field = next();
+  EXPECT_EQ(field.message.payload.doubles(), (std::vector<double>{0, 10, 20, 30, 40, 50}));
+  hub.send("soil", field.message);
+  EXPECT_EQ(below.sent.at("soil[0]").back().payload.doubles(),
+            (std::vector<double>{0, 10, 20, 30}));
+  EXPECT_EQ(below.sent.at("soil[1]").back().payload.doubles(),
+            (std::vector<double>{20, 30, 40, 50}));
+}
+
 TEST_F(TwoRanks, AssemblesACloudFromItsRanksPoints) {
   connect();
   PointCloud mine0{2, {2.0, 2.5, 0.0, 0.5}, {0.2, 0.01}};  // points 2 and 0

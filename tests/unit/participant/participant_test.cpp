@@ -223,6 +223,17 @@ TEST(Participant, AMeshPartSizesTheFieldsAndIsChecked) {
   const PointCloud cloud{2, {0.5, 0.5, 1.5, 0.5}, {0.1, 0.1}};
   EXPECT_THROW(q.declare_mesh(Mesh{"points", cloud}, MeshPart{{7}}), Error);
   EXPECT_THROW(MeshPart::box(grid, {0, 0, 0}, {5, 1, 1}), std::invalid_argument);
+  // A block with a ghost column: its fields hold the ghosts too.
+  const MeshPart ghosted = MeshPart::box(grid, {0, 0, 0}, {3, 3, 1}, {0, 0, 0}, {2, 3, 1});
+  EXPECT_EQ(ghosted.size(), 9u);
+  EXPECT_TRUE(ghosted.has_ghosts());
+  EXPECT_FALSE(ghosted.owns(2));
+  EXPECT_TRUE(ghosted.owns(4));
+  Participant r("soil", CouplingEndpoint{});
+  r.declare_mesh(Mesh{"grid", grid}, ghosted);
+  r.declare_read(field("pore_pressure"));
+  EXPECT_EQ(r.field_size("pore_pressure"), 9u);
+  EXPECT_THROW(r.declare_mesh(Mesh{"points", cloud}, MeshPart{{0, 1}, {1, 0}}), Error);
 }
 
 // A cloud's part changes size when points move to another rank: the fields
