@@ -26,8 +26,13 @@ cosim::FieldSpec field(const f::Field& field, int dimension, double lower_bound 
 }  // namespace
 
 template <int Dim>
-void PorousCoupling<Dim>::declare(cosim::Participant& participant, IceSolver<Dim>& solver) {
-  participant.declare_mesh(cell_mesh(solver.grid(), mesh_name));
+void PorousCoupling<Dim>::declare(
+    cosim::Participant& participant, IceSolver<Dim>& solver,
+    std::optional<std::pair<cosim::Mesh, cosim::MeshPart>> decomposed) {
+  if (decomposed)
+    participant.declare_mesh(std::move(decomposed->first), std::move(decomposed->second));
+  else
+    participant.declare_mesh(cell_mesh(solver.grid(), mesh_name));
   participant.declare_read(field(f::solid_fraction, Dim, 0.0, 1.0), 0.0);
   participant.declare_read(field(f::solid_velocity, Dim), 0.0);
   if (description_.drag_in_solver) {

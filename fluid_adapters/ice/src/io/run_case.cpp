@@ -80,7 +80,12 @@ class CaseRun {
       {
         auto scope = summary_.phases().measure("setup");
         build_solver();
-        if (participant_.is_coupled()) coupling_.declare(participant_, *solver_);
+        if (participant_.is_coupled()) {
+          std::optional<std::pair<cosim::Mesh, cosim::MeshPart>> decomposed;
+          if (auto cells = ranks_.coupling_cells(*solver_, cells_mesh))
+            decomposed.emplace(std::move(cells->whole), std::move(cells->part));
+          coupling_.declare(participant_, *solver_, std::move(decomposed));
+        }
         participant_.declare_repeatable();
         participant_.declare_checkpointable();
         if (c_.window > 0.0) participant_.set_standalone_window(c_.window);
@@ -479,9 +484,10 @@ CaseDescription read_case(const cosim::SolverCommandLine& options, cosim::RunSum
 
 #ifdef ICE_WITH_MPI
 template <int Dim>
-void run_decomposed_dimension(const CaseDescription& c, const cosim::SolverCommandLine& options,
+void run_decomposed_dimension(MPI_Comm comm, const CaseDescription& c,
+                              const cosim::SolverCommandLine& options,
                               const cosim::CouplingEndpoint& endpoint, cosim::RunSummary& summary) {
-  parallel::DecomposedRun<Dim> part(MPI_COMM_WORLD, c);
+  parallel::DecomposedRun<Dim> part(comm, c);
   const auto& dims = part.decomposition().dims();
   spdlog::info("case '{}': {}D on {} ranks ({} x {} x {} blocks), pressure by PETSc (CG, {})",
                c.name, Dim, part.ranks(), dims[0], dims[1], dims[2],
@@ -495,14 +501,14 @@ void run_decomposed_dimension(const CaseDescription& c, const cosim::SolverComma
   summary.set_metric("halo_values_sent", static_cast<double>(part.link().values_sent()), "1");
 }
 
-// ice_fluid standalone under `mpirun -np N`, N > 1: rank 0 prepares the
-// output directory and writes the tables and the summary; every rank writes
-// its block into each snapshot; rank r keeps its own log and summary in
-// ranks/rank_<r>/. The job ends with the largest exit code of its ranks; a
-// rank that fails while the others still run ends them all
+// ice_fluid on N > 1 ranks: standalone under `mpirun -np N`, or a coupled
+// participant on N ranks of an MPMD job (its own ranks: mpi.comm()). Rank 0
+// prepares the output directory and writes the tables and the summary;
+// every rank writes its block into each snapshot; rank r keeps its own log
+// and summary in ranks/rank_<r>/. The run ends with the largest exit code of
+// its ranks; a rank that fails while the others still run ends them all
 // (cosim::runtime::MpiSession::finish).
-int run_decomposed(const cosim::SolverCommandLine& options) {
-  const cosim::runtime::MpiSession mpi;
+int run_decomposed(const cosim::SolverCommandLine& options, const cosim::runtime::MpiSession& mpi) {
   const cosim::runtime::RankOutput mine = cosim::runtime::prepare_rank_output(
       mpi, options.output, options.reuse, options.verbosity, "ice_fluid");
   if (mine.refused != 0) return mine.refused;
@@ -510,7 +516,7 @@ int run_decomposed(const cosim::SolverCommandLine& options) {
   cosim::RunSummary summary(mine.directory, "ice_fluid");
   int code = 0;
   {
-    const parallel::PetscLibrary petsc;
+    const parallel::PetscLibrary petsc(mpi.comm());
     code = cosim::run_and_finish(summary, [&] {
       const CaseDescription description = read_case(options, summary);
       switch (description.dimension) {
@@ -520,10 +526,10 @@ int run_decomposed(const cosim::SolverCommandLine& options) {
                           "process; mpirun started {}",
                           description.file.string(), mpi.ranks()));
         case 2:
-          run_decomposed_dimension<2>(description, options, options.endpoint, summary);
+          run_decomposed_dimension<2>(mpi.comm(), description, options, options.endpoint, summary);
           break;
         default:
-          run_decomposed_dimension<3>(description, options, options.endpoint, summary);
+          run_decomposed_dimension<3>(mpi.comm(), description, options, options.endpoint, summary);
           break;
       }
     });
@@ -539,7 +545,14 @@ int run_case(const cosim::SolverCommandLine& options) {
   const cosim::CouplingEndpoint& endpoint = options.endpoint;
 #ifdef ICE_WITH_MPI
   if (endpoint.is_standalone() && cosim::runtime::ranks_from_launcher() > 1)
-    return run_decomposed(options);
+    return run_decomposed(options, cosim::runtime::MpiSession());
+  // A participant of an MPMD job: MPI from the start, to learn this program's
+  // ranks (the transport, started later, then shares it).
+  std::optional<cosim::runtime::MpiSession> mpi;
+  if (endpoint.uri == "mpi://") {
+    mpi.emplace();
+    if (mpi->ranks() > 1) return run_decomposed(options, *mpi);
+  }
 #endif
   cosim::prepare_output_directory(options.output, options.reuse);
   cosim::init_logging(options.output, "ice_fluid", options.verbosity);

@@ -70,6 +70,24 @@ std::optional<typename GaugeRecorder<Dim>::Decomposed> DecomposedRun<Dim>::gauge
 }
 
 template <int Dim>
+std::optional<typename RunRanks<Dim>::CellsPart> DecomposedRun<Dim>::coupling_cells(
+    const IceSolver<Dim>& solver, const std::string& mesh_name) const {
+  cosim::Mesh whole = cell_mesh(whole_, mesh_name);
+  const auto offset = block_.link->offset();
+  const auto owned = block_.link->owned_cells();
+  cosim::Index3 lower{0, 0, 0}, upper{1, 1, 1}, owned_lower{0, 0, 0}, owned_upper{1, 1, 1};
+  for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
+    lower[d] = offset[d];
+    upper[d] = offset[d] + solver.grid().cells()[d];
+    owned_lower[d] = offset[d] + owned[d][0];
+    owned_upper[d] = offset[d] + owned[d][1];
+  }
+  cosim::MeshPart part = cosim::MeshPart::box(std::get<cosim::UniformGrid>(whole.geometry), lower,
+                                              upper, owned_lower, owned_upper);
+  return typename RunRanks<Dim>::CellsPart{std::move(whole), std::move(part)};
+}
+
+template <int Dim>
 void DecomposedRun<Dim>::sum(std::span<double> values) {
   MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM,
                 comm_);

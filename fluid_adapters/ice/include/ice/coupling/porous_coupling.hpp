@@ -2,6 +2,8 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "cosim/participant.hpp"
@@ -42,8 +44,10 @@ class PorousCoupling {
 
   explicit PorousCoupling(CouplingDescription description = {}) : description_(description) {}
 
-  // Declares the mesh and fields, then writes the initial fields.
-  void declare(cosim::Participant& participant, IceSolver<Dim>& solver);
+  // Declares the mesh and fields, then writes the initial fields. On
+  // several ranks: the whole grid, and `part` the cells the solver holds.
+  void declare(cosim::Participant& participant, IceSolver<Dim>& solver,
+               std::optional<std::pair<cosim::Mesh, cosim::MeshPart>> decomposed = std::nullopt);
   // At a window start (and, when the fields vary within the window, at each
   // step's middle, relative_time after now): the received porosity and solid
   // velocity (and with drag: ice the drag coefficient and solid bulk

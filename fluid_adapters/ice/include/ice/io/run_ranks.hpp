@@ -44,6 +44,17 @@ class RunRanks {
   }
   // Elementwise sums over the ranks, in place (collective).
   virtual void sum(std::span<double> /*values*/) {}
+  // A coupled participant on several ranks declares the whole grid and the
+  // cells its solver holds (its block widened by ghost layers, in the
+  // solver's order), of which it owns its block; none on one process.
+  struct CellsPart {
+    cosim::Mesh whole;
+    cosim::MeshPart part;
+  };
+  virtual std::optional<CellsPart> coupling_cells(const IceSolver<Dim>& /*solver*/,
+                                                  const std::string& /*mesh_name*/) const {
+    return std::nullopt;
+  }
 };
 
 extern template class RunRanks<1>;

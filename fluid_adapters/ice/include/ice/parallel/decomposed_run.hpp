@@ -33,6 +33,8 @@ class DecomposedRun final : public RunRanks<Dim> {
   std::optional<typename GaugeRecorder<Dim>::Decomposed> gauge_cells(
       const IceSolver<Dim>& solver) const override;
   void sum(std::span<double> values) override;
+  std::optional<typename RunRanks<Dim>::CellsPart> coupling_cells(
+      const IceSolver<Dim>& solver, const std::string& mesh_name) const override;
 
   const MpiBlockLink<Dim>& link() const { return *block_.link; }
   const cosim::decomposition::CartesianDecomposition& decomposition() const {
