@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstring>
 #include <deque>
 #include <vector>
 
@@ -11,6 +13,9 @@
 #include "cosim/error.hpp"
 
 namespace cosim::m2n {
+
+static_assert(std::endian::native == std::endian::little,
+              "m2n copies the payloads' little-endian doubles as bytes");
 
 using com::Message;
 using com::MessageType;
@@ -21,6 +26,28 @@ namespace {
 
 // Where each part's values go in the whole mesh: the part's element indices.
 using Parts = std::vector<std::vector<std::int64_t>>;
+
+// Moves the values of `elements` between a part's array (in the part's
+// order) and the whole mesh's, `c` values an element, in runs of
+// consecutive elements: a block of a grid's part is a few long runs. The
+// payload bytes are little-endian doubles (com::Payload), copied as bytes.
+enum class Direction { part_to_whole, whole_to_part };
+void copy_runs(const std::byte* from, std::byte* to, const std::vector<std::int64_t>& elements,
+               std::size_t c, Direction direction) {
+  const std::size_t bytes = c * sizeof(double);
+  for (std::size_t i = 0; i < elements.size();) {
+    std::size_t run = 1;
+    while (i + run < elements.size() &&
+           elements[i + run] == elements[i] + static_cast<std::int64_t>(run))
+      ++run;
+    const std::size_t in_whole = static_cast<std::size_t>(elements[i]) * bytes;
+    if (direction == Direction::part_to_whole)
+      std::memcpy(to + in_whole, from + i * bytes, run * bytes);
+    else
+      std::memcpy(to + i * bytes, from + in_whole, run * bytes);
+    i += run;
+  }
+}
 
 std::string describe_head(const Message& m) {
   std::string out = com::to_string(m.header.type);
@@ -170,13 +197,9 @@ struct PartitionedHub::Impl {
                           std::size_t whole) {
     const std::size_t c = heads[0].header.components;
     auto values = std::make_shared<std::vector<double>>(whole * c);
-    for (std::size_t p = 0; p < heads.size(); ++p) {
-      const std::vector<double> mine = heads[p].payload.doubles();
-      for (std::size_t i = 0; i < parts[p].size(); ++i)
-        std::copy_n(mine.begin() + static_cast<std::ptrdiff_t>(i * c), c,
-                    values->begin() +
-                        static_cast<std::ptrdiff_t>(parts[p][i] * static_cast<std::int64_t>(c)));
-    }
+    auto* to = reinterpret_cast<std::byte*>(values->data());
+    for (std::size_t p = 0; p < heads.size(); ++p)
+      copy_runs(heads[p].payload.bytes().data(), to, parts[p], c, Direction::part_to_whole);
     Message out;
     out.header = heads[0].header;
     out.header.count = whole;
@@ -302,12 +325,9 @@ struct PartitionedHub::Impl {
   // Part p's values of a field on the whole mesh.
   static Message part_of_field(const Message& whole, const std::vector<std::int64_t>& elements) {
     const std::size_t c = whole.header.components;
-    const std::vector<double> all = whole.payload.doubles();
     auto values = std::make_shared<std::vector<double>>(elements.size() * c);
-    for (std::size_t i = 0; i < elements.size(); ++i)
-      std::copy_n(
-          all.begin() + static_cast<std::ptrdiff_t>(elements[i] * static_cast<std::int64_t>(c)), c,
-          values->begin() + static_cast<std::ptrdiff_t>(i * c));
+    copy_runs(whole.payload.bytes().data(), reinterpret_cast<std::byte*>(values->data()), elements,
+              c, Direction::whole_to_part);
     Message out;
     out.header = whole.header;
     out.header.count = elements.size();
