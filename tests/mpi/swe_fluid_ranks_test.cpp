@@ -5,8 +5,10 @@
 // the water's extremes; to round-off the volumes and momenta, which the
 // ranks sum in another order; cases a decomposed run cannot take, and an output directory
 // already in use, are refused with exit 2 by every rank, nothing lost.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -94,6 +96,49 @@ TEST(SweFluidRanks, EveryRankCountWritesTheFilesOfOneProcess) {
 
 void expect_refused(const std::string& case_text, const std::string& key, int ranks) {
   expect_refused_on_ranks("swe_fluid", case_text, key, ranks, "swe_000000.h5");
+}
+
+// A coupled job over MPI whose water (swe_fluid) runs on 2 ranks, a
+// partitioned participant: configs/soil_block_into_basin_3d.yaml (a 3D MPM
+// clay block collapsing into a 2D shallow-water basin, the soil's surface
+// the water's bed), to 0.1 s, against the same job with the water on one
+// process. The decomposed shallow water is bitwise the whole one's, so the
+// water's snapshots and the soil's must be the same bit for bit.
+TEST(SweFluidRanks, ACoupledWaterOnTwoRanksGivesTheOneProcessRunBitForBit) {
+  const fs::path configs = fs::path(COSIM_SOURCE_DIR) / "configs";
+  const fs::path dir = fresh_directory("swe_fluid_coupled_ranks");
+  for (const int ranks : {1, 2}) {
+    const fs::path run_dir = dir / fmt::format("ranks_{}", ranks);
+    fs::create_directories(run_dir / "mpm");
+    fs::create_directories(run_dir / "swe");
+    fs::copy_file(configs / "mpm" / "soil_block_3d.yaml", run_dir / "mpm" / "soil_block_3d.yaml");
+    fs::copy_file(configs / "swe" / "basin_2d.yaml", run_dir / "swe" / "basin_2d.yaml");
+    std::string job = replaced(read_text(configs / "soil_block_into_basin_3d.yaml"),
+                               "end_time: 3.0", "end_time: 0.1\ntransport: mpi");
+    job = replaced(job, "    config: swe/basin_2d.yaml\n",
+                   fmt::format("    config: swe/basin_2d.yaml\n    ranks: {}\n", ranks));
+    write_text(run_dir / "job.yaml", job);
+    const ProcessResult result =
+        run({binary("cosim").string(), "run", (run_dir / "job.yaml").string(), "--output",
+             (run_dir / "run").string()},
+            std::chrono::seconds(240));
+    ASSERT_EQ(result.exit_code, 0) << result.output << read_text(run_dir / "run" / "mpirun.log");
+  }
+  const fs::path one = dir / "ranks_1" / "run";
+  const fs::path two = dir / "ranks_2" / "run";
+  int compared = 0;
+  for (const auto& [participant, prefix] :
+       {std::pair<std::string, std::string>{"water", "swe_"}, {"soil", "particles_"}})
+    for (const auto& entry : fs::directory_iterator(one / participant)) {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind(prefix, 0) != 0 || entry.path().extension() != ".h5") continue;
+      EXPECT_EQ(hdf5_contents(entry.path()), hdf5_contents(two / participant / name))
+          << participant << "/" << name;
+      ++compared;
+    }
+  EXPECT_GE(compared, 4);
+  EXPECT_EQ(read_text(one / "water" / "gauges.csv"), read_text(two / "water" / "gauges.csv"));
+  EXPECT_EQ(nlohmann::json::parse(read_text(two / "water" / "summary.json"))["windows"], 50);
 }
 
 TEST(SweFluidRanks, RefusesBlocksNarrowerThanTheGhostLayers) {

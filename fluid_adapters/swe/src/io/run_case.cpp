@@ -161,7 +161,10 @@ class CaseRun {
  private:
   void declare_coupling() {
     if (!participant_.is_coupled()) return;
-    participant_.declare_mesh({cells_mesh, solver_->cells()});
+    if (auto decomposed = ranks_.coupling_cells(cells_mesh))
+      participant_.declare_mesh(std::move(decomposed->first), std::move(decomposed->second));
+    else
+      participant_.declare_mesh({cells_mesh, solver_->cells()});
     if (c_.coupling.reads_bed)
       participant_.declare_read(cosim::fields::bed_elevation.on(cells_mesh, 1), 0.0);
     if (c_.coupling.writes_traction) {
@@ -628,14 +631,15 @@ CaseDescription read_case(const RunOptions& options, cosim::RunSummary& summary)
 }
 
 #ifdef SWE_WITH_MPI
-// swe_fluid standalone under `mpirun -np N`, N > 1: rank 0 prepares the
-// output directory and writes the tables and the summary; every rank writes
-// its block into each snapshot; rank r keeps its own log and summary in
-// ranks/rank_<r>/. The job ends with the largest exit code of
-// its ranks; a rank that fails while the others still run ends them all
+// swe_fluid on N > 1 ranks: standalone under `mpirun -np N`, or a coupled
+// participant on N ranks of an MPMD job (its own ranks: mpi.comm()). Rank 0
+// prepares the output directory and writes the tables and the summary;
+// every rank writes its block into each snapshot; rank r keeps its own log
+// and summary in ranks/rank_<r>/. The run ends with the largest exit code
+// of its ranks; a rank that fails while the others still run ends them all
 // (cosim::runtime::MpiSession::finish).
-int run_decomposed(const RunOptions& options, const cosim::CouplingEndpoint& endpoint) {
-  const cosim::runtime::MpiSession mpi;
+int run_decomposed(const RunOptions& options, const cosim::CouplingEndpoint& endpoint,
+                   const cosim::runtime::MpiSession& mpi) {
   const cosim::runtime::RankOutput mine = cosim::runtime::prepare_rank_output(
       mpi, options.output, options.reuse, options.verbosity, "swe_fluid");
   if (mine.refused != 0) return mine.refused;
@@ -643,7 +647,7 @@ int run_decomposed(const RunOptions& options, const cosim::CouplingEndpoint& end
   cosim::RunSummary summary(mine.directory, "swe_fluid");
   const int code = cosim::run_and_finish(summary, [&] {
     const CaseDescription description = read_case(options, summary);
-    parallel::DecomposedRun part(MPI_COMM_WORLD, description);
+    parallel::DecomposedRun part(mpi.comm(), description);
     const auto& b = part.block();
     spdlog::info("case '{}': 2D on {} ranks ({} x {} blocks), {} threads each, end time {} s",
                  description.name, mpi.ranks(), part.decomposition().dims()[0],
@@ -664,7 +668,14 @@ int run_decomposed(const RunOptions& options, const cosim::CouplingEndpoint& end
 int run_case(const RunOptions& options, const cosim::CouplingEndpoint& endpoint) {
 #ifdef SWE_WITH_MPI
   if (endpoint.is_standalone() && cosim::runtime::ranks_from_launcher() > 1)
-    return run_decomposed(options, endpoint);
+    return run_decomposed(options, endpoint, cosim::runtime::MpiSession());
+  // A participant of an MPMD job: MPI from the start, to learn this program's
+  // ranks (the transport, started later, then shares it).
+  std::optional<cosim::runtime::MpiSession> mpi;
+  if (endpoint.uri == "mpi://") {
+    mpi.emplace();
+    if (mpi->ranks() > 1) return run_decomposed(options, endpoint, *mpi);
+  }
 #endif
   cosim::prepare_output_directory(options.output, options.reuse);
   cosim::init_logging(options.output, "swe_fluid", options.verbosity);

@@ -46,6 +46,16 @@ DecomposedRun::DecomposedRun(MPI_Comm comm, const CaseDescription& description)
   solver_ = make_block_solver(description, block);
 }
 
+std::optional<std::pair<cosim::Mesh, cosim::MeshPart>> DecomposedRun::coupling_cells(
+    const std::string& mesh_name) const {
+  cosim::Mesh whole{mesh_name, cell_mesh(grid_)};
+  const auto& b = block();
+  cosim::MeshPart part = cosim::MeshPart::box(std::get<cosim::UniformGrid>(whole.geometry),
+                                              {b.cells[0].begin, b.cells[1].begin, 0},
+                                              {b.cells[0].end, b.cells[1].end, 1});
+  return std::make_pair(std::move(whole), std::move(part));
+}
+
 bool DecomposedRun::any(bool local) const {
   int flag = local ? 1 : 0;
   MPI_Allreduce(MPI_IN_PLACE, &flag, 1, MPI_INT, MPI_MAX, comm_);

@@ -3,8 +3,10 @@
 #include <cstddef>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
+#include <utility>
 
 #include "cosim/io/snapshot_writer.hpp"
 #include "cosim/mesh.hpp"
@@ -39,6 +41,12 @@ class RunRanks {
                                                          const std::string& base_name,
                                                          const cosim::Mesh& cells) const {
     return std::make_unique<cosim::SnapshotWriter>(directory, base_name, cells);
+  }
+  // A coupled participant on several ranks declares the whole grid and the
+  // cells its block holds (in the solver's order); none on one process.
+  virtual std::optional<std::pair<cosim::Mesh, cosim::MeshPart>> coupling_cells(
+      const std::string& /*mesh_name*/) const {
+    return std::nullopt;
   }
 };
 

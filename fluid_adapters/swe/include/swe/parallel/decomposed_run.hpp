@@ -38,6 +38,8 @@ class DecomposedRun final : public RunRanks {
   std::unique_ptr<cosim::SnapshotSink> snapshots(const std::filesystem::path& directory,
                                                  const std::string& base_name,
                                                  const cosim::Mesh& cells) const override;
+  std::optional<std::pair<cosim::Mesh, cosim::MeshPart>> coupling_cells(
+      const std::string& mesh_name) const override;
 
  private:
   MPI_Comm comm_;
