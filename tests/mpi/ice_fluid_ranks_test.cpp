@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "demo_job.hpp"
 #include "hdf5_reader.hpp"
 #include "launched_program.hpp"
 #include "replaced_text.hpp"
@@ -254,10 +255,7 @@ TEST(IceFluidRanks, ACoupledWaterOnTwoRanksGivesTheOneProcessRun) {
       for (const auto& entry : fs::directory_iterator(source))
         if (entry.path().filename() != "job.yaml" && entry.path().filename() != "water.yaml")
           fs::copy_file(entry.path(), run_dir / entry.path().filename());
-      const ProcessResult result =
-          run({binary("cosim").string(), "run", (run_dir / "job.yaml").string(), "--output",
-               (run_dir / "run").string()},
-              std::chrono::seconds(240));
+      const ProcessResult result = cosim_run(run_dir / "job.yaml", run_dir / "run", 240);
       ASSERT_EQ(result.exit_code, 0) << result.output << read_text(run_dir / "run" / "mpirun.log");
     }
     const fs::path one = dir / "ranks_1" / "run";

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "demo_job.hpp"
 #include "hdf5_contents.hpp"
 #include "launched_program.hpp"
 #include "replaced_text.hpp"
@@ -118,10 +119,7 @@ TEST(SweFluidRanks, ACoupledWaterOnTwoRanksGivesTheOneProcessRunBitForBit) {
     job = replaced(job, "    config: swe/basin_2d.yaml\n",
                    fmt::format("    config: swe/basin_2d.yaml\n    ranks: {}\n", ranks));
     write_text(run_dir / "job.yaml", job);
-    const ProcessResult result =
-        run({binary("cosim").string(), "run", (run_dir / "job.yaml").string(), "--output",
-             (run_dir / "run").string()},
-            std::chrono::seconds(240));
+    const ProcessResult result = cosim_run(run_dir / "job.yaml", run_dir / "run", 240);
     ASSERT_EQ(result.exit_code, 0) << result.output << read_text(run_dir / "run" / "mpirun.log");
   }
   const fs::path one = dir / "ranks_1" / "run";
