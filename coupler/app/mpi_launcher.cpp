@@ -162,6 +162,23 @@ std::string dead_rank_report(const job::Job& job, const fs::path& mpirun_log) {
   return {};
 }
 
+// A participant whose ranks failed before it said hello to the coupler
+// stops the MPI job itself (MPI_Abort in runtime::MpiSession::finish),
+// having recorded why in its summary.json: the first participant whose
+// summary ends with a non-zero code, as "participant 'soil': <message>".
+std::optional<std::pair<int, std::string>> failed_participant(const job::Job& job,
+                                                              const fs::path& output) {
+  for (const auto& p : job.participants) {
+    const auto status = read_status(output / p.name / "summary.json");
+    if (status && status->finished && status->exit_code != 0)
+      return std::pair{status->exit_code,
+                       fmt::format("participant '{}' failed before the coupling began (exit "
+                                   "code {}): {}",
+                                   p.name, status->exit_code, status->message)};
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 int launch_mpirun(const job::Job& job, const RunOptions& o) {
@@ -243,6 +260,12 @@ int launch_mpirun(const job::Job& job, const RunOptions& o) {
       return status->exit_code;
     }
     const int s = e.exit_status;
+    if (const auto failed = failed_participant(job, output); dead.empty() && !coupling && failed) {
+      const int c = failed->first;
+      return finish(
+          c == 2 || c == 3 || c == 4 ? static_cast<ExitCode>(c) : ExitCode::participant_failed,
+          failed->second);
+    }
     const ExitCode code = !dead.empty() || !(s == 2 || s == 3 || s == 4)
                               ? ExitCode::participant_failed
                               : static_cast<ExitCode>(s);

@@ -277,6 +277,7 @@ int run_job(const RunOptions& o) {
                 << " tasks); submit it with `sbatch " << o.slurm_script << "`\n";
       return 0;
     }
+    check_checkpoint_options(job, opts);
     prepare_output_directory(o.output, o.overwrite ? OutputReuse::overwrite : OutputReuse::refuse);
     // The coupler rank rewrites it once it runs; until then (and if it
     // never does) the record is this process's.

@@ -5,11 +5,13 @@
 // steps, the totals to round-off; on one process `solver: petsc` gives the same too.
 // Cases a decomposed run cannot take, and an output directory already in
 // use, are refused with exit 2 by every rank, nothing lost. Coupled over MPI,
-// a water on 2 ranks gives the one-process run's results.
+// a water on 2 ranks gives the one-process run's results, and a water too
+// narrow for its ranks ends the job at once with exit 2.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -20,6 +22,7 @@
 #include "launched_program.hpp"
 #include "replaced_text.hpp"
 #include "run_process.hpp"
+#include "snapshot_difference.hpp"
 #include "text_files.hpp"
 
 namespace cosim::testing {
@@ -213,20 +216,6 @@ TEST(IceFluidRanks, PetscOnOneProcessOfACoupledJobOverMpi) {
   }
 }
 
-// The largest difference of two runs' values of a dataset, relative to the
-// largest magnitude of the first's.
-double relative_difference(const Hdf5Reader& a, const Hdf5Reader& b, const std::string& path) {
-  const auto x = a.doubles(path).values;
-  const auto y = b.doubles(path).values;
-  EXPECT_EQ(x.size(), y.size()) << path;
-  double scale = 0.0, difference = 0.0;
-  for (std::size_t i = 0; i < std::min(x.size(), y.size()); ++i) {
-    scale = std::max(scale, std::abs(x[i]));
-    difference = std::max(difference, std::abs(x[i] - y[i]));
-  }
-  return scale > 0.0 ? difference / scale : difference;
-}
-
 // A coupled job over MPI whose water (ice_fluid) runs on 2 ranks, a
 // partitioned participant: the Darcy column and Terzaghi's consolidation
 // (configs/ice_coupled), shortened, against the same jobs with the water on
@@ -284,6 +273,31 @@ TEST(IceFluidRanks, ACoupledWaterOnTwoRanksGivesTheOneProcessRun) {
                 job.name.c_str(), worst);
     EXPECT_LE(worst, 1e-8);
   }
+}
+
+// The clay column's 8 x 8 water cannot be cut into two blocks of 5 ghost
+// layers: refused before it says hello to the coupler, it ends the MPI job
+// itself, and `cosim run` exits with 2 at once, naming it and the key.
+TEST(IceFluidRanks, AWaterTooNarrowForItsRanksEndsTheCoupledJobAtOnceWithExit2) {
+  const fs::path source = fs::path(COSIM_SOURCE_DIR) / "configs/ice_coupled";
+  const fs::path dir = fresh_directory("ice_fluid_coupled_too_narrow");
+  std::string text = replaced(read_text(source / "job.yaml"), "end_time: 0.1\n",
+                              "end_time: 0.01\ntransport: mpi\n");
+  text = replaced(text, "    config: water.yaml\n", "    config: water.yaml\n    ranks: 2\n");
+  write_text(dir / "job.yaml", text);
+  for (const char* file : {"water.yaml", "soil_column.yaml"})
+    fs::copy_file(source / file, dir / file);
+  const auto started = std::chrono::steady_clock::now();
+  const ProcessResult r = cosim_run(dir / "job.yaml", dir / "run", 60);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("participant 'water' failed before the coupling began"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("key 'grid.cells'"), std::string::npos) << r.output;
+  std::printf("the water on 2 ranks was refused in %.1f s\n", seconds);
+  EXPECT_LT(seconds, 60.0);  // the coupler's connect timeout is 120 s
 }
 
 TEST(IceFluidRanks, LeavesAnOutputDirectoryInUseAsItWas) {

@@ -138,6 +138,18 @@ TEST(PartitionedParticipants, AProgramThatDoesNotRunOnRanksIsRefusedWithExit2) {
   EXPECT_THAT(all, HasSubstr("participants.left.ranks"));
 }
 
+// Checkpoints of an MPI job are not built yet (a participant's ranks would
+// each write its whole state file): `--checkpoint-every` is refused before
+// anything starts, not ignored, and the output directory is not touched.
+TEST(PartitionedParticipants, CheckpointsOfAnMpiJobAreRefusedWithExit2) {
+  const fs::path dir = fresh_directory("partitioned_checkpoints");
+  const auto r =
+      cosim_run(write_job(dir, job_on(2, 1)), dir / "run", 120, {"--checkpoint-every", "4"});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("uses transport 'mpi', whose checkpoints are not built yet"));
+  EXPECT_FALSE(fs::exists(dir / "run"));
+}
+
 TEST(PartitionedParticipants, ARankThatDiesEndsTheJobWithExit3AndNoProcessLeft) {
   const fs::path dir = fresh_directory("partitioned_rank_dies");
   JobOptions o = job_on(2, 2);

@@ -285,6 +285,7 @@ void MpiClient::send(const std::string& peer, const Message& message) {
   if (peer != coupler_peer)
     throw std::logic_error("a participant sends only to the coupler, not to '" + peer + "'");
   send_to(MpiEnvironment::instance().coupling(), coupler_rank, peer, message);
+  if (message.header.type == MessageType::hello) runtime::note_hello_sent();
 }
 
 std::optional<Received> MpiClient::receive(std::chrono::milliseconds timeout) {

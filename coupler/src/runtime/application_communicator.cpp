@@ -7,6 +7,8 @@ namespace cosim::runtime {
 
 namespace {
 
+bool said_hello = false;
+
 int application_index() {
   int* appnum = nullptr;
   int flag = 0;
@@ -27,6 +29,14 @@ MPI_Comm application_communicator() {
     return split;
   }();
   return communicator;
+}
+
+void note_hello_sent() {
+  said_hello = true;
+}
+
+bool hello_sent() {
+  return said_hello;
 }
 
 }  // namespace cosim::runtime

@@ -47,7 +47,37 @@ int MpiSession::finish(int code, std::chrono::milliseconds grace) const {
   }
   int job = code;
   MPI_Allreduce(&code, &job, 1, MPI_INT, MPI_MAX, comm_);
+  // A participant of an MPMD job that failed before every rank said hello
+  // to the coupler: the coupler still waits for it, and MPI_Finalize would
+  // wait for the coupler. The job ends here, with this program's code.
+  int world = 0;
+  MPI_Comm_size(MPI_COMM_WORLD, &world);
+  int all_said_hello = hello_sent() ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &all_said_hello, 1, MPI_INT, MPI_MIN, comm_);
+  if (job != 0 && world > ranks_ && !all_said_hello) {
+    if (rank_ == 0)
+      std::fprintf(stderr,
+                   "this program failed (exit code %d) before the coupler heard of it: the MPI "
+                   "job stops\n",
+                   job);
+    MPI_Abort(MPI_COMM_WORLD, job);
+    std::_Exit(job);
+  }
   return job;
+}
+
+int MpiSession::finish_run(std::string_view program, const std::function<int()>& run) const {
+  int code = 0;
+  try {
+    code = run();
+  } catch (const Error& e) {
+    std::fprintf(stderr, "%s: %s\n", std::string(program).c_str(), e.what());
+    code = to_int(e.code());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: internal error: %s\n", std::string(program).c_str(), e.what());
+    code = to_int(ExitCode::internal_error);
+  }
+  return finish(code);
 }
 
 RankOutput prepare_rank_output(const MpiSession& mpi, const std::filesystem::path& output,

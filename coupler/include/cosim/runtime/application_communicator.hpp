@@ -14,4 +14,11 @@ namespace cosim::runtime {
 // MPI must be initialised; the communicator lives until MPI_Finalize.
 MPI_Comm application_communicator();
 
+// Whether this process has said hello to the coupler over MPI: from then on
+// the coupler hears of its failure through the protocol (an abort message).
+// A program of an MPMD job that fails before it stops the MPI job itself
+// (MpiSession::finish): the coupler would wait for its hello in vain.
+void note_hello_sent();
+bool hello_sent();
+
 }  // namespace cosim::runtime

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <string_view>
 
 #include "cosim/io/files.hpp"
@@ -37,6 +38,10 @@ class MpiSession {
   // (MPI_Abort): failing alone, it would leave them waiting in a
   // collective forever.
   int finish(int code, std::chrono::milliseconds grace = std::chrono::seconds(2)) const;
+  // finish() with the code `run` returns, or that of the cosim::Error it
+  // throws (its message printed as "<program>: <message>"; 1 for any other
+  // exception): no failure skips the end above.
+  int finish_run(std::string_view program, const std::function<int()>& run) const;
 
  private:
   MPI_Comm comm_ = MPI_COMM_NULL;

@@ -554,23 +554,29 @@ int run_case(const cosim::SolverCommandLine& options) {
     if (mpi->ranks() > 1) return run_decomposed(options, *mpi);
   }
 #endif
-  cosim::prepare_output_directory(options.output, options.reuse);
-  cosim::init_logging(options.output, "ice_fluid", options.verbosity);
-  cosim::RunSummary summary(options.output, "ice_fluid");
-  return cosim::run_and_finish(summary, [&] {
-    const CaseDescription description = read_case(options, summary);
-    switch (description.dimension) {
-      case 1:
-        run_dimension<1>(description, options, endpoint, summary);
-        break;
-      case 2:
-        run_dimension<2>(description, options, endpoint, summary);
-        break;
-      default:
-        run_dimension<3>(description, options, endpoint, summary);
-        break;
-    }
-  });
+  const auto run = [&] {
+    cosim::prepare_output_directory(options.output, options.reuse);
+    cosim::init_logging(options.output, "ice_fluid", options.verbosity);
+    cosim::RunSummary summary(options.output, "ice_fluid");
+    return cosim::run_and_finish(summary, [&] {
+      const CaseDescription description = read_case(options, summary);
+      switch (description.dimension) {
+        case 1:
+          run_dimension<1>(description, options, endpoint, summary);
+          break;
+        case 2:
+          run_dimension<2>(description, options, endpoint, summary);
+          break;
+        default:
+          run_dimension<3>(description, options, endpoint, summary);
+          break;
+      }
+    });
+  };
+#ifdef ICE_WITH_MPI
+  if (mpi) return mpi->finish_run("ice_fluid", run);
+#endif
+  return run();
 }
 
 }  // namespace ice

@@ -677,18 +677,24 @@ int run_case(const RunOptions& options, const cosim::CouplingEndpoint& endpoint)
     if (mpi->ranks() > 1) return run_decomposed(options, endpoint, *mpi);
   }
 #endif
-  cosim::prepare_output_directory(options.output, options.reuse);
-  cosim::init_logging(options.output, "swe_fluid", options.verbosity);
-  cosim::RunSummary summary(options.output, "swe_fluid");
-  return cosim::run_and_finish(summary, [&] {
-    const CaseDescription description = read_case(options, summary);
-    spdlog::info("case '{}': {}D, {} threads, end time {} s", description.name,
-                 description.dimension, omp_get_max_threads(), description.end_time);
-    spdlog::info("size: {} (limits.memory_gib {:g})", description.size.describe(),
-                 description.size.memory_limit_gib);
-    CaseRun run(description, options, endpoint, summary);
-    run.run();
-  });
+  const auto run = [&] {
+    cosim::prepare_output_directory(options.output, options.reuse);
+    cosim::init_logging(options.output, "swe_fluid", options.verbosity);
+    cosim::RunSummary summary(options.output, "swe_fluid");
+    return cosim::run_and_finish(summary, [&] {
+      const CaseDescription description = read_case(options, summary);
+      spdlog::info("case '{}': {}D, {} threads, end time {} s", description.name,
+                   description.dimension, omp_get_max_threads(), description.end_time);
+      spdlog::info("size: {} (limits.memory_gib {:g})", description.size.describe(),
+                   description.size.memory_limit_gib);
+      CaseRun case_run(description, options, endpoint, summary);
+      case_run.run();
+    });
+  };
+#ifdef SWE_WITH_MPI
+  if (mpi) return mpi->finish_run("swe_fluid", run);
+#endif
+  return run();
 }
 
 }  // namespace swe
