@@ -32,12 +32,16 @@ int main(int argc, char** argv) {
              if (mpm::is_depth_averaged_case(line.config))
                return mpm::run_depth_averaged_case(options, line.endpoint);
              if (line.endpoint.is_standalone() && mpm::started_on_several_ranks())
-               return mpm::run_decomposed_case(options);
+               return mpm::run_decomposed_case(options,
+                                               mpm::coupling::standalone_observers(line.endpoint));
              // Coupled (an endpoint from `cosim run`), or standalone in
              // windows: the coupling concept's observers drive a
              // cosim::Participant alongside the time loop.
              if (line.endpoint.is_standalone())
                return mpm::run_case(options, mpm::coupling::standalone_observers(line.endpoint));
+             if (line.endpoint.uri == "mpi://")
+               return mpm::run_mpi_participant(options,
+                                               mpm::coupling::coupling_observers(line.endpoint));
              return mpm::run_case(options, mpm::coupling::coupling_observers(line.endpoint));
            },
        .validate =

@@ -5,24 +5,36 @@
 // the ranks), the same XDMF index and probes.csv (each probe's point sampled
 // by the rank holding it), the same steps, and the totals of one process to round-off (the ranks
 // sum them in another order); cases a decomposed run cannot take, and an output directory already
-// in use, are refused with exit 2, nothing lost.
+// in use, are refused with exit 2, nothing lost. Windows that run again
+// (--cosim-repeat-windows) keep the files of one process bit for bit.
+// Coupled over MPI, a soil on 2 ranks (a partitioned participant) gives the
+// one-process run's results, and a soil that cannot start on its ranks ends
+// the job at once with exit 2.
+#include <fmt/format.h>
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "demo_job.hpp"
 #include "hdf5_contents.hpp"
+#include "hdf5_reader.hpp"
 #include "launched_program.hpp"
 #include "replaced_text.hpp"
 #include "run_process.hpp"
+#include "snapshot_difference.hpp"
 #include "text_files.hpp"
 
 namespace cosim::testing {
 namespace {
 
 namespace fs = std::filesystem;
+using ::testing::HasSubstr;
 
 constexpr const char* column_case = R"(kind: mpm_case
 name: sand_column_on_ranks
@@ -108,8 +120,6 @@ void expect_refused(const std::string& case_text, const std::string& key, int ra
 }
 
 TEST(MpmSolverRanks, RefusesWhatADecomposedRunCannotTake) {
-  expect_refused(replaced(column_case, "safety_factor: 0.4}", "safety_factor: 0.4, window: 0.01}"),
-                 "time.window", 2);
   expect_refused(replaced(column_case, "probe_every: 0.005}", "probe_every: 0.005, grid: true}"),
                  "output.grid", 2);
   expect_refused(replaced(column_case, "    cohesion: 0\n",
@@ -121,6 +131,182 @@ TEST(MpmSolverRanks, RefusesWhatADecomposedRunCannotTake) {
 
 TEST(MpmSolverRanks, LeavesAnOutputDirectoryInUseAsItWas) {
   expect_directory_in_use_kept("mpm_solver", column_case);
+}
+
+// Standalone windows of 0.01 s, each run twice (--cosim-repeat-windows):
+// every rank saves its points at a window's start and puts them back, the
+// cuts move only between windows, and the files are those of one process.
+TEST(MpmSolverRanks, WindowsThatRunAgainKeepTheFilesOfOneProcess) {
+  const fs::path dir = fresh_directory("mpm_solver_ranks_windows");
+  const fs::path config = write_case(
+      dir, replaced(column_case, "safety_factor: 0.4}", "safety_factor: 0.4, window: 0.01}"));
+  const auto run_on = [&](int ranks, const fs::path& out) {
+    std::vector<std::string> args;
+    if (ranks > 0) args = {MPIEXEC, "--oversubscribe", "-np", std::to_string(ranks)};
+    for (const std::string& a :
+         {binary("mpm_solver").string(), std::string("--config"), config.string(),
+          std::string("--output"), out.string(), std::string("--cosim-repeat-windows")})
+      args.push_back(a);
+    return run(args, std::chrono::seconds(120));
+  };
+  const fs::path one = dir / "one_process";
+  const ProcessResult whole = run_on(0, one);
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  const auto reference = nlohmann::json::parse(read_text(one / "summary.json"));
+  EXPECT_EQ(reference["metrics"]["state_restores"]["value"], 6.0);
+  double rebalances = 0.0;
+  for (int ranks : {2, 3}) {
+    const fs::path out = dir / ("ranks_" + std::to_string(ranks));
+    const ProcessResult split = run_on(ranks, out);
+    ASSERT_EQ(split.exit_code, 0) << split.output;
+    EXPECT_EQ(read_text(out / "probes.csv"), read_text(one / "probes.csv")) << ranks << " ranks";
+    for (int s = 0; s < 4; ++s) {
+      const std::string file = fmt::format("particles_{:06d}.h5", s);
+      EXPECT_EQ(hdf5_contents(out / file), hdf5_contents(one / file))
+          << file << " on " << ranks << " ranks";
+    }
+    const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+    EXPECT_EQ(summary["steps"], reference["steps"]);
+    EXPECT_EQ(summary["metrics"]["state_restores"], reference["metrics"]["state_restores"]);
+    rebalances += summary["metrics"]["rebalances"]["value"].get<double>();
+  }
+  EXPECT_GE(rebalances, 1.0);
+}
+
+// configs/ice_coupled/<job>: the job shortened to `end_time` over MPI, with
+// the soil and the water on the ranks given, written into `dir` with the
+// participants' configs; the water solves its pressure with PETSc when
+// `petsc` (both ways alike whatever its ranks).
+struct CoupledJob {
+  std::string source, job_file, end_time, soil, water;
+  bool petsc = false;
+};
+
+fs::path write_coupled_job(const fs::path& dir, const CoupledJob& job, const std::string& end_time,
+                           int soil_ranks, int water_ranks) {
+  const fs::path source = fs::path(COSIM_SOURCE_DIR) / "configs/ice_coupled" / job.source;
+  fs::create_directories(dir);
+  std::string text = replaced(read_text(source / job.job_file), "end_time: " + job.end_time + "\n",
+                              "end_time: " + end_time + "\ntransport: mpi\n");
+  text = replaced(text, "    config: " + job.soil + "\n",
+                  fmt::format("    config: {}\n    ranks: {}\n", job.soil, soil_ranks));
+  text = replaced(text, "    config: " + job.water + "\n",
+                  fmt::format("    config: {}\n    ranks: {}\n", job.water, water_ranks));
+  write_text(dir / "job.yaml", text);
+  std::string water = read_text(source / job.water);
+  if (job.petsc) water = replaced(water, "numerics:\n", "numerics:\n  pressure: {solver: petsc}\n");
+  write_text(dir / job.water, water);
+  fs::copy_file(source / job.soil, dir / job.soil);
+  return dir / "job.yaml";
+}
+
+// Terzaghi's consolidation (soil and water on 2 ranks each) and the clay
+// column (soil on 2 ranks, its 8 x 8 water too narrow for two blocks),
+// shortened, against the same jobs on one process each: the soil's points
+// sum their exchange-grid shares over the ranks before the fields are
+// formed, and take their shares of what the water sends from sums over the
+// ranks too. The snapshots and gauges agree to the pressure solver's
+// tolerance (1e-8 with PETSc), or to round-off with the serial one; mass and
+// the impulse the soil took agree to round-off.
+TEST(MpmSolverRanks, ACoupledSoilOnTwoRanksGivesTheOneProcessRun) {
+  struct Case {
+    CoupledJob job;
+    int water_ranks;
+    std::string snapshot;
+    double tolerance;
+  };
+  const Case cases[] = {
+      {{"terzaghi", "job.yaml", "0.75", "soil.yaml", "water.yaml", true}, 2, "000001", 1e-8},
+      {{".", "job.yaml", "0.1", "soil_column.yaml", "water.yaml", false}, 1, "000002", 1e-10}};
+  for (const Case& c : cases) {
+    const std::string name = c.job.source == "." ? "clay_column" : c.job.source;
+    SCOPED_TRACE(name);
+    const fs::path dir = fresh_directory("mpm_solver_coupled_ranks_" + name);
+    const std::string end_time = c.snapshot == "000001" ? "0.01" : "0.02";
+    for (const auto& [soil_ranks, water_ranks] : {std::pair{1, 1}, std::pair{2, c.water_ranks}}) {
+      const fs::path run_dir = dir / fmt::format("soil_{}", soil_ranks);
+      const fs::path job = write_coupled_job(run_dir, c.job, end_time, soil_ranks, water_ranks);
+      const ProcessResult result = cosim_run(job, run_dir / "run", 240);
+      ASSERT_EQ(result.exit_code, 0) << result.output << read_text(run_dir / "run" / "mpirun.log");
+    }
+    const fs::path one = dir / "soil_1" / "run";
+    const fs::path two = dir / "soil_2" / "run";
+    const auto summary_one = nlohmann::json::parse(read_text(one / "soil" / "summary.json"));
+    const auto summary_two = nlohmann::json::parse(read_text(two / "soil" / "summary.json"));
+    EXPECT_EQ(summary_two["case"]["ranks"], 2);
+    double worst = 0.0;
+    {
+      const Hdf5Reader a(one / "water" / ("ice_" + c.snapshot + ".h5")),
+          b(two / "water" / ("ice_" + c.snapshot + ".h5"));
+      for (const char* field : {"pressure", "velocity_water", "bulk_density_water",
+                                "volume_fraction_water", "temperature_water"})
+        worst = std::max(worst, relative_difference(a, b, std::string("fields/") + field));
+    }
+    {
+      const Hdf5Reader a(one / "soil" / ("particles_" + c.snapshot + ".h5")),
+          b(two / "soil" / ("particles_" + c.snapshot + ".h5"));
+      for (const char* field : {"velocity", "stress", "pore_pressure", "displacement"})
+        worst = std::max(worst, relative_difference(a, b, std::string("fields/") + field));
+    }
+    const auto gauges_one = read_csv(one / "water" / "gauges.csv");
+    const auto gauges_two = read_csv(two / "water" / "gauges.csv");
+    ASSERT_EQ(gauges_one.size(), gauges_two.size());
+    for (std::size_t i = 0; i < gauges_one.size(); ++i)
+      for (std::size_t k = 0; k < gauges_one[i].size(); ++k)
+        worst = std::max(worst, std::abs(gauges_one[i][k] - gauges_two[i][k]) /
+                                    std::max(1.0, std::abs(gauges_one[i][k])));
+    std::printf(
+        "%s: soil on 2 ranks, water on %d, against 1 process each: worst relative "
+        "difference %.2e (tolerance %.0e)\n",
+        name.c_str(), c.water_ranks, worst, c.tolerance);
+    EXPECT_LE(worst, c.tolerance);
+    EXPECT_NEAR(summary_two["conserved"]["mass"]["end"].get<double>(),
+                summary_one["conserved"]["mass"]["end"].get<double>(),
+                1e-12 * summary_one["conserved"]["mass"]["end"].get<double>());
+    const auto applied_one = summary_one["coupling"]["impulse_applied"].get<std::vector<double>>();
+    const auto applied_two = summary_two["coupling"]["impulse_applied"].get<std::vector<double>>();
+    ASSERT_EQ(applied_one.size(), applied_two.size());
+    double impulse = 0.0;
+    for (double component : applied_one) impulse = std::max(impulse, std::abs(component));
+    ASSERT_GT(impulse, 0.0);
+    for (std::size_t k = 0; k < applied_one.size(); ++k)
+      EXPECT_NEAR(applied_two[k], applied_one[k], c.tolerance * impulse) << "component " << k;
+  }
+}
+
+// A soil that cannot start on its ranks (the Darcy column's one cell row
+// cannot be cut in two), or on its one rank (a bad case), fails before it
+// says hello to the coupler: it ends the MPI job itself at once, and
+// `cosim run` exits with 2 naming the participant and the key.
+TEST(MpmSolverRanks, ASoilThatCannotStartEndsTheCoupledJobAtOnceWithExit2) {
+  const fs::path dir = fresh_directory("mpm_solver_coupled_cannot_start");
+  {
+    const CoupledJob darcy{"darcy", "job.yaml", "0.3", "column.yaml", "water.yaml"};
+    const fs::path job = write_coupled_job(dir / "darcy", darcy, "0.01", 2, 1);
+    const auto started = std::chrono::steady_clock::now();
+    const ProcessResult r = cosim_run(job, dir / "darcy" / "run", 60);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_THAT(r.output, HasSubstr("participant 'column' failed before the coupling began"));
+    EXPECT_THAT(r.output, HasSubstr("key 'grid.cells'"));
+    const auto summary = nlohmann::json::parse(read_text(dir / "darcy" / "run" / "summary.json"));
+    EXPECT_EQ(summary["status"]["exit_code"], 2);
+    std::printf("the Darcy soil on 2 ranks was refused in %.1f s\n", seconds);
+    // Well inside the connect timeout (120 s) the coupler would otherwise wait.
+    EXPECT_LT(seconds, 60.0);
+  }
+  {
+    const CoupledJob column{".", "job.yaml", "0.1", "soil_column.yaml", "water.yaml"};
+    const fs::path job = write_coupled_job(dir / "bad_case", column, "0.02", 1, 1);
+    write_text(dir / "bad_case" / "soil_column.yaml",
+               replaced(read_text(dir / "bad_case" / "soil_column.yaml"), "cells: [8, 8]",
+                        "cells: [8, -8]"));
+    const ProcessResult r = cosim_run(job, dir / "bad_case" / "run", 60);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_THAT(r.output, HasSubstr("participant 'soil' failed before the coupling began"));
+    EXPECT_THAT(r.output, HasSubstr("soil_column.yaml:8:"));
+  }
 }
 
 }  // namespace

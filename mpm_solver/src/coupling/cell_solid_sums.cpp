@@ -41,6 +41,20 @@ void CellSolidSums::move(std::size_t from, std::size_t to, double fraction) {
   }
 }
 
+void sum_cells_over_ranks(CellSolidSums& free, CellSolidSums& held, const SumOverRanks& sum) {
+  std::vector<double> packed;
+  for (CellSolidSums* sums : {&free, &held})
+    sums->for_each_array(
+        [&](const std::vector<double>& v) { packed.insert(packed.end(), v.begin(), v.end()); });
+  sum(packed);
+  auto next = packed.begin();
+  for (CellSolidSums* sums : {&free, &held})
+    sums->for_each_array([&](std::vector<double>& v) {
+      std::copy(next, next + static_cast<std::ptrdiff_t>(v.size()), v.begin());
+      next += static_cast<std::ptrdiff_t>(v.size());
+    });
+}
+
 template <int Dim>
 std::size_t spread_overfilled_cells(const ExchangeGrid<Dim>& grid, CellSolidSums& free,
                                     const CellSolidSums& held) {

@@ -14,10 +14,28 @@
 #include "mpm/coupling/pore_pressure_force.hpp"
 #include "mpm/coupling/porous_fields_writer.hpp"
 #include "mpm/coupling/thermal_fields_writer.hpp"
+#include "mpm/solver/grid_partition.hpp"
 
 namespace mpm::coupling {
 
 namespace {
+
+// A rank's part of the exchange grid (issue 27): it holds every cell, the
+// fields being sums over all ranks' points, and owns the rows of exchange
+// cells whose first MPM cell row is among its own rows.
+template <int Dim>
+cosim::MeshPart exchange_part(const ExchangeGrid<Dim>& exchange, int factor,
+                              std::array<int, 2> mpm_rows) {
+  const cosim::UniformGrid mesh = exchange.mesh();
+  const auto first_row_at_or_after = [factor](int mpm_row) {
+    return static_cast<std::int64_t>((mpm_row + factor - 1) / factor);
+  };
+  cosim::Index3 owned_lower{0, 0, 0};
+  cosim::Index3 owned_upper = mesh.cells;
+  owned_lower[Dim - 1] = first_row_at_or_after(mpm_rows[0]);
+  owned_upper[Dim - 1] = first_row_at_or_after(mpm_rows[1]);
+  return cosim::MeshPart::box(mesh, {0, 0, 0}, mesh.cells, owned_lower, owned_upper);
+}
 
 template <int Dim>
 std::span<const double> flat(const std::vector<Vec<Dim>>& v) {
@@ -37,6 +55,8 @@ struct MpmCoupling<Dim>::State {
   CouplingDiagnostics<Dim> diagnostics;
   CouplingDiagnostics<Dim> saved_diagnostics;  // at the start of a window that may run again
   std::vector<std::string> held_warnings;      // until the window is complete
+  // On a rank of a decomposed run: every rank's sums over its points.
+  SumOverRanks sum_over_ranks;
 
   std::vector<double> cell_values;    // scratch for reads
   std::vector<Vec<Dim>> scratch;      // per particle
@@ -98,14 +118,16 @@ void MpmCoupling<Dim>::State::apply(double dt, Particles<Dim>& particles) {
     cell_values.resize(exchange->size() * static_cast<std::size_t>(Dim));
     channel->read(n::pore_pressure_force, dt, cell_values);
     diagnostics.pore_pressure_force =
-        split_impulse(*exchange, cell_values, particles, roles, scratch, SplitWeight::solid_volume)
+        split_impulse(*exchange, cell_values, particles, roles, scratch, SplitWeight::solid_volume,
+                      sum_over_ranks)
             .applied;
     add_to_force(scratch, 1.0);
   }
   if (exchange_reads(n::impulse)) {
     cell_values.resize(exchange->size() * static_cast<std::size_t>(Dim));
     channel->read_increment(n::impulse, dt, cell_values);
-    const auto split = split_impulse(*exchange, cell_values, particles, roles, scratch);
+    const auto split = split_impulse(*exchange, cell_values, particles, roles, scratch,
+                                     SplitWeight::deformable_mass, sum_over_ranks);
     diagnostics.impulse_step = split;
     diagnostics.impulse_total.received += split.received;
     diagnostics.impulse_total.applied += split.applied;
@@ -127,6 +149,14 @@ MpmCoupling<Dim>::MpmCoupling(Solver<Dim>& solver, std::unique_ptr<CouplingChann
     : state_(std::make_shared<State>(solver, std::move(channel), std::move(spec))) {
   State& s = *state_;
   s.roles = body_roles(solver.description(), s.spec);
+  if (GridPartition<Dim>* partition = solver.partition()) {
+    s.sum_over_ranks = [partition](std::span<double> values) { partition->sum(values); };
+    if (s.spec.surface)
+      throw cosim::InputError(fmt::format(
+          "{}: key 'coupling.surface': the surface (bed elevation and traction) is exchanged "
+          "by an mpm_solver on one rank only; give the participant `ranks: 1`",
+          solver.description().file.string()));
+  }
   if (s.spec.exchange_grid)
     s.exchange = ExchangeGrid<Dim>::covering(solver.grid(), s.spec.exchange_grid->factor);
   if (s.spec.surface) {
@@ -167,7 +197,13 @@ void MpmCoupling<Dim>::declare() {
   namespace n = names;
   namespace f = cosim::fields;
   if (s.exchange) {
-    s.channel->declare_mesh({n::exchange_mesh, s.exchange->mesh()});
+    if (s.sum_over_ranks) {
+      s.channel->declare_mesh({n::exchange_mesh, s.exchange->mesh()},
+                              exchange_part(*s.exchange, s.spec.exchange_grid->factor,
+                                            s.solver.partition()->owned_rows()));
+    } else {
+      s.channel->declare_mesh({n::exchange_mesh, s.exchange->mesh()});
+    }
     auto write = [&](const f::Field& field, double lo) {
       if (!s.exchange_writes(field.name)) return;
       cosim::FieldSpec spec = field.on(n::exchange_mesh, Dim);
@@ -228,8 +264,8 @@ void MpmCoupling<Dim>::write_fields() {
     const auto& g = *s.spec.exchange_grid;
     const auto held = held_particles(particles, s.solver.grid(), s.roles,
                                      s.solver.description().boundaries, g.hold_at_fixed_faces);
-    const PorousFields f =
-        porous_fields(*s.exchange, particles, s.roles, held, g.held_density_factor);
+    const PorousFields f = porous_fields(*s.exchange, particles, s.roles, held,
+                                         g.held_density_factor, s.sum_over_ranks);
     if (f.capped_cells > 0)
       s.held_warnings.push_back(fmt::format(
           "mpm coupling: solid fraction above 1 capped in {} exchange cell(s) at t = {:.6g} s",

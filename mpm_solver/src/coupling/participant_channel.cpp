@@ -6,6 +6,9 @@ namespace mpm::coupling {
 void ParticipantChannel::declare_mesh(cosim::Mesh mesh) {
   participant_.declare_mesh(std::move(mesh));
 }
+void ParticipantChannel::declare_mesh(cosim::Mesh mesh, cosim::MeshPart part) {
+  participant_.declare_mesh(std::move(mesh), std::move(part));
+}
 void ParticipantChannel::declare_write(cosim::FieldSpec field) {
   participant_.declare_write(std::move(field));
 }

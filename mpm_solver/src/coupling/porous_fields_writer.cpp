@@ -17,7 +17,8 @@ constexpr double max_free_fraction_of_held_cell = 0.1;
 template <int Dim>
 PorousFields porous_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& particles,
                            const std::vector<BodyRole>& roles,
-                           const std::vector<std::uint8_t>& held, double held_density_factor) {
+                           const std::vector<std::uint8_t>& held, double held_density_factor,
+                           const SumOverRanks& sum_over_ranks) {
   const std::size_t n = grid.size();
   const auto dim = static_cast<std::size_t>(Dim);
   CellSolidSums free(n, Dim), held_sums(n, Dim);
@@ -43,6 +44,7 @@ PorousFields porous_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& 
           }
         });
   }
+  if (sum_over_ranks) sum_cells_over_ranks(free, held_sums, sum_over_ranks);
   PorousFields out;
   out.overfilled_cells = spread_overfilled_cells(grid, free, held_sums);
 
@@ -117,9 +119,11 @@ PorousFields porous_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& 
 
 template PorousFields porous_fields<2>(const ExchangeGrid<2>&, const Particles<2>&,
                                        const std::vector<BodyRole>&,
-                                       const std::vector<std::uint8_t>&, double);
+                                       const std::vector<std::uint8_t>&, double,
+                                       const SumOverRanks&);
 template PorousFields porous_fields<3>(const ExchangeGrid<3>&, const Particles<3>&,
                                        const std::vector<BodyRole>&,
-                                       const std::vector<std::uint8_t>&, double);
+                                       const std::vector<std::uint8_t>&, double,
+                                       const SumOverRanks&);
 
 }  // namespace mpm::coupling

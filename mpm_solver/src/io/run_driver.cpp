@@ -247,12 +247,18 @@ class CaseRun {
       const bool probe = progress_.probe_times.due(now, tolerance_);
       const bool check = solver_.step_count() % static_cast<std::size_t>(options_.check_every) == 0;
       if (snapshot || probe || check) solver_.check_state();
-      if (check && ranks_.rebalance) balance_ranks();
+      if (check && ranks_.rebalance) balance_due_ = true;
       if (snapshot) hold_snapshot();
       if (probe) hold_probes();
       // Inside a window that may run again, outputs and progress wait for its end.
       if (window_may_repeat_ && !observer_->is_window_complete()) continue;
       window_may_repeat_ = false;
+      // The cuts move only where no window may run again: its start's points
+      // are each rank's by the cuts they had then.
+      if (balance_due_) {
+        balance_due_ = false;
+        balance_ranks();
+      }
       write_held_outputs();
       if (observer_ && observer_->must_write_checkpoint()) write_checkpoint();
 
@@ -426,6 +432,12 @@ class CaseRun {
       }
       if (observer_) {
         nlohmann::json coupling = observer_->summary();
+        // On ranks each rank's points took their own shares of the impulse.
+        if (together && ranks_.partition && coupling.contains("impulse_applied")) {
+          std::vector<double> applied = coupling["impulse_applied"].get<std::vector<double>>();
+          ranks_.partition->sum(applied);
+          coupling["impulse_applied"] = applied;
+        }
         if (coupling.contains("windows"))
           summary_.set_windows(coupling["windows"].get<std::int64_t>());
         if (!coupling.is_null()) summary_.set_section("coupling", std::move(coupling));
@@ -451,6 +463,7 @@ class CaseRun {
   SolverState<Dim> saved_solver_;
   std::optional<LoopProgress> saved_progress_;
   bool window_may_repeat_ = false;
+  bool balance_due_ = false;     // a check step asked for the points' balance
   std::size_t steps_taken_ = 0;  // those of repeated windows too
   double imbalance_max_ = 0.0;
   std::size_t rebalances_ = 0;
@@ -513,45 +526,49 @@ void refuse_what_ranks_cannot_run(const CaseDescription& c, int ranks) {
   };
   if (c.thermal.enabled) refuse("thermal", "a case that conducts heat");
   if (c.output.grid) refuse("output.grid", "a case with grid snapshots");
-  if (c.time.window > 0.0) refuse("time.window", "a case in coupling windows");
 }
 
 template <int Dim>
 void run_decomposed_dimension(const CaseDescription& description, const RunOptions& options,
-                              cosim::RunSummary& summary, const std::vector<int>& cuts) {
+                              cosim::RunSummary& summary, const std::vector<int>& cuts,
+                              MPI_Comm comm, const StepObserverFactory<Dim>& factory) {
   std::size_t points = 0;
   for (const auto& b : description.bodies) points += b.positions.size();
   const auto last = static_cast<Eigen::Index>(Dim - 1);
   const auto partition = std::make_shared<parallel::MpiGridPartition<Dim>>(
-      MPI_COMM_WORLD, cuts, description.grid.origin[last], description.grid.spacing[last]);
+      comm, cuts, description.grid.origin[last], description.grid.spacing[last]);
   RunRanks<Dim> ranks;
   ranks.partition = partition;
   ranks.writes_tables = partition->rank() == 0;
-  ranks.particle_snapshots = [&options, points] {
-    return std::make_unique<cosim::PartitionedPointCloudWriter>(
-        MPI_COMM_WORLD, options.output, "particles", "particles", Dim, points);
+  ranks.particle_snapshots = [&options, points, comm] {
+    return std::make_unique<cosim::PartitionedPointCloudWriter>(comm, options.output, "particles",
+                                                                "particles", Dim, points);
   };
   ranks.imbalance = [partition](const Particles<Dim>& p) { return partition->imbalance(p); };
   ranks.rebalance = [partition](const Particles<Dim>& p) {
     return partition->rebalance(p, rebalance_threshold);
   };
+  std::unique_ptr<StepObserver<Dim>> observer;
+  if (factory) observer = factory(description);
   std::optional<CaseRun<Dim>> run;
   {
     auto scope = summary.phases().measure("setup");
-    run.emplace(description, options, summary, nullptr, std::move(ranks));
+    run.emplace(description, options, summary, std::move(observer), std::move(ranks));
   }
   run->run();
 }
 
-// mpm_solver standalone under `mpirun -np N`, N > 1 (issue 27): the grid's
-// cell rows cut into N parts balanced by the seeded points; rank 0 prepares
+// mpm_solver on N > 1 ranks (issue 27), standalone under `mpirun -np N` or
+// a coupled participant on N ranks of an MPMD job (its own ranks:
+// mpi.comm()): the grid's cell rows cut into N parts balanced by the seeded
+// points; the observers (coupling windows) run on every rank; rank 0 prepares
 // the output directory and writes the summary; every rank writes its points
 // into each particle snapshot; rank r keeps its own log and summary in
 // ranks/rank_<r>/. The job ends with the largest exit code of its ranks; a
 // rank that fails while the others still run ends them all
 // (cosim::runtime::MpiSession::finish).
-int run_decomposed(const RunOptions& options) {
-  const cosim::runtime::MpiSession mpi;
+int run_decomposed(const RunOptions& options, const cosim::runtime::MpiSession& mpi,
+                   const StepObservers& observers) {
   const cosim::runtime::RankOutput mine = cosim::runtime::prepare_rank_output(
       mpi, options.output, options.reuse, options.verbosity, "mpm_solver");
   if (mine.refused != 0) return mine.refused;
@@ -593,9 +610,11 @@ int run_decomposed(const RunOptions& options) {
                  cuts[static_cast<std::size_t>(mpi.rank())],
                  cuts[static_cast<std::size_t>(mpi.rank()) + 1]);
     if (description.dimension == 2) {
-      run_decomposed_dimension<2>(description, options, summary, cuts);
+      run_decomposed_dimension<2>(description, options, summary, cuts, mpi.comm(),
+                                  observers.for_2d);
     } else {
-      run_decomposed_dimension<3>(description, options, summary, cuts);
+      run_decomposed_dimension<3>(description, options, summary, cuts, mpi.comm(),
+                                  observers.for_3d);
     }
   });
   spdlog::default_logger()->flush();
@@ -613,11 +632,23 @@ bool started_on_several_ranks() {
 #endif
 }
 
-int run_decomposed_case(const RunOptions& options) {
+int run_decomposed_case(const RunOptions& options, const StepObservers& observers) {
 #ifdef MPM_WITH_MPI
-  return run_decomposed(options);
+  return run_decomposed(options, cosim::runtime::MpiSession(), observers);
 #else
-  return run_case(options);
+  return run_case(options, observers);
+#endif
+}
+
+int run_mpi_participant(const RunOptions& options, const StepObservers& observers) {
+#ifdef MPM_WITH_MPI
+  // MPI from the start, to learn this program's ranks (the transport,
+  // started later, then shares it).
+  const cosim::runtime::MpiSession mpi;
+  if (mpi.ranks() > 1) return run_decomposed(options, mpi, observers);
+  return mpi.finish_run("mpm_solver", [&] { return run_case(options, observers); });
+#else
+  return run_case(options, observers);
 #endif
 }
 

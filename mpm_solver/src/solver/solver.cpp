@@ -948,6 +948,10 @@ void Solver<Dim>::repartition() {
   s.partition->migrate(s.particles);
 }
 template <int Dim>
+GridPartition<Dim>* Solver<Dim>::partition() const {
+  return impl_->partition.get();
+}
+template <int Dim>
 double Solver<Dim>::time() const {
   return impl_->time;
 }

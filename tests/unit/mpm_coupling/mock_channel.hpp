@@ -31,7 +31,12 @@ class MockChannel final : public coupling::CouplingChannel {
   double window = 1.0;
   double time = 0.0;
 
+  std::map<std::string, cosim::MeshPart> parts;
   void declare_mesh(cosim::Mesh mesh) override { meshes[mesh.name] = std::move(mesh); }
+  void declare_mesh(cosim::Mesh mesh, cosim::MeshPart part) override {
+    parts[mesh.name] = std::move(part);
+    meshes[mesh.name] = std::move(mesh);
+  }
   void declare_write(cosim::FieldSpec field) override { write_specs[field.name] = field; }
   void declare_read(cosim::FieldSpec field, double default_value) override {
     const std::size_t n = size_of(field);

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "mpm/coupling/exchange_grid.hpp"
+#include "mpm/coupling/sum_over_ranks.hpp"
 
 namespace mpm::coupling {
 
@@ -23,6 +24,13 @@ struct CellSolidSums {
   CellSolidSums(std::size_t cells, int dim);
   // Moves `fraction` of cell `from`'s sums to cell `to`.
   void move(std::size_t from, std::size_t to, double fraction);
+  // Calls f(array) for each of the arrays above.
+  template <class F>
+  void for_each_array(F&& f) {
+    for (auto* v : {&domain, &solid_volume, &mass, &momentum, &volume_momentum, &porous_mass,
+                    &permeability_mass, &grain_size_mass})
+      f(*v);
+  }
 
  private:
   std::size_t dim_;
@@ -39,6 +47,10 @@ struct CellSolidSums {
 // is first reached), over a few sweeps. Solid volume, mass and momentum are
 // only moved, never changed. Returns the number of cells overfilled beyond
 // the tolerance.
+// On a rank of a decomposed MPM: every rank's sums in `free` and `held`, in
+// one collective sum.
+void sum_cells_over_ranks(CellSolidSums& free, CellSolidSums& held, const SumOverRanks& sum);
+
 template <int Dim>
 std::size_t spread_overfilled_cells(const ExchangeGrid<Dim>& grid, CellSolidSums& free,
                                     const CellSolidSums& held);

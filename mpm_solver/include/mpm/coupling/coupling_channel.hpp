@@ -20,6 +20,8 @@ class CouplingChannel {
   virtual ~CouplingChannel() = default;
 
   virtual void declare_mesh(cosim::Mesh mesh) = 0;
+  // This rank's part of the mesh (a participant on several ranks).
+  virtual void declare_mesh(cosim::Mesh mesh, cosim::MeshPart part) = 0;
   virtual void declare_write(cosim::FieldSpec field) = 0;
   virtual void declare_read(cosim::FieldSpec field, double default_value) = 0;
 
@@ -42,6 +44,7 @@ class ParticipantChannel final : public CouplingChannel {
   explicit ParticipantChannel(cosim::Participant& participant) : participant_(participant) {}
 
   void declare_mesh(cosim::Mesh mesh) override;
+  void declare_mesh(cosim::Mesh mesh, cosim::MeshPart part) override;
   void declare_write(cosim::FieldSpec field) override;
   void declare_read(cosim::FieldSpec field, double default_value) override;
   void write(std::string_view field, std::span<const double> values) override;

@@ -40,6 +40,7 @@ template <int Dim>
 ImpulseSplit<Dim> split_impulse(const ExchangeGrid<Dim>& grid, std::span<const double> cell_impulse,
                                 const Particles<Dim>& particles, const std::vector<BodyRole>& roles,
                                 std::vector<Vec<Dim>>& particle_impulse,
-                                SplitWeight weighting = SplitWeight::deformable_mass);
+                                SplitWeight weighting = SplitWeight::deformable_mass,
+                                const SumOverRanks& sum_over_ranks = {});
 
 }  // namespace mpm::coupling

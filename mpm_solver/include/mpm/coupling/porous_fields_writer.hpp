@@ -6,6 +6,7 @@
 
 #include "mpm/coupling/body_roles.hpp"
 #include "mpm/coupling/exchange_grid.hpp"
+#include "mpm/coupling/sum_over_ranks.hpp"
 #include "mpm/particles/particles.hpp"
 
 namespace mpm::coupling {
@@ -31,7 +32,8 @@ namespace mpm::coupling {
 // not move the held solid). A cell shared by held solid and more deformable
 // solid than that (sand sliding over a cut cell of a rigid bed) is not held
 // and takes the deformable solid's velocity: its fluid moves with the sand,
-// the bed only takes pore space.
+// the bed only takes pore space. On a rank of a decomposed MPM the sums are
+// every rank's (`sum_over_ranks`), so each rank gets the whole fields.
 struct PorousFields {
   std::vector<double> solid_fraction;
   std::vector<double> solid_velocity;     // Dim per cell, cell-major
@@ -47,6 +49,7 @@ struct PorousFields {
 template <int Dim>
 PorousFields porous_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& particles,
                            const std::vector<BodyRole>& roles,
-                           const std::vector<std::uint8_t>& held, double held_density_factor);
+                           const std::vector<std::uint8_t>& held, double held_density_factor,
+                           const SumOverRanks& sum_over_ranks = {});
 
 }  // namespace mpm::coupling

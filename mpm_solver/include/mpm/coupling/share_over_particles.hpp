@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mpm/coupling/exchange_grid.hpp"
+#include "mpm/coupling/sum_over_ranks.hpp"
 #include "mpm/particles/particles.hpp"
 
 namespace mpm::coupling {
@@ -31,7 +32,9 @@ struct ShareTotals {
 // can take is absorbed. With `holders_share` the holding weight also counts
 // in each cell's total, W_q -> W_q + H_q in the sum, and the holders' share
 // is absorbed (a force per cell shared by solid volume, a rigid bed's part
-// kept by the bed).
+// kept by the bed). On a rank of a decomposed MPM `sum_over_ranks` makes the
+// weights every rank's, so each rank gives its own points their shares of
+// the whole amount (`applied` is then this rank's part).
 template <int Dim, int N>
 ShareTotals<N> share_over_particles(const ExchangeGrid<Dim>& grid,
                                     std::span<const double> cell_amount,
@@ -39,7 +42,8 @@ ShareTotals<N> share_over_particles(const ExchangeGrid<Dim>& grid,
                                     std::span<const double> share_weight,
                                     std::span<const double> holding_weight,
                                     std::vector<Eigen::Matrix<double, N, 1>>& particle_amount,
-                                    bool holders_share = false) {
+                                    bool holders_share = false,
+                                    const SumOverRanks& sum_over_ranks = {}) {
   using Amount = Eigen::Matrix<double, N, 1>;
   const std::size_t n = grid.size();
   assert(cell_amount.size() == n * N);
@@ -52,6 +56,10 @@ ShareTotals<N> share_over_particles(const ExchangeGrid<Dim>& grid,
                                  weight[c] += w * W;
                                  holding[c] += w * H;
                                });
+  }
+  if (sum_over_ranks) {
+    sum_over_ranks(weight);
+    sum_over_ranks(holding);
   }
   std::vector<Amount> amount(n);
   ShareTotals<N> totals;

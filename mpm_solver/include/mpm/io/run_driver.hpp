@@ -39,10 +39,16 @@ int run_case(const RunOptions& options, const StepObservers& observers = {});
 // them, and the files of a run on one process (particle snapshots written
 // by all ranks together; summary.json by rank 0; rank r's log and summary
 // in <output>/ranks/rank_<r>/). The totals in the summary are summed over
-// the ranks (equal to round-off). Cases with heat conduction, probes, grid
-// snapshots or coupling windows are refused (exit 2). Without MPI in the
-// build, run_case.
-int run_decomposed_case(const RunOptions& options);
+// the ranks (equal to round-off). Cases with heat conduction or grid
+// snapshots are refused (exit 2). The observers (standalone coupling
+// windows) run on every rank. Without MPI in the build, run_case.
+int run_decomposed_case(const RunOptions& options, const StepObservers& observers = {});
+
+// A coupled participant of an MPMD job (transport mpi://): on one rank
+// run_case; on N > 1 ranks (`ranks: N` in the job) the decomposed run above
+// on this program's ranks, every rank a part of the participant
+// (mpm::coupling declares its part of the exchange grid).
+int run_mpi_participant(const RunOptions& options, const StepObservers& observers);
 // Whether mpirun started this process as one of several ranks (false
 // without MPI in the build).
 bool started_on_several_ranks();

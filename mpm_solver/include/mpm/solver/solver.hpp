@@ -67,6 +67,8 @@ class Solver {
   // their new ranks (collective). The state keeps its bits, and so do the
   // steps after. Nothing on one process.
   void repartition();
+  // The partition of a decomposed run's rank; nullptr on one process.
+  GridPartition<Dim>* partition() const;
 
   double time() const;
   std::size_t step_count() const;
