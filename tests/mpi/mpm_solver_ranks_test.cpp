@@ -180,6 +180,10 @@ TEST(MpmSolverRanks, WindowsThatRunAgainKeepTheFilesOfOneProcess) {
 struct CoupledJob {
   std::string source, job_file, end_time, soil, water;
   bool petsc = false;
+  // Grids refined to this many cells a side (0: as they are), with the
+  // window the finer exchange cells need.
+  int cells = 0;
+  std::string window = {};
 };
 
 fs::path write_coupled_job(const fs::path& dir, const CoupledJob& job, const std::string& end_time,
@@ -192,16 +196,24 @@ fs::path write_coupled_job(const fs::path& dir, const CoupledJob& job, const std
                   fmt::format("    config: {}\n    ranks: {}\n", job.soil, soil_ranks));
   text = replaced(text, "    config: " + job.water + "\n",
                   fmt::format("    config: {}\n    ranks: {}\n", job.water, water_ranks));
-  write_text(dir / "job.yaml", text);
   std::string water = read_text(source / job.water);
+  std::string soil = read_text(source / job.soil);
   if (job.petsc) water = replaced(water, "numerics:\n", "numerics:\n  pressure: {solver: petsc}\n");
+  if (job.cells > 0) {
+    const std::string cells = fmt::format("cells: [{0}, {0}]", job.cells);
+    water = replaced(water, "cells: [8, 8]", cells);
+    soil = replaced(soil, "cells: [8, 8]", cells);
+    text = replaced(text, "window: 5.0e-5", "window: " + job.window);
+  }
+  write_text(dir / "job.yaml", text);
   write_text(dir / job.water, water);
-  fs::copy_file(source / job.soil, dir / job.soil);
+  write_text(dir / job.soil, soil);
   return dir / "job.yaml";
 }
 
-// Terzaghi's consolidation (soil and water on 2 ranks each) and the clay
-// column (soil on 2 ranks, its 8 x 8 water too narrow for two blocks),
+// Terzaghi's consolidation (soil and water on 2 ranks each), the clay
+// column (soil on 2 ranks, its 8 x 8 water too narrow for two blocks of 5
+// ghost layers) and the clay column refined to 16 x 16 (both on 2 ranks),
 // shortened, against the same jobs on one process each: the soil's points
 // sum their exchange-grid shares over the ranks before the fields are
 // formed, and take their shares of what the water sends from sums over the
@@ -212,14 +224,30 @@ TEST(MpmSolverRanks, ACoupledSoilOnTwoRanksGivesTheOneProcessRun) {
   struct Case {
     CoupledJob job;
     int water_ranks;
-    std::string snapshot;
+    std::string name, snapshot;
     double tolerance;
   };
+  // The refined column runs to 0.01 s only: near 0.019 s a perturbation of
+  // 1e-12 (of Young's modulus, on one process) already moves its soil by
+  // 1 % (something discrete happens there; not investigated yet).
   const Case cases[] = {
-      {{"terzaghi", "job.yaml", "0.75", "soil.yaml", "water.yaml", true}, 2, "000001", 1e-8},
-      {{".", "job.yaml", "0.1", "soil_column.yaml", "water.yaml", false}, 1, "000002", 1e-10}};
+      {{"terzaghi", "job.yaml", "0.75", "soil.yaml", "water.yaml", true},
+       2,
+       "terzaghi",
+       "000001",
+       1e-8},
+      {{".", "job.yaml", "0.1", "soil_column.yaml", "water.yaml"},
+       1,
+       "clay_column",
+       "000002",
+       1e-10},
+      {{".", "job.yaml", "0.1", "soil_column.yaml", "water.yaml", true, 16, "2.5e-5"},
+       2,
+       "clay_column_16",
+       "000001",
+       1e-8}};
   for (const Case& c : cases) {
-    const std::string name = c.job.source == "." ? "clay_column" : c.job.source;
+    const std::string& name = c.name;
     SCOPED_TRACE(name);
     const fs::path dir = fresh_directory("mpm_solver_coupled_ranks_" + name);
     const std::string end_time = c.snapshot == "000001" ? "0.01" : "0.02";
