@@ -278,6 +278,7 @@ int run_job(const RunOptions& o) {
       return 0;
     }
     check_checkpoint_options(job, opts);
+    runtime::check_ranks_fit(job, runtime::available_cores());
     prepare_output_directory(o.output, o.overwrite ? OutputReuse::overwrite : OutputReuse::refuse);
     // The coupler rank rewrites it once it runs; until then (and if it
     // never does) the record is this process's.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <thread>
 
+#include "cosim/error.hpp"
 #include "cosim/runtime/supervisor.hpp"
 
 namespace cosim::runtime {
@@ -63,6 +64,22 @@ int mpi_world_size(const job::Job& job) {
 std::vector<std::string> binding_options(int world_size, unsigned cores) {
   const bool fits = cores > 0 && world_size > 0 && static_cast<unsigned>(world_size) <= cores;
   return {"--bind-to", fits ? "core" : "none"};
+}
+
+void check_ranks_fit(const job::Job& job, unsigned cores) {
+  const int world = mpi_world_size(job);
+  const long most = static_cast<long>(max_ranks_per_core) * static_cast<long>(cores);
+  if (cores == 0 || world <= most) return;
+  const auto widest =
+      std::max_element(job.participants.begin(), job.participants.end(),
+                       [](const auto& a, const auto& b) { return a.ranks < b.ranks; });
+  const std::string what = fmt::format(
+      "the job needs {} ranks (the coupler and its participants'), more than mpirun can run "
+      "here: {} core{} x {} ranks per core at most; give fewer ranks, or write a batch script "
+      "for a cluster with --slurm-script",
+      world, cores, cores == 1 ? "" : "s", max_ranks_per_core);
+  if (widest->ranks_where.line == 0) throw InputError(what);
+  throw InputError(widest->ranks_where, fmt::format("participants.{}.ranks", widest->name), what);
 }
 
 unsigned available_cores() {

@@ -35,6 +35,16 @@ int mpi_world_size(const job::Job& job);
 // wait for each other (--bind-to none).
 std::vector<std::string> binding_options(int world_size, unsigned cores);
 
+// The most ranks mpirun may start per core of this machine: beyond, a job
+// would spend its time switching between processes (and may run out of
+// them), which is no way to run it; a cluster runs it (--slurm-script).
+inline constexpr int max_ranks_per_core = 16;
+
+// Refuses (InputError at the `ranks` key of the participant with the most
+// ranks, exit 2) an MPI job of more ranks than max_ranks_per_core x `cores`
+// (nothing refused when the count of cores is unknown, 0).
+void check_ranks_fit(const job::Job& job, unsigned cores);
+
 // The cores this process may run on (its CPU affinity, at most
 // std::thread::hardware_concurrency()); 0 when unknown.
 unsigned available_cores();

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cosim/error.hpp"
 #include "mpmd_job.hpp"
 
 namespace cosim::runtime {
@@ -79,6 +80,27 @@ TEST_F(MpiLaunch, RanksThatFitTheCoresAreBoundOthersAreNot) {
     const std::size_t mca = index_of(cmd, "--mca");
     ASSERT_LT(mca + 2, cmd.size());
     EXPECT_EQ(cmd[mca + 1], "mpi_yield_when_idle");
+  }
+}
+
+// 1 + 2 + 3 ranks fit one core (16 at most); 1 + 40 + 3 do not fit two, and
+// the refusal names the participant with the most ranks at its key.
+TEST_F(MpiLaunch, MoreRanksThanTheCoresCanRunAreRefused) {
+  EXPECT_NO_THROW(check_ranks_fit(job_, 1));
+  EXPECT_NO_THROW(check_ranks_fit(job_, 0));  // unknown: mpirun decides
+  std::string text = job_text();
+  text.replace(text.find("ranks: 2"), 8, "ranks: 40");
+  const job::Job wide = job::load_job(scratch_.write("wide.yaml", text));
+  EXPECT_NO_THROW(check_ranks_fit(wide, 3));  // 44 <= 48
+  try {
+    check_ranks_fit(wide, 2);
+    FAIL() << "44 ranks on 2 cores were not refused";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("wide.yaml:7:"), std::string::npos) << what;
+    EXPECT_NE(what.find("participants.soil.ranks"), std::string::npos) << what;
+    EXPECT_NE(what.find("44 ranks"), std::string::npos) << what;
+    EXPECT_NE(what.find("--slurm-script"), std::string::npos) << what;
   }
 }
 
