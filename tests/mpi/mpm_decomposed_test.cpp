@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include "cosim/error.hpp"
@@ -223,6 +224,30 @@ TEST(MpmDecomposed, MovingTheCutsKeepsTheBits) {
     EXPECT_GT(unbalanced, 1.0);
     EXPECT_EQ(partition->cuts(), cuts);
   }
+}
+
+// The coupling's reductions over the ranks (mpm::coupling on ranks): the
+// largest value of each entry, and every rank's values in rank order.
+TEST(MpmDecomposed, MaxAndGatherJoinTheRanks) {
+  const int ranks = world_size();
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  std::vector<int> cuts(static_cast<std::size_t>(ranks) + 1);
+  for (int r = 0; r <= ranks; ++r) cuts[static_cast<std::size_t>(r)] = 4 * r;
+  parallel::MpiGridPartition<2> partition(MPI_COMM_WORLD, cuts, 0.0, 0.05);
+  std::vector<double> values{static_cast<double>(rank), -static_cast<double>(rank),
+                             -std::numeric_limits<double>::infinity()};
+  partition.max(values);
+  EXPECT_EQ(values[0], ranks - 1);
+  EXPECT_EQ(values[1], 0.0);
+  EXPECT_EQ(values[2], -std::numeric_limits<double>::infinity());
+  // Rank r gives r values r + 0.5: 0 from rank 0, an empty rank is fine.
+  const std::vector<double> mine(static_cast<std::size_t>(rank), rank + 0.5);
+  const std::vector<double> all = partition.gather(mine);
+  std::vector<double> expected;
+  for (int r = 0; r < ranks; ++r)
+    expected.insert(expected.end(), static_cast<std::size_t>(r), r + 0.5);
+  EXPECT_EQ(all, expected);
 }
 
 TEST(MpmDecomposed, MoreRanksThanSlabsIsAnInputError) {

@@ -103,13 +103,19 @@ void expect_refused(const std::string& case_text, const std::string& key, int ra
 // partitioned participant: configs/soil_block_into_basin_3d.yaml (a 3D MPM
 // clay block collapsing into a 2D shallow-water basin, the soil's surface
 // the water's bed), to 0.1 s, against the same job with the water on one
-// process. The decomposed shallow water is bitwise the whole one's, so the
-// water's snapshots and the soil's must be the same bit for bit.
-TEST(SweFluidRanks, ACoupledWaterOnTwoRanksGivesTheOneProcessRunBitForBit) {
+// process; and with the soil on 2 ranks too (its bed elevation the envelope
+// of both ranks' points, the traction shared over both ranks' surface
+// points). The decomposed shallow water and MPM are bitwise the whole ones,
+// so the water's snapshots and the soil's must be the same bit for bit.
+TEST(SweFluidRanks, ACoupledWaterAndSoilOnTwoRanksGiveTheOneProcessRunBitForBit) {
   const fs::path configs = fs::path(COSIM_SOURCE_DIR) / "configs";
   const fs::path dir = fresh_directory("swe_fluid_coupled_ranks");
-  for (const int ranks : {1, 2}) {
-    const fs::path run_dir = dir / fmt::format("ranks_{}", ranks);
+  const auto run_dir_of = [&](int soil_ranks, int water_ranks) {
+    return dir / fmt::format("soil_{}_water_{}", soil_ranks, water_ranks);
+  };
+  const std::pair<int, int> layouts[] = {{1, 1}, {1, 2}, {2, 2}};
+  for (const auto& [soil_ranks, water_ranks] : layouts) {
+    const fs::path run_dir = run_dir_of(soil_ranks, water_ranks);
     fs::create_directories(run_dir / "mpm");
     fs::create_directories(run_dir / "swe");
     fs::copy_file(configs / "mpm" / "soil_block_3d.yaml", run_dir / "mpm" / "soil_block_3d.yaml");
@@ -117,26 +123,33 @@ TEST(SweFluidRanks, ACoupledWaterOnTwoRanksGivesTheOneProcessRunBitForBit) {
     std::string job = replaced(read_text(configs / "soil_block_into_basin_3d.yaml"),
                                "end_time: 3.0", "end_time: 0.1\ntransport: mpi");
     job = replaced(job, "    config: swe/basin_2d.yaml\n",
-                   fmt::format("    config: swe/basin_2d.yaml\n    ranks: {}\n", ranks));
+                   fmt::format("    config: swe/basin_2d.yaml\n    ranks: {}\n", water_ranks));
+    job = replaced(job, "    config: mpm/soil_block_3d.yaml\n",
+                   fmt::format("    config: mpm/soil_block_3d.yaml\n    ranks: {}\n", soil_ranks));
     write_text(run_dir / "job.yaml", job);
     const ProcessResult result = cosim_run(run_dir / "job.yaml", run_dir / "run", 240);
     ASSERT_EQ(result.exit_code, 0) << result.output << read_text(run_dir / "run" / "mpirun.log");
   }
-  const fs::path one = dir / "ranks_1" / "run";
-  const fs::path two = dir / "ranks_2" / "run";
-  int compared = 0;
-  for (const auto& [participant, prefix] :
-       {std::pair<std::string, std::string>{"water", "swe_"}, {"soil", "particles_"}})
-    for (const auto& entry : fs::directory_iterator(one / participant)) {
-      const std::string name = entry.path().filename().string();
-      if (name.rfind(prefix, 0) != 0 || entry.path().extension() != ".h5") continue;
-      EXPECT_EQ(hdf5_contents(entry.path()), hdf5_contents(two / participant / name))
-          << participant << "/" << name;
-      ++compared;
-    }
-  EXPECT_GE(compared, 4);
-  EXPECT_EQ(read_text(one / "water" / "gauges.csv"), read_text(two / "water" / "gauges.csv"));
-  EXPECT_EQ(nlohmann::json::parse(read_text(two / "water" / "summary.json"))["windows"], 50);
+  const fs::path one = run_dir_of(1, 1) / "run";
+  for (const auto& [soil_ranks, water_ranks] : {layouts[1], layouts[2]}) {
+    SCOPED_TRACE(fmt::format("soil on {} ranks, water on {}", soil_ranks, water_ranks));
+    const fs::path two = run_dir_of(soil_ranks, water_ranks) / "run";
+    int compared = 0;
+    for (const auto& [participant, prefix] :
+         {std::pair<std::string, std::string>{"water", "swe_"}, {"soil", "particles_"}})
+      for (const auto& entry : fs::directory_iterator(one / participant)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind(prefix, 0) != 0 || entry.path().extension() != ".h5") continue;
+        EXPECT_EQ(hdf5_contents(entry.path()), hdf5_contents(two / participant / name))
+            << participant << "/" << name;
+        ++compared;
+      }
+    EXPECT_GE(compared, 4);
+    EXPECT_EQ(read_text(one / "water" / "gauges.csv"), read_text(two / "water" / "gauges.csv"));
+    EXPECT_EQ(nlohmann::json::parse(read_text(two / "water" / "summary.json"))["windows"], 50);
+    EXPECT_EQ(nlohmann::json::parse(read_text(two / "soil" / "summary.json"))["case"]["ranks"],
+              soil_ranks == 1 ? nlohmann::json() : nlohmann::json(soil_ranks));
+  }
 }
 
 TEST(SweFluidRanks, RefusesBlocksNarrowerThanTheGhostLayers) {

@@ -94,11 +94,26 @@ void add_envelope_averages(const std::vector<Plateau>& plateaus, double x0, doub
   add_segment(x, x1, bottom);
 }
 
+// On ranks: every rank's plateaus on each line, those a higher one of the
+// same rank hides left out (they are hidden among all ranks' too).
+void join_ranks_plateaus(std::vector<std::vector<Plateau>>& on_line, double x0, double x1,
+                         const GatherOverRanks& gather) {
+  std::vector<double> mine;
+  for (std::size_t k = 0; k < on_line.size(); ++k)
+    for (const Plateau& p : visible_plateaus(on_line[k], x0, x1))
+      mine.insert(mine.end(), {static_cast<double>(k), p.from, p.to, p.height});
+  const std::vector<double> all = gather(mine);
+  for (auto& line : on_line) line.clear();
+  for (std::size_t i = 0; i + 3 < all.size(); i += 4)
+    on_line[static_cast<std::size_t>(all[i])].push_back({all[i + 1], all[i + 2], all[i + 3]});
+}
+
 }  // namespace
 
 template <int Dim>
 std::vector<double> bed_elevation(const SurfaceGrid<Dim>& surface, const Particles<Dim>& particles,
-                                  const std::vector<BodyRole>& roles, int strips) {
+                                  const std::vector<BodyRole>& roles, int strips,
+                                  const GatherOverRanks& gather_over_ranks) {
   constexpr int up = Dim - 1;
   std::vector<double> bed(surface.size(), 0.0);
   auto plateau_of = [&](std::size_t p) {
@@ -106,12 +121,15 @@ std::vector<double> bed_elevation(const SurfaceGrid<Dim>& surface, const Particl
     const Vec<Dim>& l = particles.half_length[p];
     return Plateau{x[0] - l[0], x[0] + l[0], x[up] + l[up]};
   };
+  const double x0 = surface.origin[0];
+  const double x1 = x0 + surface.cells[0] * surface.spacing[0];
   if constexpr (Dim == 2) {
-    std::vector<Plateau> plateaus;
+    std::vector<std::vector<Plateau>> plateaus(1);
     for (std::size_t p = 0; p < particles.size(); ++p)
-      if (roles[particles.body[p]].bed) plateaus.push_back(plateau_of(p));
-    add_envelope_averages(plateaus, surface.origin[0], surface.spacing[0], surface.cells[0],
-                          surface.bottom, 1.0, bed.data());
+      if (roles[particles.body[p]].bed) plateaus[0].push_back(plateau_of(p));
+    if (gather_over_ranks) join_ranks_plateaus(plateaus, x0, x1, gather_over_ranks);
+    add_envelope_averages(plateaus[0], x0, surface.spacing[0], surface.cells[0], surface.bottom,
+                          1.0, bed.data());
   } else {
     // Lines across y at the centres of `strips` equal strips of every row of cells.
     const int rows = surface.cells[1];
@@ -129,18 +147,21 @@ std::vector<double> bed_elevation(const SurfaceGrid<Dim>& surface, const Particl
       for (int k = first; k <= last; ++k)
         on_line[static_cast<std::size_t>(k)].push_back(plateau_of(p));
     }
+    if (gather_over_ranks) join_ranks_plateaus(on_line, x0, x1, gather_over_ranks);
     const auto nx = static_cast<std::size_t>(surface.cells[0]);
     for (int k = 0; k < lines; ++k)
-      add_envelope_averages(on_line[static_cast<std::size_t>(k)], surface.origin[0],
-                            surface.spacing[0], surface.cells[0], surface.bottom, 1.0 / strips,
+      add_envelope_averages(on_line[static_cast<std::size_t>(k)], x0, surface.spacing[0],
+                            surface.cells[0], surface.bottom, 1.0 / strips,
                             bed.data() + static_cast<std::size_t>(k / strips) * nx);
   }
   return bed;
 }
 
 template std::vector<double> bed_elevation<2>(const SurfaceGrid<2>&, const Particles<2>&,
-                                              const std::vector<BodyRole>&, int);
+                                              const std::vector<BodyRole>&, int,
+                                              const GatherOverRanks&);
 template std::vector<double> bed_elevation<3>(const SurfaceGrid<3>&, const Particles<3>&,
-                                              const std::vector<BodyRole>&, int);
+                                              const std::vector<BodyRole>&, int,
+                                              const GatherOverRanks&);
 
 }  // namespace mpm::coupling

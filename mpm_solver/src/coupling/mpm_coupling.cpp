@@ -37,6 +37,16 @@ cosim::MeshPart exchange_part(const ExchangeGrid<Dim>& exchange, int factor,
   return cosim::MeshPart::box(mesh, {0, 0, 0}, mesh.cells, owned_lower, owned_upper);
 }
 
+// A rank's part of the surface: every rank holds every column (the
+// surface's values are formed from all ranks' points); the rank of the
+// lowest cell rows owns them all.
+template <int Dim>
+cosim::MeshPart surface_part(const SurfaceGrid<Dim>& surface, std::array<int, 2> mpm_rows) {
+  const cosim::UniformGrid mesh = surface.mesh();
+  const cosim::Index3 none{0, 0, 0};
+  return cosim::MeshPart::box(mesh, none, mesh.cells, none, mpm_rows[0] == 0 ? mesh.cells : none);
+}
+
 template <int Dim>
 std::span<const double> flat(const std::vector<Vec<Dim>>& v) {
   return {v.empty() ? nullptr : v.front().data(), v.size() * static_cast<std::size_t>(Dim)};
@@ -55,8 +65,11 @@ struct MpmCoupling<Dim>::State {
   CouplingDiagnostics<Dim> diagnostics;
   CouplingDiagnostics<Dim> saved_diagnostics;  // at the start of a window that may run again
   std::vector<std::string> held_warnings;      // until the window is complete
-  // On a rank of a decomposed run: every rank's sums over its points.
+  // On a rank of a decomposed run: what joins its points' shares to the
+  // other ranks'.
   SumOverRanks sum_over_ranks;
+  MaxOverRanks max_over_ranks;
+  GatherOverRanks gather_over_ranks;
 
   std::vector<double> cell_values;    // scratch for reads
   std::vector<Vec<Dim>> scratch;      // per particle
@@ -137,7 +150,8 @@ void MpmCoupling<Dim>::State::apply(double dt, Particles<Dim>& particles) {
   if (surface_reads(n::bed_traction)) {
     cell_values.resize(surface->size() * static_cast<std::size_t>(Dim));
     channel->read(n::bed_traction, dt, cell_values);
-    diagnostics.traction_step = surface_traction(*surface, cell_values, particles, roles, scratch);
+    diagnostics.traction_step = surface_traction(*surface, cell_values, particles, roles, scratch,
+                                                 max_over_ranks, sum_over_ranks);
     add_to_force(scratch, 1.0);
   }
   for (std::size_t p = 0; p < particles.size(); ++p) particles.external_force[p] += force[p];
@@ -151,11 +165,10 @@ MpmCoupling<Dim>::MpmCoupling(Solver<Dim>& solver, std::unique_ptr<CouplingChann
   s.roles = body_roles(solver.description(), s.spec);
   if (GridPartition<Dim>* partition = solver.partition()) {
     s.sum_over_ranks = [partition](std::span<double> values) { partition->sum(values); };
-    if (s.spec.surface)
-      throw cosim::InputError(fmt::format(
-          "{}: key 'coupling.surface': the surface (bed elevation and traction) is exchanged "
-          "by an mpm_solver on one rank only; give the participant `ranks: 1`",
-          solver.description().file.string()));
+    s.max_over_ranks = [partition](std::span<double> values) { partition->max(values); };
+    s.gather_over_ranks = [partition](std::span<const double> values) {
+      return partition->gather(values);
+    };
   }
   if (s.spec.exchange_grid)
     s.exchange = ExchangeGrid<Dim>::covering(solver.grid(), s.spec.exchange_grid->factor);
@@ -230,7 +243,12 @@ void MpmCoupling<Dim>::declare() {
     read(f::heat_exchange_energy, 0.0);
   }
   if (s.surface) {
-    s.channel->declare_mesh({n::surface_mesh, s.surface->mesh()});
+    if (s.sum_over_ranks) {
+      s.channel->declare_mesh({n::surface_mesh, s.surface->mesh()},
+                              surface_part(*s.surface, s.solver.partition()->owned_rows()));
+    } else {
+      s.channel->declare_mesh({n::surface_mesh, s.surface->mesh()});
+    }
     if (s.surface_writes(n::bed_elevation))
       s.channel->declare_write(f::bed_elevation.on(n::surface_mesh, Dim));
     if (s.surface_reads(n::bed_traction))
@@ -291,8 +309,8 @@ void MpmCoupling<Dim>::write_fields() {
       s.channel->write(n::solid_heat_capacity, f.solid_heat_capacity);
   }
   if (s.surface && s.surface_writes(n::bed_elevation))
-    s.channel->write(n::bed_elevation,
-                     bed_elevation(*s.surface, particles, s.roles, s.spec.surface->strips));
+    s.channel->write(n::bed_elevation, bed_elevation(*s.surface, particles, s.roles,
+                                                     s.spec.surface->strips, s.gather_over_ranks));
   ++s.diagnostics.writes;
 }
 

@@ -10,7 +10,9 @@ TractionTotals<Dim> surface_traction(const SurfaceGrid<Dim>& surface,
                                      std::span<const double> traction,
                                      const Particles<Dim>& particles,
                                      const std::vector<BodyRole>& roles,
-                                     std::vector<Vec<Dim>>& force) {
+                                     std::vector<Vec<Dim>>& force,
+                                     const MaxOverRanks& max_over_ranks,
+                                     const SumOverRanks& sum_over_ranks) {
   constexpr int up = Dim - 1;
   const std::size_t columns = surface.size();
   const auto dim = static_cast<std::size_t>(Dim);
@@ -29,6 +31,7 @@ TractionTotals<Dim> surface_traction(const SurfaceGrid<Dim>& surface,
     column[p] = surface.column_of(particles.position[p]);
     highest[column[p]] = std::max(highest[column[p]], top(p));
   }
+  if (max_over_ranks) max_over_ranks(highest);
   auto on_surface = [&](std::size_t p) {
     // Strictly less than one particle height below, so a regular layer under the top one is out.
     return takes_traction(p) &&
@@ -45,6 +48,7 @@ TractionTotals<Dim> surface_traction(const SurfaceGrid<Dim>& surface,
       area[column[p]] += face_area(p);
       ++totals.surface_particles;
     }
+  if (sum_over_ranks) sum_over_ranks(area);
   // Force per unit of face area in each column.
   std::vector<Vec<Dim>> per_area(columns, Vec<Dim>::Zero());
   const double cell_area = surface.cell_area();
@@ -67,9 +71,11 @@ TractionTotals<Dim> surface_traction(const SurfaceGrid<Dim>& surface,
 
 template TractionTotals<2> surface_traction<2>(const SurfaceGrid<2>&, std::span<const double>,
                                                const Particles<2>&, const std::vector<BodyRole>&,
-                                               std::vector<Vec<2>>&);
+                                               std::vector<Vec<2>>&, const MaxOverRanks&,
+                                               const SumOverRanks&);
 template TractionTotals<3> surface_traction<3>(const SurfaceGrid<3>&, std::span<const double>,
                                                const Particles<3>&, const std::vector<BodyRole>&,
-                                               std::vector<Vec<3>>&);
+                                               std::vector<Vec<3>>&, const MaxOverRanks&,
+                                               const SumOverRanks&);
 
 }  // namespace mpm::coupling

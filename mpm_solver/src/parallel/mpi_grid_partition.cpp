@@ -294,6 +294,26 @@ void MpiGridPartition<Dim>::sum(std::span<double> values) {
                 comm_);
 }
 
+template <int Dim>
+void MpiGridPartition<Dim>::max(std::span<double> values) {
+  const Stopwatch watch(communication_seconds_);
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MAX,
+                comm_);
+}
+
+template <int Dim>
+std::vector<double> MpiGridPartition<Dim>::gather(std::span<const double> values) {
+  const Stopwatch watch(communication_seconds_);
+  const int mine = static_cast<int>(values.size());
+  std::vector<int> counts(static_cast<std::size_t>(ranks_)), offsets(counts.size(), 0);
+  MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_);
+  for (std::size_t r = 1; r < counts.size(); ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<double> all(static_cast<std::size_t>(offsets.back() + counts.back()));
+  MPI_Allgatherv(values.data(), mine, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
+                 MPI_DOUBLE, comm_);
+  return all;
+}
+
 // The points kept stay in id order and each sender's arrive in id order;
 // one sort by id puts them together as one process holds them.
 template <int Dim>

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "particle_fixtures.hpp"
@@ -134,6 +135,61 @@ TEST(MpmCouplingBedElevation, MatchesTheBruteForceEnvelopeOfAJumbledHeap) {
   std::printf("  %zu points, largest difference from the brute-force envelope %.1e m\n",
               particles.size(), largest_error);
   EXPECT_LT(largest_error, 1e-12);
+}
+
+// The points of `particles` for which keep(p) holds.
+template <int Dim, class Keep>
+Particles<Dim> subset(const Particles<Dim>& particles, Keep keep) {
+  Particles<Dim> part = particles;
+  std::size_t kept = 0;
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    if (!keep(p)) continue;
+    part.for_each_array([&](auto& array) { array[kept] = array[p]; });
+    ++kept;
+  }
+  part.for_each_array([&](auto& array) { array.resize(kept); });
+  return part;
+}
+
+// The same heap held by two ranks, cut at a height (as a decomposed MPM
+// cuts its rows): the lower rank's bed from the plateaus both ranks share
+// (the gather gives its own, then the upper rank's) is the whole heap's.
+TEST(MpmCouplingBedElevation, TwoRanksCutAtAHeightGiveTheWholeHeapsBed) {
+  const Grid<2> g = make_grid<2>(Vec<2>::Zero(), Vec<2>(0.05, 0.05), {40, 20}, ShapeKind::gimp);
+  const auto surface = SurfaceGrid<2>::covering(g, {25});
+  Particles<2> particles;
+  testing::add_block<2>(particles, Vec<2>(0.2, 0.0), Vec<2>(1.2, 0.3), 0.025, 0.4, 2650.0, 0);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (std::size_t p = 0; p < particles.size(); ++p) {
+    particles.position[p][0] += 0.1 * (unit(random) - 0.5);
+    particles.position[p][1] *= 0.5 + unit(random);
+  }
+  const auto roles = testing::porous_roles();
+  const Particles<2> lower =
+      subset(particles, [&](std::size_t p) { return particles.position[p][1] < 0.15; });
+  const Particles<2> upper =
+      subset(particles, [&](std::size_t p) { return particles.position[p][1] >= 0.15; });
+  ASSERT_GT(lower.size(), 0u);
+  ASSERT_GT(upper.size(), 0u);
+  std::vector<double> upper_shares;
+  const auto upper_bed = bed_elevation(surface, upper, roles, 1, [&](std::span<const double> mine) {
+    upper_shares.assign(mine.begin(), mine.end());
+    return std::vector<double>(mine.begin(), mine.end());
+  });
+  const auto bed = bed_elevation(surface, lower, roles, 1, [&](std::span<const double> mine) {
+    std::vector<double> all(mine.begin(), mine.end());
+    all.insert(all.end(), upper_shares.begin(), upper_shares.end());
+    return all;
+  });
+  const auto whole = bed_elevation(surface, particles, roles, 1);
+  double largest = 0.0;
+  for (std::size_t c = 0; c < bed.size(); ++c)
+    largest = std::max(largest, std::abs(bed[c] - whole[c]));
+  std::printf("  two ranks against the whole heap: largest difference %.1e m\n", largest);
+  EXPECT_LT(largest, 1e-12);
+  // The upper rank alone does not see the lower rank's points.
+  EXPECT_NE(upper_bed, whole);
 }
 
 TEST(MpmCouplingBedElevation, OnlyBedBodiesFormTheBed) {

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "mpm/coupling/body_roles.hpp"
+#include "mpm/coupling/over_ranks.hpp"
 #include "mpm/coupling/surface_grid.hpp"
 #include "mpm/particles/particles.hpp"
 
@@ -19,8 +20,11 @@ namespace mpm::coupling {
 // particles move and does not jump when a particle crosses a cell edge. In
 // 3D it is averaged over `strips` lines across each cell in y (a particle
 // entering a strip changes B by at most its height difference / strips).
+// On a rank of a decomposed MPM the envelope is that of every rank's points
+// (`gather_over_ranks`: the plateaus not hidden on their own rank).
 template <int Dim>
 std::vector<double> bed_elevation(const SurfaceGrid<Dim>& surface, const Particles<Dim>& particles,
-                                  const std::vector<BodyRole>& roles, int strips);
+                                  const std::vector<BodyRole>& roles, int strips,
+                                  const GatherOverRanks& gather_over_ranks = {});
 
 }  // namespace mpm::coupling

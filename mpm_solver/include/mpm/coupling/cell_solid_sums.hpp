@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "mpm/coupling/exchange_grid.hpp"
-#include "mpm/coupling/sum_over_ranks.hpp"
+#include "mpm/coupling/over_ranks.hpp"
 
 namespace mpm::coupling {
 

@@ -6,7 +6,7 @@
 
 #include "mpm/coupling/body_roles.hpp"
 #include "mpm/coupling/exchange_grid.hpp"
-#include "mpm/coupling/sum_over_ranks.hpp"
+#include "mpm/coupling/over_ranks.hpp"
 #include "mpm/particles/particles.hpp"
 
 namespace mpm::coupling {

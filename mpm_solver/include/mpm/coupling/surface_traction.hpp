@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "mpm/coupling/body_roles.hpp"
+#include "mpm/coupling/over_ranks.hpp"
 #include "mpm/coupling/surface_grid.hpp"
 #include "mpm/particles/particles.hpp"
 
@@ -30,12 +31,17 @@ struct TractionTotals {
 // to F_c exactly:
 //   force[p] = F_c a_p / sum_q a_q.
 // `traction` holds Dim components per surface cell (horizontal, then
-// vertical) [Pa].
+// vertical) [Pa]. On a rank of a decomposed MPM the columns' highest tops
+// and face areas are every rank's (`max_over_ranks`, `sum_over_ranks`), and
+// each rank gives its own surface particles their forces (`applied` and
+// `surface_particles` are then this rank's).
 template <int Dim>
 TractionTotals<Dim> surface_traction(const SurfaceGrid<Dim>& surface,
                                      std::span<const double> traction,
                                      const Particles<Dim>& particles,
                                      const std::vector<BodyRole>& roles,
-                                     std::vector<Vec<Dim>>& force);
+                                     std::vector<Vec<Dim>>& force,
+                                     const MaxOverRanks& max_over_ranks = {},
+                                     const SumOverRanks& sum_over_ranks = {});
 
 }  // namespace mpm::coupling

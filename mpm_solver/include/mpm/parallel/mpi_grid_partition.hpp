@@ -43,6 +43,8 @@ class MpiGridPartition final : public GridPartition<Dim> {
   void exchange(std::span<const GridArray> arrays) override;
   double max(double local) override;
   void sum(std::span<double> values) override;
+  void max(std::span<double> values) override;
+  std::vector<double> gather(std::span<const double> values) override;
   void migrate(Particles<Dim>& particles) override;
 
   // The points of the fullest rank over the mean (1: balanced) (collective).

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <span>
+#include <vector>
 
 #include "mpm/particles/particles.hpp"
 
@@ -49,6 +50,11 @@ class GridPartition {
   virtual double max(double local) = 0;
   // Every rank's `values` summed, in place (collective).
   virtual void sum(std::span<double> values) = 0;
+  // The largest of every rank's `values`, element by element, in place
+  // (collective; exact).
+  virtual void max(std::span<double> values) = 0;
+  // Every rank's `values` one after the other, in rank order (collective).
+  virtual std::vector<double> gather(std::span<const double> values) = 0;
   // Sends every point another rank owns there and takes in those sent here,
   // keeping the points in id order (collective).
   virtual void migrate(Particles<Dim>& particles) = 0;
