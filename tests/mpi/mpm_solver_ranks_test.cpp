@@ -1,8 +1,9 @@
 // mpm_solver standalone under `mpirun -np N` (label mpi): a sand column
 // collapsing (GIMP, MUSL, Mohr-Coulomb), on 1 process and on 2, 3 and 4
 // ranks whose cuts move to balance the points, must write the same particle
-// snapshots bit for bit (every dataset and attribute, written together by
-// the ranks), the same XDMF index and probes.csv (each probe's point sampled
+// and grid snapshots bit for bit (every dataset and attribute, written
+// together by the ranks, each its owned planes of grid values at the cuts
+// of the moment), the same XDMF indices and probes.csv (each probe's point sampled
 // by the rank holding it), the same steps, and the totals of one process to round-off (the ranks
 // sum them in another order); cases a decomposed run cannot take, and an output directory already
 // in use, are refused with exit 2, nothing lost. Windows that run again
@@ -64,7 +65,7 @@ boundaries: {x_min: slip, x_max: slip, y_min: fixed, y_max: free}
 probes:
   - {name: toe, body: column, position: [0.095, 0.005]}
   - {name: top, body: column, position: [0.005, 0.195]}
-output: {every: 0.02, probe_every: 0.005}
+output: {every: 0.02, probe_every: 0.005, grid: true}
 threads: 1
 )";
 
@@ -85,14 +86,15 @@ TEST(MpmSolverRanks, EveryRankCountWritesTheFilesOfOneProcess) {
     const fs::path out = dir / ("ranks_" + std::to_string(ranks));
     const ProcessResult split = run_mpm(config, out, ranks);
     ASSERT_EQ(split.exit_code, 0) << split.output;
-    for (const char* file : {"particles.xdmf", "probes.csv"})
+    for (const char* file : {"particles.xdmf", "grid.xdmf", "probes.csv"})
       EXPECT_EQ(read_text(out / file), read_text(dir / "one_process" / file))
           << file << " on " << ranks << " ranks";
-    for (std::size_t s = 0; s < snapshots; ++s) {
-      const std::string file = "particles_00000" + std::to_string(s) + ".h5";
-      EXPECT_EQ(hdf5_contents(out / file), hdf5_contents(dir / "one_process" / file))
-          << file << " on " << ranks << " ranks";
-    }
+    for (std::size_t s = 0; s < snapshots; ++s)
+      for (const char* base : {"particles", "grid"}) {
+        const std::string file = fmt::format("{}_{:06d}.h5", base, s);
+        EXPECT_EQ(hdf5_contents(out / file), hdf5_contents(dir / "one_process" / file))
+            << file << " on " << ranks << " ranks";
+      }
     const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
     EXPECT_EQ(summary["steps"], reference["steps"]);
     EXPECT_EQ(summary["case"]["ranks"], ranks);
@@ -120,8 +122,6 @@ void expect_refused(const std::string& case_text, const std::string& key, int ra
 }
 
 TEST(MpmSolverRanks, RefusesWhatADecomposedRunCannotTake) {
-  expect_refused(replaced(column_case, "probe_every: 0.005}", "probe_every: 0.005, grid: true}"),
-                 "output.grid", 2);
   expect_refused(replaced(column_case, "    cohesion: 0\n",
                           "    cohesion: 0\n    specific_heat: 800\n    thermal_conductivity: 2\n"),
                  "thermal", 2);

@@ -38,7 +38,19 @@ std::vector<double> values_of(const std::array<decomposition::Range, 3>& cells, 
   return values;
 }
 
-void check_against_one_process(int dim, std::array<int, 3> cells, const std::string& name) {
+// `counts` values per direction (cells, or nodes for a node grid). The
+// first snapshot is written by the blocks of a Cartesian decomposition, the
+// second by slabs along the last direction in reverse rank order
+// (set_block: cuts that moved).
+std::array<decomposition::Range, 3> whole_of(const std::array<int, 3>& counts) {
+  return {decomposition::Range{0, counts[0]}, decomposition::Range{0, counts[1]},
+          decomposition::Range{0, counts[2]}};
+}
+
+void check_against_one_process(int dim, std::array<int, 3> counts_per_direction,
+                               const std::string& name,
+                               GridLocation location = GridLocation::cell) {
+  const std::array<int, 3>& cells = counts_per_direction;
   int ranks = 1, rank = 0;
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -57,8 +69,9 @@ void check_against_one_process(int dim, std::array<int, 3> cells, const std::str
   grid.dim = dim;
   grid.origin = {-1.0, 0.5, 2.0};
   grid.spacing = {0.5, 0.25, 0.125};
-  grid.cells = {cells[0], cells[1], cells[2]};
-  grid.location = GridLocation::cell;
+  const int node = location == GridLocation::node ? 1 : 0;
+  grid.cells = {cells[0] - node, dim > 1 ? cells[1] - node : 1, dim > 2 ? cells[2] - node : 1};
+  grid.location = location;
   const Mesh mesh{"cells", grid};
   std::array<std::int64_t, 3> counts{cells[0], cells[1], cells[2]};
   const auto dims =
@@ -67,13 +80,16 @@ void check_against_one_process(int dim, std::array<int, 3> cells, const std::str
   const decomposition::Block block = decomposition.block(rank);
 
   PartitionedSnapshotWriter together(MPI_COMM_WORLD, dir / "together", "s", mesh, block.cells);
-  const std::array<decomposition::Range, 3> whole{decomposition::Range{0, cells[0]},
-                                                  decomposition::Range{0, cells[1]},
-                                                  decomposition::Range{0, cells[2]}};
+  const std::array<decomposition::Range, 3> whole = whole_of(cells);
+  std::array<decomposition::Range, 3> slab = whole_of(cells);
+  slab[static_cast<std::size_t>(dim - 1)] =
+      decomposition::even_range(cells[static_cast<std::size_t>(dim - 1)], ranks, ranks - 1 - rank);
   for (int snapshot = 0; snapshot < 2; ++snapshot) {
-    const std::vector<double> depth = values_of(block.cells, 1, snapshot);
-    const std::vector<double> velocity = values_of(block.cells, dim, snapshot);
-    const std::vector<double> stress = values_of(block.cells, 6, snapshot);
+    const auto& mine = snapshot == 0 ? block.cells : slab;
+    if (snapshot == 1) together.set_block(slab);
+    const std::vector<double> depth = values_of(mine, 1, snapshot);
+    const std::vector<double> velocity = values_of(mine, dim, snapshot);
+    const std::vector<double> stress = values_of(mine, 6, snapshot);
     together.write(0.5 * snapshot, {{"depth", {depth, 1, "m"}},
                                     {"velocity", {velocity, dim, "m/s"}},
                                     {"stress", {stress, 6, "Pa"}}});
@@ -107,6 +123,12 @@ TEST(PartitionedSnapshotWriter, WritesTheFilesOfOneProcessIn2D) {
 
 TEST(PartitionedSnapshotWriter, WritesTheFilesOfOneProcessIn3D) {
   check_against_one_process(3, {7, 6, 5}, "3d");
+}
+
+// The node values of a grid (a decomposed MPM's grid snapshots).
+TEST(PartitionedSnapshotWriter, WritesTheFilesOfOneProcessForGridNodes) {
+  check_against_one_process(2, {13, 9, 1}, "nodes_2d", GridLocation::node);
+  check_against_one_process(3, {5, 4, 6}, "nodes_3d", GridLocation::node);
 }
 
 // The directory rank 0 made, on every rank.
@@ -227,10 +249,16 @@ TEST(PartitionedSnapshotWriter, RefusesRanksThatNameDifferentFiles) {
   }
 }
 
-TEST(PartitionedSnapshotWriter, RefusesAMeshThatIsNotAGridOfCells) {
-  const auto [nodes, block] = square_grid(4, GridLocation::node);
+TEST(PartitionedSnapshotWriter, RefusesAMeshThatIsNotAGridAndABlockOutsideIt) {
+  const auto [cells, block] = square_grid(4, GridLocation::cell);
+  UniformGrid line = cells;
+  line.dim = 1;
+  EXPECT_THROW(PartitionedSnapshotWriter(MPI_COMM_WORLD, "never_made", "s", {"line", line}, block),
+               InputError);
+  auto outside = block;
+  outside[0].end = 6;
   EXPECT_THROW(
-      PartitionedSnapshotWriter(MPI_COMM_WORLD, "never_made", "s", {"nodes", nodes}, block),
+      PartitionedSnapshotWriter(MPI_COMM_WORLD, "never_made", "s", {"cells", cells}, outside),
       InputError);
   EXPECT_FALSE(fs::exists("never_made"));
 }

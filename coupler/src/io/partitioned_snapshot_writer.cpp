@@ -16,12 +16,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const UniformGrid& cell_grid(const Mesh& mesh) {
+const UniformGrid& split_grid(const Mesh& mesh) {
   const auto* grid = std::get_if<UniformGrid>(&mesh.geometry);
-  if (!grid || grid->dim < 2 || grid->location != GridLocation::cell)
+  if (!grid || grid->dim < 2)
     throw InputError(fmt::format(
-        "partitioned snapshots of mesh '{}': only 2D and 3D uniform grids of cells split",
-        mesh.name));
+        "partitioned snapshots of mesh '{}': only 2D and 3D uniform grids split", mesh.name));
   return *grid;
 }
 
@@ -137,18 +136,22 @@ class PartitionedFiles {
 PartitionedSnapshotWriter::PartitionedSnapshotWriter(
     MPI_Comm comm, fs::path directory, std::string base_name, Mesh mesh,
     const std::array<decomposition::Range, 3>& block)
-    : mesh_(std::move(mesh)), block_(block) {
+    : mesh_(std::move(mesh)) {
   validate(mesh_);
-  const UniformGrid& grid = cell_grid(mesh_);
-  for (std::size_t d = 0; d < 3; ++d) {
-    const std::int64_t cells = static_cast<int>(d) < grid.dim ? grid.cells[d] : 1;
-    if (block_[d].begin < 0 || block_[d].end > cells || block_[d].size() < 1)
-      throw InputError(
-          fmt::format("partitioned snapshots of mesh '{}': a block [{}, {}) outside its {} cells "
-                      "in direction {}",
-                      mesh_.name, block_[d].begin, block_[d].end, cells, d));
-  }
+  set_block(block);
   files_ = std::make_unique<PartitionedFiles>(comm, std::move(directory), std::move(base_name));
+}
+
+void PartitionedSnapshotWriter::set_block(const std::array<decomposition::Range, 3>& block) {
+  const Index3 extent = split_grid(mesh_).extent();
+  for (std::size_t d = 0; d < 3; ++d) {
+    if (block[d].begin < 0 || block[d].end > extent[d] || block[d].size() < 1)
+      throw InputError(
+          fmt::format("partitioned snapshots of mesh '{}': a block [{}, {}) outside its {} "
+                      "values in direction {}",
+                      mesh_.name, block[d].begin, block[d].end, extent[d], d));
+  }
+  block_ = block;
 }
 
 PartitionedSnapshotWriter::~PartitionedSnapshotWriter() = default;
@@ -171,10 +174,10 @@ void PartitionedSnapshotWriter::write(double time, const SnapshotFields& fields)
     if (field.components < 1 ||
         field.values.size() != cells * static_cast<std::size_t>(field.components))
       throw InputError(fmt::format(
-          "partitioned snapshots '{}': field '{}' has {} values; the block has {} cells x {} "
+          "partitioned snapshots '{}': field '{}' has {} values; the block has {} values x {} "
           "components",
           files_->base_name(), name, field.values.size(), cells, field.components));
-  const int dim = cell_grid(mesh_).dim;
+  const int dim = split_grid(mesh_).dim;
   files_->write(
       time,
       [&](hdf5::OutputFile& file, hid_t transfer) {

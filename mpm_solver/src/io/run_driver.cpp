@@ -119,6 +119,8 @@ template <int Dim>
 struct RunRanks {
   std::shared_ptr<GridPartition<Dim>> partition;
   std::function<std::unique_ptr<cosim::PointCloudSink>()> particle_snapshots;
+  // The grid snapshots the ranks write together (output.grid).
+  std::function<GridSnapshotWriter<Dim>(const Grid<Dim>&)> grid_snapshots;
   // The points of the fullest rank over the mean, and new cuts when that
   // passes the threshold (true: the solver must repartition); collective.
   std::function<double(const Particles<Dim>&)> imbalance;
@@ -190,7 +192,11 @@ class CaseRun {
                       ranks_.writes_tables);
     if (solver_.description().output.grid) {
       if (GridSnapshotWriter<Dim>::supports(solver_.description().shape)) {
-        grid_.emplace(options_.output, solver_.grid());
+        if (ranks_.grid_snapshots) {
+          grid_.emplace(ranks_.grid_snapshots(solver_.grid()));
+        } else {
+          grid_.emplace(options_.output, solver_.grid());
+        }
       } else {
         spdlog::warn(
             "output.grid: no grid snapshots for the {} shape (its grid values are B-spline "
@@ -253,13 +259,14 @@ class CaseRun {
       // Inside a window that may run again, outputs and progress wait for its end.
       if (window_may_repeat_ && !observer_->is_window_complete()) continue;
       window_may_repeat_ = false;
-      // The cuts move only where no window may run again: its start's points
-      // are each rank's by the cuts they had then.
+      write_held_outputs();
+      // The cuts move only where no window may run again (its start's points
+      // are each rank's by the cuts they had then), after the held grid
+      // snapshots are written by the ranks that held them.
       if (balance_due_) {
         balance_due_ = false;
         balance_ranks();
       }
-      write_held_outputs();
       if (observer_ && observer_->must_write_checkpoint()) write_checkpoint();
 
       const auto wall = Clock::now();
@@ -525,7 +532,6 @@ void refuse_what_ranks_cannot_run(const CaseDescription& c, int ranks) {
                                         c.file.string(), key, what, ranks));
   };
   if (c.thermal.enabled) refuse("thermal", "a case that conducts heat");
-  if (c.output.grid) refuse("output.grid", "a case with grid snapshots");
 }
 
 template <int Dim>
@@ -543,6 +549,24 @@ void run_decomposed_dimension(const CaseDescription& description, const RunOptio
   ranks.particle_snapshots = [&options, points, comm] {
     return std::make_unique<cosim::PartitionedPointCloudWriter>(comm, options.output, "particles",
                                                                 "particles", Dim, points);
+  };
+  ranks.grid_snapshots = [&options, comm](const Grid<Dim>& grid) {
+    const cosim::Mesh mesh = GridSnapshotWriter<Dim>::node_mesh(grid);
+    const cosim::Index3 extent = std::get<cosim::UniformGrid>(mesh.geometry).extent();
+    // The whole grid's nodes along the other directions, the planes along the last.
+    const auto block_of = [extent](std::array<int, 2> planes) {
+      std::array<cosim::decomposition::Range, 3> block{};
+      for (std::size_t d = 0; d < 3; ++d) block[d] = {0, extent[d]};
+      block[Dim - 1] = {planes[0], planes[1]};
+      return block;
+    };
+    auto sink = std::make_unique<cosim::PartitionedSnapshotWriter>(
+        comm, options.output, "grid", mesh,
+        block_of({grid.owned_first_plane, grid.owned_first_plane + grid.owned_planes}));
+    cosim::PartitionedSnapshotWriter* writer = sink.get();
+    return GridSnapshotWriter<Dim>(
+        std::move(sink), grid,
+        [writer, block_of](std::array<int, 2> planes) { writer->set_block(block_of(planes)); });
   };
   ranks.imbalance = [partition](const Particles<Dim>& p) { return partition->imbalance(p); };
   ranks.rebalance = [partition](const Particles<Dim>& p) {

@@ -29,20 +29,26 @@ class PartitionedFiles;
 // its block. Files are staged and renamed once complete, as SnapshotWriter's.
 class PartitionedSnapshotWriter final : public SnapshotSink {
  public:
-  // `mesh`: the whole grid (a UniformGrid of 2 or 3 dimensions with values
-  // at the cells); `block`: this rank's cells per direction (x first). The
-  // ranks' blocks must tile the grid. Collective. Throws InputError for
-  // another mesh or a block outside the grid.
+  // `mesh`: the whole grid (a UniformGrid of 2 or 3 dimensions, values at
+  // the cells or at the nodes); `block`: this rank's values (cells or nodes)
+  // per direction (x first). The ranks' blocks must tile the grid's values.
+  // Collective. Throws InputError for another mesh or a block outside the
+  // grid.
   PartitionedSnapshotWriter(MPI_Comm comm, std::filesystem::path directory, std::string base_name,
                             Mesh mesh, const std::array<decomposition::Range, 3>& block);
   ~PartitionedSnapshotWriter();
   PartitionedSnapshotWriter(const PartitionedSnapshotWriter&) = delete;
   PartitionedSnapshotWriter& operator=(const PartitionedSnapshotWriter&) = delete;
 
-  // Appends a snapshot at `time` [s]. Each field holds the block's cells x
-  // components values, the block's cells x fastest (InputError naming the
+  // Appends a snapshot at `time` [s]. Each field holds the block's values x
+  // components values, the block's values x fastest (InputError naming the
   // field otherwise). Every rank calls it with the same fields (collective).
   void write(double time, const SnapshotFields& fields) override;
+
+  // This rank's block from the next snapshot on (the ranks' blocks must
+  // still tile the grid: a decomposition whose cuts moved). InputError for a
+  // block outside the grid.
+  void set_block(const std::array<decomposition::Range, 3>& block);
 
   std::size_t snapshots_written() const override;
   std::filesystem::path index_path() const;

@@ -1,6 +1,9 @@
 #pragma once
 
+#include <array>
 #include <filesystem>
+#include <functional>
+#include <memory>
 #include <vector>
 
 #include "cosim/io/snapshot_writer.hpp"
@@ -24,6 +27,16 @@ class GridSnapshotWriter {
   static bool supports(ShapeKind shape) { return shape != ShapeKind::quadratic_bspline; }
 
   GridSnapshotWriter(const std::filesystem::path& directory, const Grid<Dim>& grid);
+  // On a rank of a decomposed run (issue 27): the rank's owned planes of
+  // grid values into `sink`, a writer the ranks share. The planes a rank
+  // owns move with the cuts: before each snapshot is written,
+  // `select_planes` tells the sink the planes [first, end) (along the last
+  // direction, of node_mesh(grid)) the rank owned when it was taken.
+  using SelectPlanes = std::function<void(std::array<int, 2> planes)>;
+  GridSnapshotWriter(std::unique_ptr<cosim::SnapshotSink> sink, const Grid<Dim>& grid,
+                     SelectPlanes select_planes);
+  // The whole grid's nodes, as the snapshots give them.
+  static cosim::Mesh node_mesh(const Grid<Dim>& grid);
   void write(double time, const Grid<Dim>& grid);
 
   // A snapshot taken now and kept in memory until write_held() writes it,
@@ -33,15 +46,17 @@ class GridSnapshotWriter {
   void drop_held() { held_ = 0; }
   std::size_t held() const { return held_; }
 
-  std::size_t snapshots_written() const { return writer_.snapshots_written(); }
+  std::size_t snapshots_written() const { return writer_->snapshots_written(); }
 
  private:
   struct Snapshot {
     double time = 0.0;
+    std::array<int, 2> planes{};
     std::vector<double> mass, velocity;
   };
 
-  cosim::SnapshotWriter writer_;
+  std::unique_ptr<cosim::SnapshotSink> writer_;
+  SelectPlanes select_planes_;       // on ranks
   std::vector<Snapshot> snapshots_;  // the first held_ are held
   std::size_t held_ = 0;
 };
