@@ -104,7 +104,8 @@ template <int Dim>
 void MpmCoupling<Dim>::State::apply_heat(double dt, Particles<Dim>& particles) {
   cell_values.resize(exchange->size());
   channel->read_increment(names::heat, dt, cell_values);
-  const HeatSplit split = split_heat(*exchange, cell_values, particles, particle_heat);
+  const HeatSplit split =
+      split_heat(*exchange, cell_values, particles, particle_heat, sum_over_ranks);
   diagnostics.heat_step = split;
   diagnostics.heat_total.received += split.received;
   diagnostics.heat_total.applied += split.applied;
@@ -302,7 +303,7 @@ void MpmCoupling<Dim>::write_fields() {
       s.channel->write(n::solid_volume_flux, f.solid_volume_flux);
   }
   if (s.exchange_writes(n::solid_temperature) || s.exchange_writes(n::solid_heat_capacity)) {
-    const ThermalFields f = thermal_fields(*s.exchange, particles);
+    const ThermalFields f = thermal_fields(*s.exchange, particles, s.sum_over_ranks);
     if (s.exchange_writes(n::solid_temperature))
       s.channel->write(n::solid_temperature, f.solid_temperature);
     if (s.exchange_writes(n::solid_heat_capacity))

@@ -3,7 +3,8 @@
 namespace mpm::coupling {
 
 template <int Dim>
-ThermalFields thermal_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& particles) {
+ThermalFields thermal_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& particles,
+                             const SumOverRanks& sum_over_ranks) {
   const std::size_t n = grid.size();
   std::vector<double> capacity(n, 0.0), energy(n, 0.0);
   double total_capacity = 0.0, total_energy = 0.0;
@@ -18,6 +19,17 @@ ThermalFields thermal_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>
                                  capacity[c] += w * C;
                                  energy[c] += w * CT;
                                });
+  }
+  if (sum_over_ranks) {
+    std::vector<double> packed(capacity);
+    packed.insert(packed.end(), energy.begin(), energy.end());
+    packed.insert(packed.end(), {total_capacity, total_energy});
+    sum_over_ranks(packed);
+    std::copy(packed.begin(), packed.begin() + static_cast<std::ptrdiff_t>(n), capacity.begin());
+    std::copy(packed.begin() + static_cast<std::ptrdiff_t>(n),
+              packed.begin() + static_cast<std::ptrdiff_t>(2 * n), energy.begin());
+    total_capacity = packed[2 * n];
+    total_energy = packed[2 * n + 1];
   }
   const double solid_mean = total_capacity > 0.0 ? total_energy / total_capacity : 0.0;
   ThermalFields out;
@@ -40,7 +52,9 @@ ThermalFields thermal_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>
   return out;
 }
 
-template ThermalFields thermal_fields<2>(const ExchangeGrid<2>&, const Particles<2>&);
-template ThermalFields thermal_fields<3>(const ExchangeGrid<3>&, const Particles<3>&);
+template ThermalFields thermal_fields<2>(const ExchangeGrid<2>&, const Particles<2>&,
+                                         const SumOverRanks&);
+template ThermalFields thermal_fields<3>(const ExchangeGrid<3>&, const Particles<3>&,
+                                         const SumOverRanks&);
 
 }  // namespace mpm::coupling

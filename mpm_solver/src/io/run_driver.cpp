@@ -524,16 +524,6 @@ void run_loaded(const RunOptions& options, const StepObservers& observers,
 // the points (checked every check_every steps).
 constexpr double rebalance_threshold = 1.1;
 
-// What a decomposed run cannot do yet; each refusal names the case file and
-// the key (exit 2).
-void refuse_what_ranks_cannot_run(const CaseDescription& c, int ranks) {
-  const auto refuse = [&](const char* key, const char* what) {
-    throw cosim::InputError(fmt::format("{}: key '{}': {} runs on one process; mpirun started {}",
-                                        c.file.string(), key, what, ranks));
-  };
-  if (c.thermal.enabled) refuse("thermal", "a case that conducts heat");
-}
-
 template <int Dim>
 void run_decomposed_dimension(const CaseDescription& description, const RunOptions& options,
                               cosim::RunSummary& summary, const std::vector<int>& cuts,
@@ -607,7 +597,6 @@ int run_decomposed(const RunOptions& options, const cosim::runtime::MpiSession& 
       summary.set_config(std::filesystem::absolute(options.config),
                          cosim::hash_file(options.config));
     }
-    refuse_what_ranks_cannot_run(description, mpi.ranks());
     std::vector<int> cuts;
     try {
       cuts = parallel::balanced_row_cuts(description, mpi.ranks());

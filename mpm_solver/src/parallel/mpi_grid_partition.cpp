@@ -220,7 +220,8 @@ void MpiGridPartition<Dim>::transfer(std::span<const GridArray> arrays, bool to_
     if (planes == 0) return;
     for (const GridArray& a : arrays) {
       const auto c = static_cast<std::size_t>(a.components);
-      for (int field = 0; field < fields_; ++field) {
+      const int blocks = a.fields > 0 ? a.fields : fields_;
+      for (int field = 0; field < blocks; ++field) {
         const std::size_t value =
             static_cast<std::size_t>(field) * stored_values +
             static_cast<std::size_t>(range[0] - me.stored_first) * plane_size_;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <limits>
 #include <map>
@@ -13,6 +14,7 @@
 #include "mpm/particles/particles.hpp"
 #include "mpm/shape/grid_geometry.hpp"
 #include "mpm/shape/stencil.hpp"
+#include "mpm/solver/grid_partition.hpp"
 #include "particle_bins.hpp"
 
 namespace mpm::detail {
@@ -58,23 +60,35 @@ class HeatConduction {
   // `body_conductivity`: k of each body's solid [W/(m K)] (0 when not thermal).
   HeatConduction(const ThermalSpec& spec, std::vector<double> body_conductivity,
                  const FaceValues& faces, const Grid<Dim>& grid)
-      : conductivity_(std::move(body_conductivity)) {
+      : spec_(spec), conductivity_(std::move(body_conductivity)) {
+    attach(faces, grid, nullptr);
+  }
+
+  // The grid values it works on: on a rank of a decomposed run, the stored
+  // planes of `grid` (again whenever they change), whose ghosts `partition`
+  // sums into their owners and refreshes from them.
+  void attach(const FaceValues& faces, const Grid<Dim>& grid, GridPartition<Dim>* partition) {
+    partition_ = partition;
     std::map<std::size_t, std::pair<double, int>>
         held;  // grid value: sum of face temperatures, faces
-    for (std::size_t f = 0; f < spec.faces.size(); ++f) {
-      if (spec.faces[f].kind != FaceTemperature::Kind::fixed) continue;
+    for (std::size_t f = 0; f < spec_.faces.size(); ++f) {
+      if (spec_.faces[f].kind != FaceTemperature::Kind::fixed) continue;
       for (const std::size_t v : faces[f]) {
-        held[v].first += spec.faces[f].temperature;
+        held[v].first += spec_.faces[f].temperature;
         ++held[v].second;
       }
     }
+    fixed_.clear();
     for (const auto& [v, sum] : held) fixed_.push_back({v, sum.first / sum.second});
     change_at_fixed_.assign(fixed_.size(), 0.0);
     odd_heat_capacity_.assign(grid.size(), 0.0);
     odd_temperature_.assign(grid.size(), 0.0);
     odd_heat_rate_.assign(grid.size(), 0.0);
     node_position_.resize(grid.size());
-    for (std::size_t i = 0; i < grid.size(); ++i) node_position_[i] = grid.position(i);
+    for (std::size_t i = 0; i < grid.size(); ++i)
+      node_position_[i] = grid.position(grid.flat_of_stored(i));
+    owned_ = {grid.owned_begin(), grid.owned_end()};
+    first_ = grid.first_value();
   }
 
   double conductivity(const Particles<Dim>& particles, std::size_t p) const {
@@ -101,12 +115,19 @@ class HeatConduction {
       double* heat_capacity = parity == 0 ? grid.heat_capacity.data() : odd_heat_capacity_.data();
       double* temperature = parity == 0 ? grid.temperature.data() : odd_temperature_.data();
       double* heat_rate = parity == 0 ? grid.heat_rate.data() : odd_heat_rate_.data();
-      stencil.for_each([&](std::size_t i, double N, const Vec<Dim>&) {
+      stencil.for_each([&](std::size_t flat, double N, const Vec<Dim>&) {
+        const std::size_t i = flat - first_;
         heat_capacity[i] += N * C;
         temperature[i] += N * C * (T + gradient.dot(node_position_[i] - x));
         heat_rate[i] += N * Q;
       });
     });
+    if (partition_) {
+      const GridArray sums[] = {one(grid.heat_capacity), one(grid.temperature),
+                                one(grid.heat_rate),     one(odd_heat_capacity_),
+                                one(odd_temperature_),   one(odd_heat_rate_)};
+      partition_->accumulate(sums);
+    }
     add_odd_partials(grid.heat_capacity, odd_heat_capacity_, false);
     add_odd_partials(grid.temperature, odd_temperature_, false);
     add_odd_partials(grid.heat_rate, odd_heat_rate_, false);
@@ -116,6 +137,14 @@ class HeatConduction {
     for (std::size_t k = 0; k < fixed_.size(); ++k)
       change_at_fixed_[k] = fixed_[k].temperature - grid.temperature[fixed_[k].value];
     for (const FixedValue& fixed : fixed_) grid.temperature[fixed.value] = fixed.temperature;
+    if (partition_) {
+      // The ghosts take their owners' T_i and C_i; their rates start again
+      // from 0 for the conduction's partial sums.
+      const GridArray refreshed[] = {one(grid.temperature), one(grid.heat_capacity)};
+      partition_->exchange(refreshed);
+      for (std::size_t i = 0; i < grid.size(); ++i)
+        if (!owns(i)) grid.heat_rate[i] = 0.0;
+    }
   }
 
   // grad T_p, kept for the next step's transfer, and the conduction rates
@@ -129,20 +158,26 @@ class HeatConduction {
       stencil.evaluate(particles.position[p], particles.half_length[p], geometry);
       Vec<Dim>& gradient = particles.temperature_gradient[p];
       gradient.setZero();
-      stencil.for_each([&](std::size_t i, double, const Vec<Dim>& grad_N) {
-        gradient += grad_N * grid.temperature[i];
+      stencil.for_each([&](std::size_t flat, double, const Vec<Dim>& grad_N) {
+        gradient += grad_N * grid.temperature[flat - first_];
       });
       const double Vk = particles.volume[p] * conductivity(particles, p);
       if (Vk <= 0.0) return;
       const Vec<Dim> flux = Vk * gradient;
       double* heat_rate = parity == 0 ? grid.heat_rate.data() : odd_heat_rate_.data();
-      stencil.for_each(
-          [&](std::size_t i, double, const Vec<Dim>& grad_N) { heat_rate[i] -= grad_N.dot(flux); });
+      stencil.for_each([&](std::size_t flat, double, const Vec<Dim>& grad_N) {
+        heat_rate[flat - first_] -= grad_N.dot(flux);
+      });
     });
+    if (partition_) {
+      const GridArray sums[] = {one(grid.heat_rate), one(odd_heat_rate_)};
+      partition_->accumulate(sums);
+    }
     add_odd_partials(grid.heat_rate, odd_heat_rate_, false);
   }
 
-  // dT_i over the step; returns the heat the fixed-temperature faces put in [J].
+  // dT_i over the step; returns the heat the fixed-temperature faces put in
+  // [J] (on a rank: through the values it owns).
   double integrate(double dt, Grid<Dim>& grid) const {
     for (std::size_t i = 0; i < grid.size(); ++i)
       grid.temperature_change[i] =
@@ -152,7 +187,13 @@ class HeatConduction {
       const std::size_t i = fixed_[k].value;
       if (!(grid.heat_capacity[i] > 0.0)) continue;
       grid.temperature_change[i] = change_at_fixed_[k];
-      through_faces += grid.heat_capacity[i] * grid.temperature_change[i] - dt * grid.heat_rate[i];
+      if (owns(i))
+        through_faces +=
+            grid.heat_capacity[i] * grid.temperature_change[i] - dt * grid.heat_rate[i];
+    }
+    if (partition_) {
+      const GridArray changed[] = {one(grid.temperature_change)};
+      partition_->exchange(changed);
     }
     return through_faces;
   }
@@ -165,8 +206,9 @@ class HeatConduction {
       Stencil<Dim, Kernel> stencil;
       stencil.evaluate(particles.position[p], particles.half_length[p], geometry);
       double dT = 0.0;
-      stencil.for_each(
-          [&](std::size_t i, double N, const Vec<Dim>&) { dT += N * grid.temperature_change[i]; });
+      stencil.for_each([&](std::size_t flat, double N, const Vec<Dim>&) {
+        dT += N * grid.temperature_change[flat - first_];
+      });
       particles.temperature[p] += dT;
     });
   }
@@ -180,17 +222,25 @@ class HeatConduction {
       if (particles.heat_capacity[p] > 0.0)
         kappa = std::max(
             kappa, conductivity(particles, p) * particles.volume[p] / particles.heat_capacity[p]);
+    if (partition_) kappa = partition_->max(kappa);
     return kappa > 0.0 ? safety * min_spacing * min_spacing / (2.0 * Dim * kappa)
                        : std::numeric_limits<double>::infinity();
   }
 
  private:
+  static GridArray one(std::vector<double>& values) { return {values.data(), 1, 1}; }
+  bool owns(std::size_t i) const { return i >= owned_[0] && i < owned_[1]; }
+
   struct FixedValue {
     std::size_t value = 0;
     double temperature = 0.0;  // mean over the faces it lies on
   };
 
+  ThermalSpec spec_;
   std::vector<double> conductivity_;  // per body
+  GridPartition<Dim>* partition_ = nullptr;
+  std::array<std::size_t, 2> owned_{};  // the stored values this rank owns
+  std::size_t first_ = 0;               // the stencils' flat index of stored value 0
   std::vector<FixedValue> fixed_;
   std::vector<double> change_at_fixed_;  // per fixed value, this step
   std::vector<Vec<Dim>> node_position_;  // per grid value

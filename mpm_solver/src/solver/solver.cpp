@@ -281,10 +281,6 @@ void Solver<Dim>::Impl::allocate_grid(int field_count) {
 // values they touch (architecture.md §15).
 template <int Dim>
 void Solver<Dim>::Impl::restrict_to(std::shared_ptr<GridPartition<Dim>> part) {
-  if (heat)
-    throw cosim::InputError(
-        "thermal: a case that conducts heat runs on one process only, not decomposed over "
-        "ranks");
   partition = std::move(part);
   const auto rows = partition->owned_rows();
   const auto owns = [&](int row) { return row >= rows[0] && row < rows[1]; };
@@ -321,6 +317,10 @@ void Solver<Dim>::Impl::store_planes_of_owned_rows() {
   grid.owned_planes = ranges.owned_end - ranges.owned_first;
   allocate_grid(grid.fields);
   faces = detail::face_values(grid);
+  if (heat) {
+    grid.allocate_heat();
+    heat->attach(faces, grid, partition.get());
+  }
   partition->set_planes(ranges, grid.plane_size(), grid.fields);
 }
 
@@ -877,7 +877,11 @@ Totals<Dim> Solver<Dim>::Impl::totals() const {
                              t.external_work,
                              t.internal_work};
     for (int d = 0; d < Dim; ++d) sums.push_back(t.momentum[d]);
+    sums.insert(sums.end(), {t.thermal_energy, t.external_heat, t.heat_through_faces});
     partition->sum(sums);
+    t.thermal_energy = sums[8 + Dim];
+    t.external_heat = sums[9 + Dim];
+    t.heat_through_faces = sums[10 + Dim];
     t.mass = sums[0];
     t.kinetic_energy = sums[1];
     t.strain_energy = sums[2];

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "mpm/coupling/exchange_grid.hpp"
+#include "mpm/coupling/over_ranks.hpp"
 #include "mpm/particles/particles.hpp"
 
 namespace mpm::coupling {
@@ -28,6 +29,7 @@ struct HeatSplit {
 // by their heat capacity, or absorbs it when none has any.
 template <int Dim>
 HeatSplit split_heat(const ExchangeGrid<Dim>& grid, std::span<const double> cell_heat,
-                     const Particles<Dim>& particles, std::vector<double>& particle_heat);
+                     const Particles<Dim>& particles, std::vector<double>& particle_heat,
+                     const SumOverRanks& sum_over_ranks = {});
 
 }  // namespace mpm::coupling

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "mpm/coupling/exchange_grid.hpp"
+#include "mpm/coupling/over_ranks.hpp"
 #include "mpm/particles/particles.hpp"
 
 namespace mpm::coupling {
@@ -24,6 +25,8 @@ struct ThermalFields {
 };
 
 template <int Dim>
-ThermalFields thermal_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& particles);
+// On a rank of a decomposed MPM the sums are every rank's (`sum_over_ranks`).
+ThermalFields thermal_fields(const ExchangeGrid<Dim>& grid, const Particles<Dim>& particles,
+                             const SumOverRanks& sum_over_ranks = {});
 
 }  // namespace mpm::coupling

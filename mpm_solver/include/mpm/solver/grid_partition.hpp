@@ -14,6 +14,7 @@ namespace mpm {
 struct GridArray {
   double* data = nullptr;
   int components = 1;
+  int fields = 0;  // blocks of values: 0 for every velocity field, 1 for one (heat)
 };
 
 // Which planes of grid values (along the grid's last direction) one rank

@@ -49,8 +49,8 @@ class Solver {
   // One rank's part of a decomposed run (issue 27): the points of the
   // partition's cell rows and the grid values they touch. Every step then
   // gives each point and each owned grid value the same bits as one process
-  // would; totals() are summed over the ranks (equal to round-off). A case
-  // that conducts heat is refused (cosim::InputError, key `thermal`).
+  // would; totals() are summed over the ranks (equal to round-off), heat
+  // conduction included.
   Solver(const CaseDescription& description, std::shared_ptr<GridPartition<Dim>> partition);
   ~Solver();
   Solver(const Solver&) = delete;
