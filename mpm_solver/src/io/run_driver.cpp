@@ -439,10 +439,14 @@ class CaseRun {
       }
       if (observer_) {
         nlohmann::json coupling = observer_->summary();
-        // On ranks each rank's points took their own shares of the impulse.
+        // On ranks each rank's points took their own shares of the impulse
+        // and the heat.
         if (together && ranks_.partition && coupling.contains("impulse_applied")) {
           std::vector<double> applied = coupling["impulse_applied"].get<std::vector<double>>();
+          applied.push_back(coupling.value("heat_applied", 0.0));
           ranks_.partition->sum(applied);
+          coupling["heat_applied"] = applied.back();
+          applied.pop_back();
           coupling["impulse_applied"] = applied;
         }
         if (coupling.contains("windows"))
