@@ -108,10 +108,19 @@ void CouplingObserver<Dim>::abort(std::string_view reason) {
 }
 
 template <int Dim>
-nlohmann::json CouplingObserver<Dim>::summary() const {
+nlohmann::json CouplingObserver<Dim>::summary(GridPartition<Dim>* ranks) const {
   if (!participant_ || !coupling_) return nullptr;
   const auto& t = participant_->timings();
-  const auto& d = coupling_->diagnostics();
+  CouplingDiagnostics<Dim> d = coupling_->diagnostics();
+  if (ranks) {
+    // Each rank's points took their own shares of the impulse and the heat.
+    std::vector<double> applied(d.impulse_total.applied.data(),
+                                d.impulse_total.applied.data() + Dim);
+    applied.push_back(d.heat_total.applied);
+    ranks->sum(applied);
+    d.impulse_total.applied = Eigen::Map<const Vec<Dim>>(applied.data());
+    d.heat_total.applied = applied.back();
+  }
   return {{"participant", participant_->name()},
           {"coupled", participant_->is_coupled()},
           {"windows", t.windows},

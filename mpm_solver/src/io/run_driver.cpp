@@ -438,17 +438,7 @@ class CaseRun {
         summary_.set_metric("saved_state_bytes", saved_solver_.bytes(), "B");
       }
       if (observer_) {
-        nlohmann::json coupling = observer_->summary();
-        // On ranks each rank's points took their own shares of the impulse
-        // and the heat.
-        if (together && ranks_.partition && coupling.contains("impulse_applied")) {
-          std::vector<double> applied = coupling["impulse_applied"].get<std::vector<double>>();
-          applied.push_back(coupling.value("heat_applied", 0.0));
-          ranks_.partition->sum(applied);
-          coupling["heat_applied"] = applied.back();
-          applied.pop_back();
-          coupling["impulse_applied"] = applied;
-        }
+        nlohmann::json coupling = observer_->summary(together ? ranks_.partition.get() : nullptr);
         if (coupling.contains("windows"))
           summary_.set_windows(coupling["windows"].get<std::int64_t>());
         if (!coupling.is_null()) summary_.set_section("coupling", std::move(coupling));

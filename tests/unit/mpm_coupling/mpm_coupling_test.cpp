@@ -252,7 +252,7 @@ TEST(MpmCoupling, StandaloneObserverRunsTheCaseToItsEndTime) {
   }
   observer.finalize();
   EXPECT_NEAR(solver.time(), 2e-4, 1e-12);
-  const auto summary = observer.summary();
+  const auto summary = observer.summary(nullptr);
   EXPECT_EQ(summary["participant"], "soil");
   EXPECT_EQ(summary["coupled"], false);
   EXPECT_EQ(summary["writes"], 2);  // the initial data and the one standalone window's end
@@ -293,7 +293,7 @@ WindowedRun run_in_windows(bool repeat) {
   run.position = solver.particles().position;
   run.velocity = solver.particles().velocity;
   run.stress = solver.particles().stress;
-  run.summary = observer.summary();
+  run.summary = observer.summary(nullptr);
   return run;
 }
 

@@ -41,7 +41,7 @@ class CouplingObserver final : public StepObserver<Dim> {
   bool is_window_complete() const override;
   void finalize() override;
   void abort(std::string_view reason) override;
-  nlohmann::json summary() const override;
+  nlohmann::json summary(GridPartition<Dim>* ranks) const override;
   std::filesystem::path restart_directory() const override;
   bool must_write_checkpoint() const override;
   std::filesystem::path checkpoint_directory() const override;

@@ -47,7 +47,11 @@ ShareTotals<N> share_over_particles(const ExchangeGrid<Dim>& grid,
   using Amount = Eigen::Matrix<double, N, 1>;
   const std::size_t n = grid.size();
   assert(cell_amount.size() == n * N);
-  std::vector<double> weight(n, 0.0), holding(n, 0.0);
+  // The share and holding weights per cell, one after the other: one sum
+  // over the ranks.
+  std::vector<double> weights(2 * n, 0.0);
+  double* const weight = weights.data();
+  double* const holding = weights.data() + n;
   for (std::size_t p = 0; p < particles.size(); ++p) {
     const double W = share_weight[p], H = holding_weight.empty() ? 0.0 : holding_weight[p];
     if (W <= 0.0 && H <= 0.0) continue;
@@ -57,10 +61,7 @@ ShareTotals<N> share_over_particles(const ExchangeGrid<Dim>& grid,
                                  holding[c] += w * H;
                                });
   }
-  if (sum_over_ranks) {
-    sum_over_ranks(weight);
-    sum_over_ranks(holding);
-  }
+  if (sum_over_ranks) sum_over_ranks(weights);
   std::vector<Amount> amount(n);
   ShareTotals<N> totals;
   for (std::size_t c = 0; c < n; ++c) {

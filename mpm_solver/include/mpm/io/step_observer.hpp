@@ -52,7 +52,13 @@ class StepObserver {
   virtual void finalize() {}
   virtual void abort(std::string_view reason) { (void)reason; }
   // Added to summary.json under "coupling" (timings, windows), when not null.
-  virtual nlohmann::json summary() const { return nullptr; }
+  // `ranks`: on a rank of a decomposed run whose ranks all end together,
+  // the partition that sums what each rank's points took over the ranks
+  // (collective); nullptr otherwise.
+  virtual nlohmann::json summary(GridPartition<Dim>* ranks) const {
+    (void)ranks;
+    return nullptr;
+  }
 
   // Checkpoints of a coupled run (architecture.md §14): the driver reads the
   // solver's and its own state from restart_directory() after initialize()
