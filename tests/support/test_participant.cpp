@@ -607,10 +607,15 @@ int main(int argc, char** argv) {
     cosim::create_output_directory(output);
     cosim::RunSummary summary(output, "cosim_test_participant");
     summary.write();
-    return cosim::run_and_finish(summary, [&] {
+    const int code = cosim::run_and_finish(summary, [&] {
       run(config, endpoint, output, faults,
           {.repeatable = !not_repeatable, .checkpointable = !not_checkpointable}, summary, part);
     });
+#ifdef COSIM_TEST_PARTICIPANT_MPI
+    // A failure before the hello ends the MPI job (the coupler would wait).
+    if (mpi) return mpi->finish(code);
+#endif
+    return code;
   } catch (const cosim::Error& e) {
     std::cerr << "cosim_test_participant: error: " << e.what() << "\n";
     return cosim::to_int(e.code());

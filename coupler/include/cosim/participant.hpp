@@ -139,9 +139,21 @@ class Participant {
   // restart_directory() when it is not empty: a job run with
   // --checkpoint-every refuses a participant that does not declare this.
   void declare_checkpointable();
+  // On several ranks, each rank writes its part of a checkpoint into its
+  // own directory (`rank_<r>/` of the participant's). A solver that can
+  // start from the parts of another count of ranks (it reads every part in
+  // restart_parts() and keeps what its rank holds now) declares this; one
+  // that does not is refused such a restart (exit 2) before its hello.
+  void declare_restartable_on_other_ranks();
   // Where the solver reads its state instead of its initial conditions, when
-  // it was started from a checkpoint (known from construction on).
+  // it was started from a checkpoint: empty or not from construction on;
+  // after initialize(), this rank's part when the checkpoint was written by
+  // as many ranks (and the participant's directory when not).
   const std::filesystem::path& restart_directory() const;
+  // After initialize() on a restart: the directories the checkpoint's ranks
+  // wrote, in rank order (one, the participant's directory, for a
+  // checkpoint of one rank).
+  const std::vector<std::filesystem::path>& restart_parts() const;
 
   // Connects to the coupler (handshake: protocol version, job id, config
   // hash), exchanges the initial data (fields written before initialize),

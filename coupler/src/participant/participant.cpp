@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <numeric>
 #include <optional>
 
 #include "com/handshake.hpp"
@@ -33,6 +34,21 @@ constexpr double window_end_tolerance = 1e-9;
 constexpr const char* token_variable = "COSIM_TOKEN";
 // A wait for the coupler wakes this often to look for a stop request.
 constexpr auto stop_check_interval = std::chrono::milliseconds(100);
+
+// The directory part `part` of a participant on `parts` ranks writes its
+// part of a checkpoint into, in the participant's directory `dir`.
+std::filesystem::path part_directory(const std::filesystem::path& dir, int part, int parts) {
+  return parts > 1 ? dir / fmt::format("rank_{}", part) : dir;
+}
+
+// The parts a participant's directory of a checkpoint holds, in rank order.
+std::vector<std::filesystem::path> checkpoint_parts(const std::filesystem::path& dir) {
+  std::vector<std::filesystem::path> parts;
+  for (int r = 0; std::filesystem::is_directory(part_directory(dir, r, 2)); ++r)
+    parts.push_back(part_directory(dir, r, 2));
+  if (parts.empty()) parts.push_back(dir);
+  return parts;
+}
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -142,7 +158,10 @@ struct Participant::Impl {
   bool window_complete = false;
   bool repeat_requested = false;  // the coupler's window_repeat
   bool checkpointable = false;
-  std::filesystem::path checkpoint_directory;  // asked for by the last window_begin
+  bool restartable_on_other_ranks = false;
+  std::filesystem::path checkpoint_directory;  // this rank's, asked for by the last window_begin
+  std::filesystem::path restart_directory;     // this rank's part, after initialize()
+  std::vector<std::filesystem::path> restart_parts;
   bool stop_after_checkpoint = false;
   bool write_checkpoint = false;
 
@@ -388,12 +407,14 @@ struct Participant::Impl {
     if (m.payload.size() == 0) return;
     try {
       const auto request = nlohmann::json::parse(m.payload.text());
-      checkpoint_directory = request.at("checkpoint_directory").get<std::string>();
+      checkpoint_directory =
+          part_directory(request.at("checkpoint_directory").get<std::string>(), part, parts);
       stop_after_checkpoint = request.at("then_stop").get<bool>();
     } catch (const nlohmann::json::exception& e) {
       throw ProtocolError(com::coupler_peer,
                           fmt::format("sent a malformed checkpoint request: {}", e.what()));
     }
+    std::filesystem::create_directories(checkpoint_directory);
   }
 
   // This library's part of a checkpoint (architecture.md §14): where the
@@ -422,6 +443,15 @@ struct Participant::Impl {
       out.numbers(key + "values", w.values);
       out.numbers(key + "integral", w.integral);
       out.integer(key + "written", w.written ? 1 : 0);
+    }
+    // Where this rank's values lie in the whole meshes, for a restart on
+    // another count of ranks.
+    for (const auto& [mesh_name, entry] : meshes) {
+      if (!entry.part) continue;
+      out.integers("part." + mesh_name + ".elements", entry.part->elements);
+      std::vector<std::int64_t> owned(entry.part->size());
+      for (std::size_t i = 0; i < owned.size(); ++i) owned[i] = entry.part->owns(i) ? 1 : 0;
+      out.integers("part." + mesh_name + ".owned", owned);
     }
     out.commit();
   }
@@ -454,9 +484,115 @@ struct Participant::Impl {
       in.numbers(key + "integral", w.integral.size(), w.integral);
       w.written = in.integer(key + "written") != 0;
     }
-    // The coupler's checkpoint holds the meshes as they were.
-    for (auto& [mesh_name, entry] : meshes) entry.changed = false;
+    finish_restore();
     return window - 1;
+  }
+
+  // The coupler's checkpoint holds the meshes as they were; the parts of a
+  // participant on several ranks go to it again, for it to split and join
+  // their fields.
+  void finish_restore() {
+    for (auto& [mesh_name, entry] : meshes) entry.changed = entry.part.has_value();
+  }
+
+  // Reads the state the `files` of a checkpoint written on another count of
+  // ranks left: the scalars from the first, each field joined into the whole
+  // mesh from every part's owned values and this rank's part taken from it.
+  std::size_t read_state_of_parts(const std::vector<std::filesystem::path>& directories) {
+    std::vector<std::unique_ptr<StateFileReader>> in;
+    for (const auto& d : directories)
+      in.push_back(
+          std::make_unique<StateFileReader>(d / state_file_name, state_kind, state_version));
+    const std::int64_t next_window = in[0]->integer("window");
+    if (next_window < 2)
+      throw Error(ExitCode::bad_input, fmt::format("{}: window {} cannot follow a checkpoint",
+                                                   in[0]->file().string(), next_window));
+    window = static_cast<std::size_t>(next_window);
+    time = in[0]->number("time");
+    timings.windows = static_cast<std::size_t>(in[0]->integer("windows_completed"));
+    timings.iterations = static_cast<std::size_t>(in[0]->integer("window_attempts"));
+    const auto part_of = [&](const std::string& key, const std::string& mesh_name,
+                             std::size_t components, std::vector<double>& values) {
+      const MeshEntry& entry = meshes.at(mesh_name);
+      if (entry.mesh.kind() != MeshKind::uniform_grid)
+        throw Error(ExitCode::bad_input,
+                    fmt::format("{}: mesh '{}' is a cloud, whose parts are this run's points; a "
+                                "restart on another count of ranks needs grids",
+                                directories[0].string(), mesh_name));
+      const std::size_t c = components;
+      std::vector<double> whole(entry.mesh.size() * c);
+      std::vector<std::uint8_t> filled(entry.mesh.size(), 0);
+      // Owned values first; a ghost's only where no part owns it.
+      for (const int pass : {1, 0})
+        for (const auto& file : in) {
+          // A checkpoint of one rank holds the whole mesh.
+          std::vector<std::int64_t> elements(entry.mesh.size()), owned(entry.mesh.size(), 1);
+          std::iota(elements.begin(), elements.end(), std::int64_t{0});
+          if (file->has("part." + mesh_name + ".elements")) {
+            elements = file->integers("part." + mesh_name + ".elements");
+            file->integers("part." + mesh_name + ".owned", elements.size(), owned);
+          }
+          std::vector<double> stored;
+          file->numbers(key, elements.size() * c, stored);
+          for (std::size_t i = 0; i < elements.size(); ++i) {
+            const auto e = static_cast<std::size_t>(elements[i]);
+            if (owned[i] != pass || e >= filled.size() || (pass == 0 && filled[e])) continue;
+            std::copy_n(stored.begin() + static_cast<std::ptrdiff_t>(i * c), c,
+                        whole.begin() + static_cast<std::ptrdiff_t>(e * c));
+            filled[e] = 1;
+          }
+        }
+      const std::size_t held = entry.values();
+      values.resize(held * c);
+      for (std::size_t i = 0; i < held; ++i) {
+        const auto e = entry.part ? static_cast<std::size_t>(entry.part->elements[i]) : i;
+        if (!filled[e])
+          throw Error(ExitCode::bad_input, fmt::format("{}: no part holds element {} of mesh '{}'",
+                                                       directories[0].string(), e, mesh_name));
+        std::copy_n(whole.begin() + static_cast<std::ptrdiff_t>(e * c), c,
+                    values.begin() + static_cast<std::ptrdiff_t>(i * c));
+      }
+    };
+    for (auto& [field, r] : reads) {
+      const std::string key = "read." + field + ".";
+      const auto c = static_cast<std::size_t>(r.spec.components);
+      part_of(key + "current", r.spec.mesh, c, r.current);
+      part_of(key + "previous", r.spec.mesh, c, r.previous);
+      part_of(key + "start", r.spec.mesh, c, r.start);
+      r.received_at = in[0]->number(key + "received_at");
+      r.previous_at = in[0]->number(key + "previous_at");
+      r.has_previous = in[0]->integer(key + "has_previous") != 0;
+      std::fill(r.delivered.begin(), r.delivered.end(), 0.0);
+    }
+    for (auto& [field, w] : writes) {
+      const std::string key = "write." + field + ".";
+      const auto c = static_cast<std::size_t>(w.spec.components);
+      part_of(key + "values", w.spec.mesh, c, w.values);
+      part_of(key + "integral", w.spec.mesh, c, w.integral);
+      w.written = in[0]->integer(key + "written") != 0;
+    }
+    finish_restore();
+    return window - 1;
+  }
+
+  // Finds this rank's part of the checkpoint to start from and reads this
+  // library's state from it (or from all the parts of another count of ranks).
+  std::size_t restore_from_checkpoint() {
+    restart_parts = checkpoint_parts(endpoint.restart);
+    const int written_by = static_cast<int>(restart_parts.size());
+    if (written_by == parts) {
+      restart_directory = restart_parts[static_cast<std::size_t>(part)];
+      return read_state(restart_directory);
+    }
+    restart_directory = endpoint.restart;
+    if (!restartable_on_other_ranks)
+      throw Error(ExitCode::bad_input,
+                  fmt::format("{}: participant '{}' wrote this checkpoint on {} rank{}; it runs on "
+                              "{} now, and its solver restarts only on as many ranks as wrote the "
+                              "checkpoint",
+                              endpoint.restart.string(), name, written_by,
+                              written_by == 1 ? "" : "s", parts));
+    return read_state_of_parts(restart_parts);
   }
 
   void check_declaration(const FieldSpec& f) const {
@@ -555,8 +691,18 @@ void Participant::declare_checkpointable() {
   impl_->checkpointable = true;
 }
 
+void Participant::declare_restartable_on_other_ranks() {
+  if (impl_->initialized)
+    usage_error(impl_->name, "declare_restartable_on_other_ranks() comes before initialize()");
+  impl_->restartable_on_other_ranks = true;
+}
+
 const std::filesystem::path& Participant::restart_directory() const {
-  return impl_->endpoint.restart;
+  return impl_->restart_directory.empty() ? impl_->endpoint.restart : impl_->restart_directory;
+}
+
+const std::vector<std::filesystem::path>& Participant::restart_parts() const {
+  return impl_->restart_parts;
 }
 
 void Participant::set_standalone_window(double window) {
@@ -611,7 +757,7 @@ void Participant::initialize(double start_time, double end_time) {
   hello.parts = s.parts;
   hello.partitioned = partitioned;
   std::size_t restart_window = 0;
-  if (restarts) restart_window = s.read_state(s.endpoint.restart);
+  if (restarts) restart_window = s.restore_from_checkpoint();
   hello.restart_window = restart_window;
   const double restart_time = s.time;
   s.window = 0;
