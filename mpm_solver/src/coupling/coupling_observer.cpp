@@ -36,6 +36,7 @@ void CouplingObserver<Dim>::initialize(Solver<Dim>& solver) {
   participant_ = std::make_unique<cosim::Participant>(endpoint_.name_or(name_), endpoint_);
   participant_->declare_repeatable();
   participant_->declare_checkpointable();
+  participant_->declare_restartable_on_other_ranks();
   if (standalone_window_ > 0.0) participant_->set_standalone_window(standalone_window_);
   coupling_ = attach_coupling(solver, *participant_, spec_);
   coupling_->declare();
@@ -79,7 +80,12 @@ bool CouplingObserver<Dim>::is_window_complete() const {
 
 template <int Dim>
 std::filesystem::path CouplingObserver<Dim>::restart_directory() const {
-  return endpoint_.restart;
+  return participant_ ? participant_->restart_directory() : endpoint_.restart;
+}
+
+template <int Dim>
+std::vector<std::filesystem::path> CouplingObserver<Dim>::restart_parts() const {
+  return participant_ ? participant_->restart_parts() : std::vector<std::filesystem::path>{};
 }
 
 template <int Dim>

@@ -127,6 +127,9 @@ struct RunRanks {
   std::function<bool(const Particles<Dim>&)> rebalance;
   // Whether this rank writes the tables (probes.csv): rank 0.
   bool writes_tables = true;
+  // This rank and the count of ranks.
+  int rank = 0;
+  int size = 1;
 };
 
 template <int Dim>
@@ -324,13 +327,21 @@ class CaseRun {
     observer_->checkpoint_written();
   }
 
+  // Each rank of a decomposed run wrote its part; they are read whatever
+  // count of ranks wrote them (Solver::read_state).
   void read_checkpoint() {
-    const cosim::StateFileReader in(observer_->restart_directory() / state_file, state_kind,
-                                    state_version);
+    std::vector<std::unique_ptr<cosim::StateFileReader>> files;
+    std::vector<const cosim::StateFileReader*> parts;
+    for (const auto& directory : observer_->restart_parts()) {
+      files.push_back(std::make_unique<cosim::StateFileReader>(directory / state_file, state_kind,
+                                                               state_version));
+      parts.push_back(files.back().get());
+    }
+    const cosim::StateFileReader& in = *files.at(0);
     if (in.integer("dimension") != Dim)
       throw cosim::InputError(fmt::format("{}: a {}D state, the case is {}D", in.file().string(),
                                           in.integer("dimension"), Dim));
-    solver_.read_state(in);
+    solver_.read_state(parts, ranks_.rank, ranks_.size);
     cosim::read_schedule(in, "run.snapshots", progress_.snapshots);
     cosim::read_schedule(in, "run.probe_times", progress_.probe_times);
     progress_.last_snapshot = in.number("run.last_snapshot");
@@ -530,6 +541,8 @@ void run_decomposed_dimension(const CaseDescription& description, const RunOptio
   RunRanks<Dim> ranks;
   ranks.partition = partition;
   ranks.writes_tables = partition->rank() == 0;
+  ranks.rank = partition->rank();
+  MPI_Comm_size(comm, &ranks.size);
   ranks.particle_snapshots = [&options, points, comm] {
     return std::make_unique<cosim::PartitionedPointCloudWriter>(comm, options.output, "particles",
                                                                 "particles", Dim, points);

@@ -323,16 +323,7 @@ void MpiGridPartition<Dim>::migrate(Particles<Dim>& particles) {
   const Stopwatch watch(communication_seconds_);
   const auto moved = migration_->migrate(particles);
   points_sent_ += moved.sent;
-  if (moved.received == 0 || std::is_sorted(particles.id.begin(), particles.id.end())) return;
-  order_.resize(particles.size());
-  std::iota(order_.begin(), order_.end(), std::size_t{0});
-  std::sort(order_.begin(), order_.end(),
-            [&](std::size_t a, std::size_t b) { return particles.id[a] < particles.id[b]; });
-  particles.for_each_array([&](auto& array) {
-    auto sorted = array;
-    for (std::size_t k = 0; k < order_.size(); ++k) sorted[k] = array[order_[k]];
-    array.swap(sorted);
-  });
+  if (moved.received > 0) particles.sort_by_id();
 }
 
 template class MpiGridPartition<2>;

@@ -1,5 +1,9 @@
 #include "mpm/particles/particle_state_file.hpp"
 
+#include <algorithm>
+#include <numeric>
+#include <type_traits>
+
 namespace mpm {
 
 template <int Dim>
@@ -27,6 +31,8 @@ void write_particles(cosim::StateFileWriter& out, const Particles<Dim>& p) {
   out.numbers("particles.external_heat", p.external_heat);
   const std::vector<std::int64_t> body(p.body.begin(), p.body.end());
   out.integers("particles.body", body);
+  const std::vector<std::int64_t> id(p.id.begin(), p.id.end());
+  out.integers("particles.id", id);
 }
 
 template <int Dim>
@@ -56,8 +62,46 @@ void read_particles(const cosim::StateFileReader& in, Particles<Dim>& p) {
   std::vector<std::int64_t> body;
   in.integers("particles.body", n, body);
   for (std::size_t i = 0; i < n; ++i) p.body[i] = static_cast<std::uint32_t>(body[i]);
+  // A checkpoint of one process: a point's index is its id.
+  std::vector<std::int64_t> id(n);
+  std::iota(id.begin(), id.end(), std::int64_t{0});
+  if (in.has("particles.id")) in.integers("particles.id", n, id);
+  for (std::size_t i = 0; i < n; ++i) p.id[i] = static_cast<std::uint64_t>(id[i]);
 }
 
+template <int Dim>
+void read_particles(std::span<const cosim::StateFileReader* const> parts, Particles<Dim>& p) {
+  std::vector<std::size_t> counts;
+  std::size_t total = 0;
+  for (const auto* in : parts) {
+    counts.push_back(in->numbers("particles.mass").size());
+    total += counts.back();
+  }
+  p.resize(total);
+  std::size_t at = 0;
+  Particles<Dim> part;
+  for (std::size_t f = 0; f < parts.size(); ++f) {
+    part.resize(0);
+    part.resize(counts[f]);
+    read_particles(*parts[f], part);
+    std::size_t array = 0;
+    part.for_each_array([&](const auto& from) {
+      std::size_t k = 0;
+      p.for_each_array([&](auto& to) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(to)>, std::decay_t<decltype(from)>>)
+          if (k == array)
+            std::copy(from.begin(), from.end(), to.begin() + static_cast<std::ptrdiff_t>(at));
+        ++k;
+      });
+      ++array;
+    });
+    at += counts[f];
+  }
+  p.sort_by_id();
+}
+
+template void read_particles<2>(std::span<const cosim::StateFileReader* const>, Particles<2>&);
+template void read_particles<3>(std::span<const cosim::StateFileReader* const>, Particles<3>&);
 template void write_particles<2>(cosim::StateFileWriter&, const Particles<2>&);
 template void write_particles<3>(cosim::StateFileWriter&, const Particles<3>&);
 template void read_particles<2>(const cosim::StateFileReader&, Particles<2>&);

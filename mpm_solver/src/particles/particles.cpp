@@ -1,5 +1,8 @@
 #include "mpm/particles/particles.hpp"
 
+#include <algorithm>
+#include <numeric>
+
 namespace mpm {
 
 Voigt to_voigt(const Tensor& t) {
@@ -44,6 +47,20 @@ void Particles<Dim>::resize(std::size_t n) {
   const std::size_t old = id.size();
   id.resize(n);
   for (std::size_t i = old; i < n; ++i) id[i] = i;
+}
+
+template <int Dim>
+void Particles<Dim>::sort_by_id() {
+  if (std::is_sorted(id.begin(), id.end())) return;
+  std::vector<std::size_t> order(size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return id[a] < id[b]; });
+  for_each_array([&](auto& array) {
+    auto sorted = array;
+    for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = array[order[k]];
+    array.swap(sorted);
+  });
 }
 
 template <int Dim>

@@ -1016,20 +1016,45 @@ void Solver<Dim>::write_state(cosim::StateFileWriter& out) const {
 }
 template <int Dim>
 void Solver<Dim>::read_state(const cosim::StateFileReader& in) {
+  const cosim::StateFileReader* const parts[] = {&in};
+  read_state(parts, 0, 1);
+}
+template <int Dim>
+void Solver<Dim>::read_state(std::span<const cosim::StateFileReader* const> parts, int rank,
+                             int ranks) {
   Impl& s = *impl_;
-  read_particles(in, s.particles);
+  std::vector<const cosim::StateFileReader*> mine;
+  for (auto p = static_cast<std::size_t>(rank); p < parts.size();
+       p += static_cast<std::size_t>(ranks))
+    mine.push_back(parts[p]);
+  read_particles(std::span<const cosim::StateFileReader* const>(mine), s.particles);
+  std::size_t seeded = 0;
+  for (const auto& body : s.description.bodies) seeded += body.positions.size();
+  double points = static_cast<double>(s.particles.size());
+  if (s.partition) s.partition->sum({&points, 1});
+  if (points != static_cast<double>(seeded))
+    throw cosim::InputError(
+        fmt::format("{} and the other parts of its checkpoint hold {} points, "
+                    "the case seeds {}",
+                    parts[0]->file().string(), points, seeded));
+  if (s.partition) s.partition->migrate(s.particles);
+  std::array<double, 6> energy{};
+  for (const auto* in : mine) {
+    std::vector<double> e;
+    in->numbers("accumulated_energy", 6, e);
+    for (std::size_t k = 0; k < energy.size(); ++k) energy[k] += e[k];
+  }
+  s.accumulated = {energy[0], energy[1], energy[2], energy[3], energy[4], energy[5]};
+  const cosim::StateFileReader& first = *parts[0];
   std::vector<Vec<Dim>> rigid_velocity, contact_impulse;
-  in.rows("bodies.rigid_velocity", s.bodies.size(), rigid_velocity);
-  in.rows("bodies.contact_impulse", s.bodies.size(), contact_impulse);
+  first.rows("bodies.rigid_velocity", s.bodies.size(), rigid_velocity);
+  first.rows("bodies.contact_impulse", s.bodies.size(), contact_impulse);
   for (std::size_t b = 0; b < s.bodies.size(); ++b) {
     s.bodies[b].rigid_velocity = rigid_velocity[b];
     s.bodies[b].contact_impulse = contact_impulse[b];
   }
-  s.time = in.number("time");
-  s.steps = static_cast<std::size_t>(in.integer("steps"));
-  std::vector<double> e;
-  in.numbers("accumulated_energy", 6, e);
-  s.accumulated = {e[0], e[1], e[2], e[3], e[4], e[5]};
+  s.time = first.number("time");
+  s.steps = static_cast<std::size_t>(first.integer("steps"));
 }
 template <int Dim>
 void Solver<Dim>::add_particle_force_source(ParticleForceSource source) {

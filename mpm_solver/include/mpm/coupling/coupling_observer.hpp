@@ -43,6 +43,7 @@ class CouplingObserver final : public StepObserver<Dim> {
   void abort(std::string_view reason) override;
   nlohmann::json summary(GridPartition<Dim>* ranks) const override;
   std::filesystem::path restart_directory() const override;
+  std::vector<std::filesystem::path> restart_parts() const override;
   bool must_write_checkpoint() const override;
   std::filesystem::path checkpoint_directory() const override;
   void checkpoint_written() override;

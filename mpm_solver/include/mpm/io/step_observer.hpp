@@ -6,6 +6,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string_view>
+#include <vector>
 
 #include "mpm/solver/solver.hpp"
 
@@ -66,6 +67,9 @@ class StepObserver {
   // with must_write_checkpoint() writes them into checkpoint_directory(),
   // then calls checkpoint_written().
   virtual std::filesystem::path restart_directory() const { return {}; }
+  // After initialize(), on a restart: the directories the checkpoint's ranks
+  // wrote, in rank order (one for a checkpoint of one process).
+  virtual std::vector<std::filesystem::path> restart_parts() const { return {}; }
   virtual bool must_write_checkpoint() const { return false; }
   virtual std::filesystem::path checkpoint_directory() const { return {}; }
   virtual void checkpoint_written() {}

@@ -79,7 +79,6 @@ class MpiGridPartition final : public GridPartition<Dim> {
   std::size_t plane_size_ = 0;
   int fields_ = 1;
   std::unique_ptr<ParticleMigration<Dim>> migration_;
-  std::vector<std::size_t> order_;
   std::array<std::vector<double>, 2> send_, receive_;  // per neighbour: below, above
   std::size_t values_sent_ = 0, points_sent_ = 0;
   double communication_seconds_ = 0.0;

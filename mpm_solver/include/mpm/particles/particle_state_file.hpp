@@ -1,5 +1,7 @@
 #pragma once
 
+#include <span>
+
 #include "cosim/io/state_file.hpp"
 #include "mpm/particles/particles.hpp"
 
@@ -14,5 +16,11 @@ void write_particles(cosim::StateFileWriter& out, const Particles<Dim>& particle
 // dimension is refused (exit 2) naming the array.
 template <int Dim>
 void read_particles(const cosim::StateFileReader& in, Particles<Dim>& particles);
+
+// Every point of the `parts` (the files of a checkpoint's ranks, or some of
+// them), in id order: the count is the files'.
+template <int Dim>
+void read_particles(std::span<const cosim::StateFileReader* const> parts,
+                    Particles<Dim>& particles);
 
 }  // namespace mpm

@@ -68,6 +68,8 @@ struct Particles {
   void for_each_array(F&& f) const {
     visit_arrays(*this, f);
   }
+  // Puts the points in id order.
+  void sort_by_id();
   // Bytes held per particle by these arrays (capacity included).
   double bytes_per_particle() const;
 

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "cosim/io/state_file.hpp"
@@ -83,6 +84,12 @@ class Solver {
   // back bit for bit into a solver built from the same case.
   void write_state(cosim::StateFileWriter& out) const;
   void read_state(const cosim::StateFileReader& in);
+  // The state the ranks of a decomposed run wrote into `parts` (each its
+  // points and partial energies), whatever count of ranks wrote them: rank
+  // `rank` of `ranks` takes the points and energies of parts rank, rank +
+  // ranks, ...; the points then go to the ranks that own them now
+  // (collective on a decomposed grid). Together they must be the case's.
+  void read_state(std::span<const cosim::StateFileReader* const> parts, int rank, int ranks);
 
   // Coupling and extra physics hook in here. Force sources run each step
   // after the surface loads and add their force [N] to
