@@ -165,12 +165,14 @@ std::string dead_rank_report(const job::Job& job, const fs::path& mpirun_log) {
 // A participant whose ranks failed before it said hello to the coupler
 // stops the MPI job itself (MPI_Abort in runtime::MpiSession::finish),
 // having recorded why in its summary.json: the first participant whose
-// summary ends with a non-zero code, as "participant 'soil': <message>".
+// summary ends with a non-zero code of its own (not the coupler's refusal or
+// abort, "the coupler ..."), as "participant 'soil': <message>".
 std::optional<std::pair<int, std::string>> failed_participant(const job::Job& job,
                                                               const fs::path& output) {
   for (const auto& p : job.participants) {
     const auto status = read_status(output / p.name / "summary.json");
-    if (status && status->finished && status->exit_code != 0)
+    if (status && status->finished && status->exit_code != 0 &&
+        status->message.rfind("the coupler ", 0) != 0)
       return std::pair{status->exit_code,
                        fmt::format("participant '{}' failed before the coupling began (exit "
                                    "code {}): {}",
@@ -181,8 +183,13 @@ std::optional<std::pair<int, std::string>> failed_participant(const job::Job& jo
 
 }  // namespace
 
+runtime::CheckpointArguments checkpoint_arguments(const RunOptions& o) {
+  return {o.checkpoint_every, o.checkpoints_kept, o.restart};
+}
+
 int launch_mpirun(const job::Job& job, const RunOptions& o) {
-  const auto cmd = runtime::mpi_command(job, o.job_file, o.output, o.job_id, o.connect_timeout_s);
+  const auto cmd = runtime::mpi_command(job, o.job_file, o.output, o.job_id, o.connect_timeout_s,
+                                        checkpoint_arguments(o));
   const fs::path output = fs::absolute(o.output);
   runtime::Supervisor supervisor;
   runtime::ChildSpec child;
@@ -219,11 +226,11 @@ int launch_mpirun(const job::Job& job, const RunOptions& o) {
     if (now - last_look > milliseconds(250)) {
       last_look = now;
       if (const auto status = read_status(output / "summary.json")) {
-        coupling = coupling || status->coupling || status->finished;
+        coupling = coupling || status->coupling;
         if (status->finished && !run_over_at) run_over_at = now;
       }
     }
-    if (!coupling && now > admission_deadline) {
+    if (!coupling && !run_over_at && now > admission_deadline) {
       const std::string stopped = stopped_ranks(processes_below(mpirun));
       stop_job(supervisor, mpirun);
       return finish(ExitCode::participant_failed,
@@ -251,21 +258,26 @@ int launch_mpirun(const job::Job& job, const RunOptions& o) {
     const runtime::ChildExit& e = exits.front();
     if (e.success()) return 0;
     // A participant rank that died is the cause (mpirun then stops the others,
-    // and the coupler rank may have blamed one of those); otherwise the
-    // coupler rank's own account, when it could give one.
+    // and the coupler rank may have blamed one of those), and so is one that
+    // refused its input before the coupling began (its MPI_Abort reaches the
+    // coupler rank as a signal); otherwise the coupler rank's own account,
+    // when it could give one.
     const std::string dead = dead_rank_report(job, child.log_file);
+    const auto failed = dead.empty() && !coupling ? failed_participant(job, output) : std::nullopt;
+    const auto blame = [&] {
+      const int c = failed->first;
+      return finish(
+          c == 2 || c == 3 || c == 4 ? static_cast<ExitCode>(c) : ExitCode::participant_failed,
+          failed->second);
+    };
+    if (failed && failed->first == to_int(ExitCode::bad_input)) return blame();
     const auto status = read_status(output / "summary.json");
     if (dead.rfind("participant", 0) != 0 && status && status->finished && status->exit_code != 0) {
       std::cerr << "cosim: error: " << status->message << "\n";
       return status->exit_code;
     }
+    if (failed) return blame();
     const int s = e.exit_status;
-    if (const auto failed = failed_participant(job, output); dead.empty() && !coupling && failed) {
-      const int c = failed->first;
-      return finish(
-          c == 2 || c == 3 || c == 4 ? static_cast<ExitCode>(c) : ExitCode::participant_failed,
-          failed->second);
-    }
     const ExitCode code = !dead.empty() || !(s == 2 || s == 3 || s == 4)
                               ? ExitCode::participant_failed
                               : static_cast<ExitCode>(s);

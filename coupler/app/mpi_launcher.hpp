@@ -2,6 +2,7 @@
 
 #include "job/job.hpp"
 #include "run_command.hpp"
+#include "runtime/mpi_launch.hpp"
 
 // `cosim run` of an MPI job, outside mpirun: starts mpirun with the job's
 // MPMD line and watches it. mpirun and MPI cannot always end a job that
@@ -16,5 +17,8 @@ namespace cosim::app {
 
 // Returns the exit code of the run.
 int launch_mpirun(const job::Job& job, const RunOptions& options);
+
+// The checkpoint options of `options` an MPI job's applications take.
+runtime::CheckpointArguments checkpoint_arguments(const RunOptions& options);
 
 }  // namespace cosim::app

@@ -96,14 +96,10 @@ void check_checkpoint_options(const job::Job& job, const RunOptions& o) {
         fmt::format("{}: job '{}' couples serially (coupling.scheme: serial-...), "
                     "whose checkpoints are not built yet; use a parallel scheme",
                     option, job.name));
-  if (job.transport == job::TransportKind::mpi)
-    throw InputError(
-        fmt::format("{}: job '{}' uses transport 'mpi', whose checkpoints are not "
-                    "built yet; use transport: zmq",
-                    option, job.name));
   if (o.restart.empty()) return;
   const checkpoint::Manifest m = checkpoint::read_manifest(o.restart);
-  checkpoint::check_same_job(m, o.restart, job.name, job.config_hash);
+  checkpoint::check_same_job(m, o.restart, job.name, job.config_hash,
+                             job.config_hash_without_ranks);
   if (o.overwrite && is_inside(o.restart, o.output))
     throw InputError(
         fmt::format("--restart {} lies inside --output {}, which --overwrite would "
@@ -227,9 +223,16 @@ int run_under_mpirun(const job::Job& job, const RunOptions& o, RunSummary& summa
     options.job_id = o.job_id;
     options.connect_timeout_s = o.connect_timeout_s;
     options.interrupted = &runtime::stop_flag();
+    set_checkpoint_options(o, options);
     m2n::PartitionedHub parts(hub, runtime::part_peer_name);
     cplscheme::Coupler coupler(job, parts, nullptr, summary, options);
     coupler.run();
+    if (coupler.stopped_at_checkpoint())
+      throw Error(ExitCode::stopped_at_checkpoint,
+                  fmt::format("{}: stopped at the checkpoint of window {} ({}); `cosim run {} "
+                              "--restart <that checkpoint> --output <a new directory>` continues",
+                              runtime::describe_stop(), summary.windows(),
+                              (options.output_dir / "checkpoints").string(), o.job_file));
   });
   if (code != 0) {
     spdlog::default_logger()->flush();
@@ -262,15 +265,17 @@ int run_job(const RunOptions& o) {
   const bool under_mpirun = com::launched_by_mpirun();
   if (job.transport == job::TransportKind::mpi && !under_mpirun) {
     if (o.print_mpi_command) {
+      check_checkpoint_options(job, opts);
       std::cout << runtime::shell_join(runtime::mpi_command(job, o.job_file, o.output, opts.job_id,
-                                                            o.connect_timeout_s))
+                                                            o.connect_timeout_s,
+                                                            checkpoint_arguments(opts)))
                 << "\n";
       return 0;
     }
     if (!o.slurm_script.empty()) {
       check_checkpoint_options(job, opts);
       runtime::write_slurm_script(job, o.job_file, o.output, opts.job_id, o.connect_timeout_s,
-                                  o.slurm_script, o.overwrite);
+                                  o.slurm_script, o.overwrite, checkpoint_arguments(opts));
       std::cout << "cosim: wrote " << o.slurm_script << " and "
                 << runtime::multi_prog_path(o.slurm_script).string() << " (job '" << job.name
                 << "', id " << opts.job_id << ", " << runtime::mpi_world_size(job)

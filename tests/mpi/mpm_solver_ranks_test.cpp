@@ -9,8 +9,9 @@
 // in use, are refused with exit 2, nothing lost. Windows that run again
 // (--cosim-repeat-windows) keep the files of one process bit for bit.
 // Coupled over MPI, a soil on 2 ranks (a partitioned participant) gives the
-// one-process run's results, and a soil that cannot start on its ranks ends
-// the job at once with exit 2.
+// one-process run's results, continues from its checkpoints on any count of
+// ranks, and a soil that cannot start on its ranks ends the job at once with
+// exit 2.
 #include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -27,6 +28,7 @@
 #include "hdf5_reader.hpp"
 #include "launched_program.hpp"
 #include "replaced_text.hpp"
+#include "restart_continuation.hpp"
 #include "run_process.hpp"
 #include "snapshot_difference.hpp"
 #include "text_files.hpp"
@@ -319,6 +321,49 @@ TEST(MpmSolverRanks, ACoupledSoilOnTwoRanksGivesTheOneProcessRun) {
     const double heat_two = summary_two["coupling"]["heat_applied"].get<double>();
     EXPECT_NEAR(heat_two, heat_one, 1e-8 * std::max(1.0, std::abs(heat_one)));
   }
+}
+
+// The clay column (soil on 2 ranks, water on 1) with checkpoints: the run
+// continued from one on the same ranks writes what the uninterrupted run
+// wrote after it, bit for bit; each rank wrote its points, and the soil
+// restarts on another count of ranks too (its points read from every part
+// and sent to the ranks that own them now, this library's fields joined
+// from the parts and split again), here 1 and 2 from checkpoints of 2 and
+// 1: the same last snapshots, since the soil's ranks give the one-process
+// run bit for bit. Terzaghi's consolidation with the water on 2 ranks too
+// continues bit for bit on the same ranks.
+TEST(MpmSolverRanks, ACoupledSoilContinuesFromItsCheckpointOnAnyCountOfRanks) {
+  const fs::path dir = fresh_directory("mpm_solver_coupled_ranks_restart");
+  const CoupledJob column{".", "job.yaml", "0.1", "soil_column.yaml", "water.yaml"};
+  const fs::path on_two = write_coupled_job(dir / "two", column, "0.02", 2, 1);
+  expect_restart_continues(dir / "two", on_two, "200", 200);
+  const fs::path checkpoint_of_two = checkpoint_of(dir / "two" / "whole", 200);
+  EXPECT_TRUE(fs::exists(checkpoint_of_two / "soil" / "rank_1" / "state.h5"));
+
+  const fs::path on_one = write_coupled_job(dir / "one", column, "0.02", 1, 1);
+  const ProcessResult from_two =
+      cosim_run(on_one, dir / "one" / "from_two", 120, {"--restart", checkpoint_of_two.string()});
+  ASSERT_EQ(from_two.exit_code, 0) << from_two.output;
+  EXPECT_EQ(expect_same_last_snapshots(dir / "two" / "whole", dir / "one" / "from_two"), 2u);
+
+  const ProcessResult whole_one =
+      cosim_run(on_one, dir / "one" / "whole", 120, {"--checkpoint-every", "200"});
+  ASSERT_EQ(whole_one.exit_code, 0) << whole_one.output;
+  const ProcessResult from_one =
+      cosim_run(on_two, dir / "two" / "from_one", 120,
+                {"--restart", checkpoint_of(dir / "one" / "whole", 200).string()});
+  ASSERT_EQ(from_one.exit_code, 0) << from_one.output;
+  EXPECT_EQ(expect_same_last_snapshots(dir / "one" / "whole", dir / "two" / "from_one"), 2u);
+  const auto summary =
+      nlohmann::json::parse(read_text(dir / "two" / "from_one" / "soil" / "summary.json"));
+  EXPECT_EQ(summary["case"]["ranks"], 2);
+
+  // Terzaghi with the water on 2 ranks too (PETSc): each water rank its block.
+  const CoupledJob terzaghi{"terzaghi", "job.yaml", "0.75", "soil.yaml", "water.yaml", true};
+  expect_restart_continues(
+      dir / "terzaghi", write_coupled_job(dir / "terzaghi", terzaghi, "0.004", 2, 2), "200", 200);
+  EXPECT_TRUE(
+      fs::exists(checkpoint_of(dir / "terzaghi" / "whole", 200) / "water" / "rank_1" / "state.h5"));
 }
 
 // A soil that cannot start on its ranks (the Darcy column's one cell row

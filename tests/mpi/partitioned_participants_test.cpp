@@ -5,9 +5,9 @@
 // count must give the one-rank run's exchange bit for bit, also when ranks
 // hold ghosts (elements they read but do not own): the snapshots of
 // the exchanged fields, and the heat each window's writer integrated and the
-// reader applied (summed over the ranks, to round-off). A program that does
-// not run on ranks, and a rank that dies, end the job with a clear error and
-// no process left.
+// reader applied (summed over the ranks, to round-off). Checkpoints of the
+// job continue on its ranks. A program that does not run on ranks, and a
+// rank that dies, end the job with a clear error and no process left.
 #include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -21,6 +21,7 @@
 
 #include "demo_job.hpp"
 #include "hdf5_contents.hpp"
+#include "restart_continuation.hpp"
 #include "run_process.hpp"
 #include "text_files.hpp"
 
@@ -138,16 +139,35 @@ TEST(PartitionedParticipants, AProgramThatDoesNotRunOnRanksIsRefusedWithExit2) {
   EXPECT_THAT(all, HasSubstr("participants.left.ranks"));
 }
 
-// Checkpoints of an MPI job are not built yet (a participant's ranks would
-// each write its whole state file): `--checkpoint-every` is refused before
-// anything starts, not ignored, and the output directory is not touched.
-TEST(PartitionedParticipants, CheckpointsOfAnMpiJobAreRefusedWithExit2) {
+// A checkpoint of an MPI job: every rank of a participant writes its part
+// (`rank_<r>/`: this library's state and the solver's), and the run
+// continued from it on the same ranks writes what the uninterrupted run
+// wrote after it, bit for bit. The test participant restarts only on as
+// many ranks as wrote the checkpoint: on others it is refused at once with
+// exit 2, naming both counts.
+TEST(PartitionedParticipants, AJobOnRanksContinuesFromItsCheckpoint) {
   const fs::path dir = fresh_directory("partitioned_checkpoints");
-  const auto r =
-      cosim_run(write_job(dir, job_on(2, 1)), dir / "run", 120, {"--checkpoint-every", "4"});
+  JobOptions options = job_on(2, 3);
+  options.right_args = "[--ghosts, '7']";
+  const fs::path job = write_job(dir, options);
+  expect_restart_continues(dir, job, "4", 4);
+  const fs::path checkpoint = checkpoint_of(dir / "whole", 4);
+  for (const char* part : {"left/rank_0", "left/rank_1", "right/rank_2"}) {
+    EXPECT_TRUE(fs::exists(checkpoint / part / "participant.h5")) << part;
+    EXPECT_TRUE(fs::exists(checkpoint / part / "state.h5")) << part;
+  }
+  const auto manifest = nlohmann::json::parse(read_text(checkpoint / "manifest.json"));
+  EXPECT_EQ(manifest["ranks"]["left"], 2);
+  EXPECT_EQ(manifest["ranks"]["right"], 3);
+
+  JobOptions fewer = options;
+  fewer.left_ranks = 1;
+  fs::create_directories(dir / "fewer");
+  const auto r = cosim_run(write_job(dir / "fewer", fewer), dir / "fewer" / "run", 120,
+                           {"--restart", checkpoint.string()});
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_THAT(r.output, HasSubstr("uses transport 'mpi', whose checkpoints are not built yet"));
-  EXPECT_FALSE(fs::exists(dir / "run"));
+  EXPECT_THAT(r.output, HasSubstr("participant 'left' wrote this checkpoint on 2 ranks; it runs "
+                                  "on 1 now"));
 }
 
 TEST(PartitionedParticipants, ARankThatDiesEndsTheJobWithExit3AndNoProcessLeft) {

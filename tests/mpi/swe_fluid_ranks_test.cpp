@@ -18,6 +18,7 @@
 #include "hdf5_contents.hpp"
 #include "launched_program.hpp"
 #include "replaced_text.hpp"
+#include "restart_continuation.hpp"
 #include "run_process.hpp"
 #include "text_files.hpp"
 
@@ -107,8 +108,25 @@ void expect_refused(const std::string& case_text, const std::string& key, int ra
 // of both ranks' points, the traction shared over both ranks' surface
 // points). The decomposed shallow water and MPM are bitwise the whole ones,
 // so the water's snapshots and the soil's must be the same bit for bit.
-TEST(SweFluidRanks, ACoupledWaterAndSoilOnTwoRanksGiveTheOneProcessRunBitForBit) {
+// configs/soil_block_into_basin_3d.yaml to 0.1 s (50 windows) over MPI with
+// the soil and the water on the ranks given, written into `run_dir`.
+fs::path write_basin_job(const fs::path& run_dir, int soil_ranks, int water_ranks) {
   const fs::path configs = fs::path(COSIM_SOURCE_DIR) / "configs";
+  fs::create_directories(run_dir / "mpm");
+  fs::create_directories(run_dir / "swe");
+  fs::copy_file(configs / "mpm" / "soil_block_3d.yaml", run_dir / "mpm" / "soil_block_3d.yaml");
+  fs::copy_file(configs / "swe" / "basin_2d.yaml", run_dir / "swe" / "basin_2d.yaml");
+  std::string job = replaced(read_text(configs / "soil_block_into_basin_3d.yaml"), "end_time: 3.0",
+                             "end_time: 0.1\ntransport: mpi");
+  job = replaced(job, "    config: swe/basin_2d.yaml\n",
+                 fmt::format("    config: swe/basin_2d.yaml\n    ranks: {}\n", water_ranks));
+  job = replaced(job, "    config: mpm/soil_block_3d.yaml\n",
+                 fmt::format("    config: mpm/soil_block_3d.yaml\n    ranks: {}\n", soil_ranks));
+  write_text(run_dir / "job.yaml", job);
+  return run_dir / "job.yaml";
+}
+
+TEST(SweFluidRanks, ACoupledWaterAndSoilOnTwoRanksGiveTheOneProcessRunBitForBit) {
   const fs::path dir = fresh_directory("swe_fluid_coupled_ranks");
   const auto run_dir_of = [&](int soil_ranks, int water_ranks) {
     return dir / fmt::format("soil_{}_water_{}", soil_ranks, water_ranks);
@@ -116,18 +134,8 @@ TEST(SweFluidRanks, ACoupledWaterAndSoilOnTwoRanksGiveTheOneProcessRunBitForBit)
   const std::pair<int, int> layouts[] = {{1, 1}, {1, 2}, {2, 2}};
   for (const auto& [soil_ranks, water_ranks] : layouts) {
     const fs::path run_dir = run_dir_of(soil_ranks, water_ranks);
-    fs::create_directories(run_dir / "mpm");
-    fs::create_directories(run_dir / "swe");
-    fs::copy_file(configs / "mpm" / "soil_block_3d.yaml", run_dir / "mpm" / "soil_block_3d.yaml");
-    fs::copy_file(configs / "swe" / "basin_2d.yaml", run_dir / "swe" / "basin_2d.yaml");
-    std::string job = replaced(read_text(configs / "soil_block_into_basin_3d.yaml"),
-                               "end_time: 3.0", "end_time: 0.1\ntransport: mpi");
-    job = replaced(job, "    config: swe/basin_2d.yaml\n",
-                   fmt::format("    config: swe/basin_2d.yaml\n    ranks: {}\n", water_ranks));
-    job = replaced(job, "    config: mpm/soil_block_3d.yaml\n",
-                   fmt::format("    config: mpm/soil_block_3d.yaml\n    ranks: {}\n", soil_ranks));
-    write_text(run_dir / "job.yaml", job);
-    const ProcessResult result = cosim_run(run_dir / "job.yaml", run_dir / "run", 240);
+    const fs::path job = write_basin_job(run_dir, soil_ranks, water_ranks);
+    const ProcessResult result = cosim_run(job, run_dir / "run", 240);
     ASSERT_EQ(result.exit_code, 0) << result.output << read_text(run_dir / "run" / "mpirun.log");
   }
   const fs::path one = run_dir_of(1, 1) / "run";
@@ -150,6 +158,24 @@ TEST(SweFluidRanks, ACoupledWaterAndSoilOnTwoRanksGiveTheOneProcessRunBitForBit)
     EXPECT_EQ(nlohmann::json::parse(read_text(two / "soil" / "summary.json"))["case"]["ranks"],
               soil_ranks == 1 ? nlohmann::json() : nlohmann::json(soil_ranks));
   }
+}
+
+// The same job with both on 2 ranks and a checkpoint every 25 windows: the
+// run continued from one writes what the uninterrupted run wrote after it,
+// bit for bit (each water rank its block, each soil rank its points); with
+// the soil on 1 rank instead (its points joined from both parts), the same
+// last snapshots, as the soil's ranks give the one-process run bit for bit.
+TEST(SweFluidRanks, ACoupledJobOnRanksContinuesFromItsCheckpoint) {
+  const fs::path dir = fresh_directory("swe_fluid_coupled_ranks_restart");
+  const fs::path job = write_basin_job(dir / "two", 2, 2);
+  expect_restart_continues(dir / "two", job, "25", 25);
+  const fs::path checkpoint = checkpoint_of(dir / "two" / "whole", 25);
+  EXPECT_TRUE(fs::exists(checkpoint / "water" / "rank_1" / "state.h5"));
+  const fs::path soil_on_one = write_basin_job(dir / "one", 1, 2);
+  const ProcessResult r =
+      cosim_run(soil_on_one, dir / "one" / "run", 240, {"--restart", checkpoint.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(expect_same_last_snapshots(dir / "two" / "whole", dir / "one" / "run"), 2u);
 }
 
 TEST(SweFluidRanks, RefusesBlocksNarrowerThanTheGhostLayers) {

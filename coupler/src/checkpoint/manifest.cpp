@@ -53,8 +53,12 @@ void write_manifest(const fs::path& directory, Manifest m) {
   const json j{{"kind", manifest_kind},
                {"format_version", format_version},
                {"cosim_version", m.cosim_version},
-               {"job", {{"name", m.job_name}, {"config_hash", m.config_hash}}},
+               {"job",
+                {{"name", m.job_name},
+                 {"config_hash", m.config_hash},
+                 {"config_hash_without_ranks", m.config_hash_without_ranks}}},
                {"participants", m.participants},
+               {"ranks", m.ranks},
                {"scheme", m.scheme},
                {"window", m.window},
                {"time_s", m.time},
@@ -84,7 +88,9 @@ Manifest read_manifest(const fs::path& directory) {
     m.cosim_version = j.at("cosim_version").get<std::string>();
     m.job_name = j.at("job").at("name").get<std::string>();
     m.config_hash = j.at("job").at("config_hash").get<std::string>();
+    m.config_hash_without_ranks = j.at("job").value("config_hash_without_ranks", std::string());
     m.participants = j.at("participants").get<std::vector<std::string>>();
+    m.ranks = j.value("ranks", std::map<std::string, int>());
     m.scheme = j.at("scheme").get<std::string>();
     m.window = j.at("window").get<std::uint64_t>();
     m.time = j.at("time_s").get<double>();
@@ -114,11 +120,14 @@ Manifest read_manifest(const fs::path& directory) {
 }
 
 void check_same_job(const Manifest& m, const fs::path& directory, const std::string& job_name,
-                    const std::string& config_hash) {
-  if (m.job_name != job_name || m.config_hash != config_hash)
+                    const std::string& config_hash, const std::string& config_hash_without_ranks) {
+  const bool other_ranks = !m.config_hash_without_ranks.empty() &&
+                           m.config_hash_without_ranks == config_hash_without_ranks;
+  if (m.job_name != job_name || (m.config_hash != config_hash && !other_ranks))
     refuse(directory,
            fmt::format("it belongs to job '{}' with config hash {}, this is job '{}' with config "
-                       "hash {} (the job file and every participant's config must be unchanged)",
+                       "hash {} (the job file, but for its participants' ranks, and every "
+                       "participant's config must be unchanged)",
                        m.job_name, m.config_hash, job_name, config_hash));
 }
 

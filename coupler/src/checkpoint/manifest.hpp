@@ -26,8 +26,10 @@ struct FileEntry {
 struct Manifest {
   std::string cosim_version;
   std::string job_name;
-  std::string config_hash;  // the job's, which covers its participants' configs
+  std::string config_hash;                // the job's, which covers its participants' configs
+  std::string config_hash_without_ranks;  // empty in a manifest of before it was kept
   std::vector<std::string> participants;
+  std::map<std::string, int> ranks;  // each participant's
   std::string scheme;
   std::uint64_t window = 0;  // the last window the checkpoint holds
   double time = 0.0;         // its end [s]
@@ -44,8 +46,10 @@ void write_manifest(const std::filesystem::path& directory, Manifest manifest);
 Manifest read_manifest(const std::filesystem::path& directory);
 
 // Refuses (InputError) a checkpoint of another job than the one with this
-// name and config hash.
+// name and config hash; one whose job differed in its participants' ranks
+// alone (config_hash_without_ranks) is the same job.
 void check_same_job(const Manifest& manifest, const std::filesystem::path& directory,
-                    const std::string& job_name, const std::string& config_hash);
+                    const std::string& job_name, const std::string& config_hash,
+                    const std::string& config_hash_without_ranks);
 
 }  // namespace cosim::checkpoint

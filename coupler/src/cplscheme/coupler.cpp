@@ -856,6 +856,8 @@ struct Coupler::Impl {
     manifest.cosim_version = COSIM_VERSION;
     manifest.job_name = job.name;
     manifest.config_hash = job.config_hash;
+    manifest.config_hash_without_ranks = job.config_hash_without_ranks;
+    for (const auto& p : job.participants) manifest.ranks[p.name] = p.ranks;
     for (const auto& [name, peer] : peers) manifest.participants.push_back(name);
     manifest.scheme = job.coupling.is_implicit() ? "implicit" : "explicit";
     manifest.window = window;

@@ -117,6 +117,9 @@ struct Job {
   std::filesystem::path file;
   std::string name;
   std::string config_hash;  // of the job file and every participant config it names
+  // The same with every participant's `ranks` value left out: a checkpoint
+  // restarts with the participants on other counts of ranks.
+  std::string config_hash_without_ranks;
   double start_time = 0.0;
   double end_time = 0.0;
   double window = 0.0;

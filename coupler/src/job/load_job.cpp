@@ -249,12 +249,39 @@ EnergyExchangeSpec read_energy_exchange(const Job& job, const config::Node& m) {
   return spec;
 }
 
-std::string hash_inputs(const config::Document& doc, const Job& job) {
+std::string hash_inputs(std::string_view job_text, const Job& job) {
   ContentHash h;
-  h.update(doc.text());
+  h.update(job_text);
   for (const auto& p : job.participants)
     if (p.config) h.update(to_hex16(hash_file(*p.config)));
   return h.hex();
+}
+
+// The job's text with the value of every participant's `ranks` key written
+// in it replaced by `_`.
+std::string text_without_ranks(const std::string& text, const Job& job) {
+  std::vector<std::size_t> line_starts{0};
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if (text[i] == '\n') line_starts.push_back(i + 1);
+  std::string out = text;
+  // From the last to the first, so that the earlier positions hold.
+  std::vector<std::size_t> values;
+  for (const auto& p : job.participants) {
+    const SourceLocation& at = p.ranks_where;
+    if (at.line < 1 || static_cast<std::size_t>(at.line) > line_starts.size() || at.column < 1)
+      continue;
+    values.push_back(line_starts[static_cast<std::size_t>(at.line - 1)] +
+                     static_cast<std::size_t>(at.column - 1));
+  }
+  std::sort(values.rbegin(), values.rend());
+  for (const std::size_t start : values) {
+    std::size_t end = start;
+    while (end < out.size() &&
+           std::string_view(",}] \t\r\n#").find(out[end]) == std::string_view::npos)
+      ++end;
+    out.replace(start, end - start, "_");
+  }
+  return out;
 }
 
 // A name that goes into file names, command lines and messages: short, of
@@ -348,7 +375,8 @@ Job load_job(const std::filesystem::path& file) {
     job.energy_exchange = read_energy_exchange(job, *e);
   check_reads_provided(job, root);
   job.coupling = read_coupling(job, root["coupling"], coupling_keys);
-  job.config_hash = hash_inputs(doc, job);
+  job.config_hash = hash_inputs(doc.text(), job);
+  job.config_hash_without_ranks = hash_inputs(text_without_ranks(doc.text(), job), job);
   return job;
 }
 

@@ -34,22 +34,34 @@ std::vector<std::string> participant_arguments(const job::ParticipantSpec& parti
 std::vector<MpmdApplication> mpmd_applications(const job::Job& job,
                                                const std::filesystem::path& job_file,
                                                const std::filesystem::path& output_dir,
-                                               const std::string& job_id,
-                                               double connect_timeout_s) {
+                                               const std::string& job_id, double connect_timeout_s,
+                                               const CheckpointArguments& checkpoints) {
   namespace fs = std::filesystem;
   std::vector<MpmdApplication> apps;
   const auto self = self_directory() / "cosim";
-  apps.push_back({"coupler",
-                  1,
-                  {self.string(), "run", fs::absolute(job_file).string(), "--output",
-                   fs::absolute(output_dir).string(), "--job-id", job_id, "--connect-timeout",
-                   fmt::format("{}", connect_timeout_s)}});
+  MpmdApplication coupler{"coupler",
+                          1,
+                          {self.string(), "run", fs::absolute(job_file).string(), "--output",
+                           fs::absolute(output_dir).string(), "--job-id", job_id,
+                           "--connect-timeout", fmt::format("{}", connect_timeout_s)}};
+  if (!checkpoints.every.empty())
+    coupler.command.insert(coupler.command.end(),
+                           {"--checkpoint-every", checkpoints.every, "--checkpoints-kept",
+                            fmt::format("{}", checkpoints.kept)});
+  if (!checkpoints.restart.empty())
+    coupler.command.insert(coupler.command.end(),
+                           {"--restart", fs::absolute(checkpoints.restart).string()});
+  apps.push_back(std::move(coupler));
   const auto base = job_file.parent_path();
   for (const auto& p : job.participants) {
     MpmdApplication app{p.name, p.ranks, {resolve_executable(p.executable, base).string()}};
     const auto args = participant_arguments(p, fs::absolute(output_dir), "mpi://", job_id,
                                             job.config_hash, connect_timeout_s);
     app.command.insert(app.command.end(), args.begin(), args.end());
+    if (!checkpoints.restart.empty())
+      app.command.insert(
+          app.command.end(),
+          {"--cosim-restart", (fs::absolute(checkpoints.restart) / p.name).string()});
     apps.push_back(std::move(app));
   }
   return apps;
@@ -94,7 +106,7 @@ unsigned available_cores() {
 std::vector<std::string> mpi_command(const job::Job& job, const std::filesystem::path& job_file,
                                      const std::filesystem::path& output_dir,
                                      const std::string& job_id, double connect_timeout_s,
-                                     unsigned cores) {
+                                     unsigned cores, const CheckpointArguments& checkpoints) {
   std::vector<std::string> cmd{"mpirun", "--oversubscribe"};
   if (::geteuid() == 0) cmd.push_back("--allow-run-as-root");
   const auto binding = binding_options(mpi_world_size(job), cores);
@@ -102,7 +114,8 @@ std::vector<std::string> mpi_command(const job::Job& job, const std::filesystem:
   // Waiting ranks yield their core: participants sub-cycle while others wait.
   cmd.insert(cmd.end(), {"--mca", "mpi_yield_when_idle", "1"});
   bool first = true;
-  for (const auto& app : mpmd_applications(job, job_file, output_dir, job_id, connect_timeout_s)) {
+  for (const auto& app :
+       mpmd_applications(job, job_file, output_dir, job_id, connect_timeout_s, checkpoints)) {
     if (!first) cmd.push_back(":");
     first = false;
     cmd.insert(cmd.end(), {"-np", fmt::format("{}", app.ranks)});
@@ -113,8 +126,10 @@ std::vector<std::string> mpi_command(const job::Job& job, const std::filesystem:
 
 std::vector<std::string> mpi_command(const job::Job& job, const std::filesystem::path& job_file,
                                      const std::filesystem::path& output_dir,
-                                     const std::string& job_id, double connect_timeout_s) {
-  return mpi_command(job, job_file, output_dir, job_id, connect_timeout_s, available_cores());
+                                     const std::string& job_id, double connect_timeout_s,
+                                     const CheckpointArguments& checkpoints) {
+  return mpi_command(job, job_file, output_dir, job_id, connect_timeout_s, available_cores(),
+                     checkpoints);
 }
 
 std::string part_peer_name(const std::string& participant, int part, int parts) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -16,6 +17,15 @@ struct MpmdApplication {
   std::vector<std::string> command;
 };
 
+// The checkpoint options of `cosim run` an MPI job passes on: the coupler
+// takes them as its own, each participant's ranks --cosim-restart with the
+// participant's directory of the checkpoint.
+struct CheckpointArguments {
+  std::string every;  // --checkpoint-every; empty: none
+  std::size_t kept = 2;
+  std::filesystem::path restart;  // --restart; empty: a fresh start
+};
+
 // The applications of an MPI job in launch order: the coupler (`cosim run`,
 // world rank 0), then each participant on its `ranks` with the arguments of
 // participant_arguments (endpoint mpi://). The mpirun line and the Slurm
@@ -23,7 +33,8 @@ struct MpmdApplication {
 std::vector<MpmdApplication> mpmd_applications(const job::Job& job,
                                                const std::filesystem::path& job_file,
                                                const std::filesystem::path& output_dir,
-                                               const std::string& job_id, double connect_timeout_s);
+                                               const std::string& job_id, double connect_timeout_s,
+                                               const CheckpointArguments& checkpoints = {});
 
 // The ranks of an MPI job: 1 (the coupler) + the sum of the participants'
 // ranks.
@@ -55,11 +66,12 @@ unsigned available_cores();
 std::vector<std::string> mpi_command(const job::Job& job, const std::filesystem::path& job_file,
                                      const std::filesystem::path& output_dir,
                                      const std::string& job_id, double connect_timeout_s,
-                                     unsigned cores);
+                                     unsigned cores, const CheckpointArguments& checkpoints = {});
 // The same for this machine (available_cores()).
 std::vector<std::string> mpi_command(const job::Job& job, const std::filesystem::path& job_file,
                                      const std::filesystem::path& output_dir,
-                                     const std::string& job_id, double connect_timeout_s);
+                                     const std::string& job_id, double connect_timeout_s,
+                                     const CheckpointArguments& checkpoints = {});
 
 // The peer name of part `part` (0-based) of a participant on `parts` ranks:
 // `name[part]` when parts > 1, the plain `name` when the participant runs on

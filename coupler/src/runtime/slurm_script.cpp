@@ -38,12 +38,13 @@ fs::path multi_prog_path(const fs::path& script_file) {
 
 SlurmScript slurm_script(const job::Job& job, const fs::path& job_file, const fs::path& output_dir,
                          const std::string& job_id, double connect_timeout_s,
-                         const fs::path& script_file) {
+                         const fs::path& script_file, const CheckpointArguments& checkpoints) {
   const fs::path script = fs::absolute(script_file);
   const fs::path conf = multi_prog_path(script);
   const fs::path output = fs::absolute(output_dir);
   check_one_line(script.string(), "the script's path");
-  const auto apps = mpmd_applications(job, job_file, output_dir, job_id, connect_timeout_s);
+  const auto apps =
+      mpmd_applications(job, job_file, output_dir, job_id, connect_timeout_s, checkpoints);
 
   SlurmScript s;
   s.multi_prog = fmt::format(
@@ -109,9 +110,10 @@ srun --kill-on-bad-exit=1 --multi-prog {conf_word}
 
 void write_slurm_script(const job::Job& job, const fs::path& job_file, const fs::path& output_dir,
                         const std::string& job_id, double connect_timeout_s,
-                        const fs::path& script_file, bool overwrite) {
+                        const fs::path& script_file, bool overwrite,
+                        const CheckpointArguments& checkpoints) {
   const SlurmScript s =
-      slurm_script(job, job_file, output_dir, job_id, connect_timeout_s, script_file);
+      slurm_script(job, job_file, output_dir, job_id, connect_timeout_s, script_file, checkpoints);
   const fs::path conf = multi_prog_path(script_file);
   for (const fs::path& file : {script_file, conf}) {
     std::error_code ec;

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "job/job.hpp"
+#include "runtime/mpi_launch.hpp"
 
 // A Slurm batch script of an MPI job (`cosim run job.yaml --output dir
 // --slurm-script run.slurm`): one `srun --multi-prog` step starts the
@@ -28,7 +29,8 @@ std::filesystem::path multi_prog_path(const std::filesystem::path& script_file);
 // a line break, or more than 127 words on a line (srun's limit).
 SlurmScript slurm_script(const job::Job& job, const std::filesystem::path& job_file,
                          const std::filesystem::path& output_dir, const std::string& job_id,
-                         double connect_timeout_s, const std::filesystem::path& script_file);
+                         double connect_timeout_s, const std::filesystem::path& script_file,
+                         const CheckpointArguments& checkpoints = {});
 
 // Writes the script to `script_file` and its configuration to
 // multi_prog_path(script_file), running nothing and creating no output
@@ -37,6 +39,6 @@ SlurmScript slurm_script(const job::Job& job, const std::filesystem::path& job_f
 void write_slurm_script(const job::Job& job, const std::filesystem::path& job_file,
                         const std::filesystem::path& output_dir, const std::string& job_id,
                         double connect_timeout_s, const std::filesystem::path& script_file,
-                        bool overwrite);
+                        bool overwrite, const CheckpointArguments& checkpoints = {});
 
 }  // namespace cosim::runtime

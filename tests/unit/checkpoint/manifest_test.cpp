@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 
 #include "cosim/error.hpp"
 #include "text_files.hpp"
@@ -24,7 +25,9 @@ fs::path checkpoint_with_files(const std::string& name) {
   m.cosim_version = COSIM_VERSION;
   m.job_name = "slide";
   m.config_hash = "0123456789abcdef";
+  m.config_hash_without_ranks = "00000000ffffffff";
   m.participants = {"soil"};
+  m.ranks = {{"soil", 2}};
   m.scheme = "explicit";
   m.window = 40;
   m.time = 0.4;
@@ -51,8 +54,17 @@ TEST(CheckpointManifest, ListsEveryFileAndReadsBack) {
   EXPECT_EQ(m.files[0].path, "coupler.h5");
   EXPECT_EQ(m.files[0].size, 13u);
   EXPECT_EQ(m.files[1].path, "soil/participant.h5");
-  EXPECT_NO_THROW(check_same_job(m, dir, "slide", "0123456789abcdef"));
-  EXPECT_THROW(check_same_job(m, dir, "slide", "fedcba9876543210"), InputError);
+  EXPECT_EQ(m.ranks, (std::map<std::string, int>{{"soil", 2}}));
+  EXPECT_NO_THROW(check_same_job(m, dir, "slide", "0123456789abcdef", "1111111111111111"));
+  EXPECT_THROW(check_same_job(m, dir, "slide", "fedcba9876543210", "1111111111111111"), InputError);
+  EXPECT_THROW(check_same_job(m, dir, "other", "0123456789abcdef", "00000000ffffffff"), InputError);
+}
+
+// A job whose participants' ranks alone changed is the same job.
+TEST(CheckpointManifest, AJobOnOtherRanksIsTheSameJob) {
+  const fs::path dir = checkpoint_with_files("other_ranks");
+  const Manifest m = read_manifest(dir);
+  EXPECT_NO_THROW(check_same_job(m, dir, "slide", "fedcba9876543210", "00000000ffffffff"));
 }
 
 TEST(CheckpointManifest, RefusesWhatIsNotTheCheckpointItDescribes) {

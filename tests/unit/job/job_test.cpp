@@ -134,6 +134,29 @@ TEST_F(JobFile, RanksDefaultsToOneAndIsRead) {
   EXPECT_EQ(four.participant("water")->ranks, 1);
 }
 
+// The hash without ranks leaves out the participants' rank counts alone:
+// a checkpoint restarts on other counts of ranks, not with another job.
+TEST_F(JobFile, TheHashWithoutRanksLeavesOutTheRankCountsAlone) {
+  std::string text =
+      cosim::testing::replaced(valid_job, "window: 0.01", "window: 0.01\ntransport: mpi");
+  const auto with_ranks = [&](const std::string& soil, const std::string& water) {
+    std::string t = cosim::testing::replaced(text, "executable: mpm_solver",
+                                             "executable: mpm_solver\n    ranks: " + soil);
+    return load_job(write(cosim::testing::replaced(t, "executable: ice_fluid",
+                                                   "executable: ice_fluid\n    ranks: " + water)));
+  };
+  const Job two = with_ranks("2", "1");
+  const Job three = with_ranks("3", "12");
+  EXPECT_NE(two.config_hash, three.config_hash);
+  EXPECT_EQ(two.config_hash_without_ranks, three.config_hash_without_ranks);
+  EXPECT_NE(two.config_hash, two.config_hash_without_ranks);
+  const Job longer = load_job(write(
+      cosim::testing::replaced(cosim::testing::replaced(text, "executable: mpm_solver",
+                                                        "executable: mpm_solver\n    ranks: 2"),
+                               "end_time: 1.0", "end_time: 2.0")));
+  EXPECT_NE(longer.config_hash_without_ranks, two.config_hash_without_ranks);
+}
+
 TEST_F(JobFile, RanksBelowOneIsRefusedAtItsKeyAndLine) {
   for (const char* value : {"0", "-3"}) {
     const std::string e = error_of(variant(
