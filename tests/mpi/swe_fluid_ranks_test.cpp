@@ -163,19 +163,26 @@ TEST(SweFluidRanks, ACoupledWaterAndSoilOnTwoRanksGiveTheOneProcessRunBitForBit)
 // The same job with both on 2 ranks and a checkpoint every 25 windows: the
 // run continued from one writes what the uninterrupted run wrote after it,
 // bit for bit (each water rank its block, each soil rank its points); with
-// the soil on 1 rank instead (its points joined from both parts), the same
-// last snapshots, as the soil's ranks give the one-process run bit for bit.
+// the soil on 1 rank instead (its points joined from both parts), or the
+// water on 1 or 3 (each block's cells and ghosts joined from the blocks that
+// own them), the same last snapshots, as the ranks of both give the
+// one-process run bit for bit.
 TEST(SweFluidRanks, ACoupledJobOnRanksContinuesFromItsCheckpoint) {
   const fs::path dir = fresh_directory("swe_fluid_coupled_ranks_restart");
   const fs::path job = write_basin_job(dir / "two", 2, 2);
   expect_restart_continues(dir / "two", job, "25", 25);
   const fs::path checkpoint = checkpoint_of(dir / "two" / "whole", 25);
   EXPECT_TRUE(fs::exists(checkpoint / "water" / "rank_1" / "state.h5"));
-  const fs::path soil_on_one = write_basin_job(dir / "one", 1, 2);
-  const ProcessResult r =
-      cosim_run(soil_on_one, dir / "one" / "run", 240, {"--restart", checkpoint.string()});
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_EQ(expect_same_last_snapshots(dir / "two" / "whole", dir / "one" / "run"), 2u);
+  for (const auto& [soil_ranks, water_ranks] :
+       {std::pair{1, 2}, std::pair{2, 1}, std::pair{2, 3}}) {
+    SCOPED_TRACE(fmt::format("soil on {} ranks, water on {}", soil_ranks, water_ranks));
+    const fs::path run_dir = dir / fmt::format("soil_{}_water_{}", soil_ranks, water_ranks);
+    const fs::path job_on = write_basin_job(run_dir, soil_ranks, water_ranks);
+    const ProcessResult r =
+        cosim_run(job_on, run_dir / "run", 240, {"--restart", checkpoint.string()});
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(expect_same_last_snapshots(dir / "two" / "whole", run_dir / "run"), 2u);
+  }
 }
 
 TEST(SweFluidRanks, RefusesBlocksNarrowerThanTheGhostLayers) {

@@ -3,6 +3,7 @@
 #include <array>
 #include <memory>
 
+#include "cosim/decomposition/cartesian_decomposition.hpp"
 #include "swe/boundary.hpp"
 #include "swe/solver.hpp"
 #include "swe/subdomain_link.hpp"
@@ -81,6 +82,15 @@ class Solver2d final : public Solver {
   void restore_state() override;
   void write_state(cosim::StateFileWriter& out) const override;
   void read_state(const cosim::StateFileReader& in) override;
+  // The state the blocks `written` (owned cells of the whole grid of
+  // grid_cells cells) of another decomposition wrote into `parts`, joined
+  // into this solver's block, which owns the cells `mine` (restart on
+  // another count of ranks). Throws cosim::InputError when the parts do not
+  // cover the block.
+  void read_state(std::span<const cosim::StateFileReader* const> parts,
+                  std::span<const std::array<cosim::decomposition::Range, 3>> written,
+                  const std::array<std::int64_t, 3>& grid_cells,
+                  const std::array<cosim::decomposition::Range, 3>& mine);
 
   // Views of unpadded copies of the state, refreshed by the first call after
   // a step (the same storage for the solver's life).

@@ -10,10 +10,12 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <variant>
 
+#include "cosim/decomposition/block_join.hpp"
 #include "cosim/error.hpp"
 #include "cosim/fields.hpp"
 #include "cosim/io/files.hpp"
@@ -29,6 +31,7 @@
 #include "swe/coupling/extended_free_surface.hpp"
 #include "swe/io/gauge_recorder.hpp"
 #include "swe/io/run_ranks.hpp"
+#include "swe/solver_2d.hpp"
 #include "swe/two_phase/two_phase_exchange.hpp"
 
 #ifdef SWE_WITH_MPI
@@ -128,6 +131,7 @@ class CaseRun {
         declare_coupling();
         participant_.declare_repeatable();
         participant_.declare_checkpointable();
+        if (solver_->dimension() == 2) participant_.declare_restartable_on_other_ranks();
         if (c_.window > 0.0) participant_.set_standalone_window(c_.window);
         participant_.initialize(0.0, c_.end_time);
         if (!restarts() && participant_.is_coupled() &&
@@ -444,6 +448,11 @@ class CaseRun {
     cosim::write_schedule(out, "run.snapshots", progress_.snapshots);
     cosim::write_schedule(out, "run.gauge_times", *progress_.gauge_times);
     out.numbers("coupling.initial_surface", coupling_.initial_surface);
+    if (solver_->dimension() == 2) {
+      const auto block = block_cells();
+      out.integers("block.cells",
+                   std::array{block[0].begin, block[0].end, block[1].begin, block[1].end});
+    }
     if (two_phase_) {
       out.numbers("two_phase.velocity_x", two_phase_->layer().velocity_x);
       out.numbers("two_phase.velocity_y", two_phase_->layer().velocity_y);
@@ -456,17 +465,62 @@ class CaseRun {
     participant_.checkpoint_written();
   }
 
+  // This process's cells of the whole 2D grid.
+  std::array<cosim::decomposition::Range, 3> block_cells() const {
+    if (auto block = ranks_.block_cells()) return *block;
+    return {cosim::decomposition::Range{0, c_.grid.cells[0]},
+            cosim::decomposition::Range{0, c_.grid.cells[1]}, cosim::decomposition::Range{0, 1}};
+  }
+
+  // The 2D blocks of a checkpoint written on another count of ranks, joined
+  // into this process's block (its cells, and the initial surface); the
+  // highest surface is the parts' highest.
+  void read_blocks_of_checkpoint() {
+    using cosim::decomposition::Range;
+    std::vector<std::unique_ptr<cosim::StateFileReader>> files;
+    std::vector<const cosim::StateFileReader*> parts;
+    std::vector<std::array<Range, 3>> written;
+    for (const auto& directory : participant_.restart_parts()) {
+      files.push_back(std::make_unique<cosim::StateFileReader>(directory / state_file, state_kind,
+                                                               state_version));
+      parts.push_back(files.back().get());
+      progress_.eta_max = std::max(progress_.eta_max, files.back()->number("run.eta_max"));
+      std::vector<std::int64_t> b;
+      files.back()->integers("block.cells", 4, b);
+      written.push_back({Range{b[0], b[1]}, Range{b[2], b[3]}, Range{0, 1}});
+    }
+    const std::array<std::int64_t, 3> grid{c_.grid.cells[0], c_.grid.cells[1], 1};
+    const auto mine = block_cells();
+    dynamic_cast<Solver2d&>(*solver_).read_state(parts, written, grid, mine);
+    std::vector<std::vector<double>> surfaces(parts.size());
+    std::vector<std::span<const double>> spans;
+    std::vector<cosim::decomposition::StoredBlock> from;
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+      from.push_back({written[p]});
+      parts[p]->numbers("coupling.initial_surface", from.back().size(), surfaces[p]);
+      spans.emplace_back(surfaces[p]);
+    }
+    (void)cosim::decomposition::join_blocks(from, spans, grid, {mine}, coupling_.initial_surface);
+  }
+
   void read_checkpoint() {
-    const cosim::StateFileReader in(participant_.restart_directory() / state_file, state_kind,
-                                    state_version);
-    solver_->read_state(in);
+    const bool another_count =
+        participant_.restart_parts().size() != static_cast<std::size_t>(ranks_.ranks());
+    // On another count of ranks the run's progress is the first part's.
+    const cosim::StateFileReader in(
+        (another_count ? participant_.restart_parts().at(0) : participant_.restart_directory()) /
+            state_file,
+        state_kind, state_version);
+    if (!another_count) solver_->read_state(in);
     progress_.steps = static_cast<std::size_t>(in.integer("run.steps"));
     progress_.min_dt = in.number("run.min_dt");
     progress_.eta_max = in.number("run.eta_max");
+    if (another_count) read_blocks_of_checkpoint();
     cosim::read_schedule(in, "run.snapshots", progress_.snapshots);
     cosim::read_schedule(in, "run.gauge_times", *progress_.gauge_times);
-    in.numbers("coupling.initial_surface", coupling_.initial_surface.size(),
-               coupling_.initial_surface);
+    if (!another_count)
+      in.numbers("coupling.initial_surface", coupling_.initial_surface.size(),
+                 coupling_.initial_surface);
     if (two_phase_) {
       TwoPhaseExchange::State state;
       const std::size_t n = solver_->cell_count();

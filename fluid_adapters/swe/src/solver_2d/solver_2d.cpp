@@ -1,5 +1,6 @@
 #include "swe/solver_2d.hpp"
 
+#include <fmt/format.h>
 #include <omp.h>
 
 #include <algorithm>
@@ -8,9 +9,11 @@
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
+#include "cosim/decomposition/block_join.hpp"
 #include "cosim/error.hpp"
 #include "solver_2d/ghost_cells.hpp"
 #include "solver_2d/padded_fields.hpp"
@@ -358,6 +361,33 @@ void Solver2d::write_state(cosim::StateFileWriter& out) const {
 void Solver2d::read_state(const cosim::StateFileReader& in) {
   for (const auto& [name, values] : Impl::state_arrays(*impl_))
     in.numbers(name, values->size(), *values);
+  impl_->cells_current = false;
+}
+
+void Solver2d::read_state(std::span<const cosim::StateFileReader* const> parts,
+                          std::span<const std::array<cosim::decomposition::Range, 3>> written,
+                          const std::array<std::int64_t, 3>& grid_cells,
+                          const std::array<cosim::decomposition::Range, 3>& mine) {
+  using cosim::decomposition::StoredBlock;
+  for (const auto& [name, values] : Impl::state_arrays(*impl_)) {
+    // The padded arrays hold the ghost layers; bed_cells the cells alone.
+    const int g =
+        std::string_view(name) == "bed_cells" ? 0 : static_cast<int>(PaddedLayout::ghosts);
+    std::vector<StoredBlock> from;
+    std::vector<std::vector<double>> arrays(parts.size());
+    std::vector<std::span<const double>> spans;
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+      from.push_back({written[p], {g, g, 0}});
+      parts[p]->numbers(name, from.back().size(), arrays[p]);
+      spans.emplace_back(arrays[p]);
+    }
+    const StoredBlock to{mine, {g, g, 0}};
+    if (cosim::decomposition::join_blocks(from, spans, grid_cells, to, *values) > 0)
+      throw cosim::InputError(
+          fmt::format("{} and the other parts of its checkpoint do not cover "
+                      "this block's '{}'",
+                      parts[0]->file().string(), name));
+  }
   impl_->cells_current = false;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <memory>
@@ -8,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "cosim/decomposition/cartesian_decomposition.hpp"
 #include "cosim/io/snapshot_writer.hpp"
 #include "cosim/mesh.hpp"
 #include "swe/solver.hpp"
@@ -46,6 +48,11 @@ class RunRanks {
   // cells its block holds (in the solver's order); none on one process.
   virtual std::optional<std::pair<cosim::Mesh, cosim::MeshPart>> coupling_cells(
       const std::string& /*mesh_name*/) const {
+    return std::nullopt;
+  }
+  // The cells of the whole grid this process's block owns; none on one
+  // process (the whole grid).
+  virtual std::optional<std::array<cosim::decomposition::Range, 3>> block_cells() const {
     return std::nullopt;
   }
 };

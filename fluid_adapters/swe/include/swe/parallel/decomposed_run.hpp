@@ -40,6 +40,9 @@ class DecomposedRun final : public RunRanks {
                                                  const cosim::Mesh& cells) const override;
   std::optional<std::pair<cosim::Mesh, cosim::MeshPart>> coupling_cells(
       const std::string& mesh_name) const override;
+  std::optional<std::array<cosim::decomposition::Range, 3>> block_cells() const override {
+    return block().cells;
+  }
 
  private:
   MPI_Comm comm_;
