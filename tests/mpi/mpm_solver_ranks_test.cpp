@@ -331,7 +331,8 @@ TEST(MpmSolverRanks, ACoupledSoilOnTwoRanksGivesTheOneProcessRun) {
 // from the parts and split again), here 1 and 2 from checkpoints of 2 and
 // 1: the same last snapshots, since the soil's ranks give the one-process
 // run bit for bit. Terzaghi's consolidation with the water on 2 ranks too
-// continues bit for bit on the same ranks.
+// continues bit for bit on the same ranks, and on 1 and 3 ranks each to the
+// pressure solver's tolerance.
 TEST(MpmSolverRanks, ACoupledSoilContinuesFromItsCheckpointOnAnyCountOfRanks) {
   const fs::path dir = fresh_directory("mpm_solver_coupled_ranks_restart");
   const CoupledJob column{".", "job.yaml", "0.1", "soil_column.yaml", "water.yaml"};
@@ -362,8 +363,45 @@ TEST(MpmSolverRanks, ACoupledSoilContinuesFromItsCheckpointOnAnyCountOfRanks) {
   const CoupledJob terzaghi{"terzaghi", "job.yaml", "0.75", "soil.yaml", "water.yaml", true};
   expect_restart_continues(
       dir / "terzaghi", write_coupled_job(dir / "terzaghi", terzaghi, "0.004", 2, 2), "200", 200);
-  EXPECT_TRUE(
-      fs::exists(checkpoint_of(dir / "terzaghi" / "whole", 200) / "water" / "rank_1" / "state.h5"));
+  const fs::path checkpoint = checkpoint_of(dir / "terzaghi" / "whole", 200);
+  EXPECT_TRUE(fs::exists(checkpoint / "water" / "rank_1" / "state.h5"));
+  // On 1 and on 3 ranks each (the water's blocks joined from the two that
+  // wrote it, cells and faces): the last snapshots of the uninterrupted run,
+  // to the pressure solver's tolerance (its sums change with the ranks).
+  const auto last_snapshot = [](const fs::path& directory, const std::string& prefix) {
+    fs::path last;
+    for (const auto& entry : fs::directory_iterator(directory)) {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind(prefix, 0) == 0 && entry.path().extension() == ".h5" &&
+          (last.empty() || name > last.filename().string()))
+        last = entry.path();
+    }
+    return last;
+  };
+  for (const int ranks : {1, 3}) {
+    const fs::path run_dir = dir / fmt::format("terzaghi_on_{}", ranks);
+    const ProcessResult r = cosim_run(write_coupled_job(run_dir, terzaghi, "0.004", ranks, ranks),
+                                      run_dir / "run", 240, {"--restart", checkpoint.string()});
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    double worst = 0.0;
+    {
+      const Hdf5Reader a(last_snapshot(dir / "terzaghi" / "whole" / "water", "ice_")),
+          b(last_snapshot(run_dir / "run" / "water", "ice_"));
+      for (const char* field : {"pressure", "velocity_water", "bulk_density_water"})
+        worst = std::max(worst, relative_difference(a, b, std::string("fields/") + field));
+    }
+    {
+      const Hdf5Reader a(last_snapshot(dir / "terzaghi" / "whole" / "soil", "particles_")),
+          b(last_snapshot(run_dir / "run" / "soil", "particles_"));
+      for (const char* field : {"velocity", "stress", "pore_pressure", "displacement"})
+        worst = std::max(worst, relative_difference(a, b, std::string("fields/") + field));
+    }
+    std::printf(
+        "Terzaghi restarted from 2 + 2 ranks on %d + %d: worst relative difference %.2e "
+        "(tolerance 1e-8)\n",
+        ranks, ranks, worst);
+    EXPECT_LE(worst, 1e-8);
+  }
 }
 
 // A soil that cannot start on its ranks (the Darcy column's one cell row

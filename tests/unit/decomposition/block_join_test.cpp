@@ -34,15 +34,15 @@ Written write(const Index& cells, std::array<int, 3> dims, std::array<int, 3> gh
   const CartesianDecomposition decomposition(dim, cells, dims);
   Written w;
   for (int r = 0; r < decomposition.ranks(); ++r) {
-    StoredBlock b{decomposition.block(r).cells, ghosts};
+    const StoredBlock b = StoredBlock::padded(decomposition.block(r).cells, ghosts);
     std::vector<double> array;
-    for (std::int64_t k = b.cells[2].begin - ghosts[2]; k < b.cells[2].end + ghosts[2]; ++k)
-      for (std::int64_t j = b.cells[1].begin - ghosts[1]; j < b.cells[1].end + ghosts[1]; ++j)
-        for (std::int64_t i = b.cells[0].begin - ghosts[0]; i < b.cells[0].end + ghosts[0]; ++i) {
+    for (std::int64_t k = b.stored[2].begin; k < b.stored[2].end; ++k)
+      for (std::int64_t j = b.stored[1].begin; j < b.stored[1].end; ++j)
+        for (std::int64_t i = b.stored[0].begin; i < b.stored[0].end; ++i) {
           const Index cell{i, j, k};
           bool owned = true, beyond = false;
           for (std::size_t d = 0; d < 3; ++d) {
-            owned = owned && cell[d] >= b.cells[d].begin && cell[d] < b.cells[d].end;
+            owned = owned && cell[d] >= b.owned[d].begin && cell[d] < b.owned[d].end;
             beyond = beyond || cell[d] < 0 || cell[d] >= cells[d];
           }
           array.push_back(owned || beyond ? value_at(cell)
@@ -62,14 +62,13 @@ void expect_joined(const Index& cells, std::array<int, 3> written_dims,
   const int dim = cells[2] > 1 ? 3 : 2;
   const CartesianDecomposition reading(dim, cells, read_dims);
   for (int r = 0; r < reading.ranks(); ++r) {
-    const StoredBlock to{reading.block(r).cells, ghosts};
+    const StoredBlock to = StoredBlock::padded(reading.block(r).cells, ghosts);
     std::vector<double> joined(to.size(), -1.0);
     EXPECT_EQ(join_blocks(w.blocks, values, cells, to, joined), 0u);
     std::size_t n = 0;
-    for (std::int64_t k = to.cells[2].begin - ghosts[2]; k < to.cells[2].end + ghosts[2]; ++k)
-      for (std::int64_t j = to.cells[1].begin - ghosts[1]; j < to.cells[1].end + ghosts[1]; ++j)
-        for (std::int64_t i = to.cells[0].begin - ghosts[0]; i < to.cells[0].end + ghosts[0];
-             ++i, ++n)
+    for (std::int64_t k = to.stored[2].begin; k < to.stored[2].end; ++k)
+      for (std::int64_t j = to.stored[1].begin; j < to.stored[1].end; ++j)
+        for (std::int64_t i = to.stored[0].begin; i < to.stored[0].end; ++i, ++n)
           ASSERT_EQ(joined[n], value_at({i, j, k}))
               << "block " << r << " cell " << i << ", " << j << ", " << k;
   }
@@ -88,11 +87,40 @@ TEST(BlockJoin, ThreeDimensionalBlocksWithWideGhosts) {
   expect_joined({6, 5, 4}, {2, 1, 2}, {1, 3, 1}, {3, 3, 3});
 }
 
+// Two values per cell, blocks widened toward their neighbours alone (as
+// ICE's), and faces: a face array along x is a cell array one longer along
+// x, whose blocks own their upper face too (shared with the next block).
+TEST(BlockJoin, ComponentsAndBlocksWidenedTowardTheirNeighbours) {
+  const Index faces{8, 3, 1};  // the x faces of a grid of 7 x 3 cells
+  std::vector<StoredBlock> blocks;
+  std::vector<std::vector<double>> arrays;
+  for (const auto& [owned, stored] :
+       {std::pair{Range{0, 4}, Range{0, 6}}, std::pair{Range{3, 8}, Range{1, 8}}}) {
+    StoredBlock b{{owned, Range{0, 3}, Range{0, 1}}, {stored, Range{0, 3}, Range{0, 1}}, 2};
+    std::vector<double> array;
+    for (std::int64_t j = 0; j < 3; ++j)
+      for (std::int64_t i = stored.begin; i < stored.end; ++i)
+        for (int k = 0; k < 2; ++k) array.push_back(value_at({i, j, 0}) + 0.5 * k);
+    blocks.push_back(b);
+    arrays.push_back(std::move(array));
+  }
+  std::vector<std::span<const double>> values(arrays.begin(), arrays.end());
+  StoredBlock whole{
+      {Range{0, 8}, Range{0, 3}, Range{0, 1}}, {Range{0, 8}, Range{0, 3}, Range{0, 1}}, 2};
+  std::vector<double> joined(whole.size(), -1.0);
+  EXPECT_EQ(join_blocks(blocks, values, faces, whole, joined), 0u);
+  for (std::int64_t j = 0; j < 3; ++j)
+    for (std::int64_t i = 0; i < 8; ++i)
+      for (int k = 0; k < 2; ++k)
+        EXPECT_EQ(joined[static_cast<std::size_t>((j * 8 + i) * 2 + k)],
+                  value_at({i, j, 0}) + 0.5 * k);
+}
+
 TEST(BlockJoin, CountsWhatNoBlockHolds) {
   const Written w = write({7, 5, 1}, {2, 1, 1}, {0, 0, 0});
   std::vector<std::span<const double>> values(w.arrays.begin(), w.arrays.end());
   // Ghosts beyond the grid that the blocks written did not store.
-  const StoredBlock to{{Range{0, 7}, Range{0, 5}, Range{0, 1}}, {1, 1, 0}};
+  const StoredBlock to = StoredBlock::padded({Range{0, 7}, Range{0, 5}, Range{0, 1}}, {1, 1, 0});
   std::vector<double> joined(to.size(), -1.0);
   EXPECT_EQ(join_blocks(w.blocks, values, {7, 5, 1}, to, joined), 9u * 7u - 7u * 5u);
 }

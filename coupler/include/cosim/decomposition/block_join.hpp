@@ -11,22 +11,28 @@
 // restarted on another count of ranks). Pure arithmetic.
 namespace cosim::decomposition {
 
-// Where one block's array lies in the whole grid: the cells it owns and
-// the layers of `ghosts` cells stored around them, x fastest, then y, then z
-// (0 ghosts beyond the grid's dimension; the owned range {0, 1} there).
+// Where one block's array lies in the whole grid: the cells it owns, and
+// the cells it stores (the owned ones and ghost layers around them), x
+// fastest, then y, then z; beyond the grid's dimension both are {0, 1}.
+// `components` values per cell, one after the other.
 struct StoredBlock {
-  std::array<Range, 3> cells{};
-  std::array<int, 3> ghosts{0, 0, 0};
+  std::array<Range, 3> owned{};
+  std::array<Range, 3> stored{};
+  int components = 1;
 
-  // The stored values: (cells + 2 ghosts) per direction.
+  // The owned cells with `ghosts` layers on both sides of each direction.
+  static StoredBlock padded(const std::array<Range, 3>& owned, std::array<int, 3> ghosts,
+                            int components = 1);
+  // The stored values.
   std::size_t size() const;
 };
 
 // Fills `to`'s array `values_to` (to.size() values) from the arrays `values`
 // of the blocks `from` (of another decomposition of the same grid of
-// grid_cells cells): a value inside the grid from the block that owns its
-// cell, one of a ghost beyond the grid's edge from a block that stores it.
-// Returns the count of values no block had (left as they were).
+// grid_cells cells, with as many components): a value inside the grid from
+// the block that owns its cell, one of a ghost beyond the grid's edge from a
+// block that stores it. Returns the count of cells no block had (left as
+// they were).
 std::size_t join_blocks(std::span<const StoredBlock> from,
                         std::span<const std::span<const double>> values,
                         const std::array<std::int64_t, 3>& grid_cells, const StoredBlock& to,

@@ -88,6 +88,7 @@ class CaseRun {
         }
         participant_.declare_repeatable();
         participant_.declare_checkpointable();
+        participant_.declare_restartable_on_other_ranks();
         if (c_.window > 0.0) participant_.set_standalone_window(c_.window);
         participant_.initialize(0.0, c_.end_time);
         use_petsc_if_asked();  // after the MPI transport, if any, has started MPI
@@ -308,14 +309,63 @@ class CaseRun {
                                              run_.cg_iterations, run_.most_cg_iterations});
     out.number("run.most_closure", run_.most_closure);
     out.number("run.min_dt", run_.min_dt);
+    const auto block = block_cells();
+    for (const auto& [name, ranges] :
+         {std::pair{"block.owned", block.owned}, std::pair{"block.stored", block.stored}})
+      out.integers(name, std::array{ranges[0].begin, ranges[0].end, ranges[1].begin, ranges[1].end,
+                                    ranges[2].begin, ranges[2].end});
     out.commit();
     participant_.checkpoint_written();
   }
 
+  // The cells of the case's grid this process owns and holds.
+  cosim::decomposition::StoredBlock block_cells() const {
+    if (auto block = ranks_.block()) return *block;
+    std::array<cosim::decomposition::Range, 3> whole{};
+    for (std::size_t d = 0; d < 3; ++d)
+      whole[d] =
+          cosim::decomposition::Range{0, d < static_cast<std::size_t>(Dim) ? c_.cells[d] : 1};
+    return {whole, whole, 1};
+  }
+
+  // The solver's state from the blocks of a checkpoint written on another
+  // count of ranks, joined into this process's block.
+  void read_blocks_of_checkpoint() {
+    using cosim::decomposition::Range;
+    std::vector<std::unique_ptr<cosim::StateFileReader>> files;
+    std::vector<const cosim::StateFileReader*> parts;
+    std::vector<cosim::decomposition::StoredBlock> written;
+    for (const auto& directory : participant_.restart_parts()) {
+      files.push_back(std::make_unique<cosim::StateFileReader>(directory / state_file, state_kind,
+                                                               state_version));
+      parts.push_back(files.back().get());
+      std::vector<std::int64_t> owned, stored;
+      files.back()->integers("block.owned", 6, owned);
+      files.back()->integers("block.stored", 6, stored);
+      cosim::decomposition::StoredBlock b;
+      for (std::size_t d = 0; d < 3; ++d) {
+        b.owned[d] = Range{owned[2 * d], owned[2 * d + 1]};
+        b.stored[d] = Range{stored[2 * d], stored[2 * d + 1]};
+      }
+      written.push_back(b);
+    }
+    std::array<std::int64_t, 3> grid{1, 1, 1};
+    for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) grid[d] = c_.cells[d];
+    read_saved_state<Dim>(parts, written, grid, block_cells(), saved_solver_);
+  }
+
   void read_checkpoint() {
-    const cosim::StateFileReader in(participant_.restart_directory() / state_file, state_kind,
-                                    state_version);
-    read_saved_state(in, static_cast<std::size_t>(solver_->grid().cell_count()), saved_solver_);
+    // On another count of ranks the run's bookkeeping is the first part's.
+    const bool another_count =
+        participant_.restart_parts().size() != static_cast<std::size_t>(ranks_.ranks());
+    const cosim::StateFileReader in(
+        (another_count ? participant_.restart_parts().at(0) : participant_.restart_directory()) /
+            state_file,
+        state_kind, state_version);
+    if (another_count)
+      read_blocks_of_checkpoint();
+    else
+      read_saved_state(in, static_cast<std::size_t>(solver_->grid().cell_count()), saved_solver_);
     solver_->restore_state(saved_solver_);
     cosim::read_schedule(in, "run.snapshots", run_.snapshots);
     cosim::read_schedule(in, "run.gauge_times", run_.gauge_times);

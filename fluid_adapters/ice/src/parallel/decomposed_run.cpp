@@ -70,6 +70,16 @@ std::optional<typename GaugeRecorder<Dim>::Decomposed> DecomposedRun<Dim>::gauge
 }
 
 template <int Dim>
+std::optional<cosim::decomposition::StoredBlock> DecomposedRun<Dim>::block() const {
+  const auto& halo = block_.link->halo();
+  const auto offset = block_.link->offset();
+  cosim::decomposition::StoredBlock b{halo.block().cells, halo.block().cells, 1};
+  for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d)
+    b.stored[d] = {offset[d], offset[d] + halo.padded_extent()[d]};
+  return b;
+}
+
+template <int Dim>
 std::optional<typename RunRanks<Dim>::CellsPart> DecomposedRun<Dim>::coupling_cells(
     const IceSolver<Dim>& solver, const std::string& mesh_name) const {
   cosim::Mesh whole = cell_mesh(whole_, mesh_name);

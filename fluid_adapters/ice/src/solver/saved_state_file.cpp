@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <string>
+#include <vector>
 
 #include "cosim/error.hpp"
 
@@ -37,18 +38,43 @@ void for_each_cell_field(State& s, Visit&& visit) {
   visit("porosity_to_displace", s.porosity_to_displace);
 }
 
-// The arrays of other lengths: face fields, per material or not, and the
-// solid's impulse.
+// The arrays of other lengths: face fields, per material or not (their
+// normal given), and the solid's impulse (Dim values per cell; normal -1).
 template <int Dim, class State, class Visit>
 void for_each_other_array(State& s, Visit&& visit) {
   for (std::size_t m = 0; m < s.face_velocity.size(); ++m)
     for (int d = 0; d < Dim; ++d)
-      visit(fmt::format("face_velocity.{}.{}", m, d), s.face_velocity[m][d]);
-  for (int d = 0; d < Dim; ++d) visit(fmt::format("face_pressure.{}", d), s.face_pressure[d]);
-  visit("solid_impulse", s.solid_impulse);
+      visit(fmt::format("face_velocity.{}.{}", m, d), s.face_velocity[m][d], d);
+  for (int d = 0; d < Dim; ++d) visit(fmt::format("face_pressure.{}", d), s.face_pressure[d], d);
+  visit("solid_impulse", s.solid_impulse, -1);
   for (std::size_t m = 0; m < s.previous_face_velocity.size(); ++m)
     for (int d = 0; d < Dim; ++d)
-      visit(fmt::format("previous_face_velocity.{}.{}", m, d), s.previous_face_velocity[m][d]);
+      visit(fmt::format("previous_face_velocity.{}.{}", m, d), s.previous_face_velocity[m][d], d);
+}
+
+// The scalars of a state and the counts of its per-material arrays.
+template <int Dim>
+void read_scalars(const cosim::StateFileReader& in, SavedIceState<Dim>& s) {
+  if (in.integer("dimension") != Dim)
+    throw cosim::InputError(fmt::format("{}: a {}D state, the case is {}D", in.file().string(),
+                                        in.integer("dimension"), Dim));
+  const auto count = [&](const char* name) { return static_cast<std::size_t>(in.integer(name)); };
+  s.fluid.materials.resize(count("materials"));
+  s.kappa.resize(count("kappas"));
+  s.face_velocity.resize(count("face_velocities"));
+  s.previous_face_velocity.resize(count("previous_face_velocities"));
+  s.time = in.number("time");
+  s.steps = static_cast<long>(in.integer("steps"));
+  s.last_face_rate = in.number("last_face_rate");
+  s.solid_drag_on = in.integer("solid_drag_on") != 0;
+}
+
+// A block's faces normal to `normal` as a block of cells one longer along it.
+cosim::decomposition::StoredBlock faces_of(cosim::decomposition::StoredBlock b, int normal) {
+  const auto d = static_cast<std::size_t>(normal);
+  ++b.owned[d].end;
+  ++b.stored[d].end;
+  return b;
 }
 
 }  // namespace
@@ -65,7 +91,7 @@ void write_saved_state(cosim::StateFileWriter& out, const SavedIceState<Dim>& s)
   out.integer("steps", s.steps);
   out.number("last_face_rate", s.last_face_rate);
   out.integer("solid_drag_on", s.solid_drag_on ? 1 : 0);
-  const auto write = [&](const std::string& name, const std::vector<double>& values) {
+  const auto write = [&](const std::string& name, const std::vector<double>& values, int = 0) {
     out.numbers(name, values);
   };
   for_each_cell_field<Dim>(s, write);
@@ -74,18 +100,7 @@ void write_saved_state(cosim::StateFileWriter& out, const SavedIceState<Dim>& s)
 
 template <int Dim>
 void read_saved_state(const cosim::StateFileReader& in, std::size_t cells, SavedIceState<Dim>& s) {
-  if (in.integer("dimension") != Dim)
-    throw cosim::InputError(fmt::format("{}: a {}D state, the case is {}D", in.file().string(),
-                                        in.integer("dimension"), Dim));
-  const auto count = [&](const char* name) { return static_cast<std::size_t>(in.integer(name)); };
-  s.fluid.materials.resize(count("materials"));
-  s.kappa.resize(count("kappas"));
-  s.face_velocity.resize(count("face_velocities"));
-  s.previous_face_velocity.resize(count("previous_face_velocities"));
-  s.time = in.number("time");
-  s.steps = static_cast<long>(in.integer("steps"));
-  s.last_face_rate = in.number("last_face_rate");
-  s.solid_drag_on = in.integer("solid_drag_on") != 0;
+  read_scalars(in, s);
   // Cell fields not in use are empty.
   for_each_cell_field<Dim>(s, [&](const std::string& name, std::vector<double>& values) {
     values = in.numbers(name);
@@ -93,8 +108,68 @@ void read_saved_state(const cosim::StateFileReader& in, std::size_t cells, Saved
       throw cosim::InputError(fmt::format("{}: array '{}' has {} values, the case has {} cells",
                                           in.file().string(), name, values.size(), cells));
   });
+  for_each_other_array<Dim>(s, [&](const std::string& name, std::vector<double>& values, int) {
+    values = in.numbers(name);
+  });
+}
+
+template <int Dim>
+void read_saved_state(std::span<const cosim::StateFileReader* const> parts,
+                      std::span<const cosim::decomposition::StoredBlock> from,
+                      const std::array<std::int64_t, 3>& grid_cells,
+                      const cosim::decomposition::StoredBlock& to, SavedIceState<Dim>& s) {
+  using cosim::decomposition::StoredBlock;
+  read_scalars(*parts[0], s);
+  // One array joined from the parts' (arrays not in use are empty in every part).
+  const auto join = [&](const std::string& name, std::vector<double>& values, const auto& placed,
+                        std::array<std::int64_t, 3> cells) {
+    std::vector<std::vector<double>> arrays;
+    std::vector<std::span<const double>> spans;
+    std::vector<StoredBlock> blocks;
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+      arrays.push_back(parts[p]->numbers(name));
+      blocks.push_back(placed(from[p]));
+    }
+    if (arrays[0].empty()) {
+      values.clear();
+      return;
+    }
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+      if (arrays[p].size() != blocks[p].size())
+        throw cosim::InputError(fmt::format("{}: array '{}' has {} values, its block {}",
+                                            parts[p]->file().string(), name, arrays[p].size(),
+                                            blocks[p].size()));
+      spans.emplace_back(arrays[p]);
+    }
+    const StoredBlock mine = placed(to);
+    values.assign(mine.size(), 0.0);
+    if (cosim::decomposition::join_blocks(blocks, spans, cells, mine, values) > 0)
+      throw cosim::InputError(
+          fmt::format("{} and the other parts of its checkpoint do not cover "
+                      "this block's '{}'",
+                      parts[0]->file().string(), name));
+  };
+  const auto same = [](const StoredBlock& b) { return b; };
+  for_each_cell_field<Dim>(s, [&](const std::string& name, std::vector<double>& values) {
+    join(name, values, same, grid_cells);
+  });
   for_each_other_array<Dim>(
-      s, [&](const std::string& name, std::vector<double>& values) { values = in.numbers(name); });
+      s, [&](const std::string& name, std::vector<double>& values, int normal) {
+        if (normal < 0) {
+          join(
+              name, values,
+              [](StoredBlock b) {
+                b.components = Dim;
+                return b;
+              },
+              grid_cells);
+          return;
+        }
+        std::array<std::int64_t, 3> faces = grid_cells;
+        ++faces[static_cast<std::size_t>(normal)];
+        join(
+            name, values, [normal](const StoredBlock& b) { return faces_of(b, normal); }, faces);
+      });
 }
 
 template void write_saved_state<1>(cosim::StateFileWriter&, const SavedIceState<1>&);
@@ -103,5 +178,17 @@ template void write_saved_state<3>(cosim::StateFileWriter&, const SavedIceState<
 template void read_saved_state<1>(const cosim::StateFileReader&, std::size_t, SavedIceState<1>&);
 template void read_saved_state<2>(const cosim::StateFileReader&, std::size_t, SavedIceState<2>&);
 template void read_saved_state<3>(const cosim::StateFileReader&, std::size_t, SavedIceState<3>&);
+template void read_saved_state<1>(std::span<const cosim::StateFileReader* const>,
+                                  std::span<const cosim::decomposition::StoredBlock>,
+                                  const std::array<std::int64_t, 3>&,
+                                  const cosim::decomposition::StoredBlock&, SavedIceState<1>&);
+template void read_saved_state<2>(std::span<const cosim::StateFileReader* const>,
+                                  std::span<const cosim::decomposition::StoredBlock>,
+                                  const std::array<std::int64_t, 3>&,
+                                  const cosim::decomposition::StoredBlock&, SavedIceState<2>&);
+template void read_saved_state<3>(std::span<const cosim::StateFileReader* const>,
+                                  std::span<const cosim::decomposition::StoredBlock>,
+                                  const std::array<std::int64_t, 3>&,
+                                  const cosim::decomposition::StoredBlock&, SavedIceState<3>&);
 
 }  // namespace ice

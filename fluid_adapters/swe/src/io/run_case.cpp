@@ -496,11 +496,13 @@ class CaseRun {
     std::vector<std::span<const double>> spans;
     std::vector<cosim::decomposition::StoredBlock> from;
     for (std::size_t p = 0; p < parts.size(); ++p) {
-      from.push_back({written[p]});
+      from.push_back(cosim::decomposition::StoredBlock::padded(written[p], {0, 0, 0}));
       parts[p]->numbers("coupling.initial_surface", from.back().size(), surfaces[p]);
       spans.emplace_back(surfaces[p]);
     }
-    (void)cosim::decomposition::join_blocks(from, spans, grid, {mine}, coupling_.initial_surface);
+    (void)cosim::decomposition::join_blocks(
+        from, spans, grid, cosim::decomposition::StoredBlock::padded(mine, {0, 0, 0}),
+        coupling_.initial_surface);
   }
 
   void read_checkpoint() {

@@ -377,11 +377,11 @@ void Solver2d::read_state(std::span<const cosim::StateFileReader* const> parts,
     std::vector<std::vector<double>> arrays(parts.size());
     std::vector<std::span<const double>> spans;
     for (std::size_t p = 0; p < parts.size(); ++p) {
-      from.push_back({written[p], {g, g, 0}});
+      from.push_back(StoredBlock::padded(written[p], {g, g, 0}));
       parts[p]->numbers(name, from.back().size(), arrays[p]);
       spans.emplace_back(arrays[p]);
     }
-    const StoredBlock to{mine, {g, g, 0}};
+    const StoredBlock to = StoredBlock::padded(mine, {g, g, 0});
     if (cosim::decomposition::join_blocks(from, spans, grid_cells, to, *values) > 0)
       throw cosim::InputError(
           fmt::format("{} and the other parts of its checkpoint do not cover "

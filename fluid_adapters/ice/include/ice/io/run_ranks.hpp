@@ -6,6 +6,7 @@
 #include <span>
 #include <string>
 
+#include "cosim/decomposition/block_join.hpp"
 #include "cosim/io/snapshot_writer.hpp"
 #include "cosim/mesh.hpp"
 #include "ice/case/case_description.hpp"
@@ -55,6 +56,10 @@ class RunRanks {
                                                   const std::string& /*mesh_name*/) const {
     return std::nullopt;
   }
+  // Where the solver's grid lies in the case's: the cells this process owns
+  // and those it holds (owned and ghost layers); none on one process (the
+  // whole grid).
+  virtual std::optional<cosim::decomposition::StoredBlock> block() const { return std::nullopt; }
 };
 
 extern template class RunRanks<1>;

@@ -35,6 +35,7 @@ class DecomposedRun final : public RunRanks<Dim> {
   void sum(std::span<double> values) override;
   std::optional<typename RunRanks<Dim>::CellsPart> coupling_cells(
       const IceSolver<Dim>& solver, const std::string& mesh_name) const override;
+  std::optional<cosim::decomposition::StoredBlock> block() const override;
 
   const MpiBlockLink<Dim>& link() const { return *block_.link; }
   const cosim::decomposition::CartesianDecomposition& decomposition() const {
