@@ -159,6 +159,27 @@ TEST(IceFluidRanks, EveryRankCountWritesTheFilesOfOneProcess) {
   expect_same_run(dir / "petsc" / "run", dir / "one_process", "one process, PETSc", 1);
 }
 
+// Standalone windows of 5 ms, each run twice (--cosim-repeat-windows): every
+// rank saves its block at a window's start and puts it back, and the run is
+// the one-process run's (PETSc both ways) to the solver's tolerance.
+TEST(IceFluidRanks, WindowsThatRunAgainOnRanksGiveTheOneProcessRun) {
+  const fs::path dir = fresh_directory("ice_fluid_ranks_windows");
+  const fs::path config = write_case(
+      dir,
+      replaced(replaced(dam_break_case, "end_time: 0.03", "end_time: 0.03\nwindow: 0.005"),
+               "pressure: {tolerance: 1.0e-12}", "pressure: {tolerance: 1.0e-12, solver: petsc}"));
+  const ProcessResult whole =
+      run_launched("ice_fluid", config, dir / "one_process", 0, {"--cosim-repeat-windows"});
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  const ProcessResult split =
+      run_launched("ice_fluid", config, dir / "ranks_2", 2, {"--cosim-repeat-windows"});
+  ASSERT_EQ(split.exit_code, 0) << split.output;
+  expect_same_run(dir / "ranks_2", dir / "one_process", "2 ranks, windows run twice", 2);
+  const auto summary = nlohmann::json::parse(read_text(dir / "ranks_2" / "summary.json"));
+  EXPECT_EQ(summary["windows"], 6);
+  EXPECT_TRUE(summary["wall_time_s"]["phases"].contains("restore_state"));
+}
+
 void expect_refused(const std::string& case_text, const std::string& key, int ranks) {
   expect_refused_on_ranks("ice_fluid", case_text, key, ranks, "ice_000000.h5");
 }

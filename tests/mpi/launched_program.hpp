@@ -16,12 +16,14 @@ namespace cosim::testing {
 // `program` --config `config` --output `output`: under `mpirun -np ranks`
 // (oversubscribed), or on its own when ranks is 0.
 inline ProcessResult run_launched(const std::string& program, const std::filesystem::path& config,
-                                  const std::filesystem::path& output, int ranks) {
+                                  const std::filesystem::path& output, int ranks,
+                                  const std::vector<std::string>& extra = {}) {
   std::vector<std::string> args;
   if (ranks > 0) args = {MPIEXEC, "--oversubscribe", "-np", std::to_string(ranks)};
   for (const std::string& a : {binary(program).string(), std::string("--config"), config.string(),
                                std::string("--output"), output.string()})
     args.push_back(a);
+  args.insert(args.end(), extra.begin(), extra.end());
   return run(args, std::chrono::seconds(120));
 }
 

@@ -20,7 +20,6 @@ const CaseDescription& runnable(const CaseDescription& c, MPI_Comm comm) {
     throw cosim::InputError(fmt::format("{}: key '{}': {} runs on one process; mpirun started {}",
                                         c.file.string(), key, what, ranks));
   };
-  if (c.window > 0.0) refuse("window", "a case with a standalone coupling window");
   if (c.numerics.pressure_solver == NumericsDescription::PressureSolverKind::builtin)
     refuse("numerics.pressure.solver", "the built-in pressure solver");
   return c;

@@ -18,7 +18,7 @@ template <int Dim>
 class DecomposedRun final : public RunRanks<Dim> {
  public:
   // Collective. Throws cosim::InputError, naming the case file and key, for
-  // a case that cannot run decomposed yet (a standalone window, the built-in
+  // a case that cannot run decomposed yet (1D, the built-in
   // pressure solver asked for) and for blocks narrower than the ghost layers
   // (grid.cells).
   DecomposedRun(MPI_Comm comm, const CaseDescription& description);
