@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
+#include <utility>
 
 #include "cosim/error.hpp"
 #include "ice/case/case_schema.hpp"
@@ -113,6 +115,34 @@ TEST(IceCase, ReadsEveryKeyAndTheDefaults) {
   EXPECT_GT(solver->state().materials[0].volume_fraction[0], 0.99);  // water in the corner
   EXPECT_LT(solver->state().materials[0].volume_fraction[7], 1e-5);
   EXPECT_THROW(make_solver<1>(c), std::invalid_argument);
+}
+
+// A block's fill (what a rank of a decomposed run computes instead of the
+// whole grid's): the whole fill's values in the block's cells, bit for bit,
+// the hydrostatic pressure marched down the block's whole columns.
+TEST(IceCase, TheFillOfABlockIsThatOfTheWholeGridInItsCells) {
+  const CaseDescription c = load_case_text(dam_break, "case.yaml");
+  const CellGrid<2> grid = case_grid<2>(c);
+  const CellFill<2> whole = case_fill<2>(c, grid);
+  const std::array<int, 2> first{3, 1}, count{4, 2};
+  const auto [box_first, box_count] = fill_box_along_gravity<2>(c, grid, first, count);
+  EXPECT_EQ(box_first, (std::array<int, 2>{3, 0}));  // whole along gravity (y)
+  EXPECT_EQ(box_count, (std::array<int, 2>{4, 4}));
+  const CellFill<2> box = case_fill<2>(c, grid, box_first, box_count);
+  ASSERT_EQ(box.pressure.size(), 16u);
+  for (int j = 0; j < box_count[1]; ++j)
+    for (int i = 0; i < box_count[0]; ++i) {
+      const auto k = static_cast<std::size_t>(i + box_count[0] * j);
+      const auto w = static_cast<std::size_t>(grid.cell({i + box_first[0], j + box_first[1]}));
+      EXPECT_EQ(box.material[k], whole.material[w]);
+      EXPECT_EQ(box.pressure[k], whole.pressure[w]);
+      EXPECT_EQ(box.velocity[1][k], whole.velocity[1][w]);
+    }
+  // A given pressure needs no columns: the block alone.
+  const CaseDescription given = load_case_text(
+      replaced(dam_break, "  temperature: 300\n", "  temperature: 300\n  pressure: 101325\n"),
+      "case.yaml");
+  EXPECT_EQ(fill_box_along_gravity<2>(given, grid, first, count), std::pair(first, count));
 }
 
 TEST(IceCase, ErrorsNameTheKeyAndTheLine) {

@@ -28,9 +28,17 @@ Eigen::Matrix<double, Dim, 1> case_gravity(const CaseDescription& c) {
 
 template <int Dim>
 CellFill<Dim> case_fill(const CaseDescription& c, const CellGrid<Dim>& grid) {
+  return case_fill<Dim>(c, grid, {}, grid.cells());
+}
+
+template <int Dim>
+CellFill<Dim> case_fill(const CaseDescription& c, const CellGrid<Dim>& grid,
+                        const typename CellGrid<Dim>::CellIndex& first,
+                        const typename CellGrid<Dim>::CellIndex& count) {
   const InitialDescription& i = c.initial;
   const Eigen::Matrix<double, Dim, 1> gravity = case_gravity<Dim>(c);
-  const auto cells = static_cast<std::size_t>(grid.cell_count());
+  const CellGrid<Dim> box(grid.origin(), grid.spacing(), count);
+  const auto cells = static_cast<std::size_t>(box.cell_count());
   CellFill<Dim> fill;
   fill.material.assign(cells, i.fill);
   fill.pressure.assign(cells, i.pressure.value_or(i.reference_pressure));
@@ -39,8 +47,10 @@ CellFill<Dim> case_fill(const CaseDescription& c, const CellGrid<Dim>& grid) {
     fill.velocity[static_cast<std::size_t>(d)].assign(cells,
                                                       i.velocity[static_cast<std::size_t>(d)]);
   }
-  for (int cell = 0; cell < grid.cell_count(); ++cell) {
-    const auto centre = grid.cell_centre(cell);
+  for (int cell = 0; cell < box.cell_count(); ++cell) {
+    auto ijk = box.cell_ijk(cell);
+    for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) ijk[d] += first[d];
+    const auto centre = grid.cell_centre(grid.cell(ijk));
     Vector3 x{};
     for (int d = 0; d < Dim; ++d) x[static_cast<std::size_t>(d)] = centre[d];
     const auto k = static_cast<std::size_t>(cell);
@@ -58,10 +68,25 @@ CellFill<Dim> case_fill(const CaseDescription& c, const CellGrid<Dim>& grid) {
     }
   }
   if (!i.pressure) {
-    fill.pressure = hydrostatic_pressure(grid, c.materials, fill.material, fill.temperature,
-                                         gravity, i.reference_pressure, i.minimum_volume_fraction);
+    fill.pressure = hydrostatic_pressure(box, c.materials, fill.material, fill.temperature, gravity,
+                                         i.reference_pressure, i.minimum_volume_fraction);
   }
   return fill;
+}
+
+template <int Dim>
+std::pair<typename CellGrid<Dim>::CellIndex, typename CellGrid<Dim>::CellIndex>
+fill_box_along_gravity(const CaseDescription& c, const CellGrid<Dim>& grid,
+                       const typename CellGrid<Dim>::CellIndex& first,
+                       const typename CellGrid<Dim>::CellIndex& count) {
+  auto box = std::pair{first, count};
+  if (c.initial.pressure) return box;
+  for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
+    if (c.gravity[d] == 0.0) continue;
+    box.first[d] = 0;
+    box.second[d] = grid.cells()[d];
+  }
+  return box;
 }
 
 IceSolverOptions case_solver_options(const CaseDescription& c) {
@@ -91,11 +116,16 @@ std::unique_ptr<IceSolver<Dim>> make_solver(const CaseDescription& c) {
       case_solver_options(c));
 }
 
-#define ICE_INSTANTIATE_CASE(D)                                                  \
-  template CellGrid<D> case_grid<D>(const CaseDescription&);                     \
-  template Eigen::Matrix<double, D, 1> case_gravity<D>(const CaseDescription&);  \
-  template CellFill<D> case_fill<D>(const CaseDescription&, const CellGrid<D>&); \
-  template IceSolver<D>::Sides case_sides<D>(const CaseDescription&);            \
+#define ICE_INSTANTIATE_CASE(D)                                                                    \
+  template CellGrid<D> case_grid<D>(const CaseDescription&);                                       \
+  template Eigen::Matrix<double, D, 1> case_gravity<D>(const CaseDescription&);                    \
+  template CellFill<D> case_fill<D>(const CaseDescription&, const CellGrid<D>&);                   \
+  template CellFill<D> case_fill<D>(const CaseDescription&, const CellGrid<D>&,                    \
+                                    const CellGrid<D>::CellIndex&, const CellGrid<D>::CellIndex&); \
+  template std::pair<CellGrid<D>::CellIndex, CellGrid<D>::CellIndex> fill_box_along_gravity<D>(    \
+      const CaseDescription&, const CellGrid<D>&, const CellGrid<D>::CellIndex&,                   \
+      const CellGrid<D>::CellIndex&);                                                              \
+  template IceSolver<D>::Sides case_sides<D>(const CaseDescription&);                              \
   template std::unique_ptr<IceSolver<D>> make_solver<D>(const CaseDescription&);
 ICE_INSTANTIATE_CASE(1)
 ICE_INSTANTIATE_CASE(2)

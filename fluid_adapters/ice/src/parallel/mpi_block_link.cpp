@@ -112,13 +112,19 @@ BlockSolver<Dim> make_block_solver(MPI_Comm comm, const CaseDescription& c,
   const CellGrid<Dim> block = link->block_grid(grid);
   const auto offset = link->offset();
 
-  const CellFill<Dim> whole = case_fill<Dim>(c, grid);
+  // The block's columns alone are filled (whole along gravity for the
+  // hydrostatic pressure), not the whole grid.
+  const auto [first, count] = fill_box_along_gravity<Dim>(c, grid, offset, block.cells());
+  const CellFill<Dim> columns = case_fill<Dim>(c, grid, first, count);
+  const CellGrid<Dim> box(grid.origin(), grid.spacing(), count);
+  auto in_box = offset;
+  for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) in_box[d] -= first[d];
   CellFill<Dim> fill;
-  fill.material = part<Dim>(whole.material, grid, block, offset);
-  fill.pressure = part<Dim>(whole.pressure, grid, block, offset);
-  fill.temperature = part<Dim>(whole.temperature, grid, block, offset);
+  fill.material = part<Dim>(columns.material, box, block, in_box);
+  fill.pressure = part<Dim>(columns.pressure, box, block, in_box);
+  fill.temperature = part<Dim>(columns.temperature, box, block, in_box);
   for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d)
-    fill.velocity[d] = part<Dim>(whole.velocity[d], grid, block, offset);
+    fill.velocity[d] = part<Dim>(columns.velocity[d], box, block, in_box);
 
   // Toward a neighbour the widened edge is a wall: what it spoils stays in the ghosts.
   typename IceSolver<Dim>::Sides sides = case_sides<Dim>(c);
