@@ -148,12 +148,14 @@ class Participant {
   // Where the solver reads its state instead of its initial conditions, when
   // it was started from a checkpoint: empty or not from construction on;
   // after initialize(), this rank's part when the checkpoint was written by
-  // as many ranks (and the participant's directory when not).
+  // as many ranks, and the first part (its rank 0's) when not.
   const std::filesystem::path& restart_directory() const;
   // After initialize() on a restart: the directories the checkpoint's ranks
   // wrote, in rank order (one, the participant's directory, for a
-  // checkpoint of one rank).
+  // checkpoint of one rank), and whether they were another count of ranks
+  // than this run's (the solver then reads all of restart_parts()).
   const std::vector<std::filesystem::path>& restart_parts() const;
+  bool restarts_on_other_ranks() const;
 
   // Connects to the coupler (handshake: protocol version, job id, config
   // hash), exchanges the initial data (fields written before initialize),

@@ -584,7 +584,7 @@ struct Participant::Impl {
       restart_directory = restart_parts[static_cast<std::size_t>(part)];
       return read_state(restart_directory);
     }
-    restart_directory = endpoint.restart;
+    restart_directory = restart_parts.front();
     if (!restartable_on_other_ranks)
       throw Error(ExitCode::bad_input,
                   fmt::format("{}: participant '{}' wrote this checkpoint on {} rank{}; it runs on "
@@ -703,6 +703,11 @@ const std::filesystem::path& Participant::restart_directory() const {
 
 const std::vector<std::filesystem::path>& Participant::restart_parts() const {
   return impl_->restart_parts;
+}
+
+bool Participant::restarts_on_other_ranks() const {
+  return !impl_->restart_parts.empty() &&
+         impl_->restart_parts.size() != static_cast<std::size_t>(impl_->parts);
 }
 
 void Participant::set_standalone_window(double window) {

@@ -356,13 +356,9 @@ class CaseRun {
 
   void read_checkpoint() {
     // On another count of ranks the run's bookkeeping is the first part's.
-    const bool another_count =
-        participant_.restart_parts().size() != static_cast<std::size_t>(ranks_.ranks());
-    const cosim::StateFileReader in(
-        (another_count ? participant_.restart_parts().at(0) : participant_.restart_directory()) /
-            state_file,
-        state_kind, state_version);
-    if (another_count)
+    const cosim::StateFileReader in(participant_.restart_directory() / state_file, state_kind,
+                                    state_version);
+    if (participant_.restarts_on_other_ranks())
       read_blocks_of_checkpoint();
     else
       read_saved_state(in, static_cast<std::size_t>(solver_->grid().cell_count()), saved_solver_);

@@ -506,13 +506,10 @@ class CaseRun {
   }
 
   void read_checkpoint() {
-    const bool another_count =
-        participant_.restart_parts().size() != static_cast<std::size_t>(ranks_.ranks());
+    const bool another_count = participant_.restarts_on_other_ranks();
     // On another count of ranks the run's progress is the first part's.
-    const cosim::StateFileReader in(
-        (another_count ? participant_.restart_parts().at(0) : participant_.restart_directory()) /
-            state_file,
-        state_kind, state_version);
+    const cosim::StateFileReader in(participant_.restart_directory() / state_file, state_kind,
+                                    state_version);
     if (!another_count) solver_->read_state(in);
     progress_.steps = static_cast<std::size_t>(in.integer("run.steps"));
     progress_.min_dt = in.number("run.min_dt");
