@@ -120,6 +120,13 @@ void stop_job(runtime::Supervisor& supervisor, pid_t mpirun) {
   for (const RankProcess& r : below) ::kill(r.pid, SIGKILL);
 }
 
+// The coupler rank's process, when it runs.
+std::optional<pid_t> coupler_rank(pid_t mpirun) {
+  for (const RankProcess& r : processes_below(mpirun))
+    if (r.role == "the coupler") return r.pid;
+  return std::nullopt;
+}
+
 // Who holds the job: the ranks that are stopped, by role.
 std::string stopped_ranks(const std::vector<RankProcess>& below) {
   std::string out;
@@ -216,11 +223,28 @@ int launch_mpirun(const job::Job& job, const RunOptions& o) {
   bool coupling = false;
   std::optional<Clock::time_point> run_over_at;
   auto last_look = started;
+  // Asked to stop a run that takes checkpoints: the coupler rank is told, it
+  // takes one at the next window end and ends the run there (exit 5).
+  std::optional<Clock::time_point> stop_forwarded_at;
   for (;;) {
-    if (runtime::stop_requested()) {
+    if (runtime::stop_requested() && !stop_forwarded_at) {
+      const auto coupler = coupler_rank(mpirun);
+      if (o.checkpoint_every.empty() || !coupler) {
+        stop_job(supervisor, mpirun);
+        return finish(ExitCode::participant_failed,
+                      fmt::format("{}; the MPI job was stopped", runtime::describe_stop()));
+      }
+      ::kill(*coupler, SIGTERM);
+      stop_forwarded_at = Clock::now();
+      std::cerr << "cosim: " << runtime::describe_stop()
+                << "; the run stops at a checkpoint at the next window end\n";
+    }
+    if (stop_forwarded_at && Clock::now() - *stop_forwarded_at > window_timeout + stop_grace) {
       stop_job(supervisor, mpirun);
       return finish(ExitCode::participant_failed,
-                    fmt::format("{}; the MPI job was stopped", runtime::describe_stop()));
+                    fmt::format("{}; the run did not stop at a checkpoint within window_timeout "
+                                "({} s); the MPI job was stopped",
+                                runtime::describe_stop(), job.window_timeout_s));
     }
     const auto now = Clock::now();
     if (now - last_look > milliseconds(250)) {
@@ -253,7 +277,8 @@ int launch_mpirun(const job::Job& job, const RunOptions& o) {
                                 "after the end of the run; the MPI job was stopped",
                                 names.empty() ? "(unknown)" : names, job.window_timeout_s));
     }
-    const auto exits = supervisor.wait_all(milliseconds(100), &runtime::stop_flag());
+    const auto exits =
+        supervisor.wait_all(milliseconds(100), stop_forwarded_at ? nullptr : &runtime::stop_flag());
     if (exits.empty()) continue;
     const runtime::ChildExit& e = exits.front();
     if (e.success()) return 0;

@@ -234,7 +234,9 @@ int run_under_mpirun(const job::Job& job, const RunOptions& o, RunSummary& summa
                               runtime::describe_stop(), summary.windows(),
                               (options.output_dir / "checkpoints").string(), o.job_file));
   });
-  if (code != 0) {
+  // A run stopped at a checkpoint ends as a finished one: every participant
+  // wrote its part and ends by itself.
+  if (code != 0 && code != to_int(ExitCode::stopped_at_checkpoint)) {
     spdlog::default_logger()->flush();
     hub.abort_job(code);
   }

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <csignal>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
@@ -168,6 +169,47 @@ TEST(PartitionedParticipants, AJobOnRanksContinuesFromItsCheckpoint) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_THAT(r.output, HasSubstr("participant 'left' wrote this checkpoint on 2 ranks; it runs "
                                   "on 1 now"));
+}
+
+// SIGTERM to `cosim run` of an MPI job with --checkpoint-every (a batch
+// system's wall-time limit): the launcher passes it to the coupler rank,
+// which writes a checkpoint at the next window end, every rank of each
+// participant its part, and the job ends with exit 5, the participants
+// completed; the run continued from it on other ranks writes what the
+// uninterrupted run wrote after it.
+TEST(PartitionedParticipants, SigtermStopsAnMpiJobAtACheckpoint) {
+  const fs::path dir = fresh_directory("partitioned_sigterm");
+  JobOptions o = job_on(2, 2);
+  o.end_time = 2.0;  // 800 windows of at least 5 ms: still running when the signal comes
+  o.left_args = "[--window-delay, 0.005]";
+  const fs::path job = write_job(dir, o);
+  const pid_t pid = spawn({binary("cosim").string(), "run", job.string(), "--output",
+                           (dir / "stopped").string(), "--checkpoint-every", "100000"},
+                          dir / "stopped.log");
+  (void)wait_for_pid_file(dir / "stopped" / "right" / "pid", std::chrono::seconds(60));
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  ::kill(pid, SIGTERM);
+  const auto stopped = wait_for(pid, dir / "stopped.log", std::chrono::seconds(120));
+  ASSERT_EQ(stopped.exit_code, 5) << stopped.output;
+  EXPECT_THAT(stopped.output, HasSubstr("stopped at the checkpoint of window"));
+  const auto names = checkpoints_in(dir / "stopped");
+  ASSERT_EQ(names.size(), 1u);
+  const std::size_t window = std::stoul(names[0].substr(std::string("window_").size()));
+  EXPECT_LT(window, 800u);
+  for (const char* participant : {"left", "right"}) {
+    const auto summary =
+        nlohmann::json::parse(read_text(dir / "stopped" / participant / "summary.json"));
+    EXPECT_EQ(summary["status"]["exit_code"].get<int>(), 0) << participant;
+    EXPECT_TRUE(fs::exists(checkpoint_of(dir / "stopped", window) / participant / "rank_1" /
+                           "participant.h5"))
+        << participant;
+  }
+  const auto continued = cosim_run(job, dir / "continued", 300,
+                                   {"--restart", checkpoint_of(dir / "stopped", window).string()});
+  ASSERT_EQ(continued.exit_code, 0) << continued.output;
+  const auto summary = nlohmann::json::parse(read_text(dir / "continued" / "summary.json"));
+  EXPECT_EQ(summary["restart"]["window"].get<std::size_t>(), window);
+  EXPECT_EQ(summary["windows"], 800);
 }
 
 TEST(PartitionedParticipants, ARankThatDiesEndsTheJobWithExit3AndNoProcessLeft) {
