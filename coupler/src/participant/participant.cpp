@@ -11,6 +11,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <numeric>
 #include <optional>
@@ -511,45 +512,61 @@ struct Participant::Impl {
     time = in[0]->number("time");
     timings.windows = static_cast<std::size_t>(in[0]->integer("windows_completed"));
     timings.iterations = static_cast<std::size_t>(in[0]->integer("window_attempts"));
-    const auto part_of = [&](const std::string& key, const std::string& mesh_name,
-                             std::size_t components, std::vector<double>& values) {
+    // Where each value this rank holds of a mesh lies in the parts: the part
+    // that owns its element (else one that holds it as a ghost) and its
+    // index there; found once per mesh.
+    struct Source {
+      std::size_t file = 0, index = 0;
+    };
+    std::map<std::string, std::vector<Source>, std::less<>> sources;
+    const auto sources_of = [&](const std::string& mesh_name) -> const std::vector<Source>& {
+      if (auto it = sources.find(mesh_name); it != sources.end()) return it->second;
       const MeshEntry& entry = meshes.at(mesh_name);
       if (entry.mesh.kind() != MeshKind::uniform_grid)
         throw Error(ExitCode::bad_input,
                     fmt::format("{}: mesh '{}' is a cloud, whose parts are this run's points; a "
                                 "restart on another count of ranks needs grids",
                                 directories[0].string(), mesh_name));
-      const std::size_t c = components;
-      std::vector<double> whole(entry.mesh.size() * c);
-      std::vector<std::uint8_t> filled(entry.mesh.size(), 0);
-      // Owned values first; a ghost's only where no part owns it.
-      for (const int pass : {1, 0})
-        for (const auto& file : in) {
+      constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+      std::vector<Source> in_whole(entry.mesh.size(), Source{none, 0});
+      for (const bool owners : {true, false})
+        for (std::size_t f = 0; f < in.size(); ++f) {
           // A checkpoint of one rank holds the whole mesh.
           std::vector<std::int64_t> elements(entry.mesh.size()), owned(entry.mesh.size(), 1);
           std::iota(elements.begin(), elements.end(), std::int64_t{0});
-          if (file->has("part." + mesh_name + ".elements")) {
-            elements = file->integers("part." + mesh_name + ".elements");
-            file->integers("part." + mesh_name + ".owned", elements.size(), owned);
+          if (in[f]->has("part." + mesh_name + ".elements")) {
+            elements = in[f]->integers("part." + mesh_name + ".elements");
+            in[f]->integers("part." + mesh_name + ".owned", elements.size(), owned);
           }
-          std::vector<double> stored;
-          file->numbers(key, elements.size() * c, stored);
           for (std::size_t i = 0; i < elements.size(); ++i) {
             const auto e = static_cast<std::size_t>(elements[i]);
-            if (owned[i] != pass || e >= filled.size() || (pass == 0 && filled[e])) continue;
-            std::copy_n(stored.begin() + static_cast<std::ptrdiff_t>(i * c), c,
-                        whole.begin() + static_cast<std::ptrdiff_t>(e * c));
-            filled[e] = 1;
+            if ((owned[i] != 0) == owners && e < in_whole.size() && in_whole[e].file == none)
+              in_whole[e] = {f, i};
           }
         }
-      const std::size_t held = entry.values();
-      values.resize(held * c);
-      for (std::size_t i = 0; i < held; ++i) {
+      std::vector<Source> mine(entry.values());
+      for (std::size_t i = 0; i < mine.size(); ++i) {
         const auto e = entry.part ? static_cast<std::size_t>(entry.part->elements[i]) : i;
-        if (!filled[e])
+        if (in_whole[e].file == none)
           throw Error(ExitCode::bad_input, fmt::format("{}: no part holds element {} of mesh '{}'",
                                                        directories[0].string(), e, mesh_name));
-        std::copy_n(whole.begin() + static_cast<std::ptrdiff_t>(e * c), c,
+        mine[i] = in_whole[e];
+      }
+      return sources.emplace(mesh_name, std::move(mine)).first->second;
+    };
+    // The array `key` of every part, this rank's values gathered from it.
+    const auto part_of = [&](const std::string& key, const std::string& mesh_name, std::size_t c,
+                             std::vector<double>& values) {
+      const std::vector<Source>& from = sources_of(mesh_name);
+      std::vector<std::vector<double>> stored(in.size());
+      for (std::size_t f = 0; f < in.size(); ++f) stored[f] = in[f]->numbers(key);
+      values.resize(from.size() * c);
+      for (std::size_t i = 0; i < from.size(); ++i) {
+        const std::vector<double>& array = stored[from[i].file];
+        if (array.size() < (from[i].index + 1) * c)
+          throw Error(ExitCode::bad_input, fmt::format("{}: array '{}' is shorter than its part",
+                                                       in[from[i].file]->file().string(), key));
+        std::copy_n(array.begin() + static_cast<std::ptrdiff_t>(from[i].index * c), c,
                     values.begin() + static_cast<std::ptrdiff_t>(i * c));
       }
     };
