@@ -13,7 +13,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <csignal>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
@@ -183,18 +182,10 @@ TEST(PartitionedParticipants, SigtermStopsAnMpiJobAtACheckpoint) {
   o.end_time = 2.0;  // 800 windows of at least 5 ms: still running when the signal comes
   o.left_args = "[--window-delay, 0.005]";
   const fs::path job = write_job(dir, o);
-  const pid_t pid = spawn({binary("cosim").string(), "run", job.string(), "--output",
-                           (dir / "stopped").string(), "--checkpoint-every", "100000"},
-                          dir / "stopped.log");
-  (void)wait_for_pid_file(dir / "stopped" / "right" / "pid", std::chrono::seconds(60));
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
-  ::kill(pid, SIGTERM);
-  const auto stopped = wait_for(pid, dir / "stopped.log", std::chrono::seconds(120));
+  const auto [stopped, window] = stop_with_sigterm(dir, job);
   ASSERT_EQ(stopped.exit_code, 5) << stopped.output;
   EXPECT_THAT(stopped.output, HasSubstr("stopped at the checkpoint of window"));
-  const auto names = checkpoints_in(dir / "stopped");
-  ASSERT_EQ(names.size(), 1u);
-  const std::size_t window = std::stoul(names[0].substr(std::string("window_").size()));
+  ASSERT_GT(window, 0u);
   EXPECT_LT(window, 800u);
   for (const char* participant : {"left", "right"}) {
     const auto summary =

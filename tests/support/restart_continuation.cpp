@@ -4,11 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
+#include <thread>
 
 #include "hdf5_contents.hpp"
 #include "text_files.hpp"
@@ -161,6 +164,21 @@ void expect_restart_continues(const fs::path& dir, const fs::path& job, const st
   const auto summary = nlohmann::json::parse(read_text(dir / "continued" / "summary.json"));
   EXPECT_EQ(summary["restart"]["window"].get<std::size_t>(), window);
   EXPECT_EQ(summary["status"]["exit_code"].get<int>(), 0);
+}
+
+StoppedRun stop_with_sigterm(const fs::path& dir, const fs::path& job) {
+  const pid_t pid = spawn({binary("cosim").string(), "run", job.string(), "--output",
+                           (dir / "stopped").string(), "--checkpoint-every", "100000"},
+                          dir / "stopped.log");
+  (void)wait_for_pid_file(dir / "stopped" / "right" / "pid", std::chrono::seconds(60));
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  ::kill(pid, SIGTERM);
+  StoppedRun stopped{wait_for(pid, dir / "stopped.log", std::chrono::seconds(120))};
+  const auto names = checkpoints_in(dir / "stopped");
+  EXPECT_EQ(names.size(), 1u) << stopped.result.output;
+  if (names.size() == 1)
+    stopped.window = std::stoul(names[0].substr(std::string("window_").size()));
+  return stopped;
 }
 
 }  // namespace cosim::testing

@@ -35,6 +35,17 @@ std::size_t expect_same_continuation(const std::filesystem::path& whole,
 std::size_t expect_same_last_snapshots(const std::filesystem::path& whole,
                                        const std::filesystem::path& continued);
 
+// A run stopped by SIGTERM (a batch system's wall-time limit): `cosim run
+// <job> --output <dir>/stopped --checkpoint-every 100000` (log in
+// <dir>/stopped.log), signalled half a second after participant 'right'
+// wrote its pid file. Returns its result and the window of the one
+// checkpoint it wrote (0 and a test failure when it wrote another count).
+struct StoppedRun {
+  ProcessResult result;
+  std::size_t window = 0;
+};
+StoppedRun stop_with_sigterm(const std::filesystem::path& dir, const std::filesystem::path& job);
+
 // Runs `job` whole into <dir>/whole with a checkpoint every `every`, then
 // from the checkpoint of `window` into <dir>/continued, and compares both.
 void expect_restart_continues(const std::filesystem::path& dir, const std::filesystem::path& job,
