@@ -12,6 +12,7 @@
 #include <random>
 #include <string_view>
 
+#include "bench/backend_catalog.hpp"
 #include "checkpoint/manifest.hpp"
 #include "com/mpi_transport.hpp"
 #include "com/zmq_transport.hpp"
@@ -261,7 +262,7 @@ RunSummary begin_summary(const job::Job& job, const RunOptions& o) {
 }  // namespace
 
 int run_job(const RunOptions& o) {
-  const job::Job job = job::load_job(o.job_file);
+  const job::Job job = job::load_job(o.job_file, bench::programs_starting_their_processes());
   RunOptions opts = o;
   if (opts.job_id.empty()) opts.job_id = new_job_id(job.name);
   const bool under_mpirun = com::launched_by_mpirun();

@@ -5,6 +5,7 @@
 
 #include <iostream>
 
+#include "bench/backend_catalog.hpp"
 #include "cosim/error.hpp"
 #include "cosim/io/tail_lines.hpp"
 #include "cosim/runtime/stop_request.hpp"
@@ -54,7 +55,7 @@ std::string indented(const std::vector<std::string>& lines) {
 }  // namespace
 
 int validate_job(const std::string& job_file) {
-  const job::Job job = job::load_job(job_file);
+  const job::Job job = job::load_job(job_file, bench::programs_starting_their_processes());
   std::cout << fmt::format(
       "{}: job '{}': {} participants, {} exchanges, {} windows of {} s, config hash {}\n", job_file,
       job.name, job.participants.size(), job.exchanges.size(), job.windows(), job.window,

@@ -30,11 +30,13 @@ namespace {
 
 namespace fs = std::filesystem;
 using cosim::testing::binary;
+using cosim::testing::checkpoint_of;
 using cosim::testing::expect_restart_continues;
 using cosim::testing::fresh_directory;
 using cosim::testing::hdf5_contents;
 using cosim::testing::read_text;
 using cosim::testing::replaced;
+using cosim::testing::run_job;
 using cosim::testing::write_text;
 
 bool openfoam_installed = false;
@@ -293,17 +295,23 @@ TEST_F(OpenFoamAdapterRun, AWindowRunAgainFromItsStartRepeatsItBitForBit) {
   EXPECT_EQ(explicit_times, implicit_times);
 }
 
+// configs/openfoam_coupled/darcy's job to 0.02 s (four windows), its
+// participants' configs in the source tree.
+std::string darcy_job_of_four_windows() {
+  const fs::path case_dir = fs::path(COSIM_SOURCE_DIR) / "configs" / "openfoam_coupled" / "darcy";
+  std::string job = read_text(case_dir / "job.yaml");
+  job = replaced(job, "end_time: 0.08", "end_time: 0.02");
+  job = replaced(job, "config: water.yaml", "config: " + (case_dir / "water.yaml").string());
+  return replaced(job, "config: column.yaml", "config: " + (case_dir / "column.yaml").string());
+}
+
 // The Darcy pairing (porosity zones) continued from a checkpoint after its
 // second window: the case's time directory, the fields and the coupling's
 // carried state come back, and what the adapter and the soil write after
 // the checkpoint equals the uninterrupted run's bit for bit, explicit and
 // implicit.
 TEST_F(OpenFoamAdapterRun, ACoupledRunContinuesFromACheckpointBitForBit) {
-  const fs::path case_dir = fs::path(COSIM_SOURCE_DIR) / "configs" / "openfoam_coupled" / "darcy";
-  std::string job = read_text(case_dir / "job.yaml");
-  job = replaced(job, "end_time: 0.08", "end_time: 0.02");
-  job = replaced(job, "config: water.yaml", "config: " + (case_dir / "water.yaml").string());
-  job = replaced(job, "config: column.yaml", "config: " + (case_dir / "column.yaml").string());
+  const std::string job = darcy_job_of_four_windows();
   const fs::path explicit_dir = fresh_directory("openfoam_checkpoint_explicit");
   write_text(explicit_dir / "job.yaml", job);
   expect_restart_continues(explicit_dir, explicit_dir / "job.yaml", "2", 2);
@@ -315,6 +323,27 @@ TEST_F(OpenFoamAdapterRun, ACoupledRunContinuesFromACheckpointBitForBit) {
     - {field: water.solid_fraction, relative: 1.0e-6}
 )");
   expect_restart_continues(implicit_dir, implicit_dir / "job.yaml", "2", 2);
+}
+
+// The water's `ranks: 2` (OpenFOAM on two processes): a checkpoint holds
+// the decomposed time directory and continues on two processes bit for bit;
+// the same checkpoint with the water on one process (the job's ranks alone
+// changed, which a checkpoint otherwise allows) is refused with exit 2.
+TEST_F(OpenFoamAdapterRun, ACheckpointOfOpenFoamOnTwoProcessesContinuesOnTwoOnly) {
+  const std::string job = darcy_job_of_four_windows();
+  const fs::path dir = fresh_directory("openfoam_checkpoint_two_processes");
+  write_text(dir / "job.yaml", replaced(job, "executable: openfoam_adapter",
+                                        "executable: openfoam_adapter\n    ranks: 2"));
+  expect_restart_continues(dir, dir / "job.yaml", "2", 2);
+  EXPECT_TRUE(fs::is_directory(checkpoint_of(dir / "whole", 2) / "water" / "time" / "processor1"));
+  write_text(dir / "serial.yaml", replaced(job, "executable: openfoam_adapter",
+                                           "executable: openfoam_adapter\n    ranks: 1"));
+  const auto refused = run_job(dir / "serial.yaml", dir / "serial",
+                               {"--restart", checkpoint_of(dir / "whole", 2).string()});
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_NE(refused.output.find("decomposed for 2 processes, and this run has OpenFOAM on 1"),
+            std::string::npos)
+      << refused.output;
 }
 
 // Pan et al.'s underwater granular collapse (MPPICInterFoam, the soil as

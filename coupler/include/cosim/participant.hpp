@@ -90,6 +90,9 @@ struct CouplingEndpoint {
   // The participant's directory of a checkpoint to start from
   // (--cosim-restart); empty for a fresh start.
   std::filesystem::path restart = {};
+  // The job's `ranks` of a program that starts its solver's processes itself
+  // (--cosim-solver-processes, openfoam_adapter's OpenFOAM); 0 when not given.
+  int solver_processes = 0;
 
   bool is_standalone() const { return uri.empty(); }
   // The job's name for this participant, or the solver's own when standalone.
@@ -97,8 +100,8 @@ struct CouplingEndpoint {
 };
 
 // Adds --cosim-endpoint, --cosim-name, --cosim-job, --cosim-config-hash,
-// --cosim-connect-timeout, --cosim-repeat-windows and --cosim-restart to a
-// solver's command line.
+// --cosim-connect-timeout, --cosim-repeat-windows, --cosim-restart and
+// --cosim-solver-processes to a solver's command line.
 void add_coupling_options(CLI::App& app, CouplingEndpoint& endpoint);
 
 // Wall time a participant spent in the coupling, by phase [s].

@@ -1,6 +1,7 @@
 #include "bench/backend_catalog.hpp"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 
@@ -77,6 +78,22 @@ fs::path registered_backends_directory() {
 const BackendCatalog& registered_backends() {
   static const BackendCatalog catalog = BackendCatalog::load(registered_backends_directory());
   return catalog;
+}
+
+std::set<std::string> programs_starting_their_processes() {
+  std::set<std::string> programs;
+  try {
+    const BackendCatalog& catalog = registered_backends();
+    for (const auto& name : catalog.names())
+      if (const BackendDescriptor* d = catalog.find(name); d && d->ranks_are_solver_processes)
+        programs.insert(fs::path(d->executable).filename().string());
+  } catch (const Error& e) {
+    spdlog::warn(
+        "the registered backends could not be read ({}): every participant's `ranks` "
+        "are taken as MPI ranks of its program",
+        e.what());
+  }
+  return programs;
 }
 
 }  // namespace cosim::bench

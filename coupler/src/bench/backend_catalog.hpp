@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -47,5 +48,10 @@ class BackendCatalog {
 // running program (<bin>/../share/cosim/backends).
 const BackendCatalog& registered_backends();
 std::filesystem::path registered_backends_directory();
+
+// The executables (file names) of the registered backends whose job
+// `ranks` are their solver's processes (`ranks: solver_processes`), for
+// job::load_job; empty, with a warning, when the registry cannot be read.
+std::set<std::string> programs_starting_their_processes();
 
 }  // namespace cosim::bench

@@ -121,6 +121,7 @@ BackendDescriptor load_backend_descriptor(const std::filesystem::path& file) {
   d.about = root.get("about", "");
   d.executable = root["executable"].as<std::string>();
   d.case_kind = root.get("case_kind", "");
+  d.ranks_are_solver_processes = root.get("ranks", "mpi_ranks") == "solver_processes";
   if (auto outputs = root.find("outputs")) read_outputs(*outputs, d);
   if (auto fluid = root.find("fluid_pairing")) d.fluid_pairing = read_fluid_pairing(*fluid);
   if (auto soil = root.find("soil_pairings"))

@@ -90,6 +90,9 @@ struct BackendDescriptor {
   std::filesystem::path file;  // the descriptor, for messages
   std::string executable;
   std::string case_kind;  // empty: no standalone case (runs only ready jobs)
+  // A job participant's `ranks` are the processes its program starts its
+  // solver on, not MPI ranks of the program (openfoam_adapter).
+  bool ranks_are_solver_processes = false;
 
   std::string snapshots;  // base name of the field snapshots; empty: none
   std::map<std::string, StoredField> fields;

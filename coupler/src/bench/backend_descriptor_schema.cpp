@@ -122,6 +122,11 @@ Schema make_backend_schema() {
       .optional("case_kind", Schema::string().non_empty(),
                 "The kind of its standalone case (run as `<executable> --config`); absent: it "
                 "runs only ready jobs.")
+      .optional("ranks",
+                Schema::one_of({"mpi_ranks", "solver_processes"}).default_value("mpi_ranks"),
+                "What a job participant's `ranks: N` means for its program: N MPI ranks of it "
+                "in the job's MPMD launch (mpi_ranks), or one process of it that starts its "
+                "solver on N processes itself (solver_processes, on either transport).")
       .optional("outputs", outputs_schema(), "Where its outputs live.")
       .optional("fluid_pairing", fluid_pairing_schema(),
                 "Its side of a pairing as the fluid coupled to the MPM soil.")

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,10 @@ struct ParticipantSpec {
   std::map<std::string, std::string> writes;  // field -> mesh
   std::map<std::string, std::string> reads;   // field -> mesh
   int ranks = 1;  // MPI ranks of the participant's program (transport: mpi only when > 1)
+  // > 0 for a program that runs as one process and starts its solver's
+  // processes itself (openfoam_adapter's OpenFOAM): the job's `ranks` is
+  // this count, passed as --cosim-solver-processes, and `ranks` is 1.
+  int solver_processes = 0;
   SourceLocation ranks_where;  // of the `ranks` key (line 0 when the default)
   SourceLocation where;
 };
@@ -148,6 +153,10 @@ std::string job_help();
 // Loads, validates (schema, then cross-references: unknown participants,
 // fields read that nobody writes, mismatched mesh dimensions, ...) and
 // returns the job. Throws InputError with file, line, column and key path.
-Job load_job(const std::filesystem::path& file);
+// A participant whose executable's file name is among
+// `programs_starting_their_processes` takes its `ranks` as its solver's
+// processes (ParticipantSpec::solver_processes), on either transport.
+Job load_job(const std::filesystem::path& file,
+             const std::set<std::string>& programs_starting_their_processes = {});
 
 }  // namespace cosim::job

@@ -28,7 +28,9 @@ Schema participant_schema() {
                 "Extra command-line arguments.")
       .optional("ranks", Schema::integer().range(1, 100000).default_value("1"),
                 "MPI ranks the participant's program runs on (its MPMD count under mpirun or "
-                "srun); more than 1 needs `transport: mpi` and a program that runs decomposed.")
+                "srun); more than 1 needs `transport: mpi` and a program that runs decomposed. "
+                "For openfoam_adapter, the processes OpenFOAM runs on (the adapter is one "
+                "process, on either transport).")
       .optional("meshes", Schema::map_of(mesh_schema()).default_value("{}"),
                 "Meshes the participant declares: name -> {kind, dim}.")
       .optional("writes", Schema::map_of(Schema::string().non_empty()).default_value("{}"),

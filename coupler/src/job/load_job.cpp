@@ -43,7 +43,8 @@ std::map<std::string, std::string> field_map(const config::Node& p, const char* 
   return out;
 }
 
-ParticipantSpec read_participant(const std::string& name, const config::Node& p) {
+ParticipantSpec read_participant(const std::string& name, const config::Node& p,
+                                 const std::set<std::string>& programs_starting_their_processes) {
   ParticipantSpec spec;
   spec.name = name;
   spec.where = p.key_location();
@@ -52,6 +53,12 @@ ParticipantSpec read_participant(const std::string& name, const config::Node& p)
   spec.args = p.get<std::vector<std::string>>("args");
   spec.ranks = p.get<int>("ranks");
   spec.ranks_where = p["ranks"].location();
+  if (programs_starting_their_processes.count(
+          std::filesystem::path(spec.executable).filename().string()) &&
+      spec.ranks > 1) {
+    spec.solver_processes = spec.ranks;
+    spec.ranks = 1;
+  }
   for (const auto& [mesh_name, m] : p["meshes"].entries())
     spec.meshes[mesh_name] = {mesh_kind_from(m["kind"]), m["dim"].as<int>(), m.key_location()};
   spec.writes = field_map(p, "writes", spec.meshes);
@@ -309,7 +316,8 @@ std::size_t Job::windows() const {
   return static_cast<std::size_t>(std::ceil((end_time - start_time) / window - 1e-9));
 }
 
-Job load_job(const std::filesystem::path& file) {
+Job load_job(const std::filesystem::path& file,
+             const std::set<std::string>& programs_starting_their_processes) {
   const config::Document doc = config::Document::load_file(file);
   const config::Node root = doc.root();
   job_schema().validate(root);
@@ -359,7 +367,7 @@ Job load_job(const std::filesystem::path& file) {
           fmt::format("participant name '{}' must be 1 to 64 letters, digits, '_' and "
                       "'-'",
                       name.size() > 64 ? name.substr(0, 64) + "..." : name));
-    job.participants.push_back(read_participant(name, p));
+    job.participants.push_back(read_participant(name, p, programs_starting_their_processes));
     // Several ranks of one participant are one MPMD launch with the coupler;
     // a ZeroMQ job starts each participant as one process.
     if (job.participants.back().ranks > 1 && job.transport != TransportKind::mpi)

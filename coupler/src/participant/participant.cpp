@@ -77,6 +77,11 @@ void add_coupling_options(CLI::App& app, CouplingEndpoint& endpoint) {
                   "the solver's save and restore)");
   group->add_option("--cosim-restart", endpoint.restart,
                     "this participant's directory of the checkpoint to start from");
+  group
+      ->add_option("--cosim-solver-processes", endpoint.solver_processes,
+                   "the processes to run the solver on (the job's `ranks` of a program that "
+                   "starts its solver's processes itself)")
+      ->check(CLI::Range(1, 100000));
 }
 
 struct WriteBuffer {

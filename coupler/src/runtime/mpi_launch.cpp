@@ -27,6 +27,9 @@ std::vector<std::string> participant_arguments(const job::ParticipantSpec& parti
               {"--output", (output_dir / participant.name).string(), "--cosim-endpoint", endpoint,
                "--cosim-job", job_id, "--cosim-config-hash", config_hash, "--cosim-name",
                participant.name, "--cosim-connect-timeout", fmt::format("{}", connect_timeout_s)});
+  if (participant.solver_processes > 0)
+    args.insert(args.end(),
+                {"--cosim-solver-processes", fmt::format("{}", participant.solver_processes)});
   args.insert(args.end(), participant.args.begin(), participant.args.end());
   return args;
 }
@@ -109,7 +112,10 @@ std::vector<std::string> mpi_command(const job::Job& job, const std::filesystem:
                                      unsigned cores, const CheckpointArguments& checkpoints) {
   std::vector<std::string> cmd{"mpirun", "--oversubscribe"};
   if (::geteuid() == 0) cmd.push_back("--allow-run-as-root");
-  const auto binding = binding_options(mpi_world_size(job), cores);
+  // A participant's solver processes of its own share the machine's cores.
+  int processes = mpi_world_size(job);
+  for (const auto& p : job.participants) processes += p.solver_processes;
+  const auto binding = binding_options(processes, cores);
   cmd.insert(cmd.end(), binding.begin(), binding.end());
   // Waiting ranks yield their core: participants sub-cycle while others wait.
   cmd.insert(cmd.end(), {"--mca", "mpi_yield_when_idle", "1"});

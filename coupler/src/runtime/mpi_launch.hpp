@@ -84,8 +84,9 @@ std::vector<std::string> rank_peer_names(const job::Job& job);
 
 // The arguments `cosim run` gives a participant: --config, --output and the
 // coupling options (among them the coupler's own connect timeout, so that
-// the coupler, which judges who failed, gives up first), then the job's
-// `args`.
+// the coupler, which judges who failed, gives up first; and
+// --cosim-solver-processes for a program that starts its solver's processes
+// itself), then the job's `args`.
 std::vector<std::string> participant_arguments(const job::ParticipantSpec& participant,
                                                const std::filesystem::path& output_dir,
                                                const std::string& endpoint,

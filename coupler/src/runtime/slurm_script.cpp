@@ -67,10 +67,16 @@ SlurmScript slurm_script(const job::Job& job, const fs::path& job_file, const fs
           i == 0 ? std::string("the coupler") : "participant '" + app.name + "'", words.size(),
           max_multi_prog_words, app.name));
     s.multi_prog += task_range(first, app.ranks) + " " + shell_join(words) + "\n";
-    if (i > 0)
+    if (i > 0) {
       layout +=
           fmt::format("{}#   participant '{}': {} rank{} (tasks {})", layout.empty() ? "" : "\n",
                       app.name, app.ranks, app.ranks == 1 ? "" : "s", task_range(first, app.ranks));
+      if (const int own = job.participants[i - 1].solver_processes; own > 0)
+        layout += fmt::format(
+            ", which starts its solver on {} processes of its own with mpirun on its node: "
+            "leave that node {} more cores",
+            own, own);
+    }
     first += app.ranks;
   }
 

@@ -81,10 +81,13 @@ pid_t Supervisor::start(const ChildSpec& spec) {
   std::vector<std::string> environment_storage;
   for (char** e = environ; *e != nullptr; ++e) {
     const std::string_view entry(*e);
-    const bool replaced =
-        std::any_of(spec.environment.begin(), spec.environment.end(),
-                    [&](auto& kv) { return entry.substr(0, entry.find('=')) == kv.first; });
-    if (!replaced) environment_storage.emplace_back(entry);
+    const std::string_view key = entry.substr(0, entry.find('='));
+    const bool replaced = std::any_of(spec.environment.begin(), spec.environment.end(),
+                                      [&](auto& kv) { return key == kv.first; });
+    const bool left_out =
+        std::any_of(spec.environment_left_out.begin(), spec.environment_left_out.end(),
+                    [&](const std::string& prefix) { return key.starts_with(prefix); });
+    if (!replaced && !left_out) environment_storage.emplace_back(entry);
   }
   for (const auto& [key, value] : spec.environment)
     environment_storage.push_back(key + "=" + value);

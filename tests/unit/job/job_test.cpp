@@ -179,6 +179,28 @@ TEST_F(JobFile, SeveralRanksNeedTheMpiTransport) {
   EXPECT_THAT(e, HasSubstr("needs 'transport: mpi'")) << e;
 }
 
+// A program that starts its solver's processes itself (openfoam_adapter's
+// OpenFOAM, `ranks: solver_processes` in its backend descriptor) takes the
+// job's `ranks` as their count: it is launched as one process, on either
+// transport, and its `ranks` stays 1.
+TEST_F(JobFile, RanksOfAProgramStartingItsProcessesAreItsSolverProcesses) {
+  const std::string text = variant("executable: ice_fluid", "executable: ice_fluid\n    ranks: 3");
+  const Job job = load_job(write(text), {"ice_fluid"});
+  EXPECT_EQ(job.transport, TransportKind::zmq);
+  EXPECT_EQ(job.participant("water")->ranks, 1);
+  EXPECT_EQ(job.participant("water")->solver_processes, 3);
+  EXPECT_EQ(job.participant("soil")->solver_processes, 0);
+  // By the executable's file name, wherever it lies.
+  const Job by_path = load_job(
+      write(variant("executable: ice_fluid", "executable: /opt/bin/ice_fluid\n    ranks: 2")),
+      {"ice_fluid"});
+  EXPECT_EQ(by_path.participant("water")->solver_processes, 2);
+  // One rank: the program's own setting holds.
+  EXPECT_EQ(load_job(write(valid_job), {"ice_fluid"}).participant("water")->solver_processes, 0);
+  // Other programs' ranks stay MPI ranks.
+  EXPECT_THAT(error_of(text), HasSubstr("needs 'transport: mpi'"));
+}
+
 TEST_F(JobFile, YamlSyntaxErrorsAreLocated) {
   EXPECT_THAT(error_of("kind: job\nname: [unclosed\n"), HasSubstr("job.yaml:"));
 }

@@ -111,6 +111,29 @@ TEST_F(MpiLaunch, ThisMachinesCoreCountIsKnown) {
   EXPECT_EQ(mpi_command(job_, job_file_, scratch_ / "run", "job-42", 30.0), expected);
 }
 
+// A participant whose program starts its solver's processes itself runs
+// as one rank of the MPMD line, told their count; they share the cores, so
+// they count in the binding.
+TEST_F(MpiLaunch, AProgramStartingItsSolverProcessesIsOneRankToldTheirCount) {
+  const job::Job job = job::load_job(job_file_, {"water_solver"});
+  ASSERT_EQ(job.participant("water")->solver_processes, 3);
+  EXPECT_EQ(mpi_world_size(job), 4);  // 1 + 2 + 1
+  const Words cmd = mpi_command(job, job_file_, scratch_ / "run", "job-42", 30.0, 6);
+  const std::size_t water =
+      index_of(cmd, "-np", index_of(cmd, "-np", index_of(cmd, "-np") + 1) + 1);
+  ASSERT_LT(water + 1, cmd.size());
+  EXPECT_EQ(cmd[water + 1], "1");
+  const std::size_t processes = index_of(cmd, "--cosim-solver-processes");
+  ASSERT_LT(processes + 1, cmd.size());
+  EXPECT_GT(processes, water);
+  EXPECT_EQ(cmd[processes + 1], "3");
+  EXPECT_EQ(index_of(cmd, "--cosim-solver-processes", processes + 1), cmd.size());
+  // 4 ranks and 3 OpenFOAM-like processes do not fit 6 cores.
+  EXPECT_EQ(cmd[index_of(cmd, "--bind-to") + 1], "none");
+  const Words seven = mpi_command(job, job_file_, scratch_ / "run", "job-42", 30.0, 7);
+  EXPECT_EQ(seven[index_of(seven, "--bind-to") + 1], "core");
+}
+
 TEST_F(MpiLaunch, EveryRankAfterTheCouplersHasAPeerName) {
   EXPECT_EQ(part_peer_name("soil", 0, 1), "soil");
   EXPECT_EQ(part_peer_name("soil", 0, 2), "soil[0]");

@@ -89,6 +89,22 @@ TEST_F(SlurmScriptTest, BatchScriptAsksForEveryRankAndRunsTheMultiProgFile) {
   EXPECT_LT(s.batch_script.find("set -euo pipefail"), s.batch_script.find("\nsrun "));
 }
 
+// A participant whose program starts its solver's processes itself is one
+// task; the script says how many cores its processes need beside it.
+TEST_F(SlurmScriptTest, AProgramStartingItsSolverProcessesIsOneTaskAndSaysSo) {
+  const job::Job job = job::load_job(job_file_, {"water_solver"});
+  const SlurmScript s =
+      slurm_script(job, job_file_, scratch_ / "run", "job-42", 30.0, scratch_ / "run.slurm");
+  EXPECT_THAT(s.batch_script, HasSubstr("\n#SBATCH --ntasks=4\n"));  // 1 + 2 + 1
+  EXPECT_THAT(s.batch_script,
+              HasSubstr("participant 'water': 1 rank (tasks 3), which starts its solver on 3 "
+                        "processes of its own"));
+  const Words lines = task_lines(s.multi_prog);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_THAT(lines[2], StartsWith("3 env COSIM_APP_INDEX=2 "));
+  EXPECT_THAT(lines[2], HasSubstr(" --cosim-solver-processes 3"));
+}
+
 TEST_F(SlurmScriptTest, MultiProgRunsEachApplicationOnItsTasksWithTheMpirunArguments) {
   const SlurmScript s = make(scratch_ / "run.slurm");
   const Words lines = task_lines(s.multi_prog);

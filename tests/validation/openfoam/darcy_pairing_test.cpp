@@ -45,10 +45,18 @@ struct Steady {
   double mismatch = 0.0;         // the cloud's momentum on the water against the law's
 };
 
-Steady run_case(const fs::path& dir, double phi_s, double dp, bool porosity_zones = false) {
+// `job_lines`: lines put after the job's `window:` line, and `water_lines`
+// after the water participant's `executable:` line.
+Steady run_case(const fs::path& dir, double phi_s, double dp, bool porosity_zones = false,
+                const std::string& job_lines = "", const std::string& water_lines = "") {
   const fs::path source = fs::path(COSIM_SOURCE_DIR) / "configs/openfoam_coupled/darcy";
   fs::create_directories(dir);
-  write_text(dir / "job.yaml", read_text(source / "job.yaml"));
+  std::string job = read_text(source / "job.yaml");
+  if (!job_lines.empty()) job = replaced(job, "window: 5.0e-3", "window: 5.0e-3\n" + job_lines);
+  if (!water_lines.empty())
+    job = replaced(job, "executable: openfoam_adapter",
+                   "executable: openfoam_adapter\n    " + water_lines);
+  write_text(dir / "job.yaml", job);
   write_text(dir / "column.yaml", replaced(read_text(source / "column.yaml"), "porosity: 0.4",
                                            fmt::format("porosity: {}", 1.0 - phi_s)));
   std::string water = replaced(read_text(source / "water.yaml"), "pressure: 151987.5",
@@ -136,6 +144,35 @@ TEST(OpenFoamDarcyPairing, ThePorosityZoneFallbackGivesTheSameFlow) {
     EXPECT_LE(std::abs(flux_error), 0.02);
     EXPECT_LE(s.drift, 1e-3);
   }
+}
+
+// The water's `ranks: 2` runs OpenFOAM on two processes (the adapter is one
+// process and decomposes the case itself, openfoam_adapter's backend
+// descriptor says `ranks: solver_processes`), on either transport. The
+// decomposed run gives the serial run's flow to OpenFOAM's sums (its
+// parallel reductions change the last digits); both transports give the
+// same bits.
+TEST(OpenFoamDarcyPairing, TheWatersRanksAreOpenFoamsProcessesOnEitherTransport) {
+  const fs::path dir = fresh_directory("openfoam_darcy_ranks");
+  const double phi_s = 0.6, dp = 0.5 * atmosphere;
+  const Steady serial = run_case(dir / "serial", phi_s, dp);
+  const Steady zmq = run_case(dir / "zmq", phi_s, dp, false, "", "ranks: 2");
+  const Steady mpi = run_case(dir / "mpi", phi_s, dp, false, "transport: mpi", "ranks: 2");
+  for (const char* run : {"zmq", "mpi"}) {
+    const fs::path water = dir / run / "run" / "water";
+    EXPECT_TRUE(fs::is_directory(water / "case" / "processor1")) << run;
+    EXPECT_FALSE(fs::exists(water / "case" / "processor2")) << run;
+    EXPECT_NE(read_text(water / "summary.json").find("\"processes\": 2"), std::string::npos) << run;
+  }
+  const double difference = std::abs(zmq.column_velocity / serial.column_velocity - 1.0);
+  fmt::print(
+      "U_f on one OpenFOAM process {:.9f} m/s, on two {:.9f} m/s (ZeroMQ) and {:.9f} m/s (MPI): "
+      "relative difference {:.2e} (tolerance 1e-6), MPI against ZeroMQ {:.2e} (tolerance 0)\n",
+      serial.column_velocity, zmq.column_velocity, mpi.column_velocity, difference,
+      std::abs(mpi.column_velocity - zmq.column_velocity));
+  EXPECT_LE(difference, 1e-6);
+  EXPECT_EQ(mpi.column_velocity, zmq.column_velocity);
+  EXPECT_EQ(mpi.mismatch, zmq.mismatch);
 }
 
 }  // namespace

@@ -25,6 +25,10 @@ struct ChildSpec {
   // Set in the child's environment, on top of this process's (secrets go
   // here, never into args: any local user can read a command line).
   std::vector<std::pair<std::string, std::string>> environment = {};
+  // Prefixes of this process's variables the child does not inherit (an
+  // MPI rank's launch variables, which would make the child's own mpirun
+  // or MPI_Init join the parent's job).
+  std::vector<std::string> environment_left_out = {};
 };
 
 struct ChildExit {

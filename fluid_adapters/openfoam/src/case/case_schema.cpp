@@ -85,8 +85,11 @@ Schema openfoam_case_schema() {
   Schema parallel = Schema::object(
       "Run OpenFOAM on several processes: the case is decomposed once at the start "
       "(decomposePar, method simple) and never reconstructed.");
-  parallel.required("processes", Schema::integer().range(1, 1024), "How many MPI processes.")
-      .optional("split", Schema::vector(2, 3).default_note("[processes, 1, 1]"),
+  parallel
+      .required("processes", Schema::integer().range(1, 1024),
+                "How many MPI processes (a coupled job's `ranks: N` for this participant gives "
+                "N without this block).")
+      .optional("split", Schema::vector(2, 3).default_note("the fewest cut cell faces"),
                 "Blocks per direction (x, y, z); their product is `processes`.");
   Schema soil = Schema::object("How the MPM soil enters OpenFOAM in a coupled run.");
   soil.optional("model", Schema::one_of({"parcels", "porosity_zones"}).default_value("parcels"),

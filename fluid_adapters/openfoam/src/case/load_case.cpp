@@ -31,8 +31,8 @@ SideKind side_kind(const std::string& name) {
 
 class CaseReader {
  public:
-  explicit CaseReader(const cosim::config::Document& document)
-      : document_(document), root_(document.root()) {}
+  CaseReader(const cosim::config::Document& document, int job_processes)
+      : document_(document), root_(document.root()), job_processes_(job_processes) {}
 
   CaseDescription read() {
     cosim::config::expect_kind(root_, "openfoam_case");
@@ -111,7 +111,13 @@ class CaseReader {
     if (auto parallel = root_.find("parallel")) {
       c.processes = (*parallel)["processes"].as<int>();
       c.split = {c.processes, 1, 1};
+      if (job_processes_ > 0 && c.processes != job_processes_)
+        (*parallel)["processes"].fail(fmt::format(
+            "the job runs this participant's OpenFOAM on {} processes (its `ranks`), the case on "
+            "{}; give one count, or leave `parallel` out of the case",
+            job_processes_, c.processes));
       if (auto split = parallel->find("split")) {
+        c.split_given = true;
         const auto blocks = split->as<std::vector<double>>();
         long product = 1;
         for (std::size_t d = 0; d < 3; ++d) {
@@ -143,6 +149,10 @@ class CaseReader {
       c.soil.max_solid_fraction = soil->get<double>("max_solid_fraction");
       c.soil.minimum_solid_fraction = soil->get<double>("minimum_solid_fraction");
       c.soil.displaced_water = soil->get<bool>("displaced_water");
+    }
+    if (job_processes_ > 0 && !root_.find("parallel")) {
+      c.processes = job_processes_;
+      c.split = {c.processes, 1, 1};
     }
     c.size = run_size(c, root_);
     cosim::check_run_size(c.size, root_);
@@ -243,6 +253,7 @@ class CaseReader {
 
   const cosim::config::Document& document_;
   Node root_;
+  int job_processes_ = 0;  // the job's `ranks` of this participant; 0: the case's own
 };
 
 }  // namespace
@@ -272,14 +283,15 @@ Vector3 GeneratedCase::spacing() const {
   return h;
 }
 
-CaseDescription load_case(const std::filesystem::path& file) {
+CaseDescription load_case(const std::filesystem::path& file, int job_processes) {
   const auto document = cosim::config::Document::load_file(file);
-  return CaseReader(document).read();
+  return CaseReader(document, job_processes).read();
 }
 
-CaseDescription load_case_text(std::string_view text, const std::filesystem::path& name) {
+CaseDescription load_case_text(std::string_view text, const std::filesystem::path& name,
+                               int job_processes) {
   const auto document = cosim::config::Document::load_string(text, name);
-  return CaseReader(document).read();
+  return CaseReader(document, job_processes).read();
 }
 
 }  // namespace openfoam

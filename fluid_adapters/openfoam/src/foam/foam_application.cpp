@@ -17,6 +17,13 @@ namespace openfoam {
 
 namespace {
 
+// Whether this process was started by mpirun or srun as a rank of a job.
+bool launched_as_mpi_rank() {
+  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK"})
+    if (std::getenv(variable) != nullptr) return true;
+  return false;
+}
+
 using Clock = std::chrono::steady_clock;
 
 double seconds_between(Clock::time_point a, Clock::time_point b) {
@@ -93,20 +100,24 @@ ApplicationTiming run_application(const Installation& installation, const std::s
                                   std::chrono::seconds timeout) {
   arguments.insert(arguments.begin(), {"-case", case_dir.string()});
   std::filesystem::path program = installation.application(name);
+  cosim::runtime::ChildSpec child{name, program, {}, log_file};
   if (processes > 1) {
     arguments.push_back("-parallel");
     arguments.insert(arguments.begin(),
                      {"-np", std::to_string(processes), "--bind-to", "none", program.string()});
-    program = installation.application("mpirun");
-    if (::geteuid() == 0) {
-      ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-      ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-    }
+    child.executable = installation.application("mpirun");
+    if (::geteuid() == 0)
+      child.environment = {{"OMPI_ALLOW_RUN_AS_ROOT", "1"},
+                           {"OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1"}};
   }
+  child.args = std::move(arguments);
+  // The adapter on a rank of a coupled MPI job: OpenFOAM is a job of its
+  // own, not a part of the adapter's.
+  if (launched_as_mpi_rank()) child.environment_left_out = {"OMPI_", "PMIX_", "PMI_"};
   const std::size_t log_start = size_of_file(log_file);
   cosim::runtime::Supervisor supervisor;
   const Clock::time_point launched = Clock::now();
-  supervisor.start({name, program, arguments, log_file});
+  supervisor.start(child);
   LogFollower log(log_file, log_start);
   Clock::time_point first_step{};
   bool stepping = false;

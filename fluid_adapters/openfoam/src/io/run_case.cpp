@@ -172,7 +172,11 @@ class CaseRun {
                            SoilCoupling::mesh_name);
     if (c_.processes > 1) {
       // Decomposed once; the windows then run on the processors' directories.
-      write_decompose_par_dict(case_dir_, c_.processes, c_.split);
+      const std::array<int, 3> split =
+          c_.split_given ? c_.split : choose_split(c_.processes, mesh_.centres);
+      spdlog::info("OpenFOAM on {} processes, {} x {} x {} blocks", c_.processes, split[0],
+                   split[1], split[2]);
+      write_decompose_par_dict(case_dir_, c_.processes, split);
       run_tool("decomposePar", {"-force"});
     }
     layout_.emplace(case_dir_, c_.processes, mesh_.volumes.size());
@@ -303,6 +307,7 @@ class CaseRun {
     out.integer("run.steps", steps_);
     out.integer("run.windows", static_cast<std::int64_t>(windows_done()));
     out.integer("run.parcels", static_cast<std::int64_t>(parcels_));
+    out.integer("run.processes", c_.processes);
     cosim::write_schedule(out, "run.snapshots", snapshots_);
     out.commit();
     participant.checkpoint_written();
@@ -310,6 +315,15 @@ class CaseRun {
 
   void read_checkpoint(const fs::path& dir, SoilCoupling& coupling, FoamFields& fields) {
     const cosim::StateFileReader in(dir / state_file, state_kind, state_version);
+    // The time directory is every processor's of the decomposition it was
+    // written with.
+    const std::int64_t written_on = in.has("run.processes") ? in.integer("run.processes") : 1;
+    if (written_on != c_.processes)
+      throw cosim::InputError(fmt::format(
+          "{}: the checkpoint holds OpenFOAM's fields decomposed for {} process{}, and this run "
+          "has OpenFOAM on {}; restart with the checkpoint's count (the job's `ranks` of this "
+          "participant, or the case's parallel.processes)",
+          (dir / state_file).string(), written_on, written_on == 1 ? "" : "es", c_.processes));
     layout_->copy_times_in(dir / "time");
     for (const auto& [name, values] : field_arrays(fields))
       *values = in.has(std::string("fields.") + name) ? in.numbers(std::string("fields.") + name)
@@ -643,7 +657,7 @@ int run_case(const cosim::SolverCommandLine& options) {
   return cosim::run_and_finish(summary, [&] {
     const CaseDescription description = [&] {
       auto scope = summary.phases().measure("read_case");
-      return load_case(options.config);
+      return load_case(options.config, options.endpoint.solver_processes);
     }();
     summary.set_config(options.config, description.config_hash);
     spdlog::info("size: {} (limits.memory_gib {:g})", description.size.describe(),

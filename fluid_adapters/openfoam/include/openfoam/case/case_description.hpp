@@ -111,8 +111,11 @@ struct CaseDescription {
   std::vector<WaveGauge> wave_gauges;
   // Parallel OpenFOAM: decomposed once (method simple, `split` cells blocks
   // per direction, their product the process count), run under mpirun.
+  // Without the case's `parallel.split`, the run chooses the split from the
+  // mesh (choose_split).
   int processes = 1;
   std::array<int, 3> split{1, 1, 1};
+  bool split_given = false;
   cosim::RunSize size;  // its cells and the memory of the adapter and OpenFOAM (set by the loader)
 
   bool has_cloud() const { return solver == "MPPICInterFoam"; }
