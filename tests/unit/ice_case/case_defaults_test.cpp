@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "cosim/error.hpp"
 #include "ice/advection/limiter.hpp"
 #include "ice/case/case_schema.hpp"
 #include "ice/case/load_case.hpp"
@@ -61,9 +62,20 @@ TEST(IceCaseSchemaDefaults, ACaseWithoutTheOptionalKeysReadsTheSchemaDefaults) {
   EXPECT_EQ(n.pressure.tolerance, schema_default<double>("numerics.pressure.tolerance"));
   EXPECT_EQ(n.pressure.max_iterations, schema_default<int>("numerics.pressure.max_iterations"));
   // The preconditioner's default depends on the solver (schema text: multigrid built-in,
-  // boomeramg with PETSc); the solver's on the rank count.
+  // with PETSc pfmg in 2D and 3D, boomeramg in 1D); the solver's on the rank count.
   EXPECT_EQ(n.pressure.preconditioner, PressurePreconditioner::multigrid);
-  EXPECT_EQ(n.petsc_preconditioner, "boomeramg");
+  EXPECT_EQ(n.petsc_preconditioner, "boomeramg");  // 1D: pfmg needs a 2D or 3D grid
+  try {
+    load_case_text(std::string(bare_case).replace(
+                       std::string(bare_case).find("numerics: {"), 11,
+                       "numerics: {pressure: {solver: petsc, preconditioner: pfmg}, "),
+                   "bare.yaml");
+    ADD_FAILURE() << "pfmg on a 1D grid was not refused";
+  } catch (const cosim::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("pfmg (hypre's structured multigrid) needs a 2D or 3D"),
+              std::string::npos)
+        << e.what();
+  }
   EXPECT_FALSE(n.pressure_solver);
   EXPECT_EQ(n.equilibration.tolerance, schema_default<double>("numerics.equilibration.tolerance"));
   EXPECT_EQ(n.equilibration.max_iterations,

@@ -111,6 +111,13 @@ TEST(IceCase, ReadsEveryKeyAndTheDefaults) {
   EXPECT_EQ(petsc.numerics.pressure_solver, NumericsDescription::PressureSolverKind::petsc);
   EXPECT_EQ(petsc.numerics.petsc_preconditioner, "boomeramg");
   EXPECT_EQ(petsc.numerics.petsc_options, "-ice_pressure_ksp_view");
+  // hypre's structured multigrid: the default of a 2D grid with PETSc.
+  EXPECT_EQ(c.numerics.petsc_preconditioner, "pfmg");
+  EXPECT_EQ(load_case_text(replaced(dam_break, "preconditioner: incomplete_cholesky",
+                                    "solver: petsc, preconditioner: pfmg"),
+                           "case.yaml")
+                .numerics.petsc_preconditioner,
+            "pfmg");
   const auto solver = make_solver<2>(c);
   EXPECT_GT(solver->state().materials[0].volume_fraction[0], 0.99);  // water in the corner
   EXPECT_LT(solver->state().materials[0].volume_fraction[7], 1e-5);

@@ -114,10 +114,12 @@ Schema numerics_schema() {
                 "builtin: the solver's own conjugate gradients (one process); petsc: PETSc's, "
                 "over every rank. Default: builtin on one process, petsc on several ranks.")
       .optional("preconditioner",
-                Schema::one_of({"multigrid", "jacobi", "incomplete_cholesky", "gamg", "boomeramg"}),
+                Schema::one_of(
+                    {"multigrid", "jacobi", "incomplete_cholesky", "pfmg", "boomeramg", "gamg"}),
                 "Preconditioner of conjugate gradients. builtin: multigrid (default), jacobi or "
-                "incomplete_cholesky; petsc: boomeramg (default; hypre's algebraic multigrid), "
-                "gamg (PETSc's) or jacobi.")
+                "incomplete_cholesky; petsc: pfmg (default in 2D and 3D; hypre's structured "
+                "multigrid across the ranks' blocks), boomeramg (default in 1D; hypre's "
+                "algebraic multigrid), gamg (PETSc's) or jacobi.")
       .optional("petsc_options", Schema::string(),
                 "With petsc: further PETSc options, prefix ice_pressure_ (e.g. "
                 "\"-ice_pressure_ksp_monitor\").");

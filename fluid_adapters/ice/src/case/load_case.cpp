@@ -282,7 +282,7 @@ class CaseReader {
     const Node pressure = node["pressure"];
     n.pressure.tolerance = pressure.get<double>("tolerance");
     n.pressure.max_iterations = pressure.get<int>("max_iterations");
-    read_pressure_solver(pressure, n);
+    read_pressure_solver(pressure, dimension_, n);
     const Node equilibration = node["equilibration"];
     n.equilibration.tolerance = equilibration.get<double>("tolerance");
     n.equilibration.max_iterations = equilibration.get<int>("max_iterations");
@@ -292,8 +292,11 @@ class CaseReader {
   }
 
   // The pressure solve's solver and preconditioner, which must belong to it.
-  static void read_pressure_solver(const Node& pressure, NumericsDescription& n) {
+  static void read_pressure_solver(const Node& pressure, int dimension, NumericsDescription& n) {
     using Kind = NumericsDescription::PressureSolverKind;
+    // hypre's structured multigrid where the grid allows (ice_mpi_bench,
+    // 1e6 cells: half BoomerAMG's time a step, on one rank and on two).
+    n.petsc_preconditioner = dimension >= 2 ? "pfmg" : "boomeramg";
     if (auto solver = pressure.find("solver"))
       n.pressure_solver = solver->as<std::string>() == "petsc" ? Kind::petsc : Kind::builtin;
     if (auto options = pressure.find("petsc_options")) {
@@ -304,14 +307,17 @@ class CaseReader {
     const auto preconditioner = pressure.find("preconditioner");
     if (!preconditioner) return;
     const std::string name = preconditioner->as<std::string>();
-    const bool petsc_only = name == "gamg" || name == "boomeramg";
+    const bool petsc_only = name == "gamg" || name == "boomeramg" || name == "pfmg";
     const bool builtin_only = name == "multigrid" || name == "incomplete_cholesky";
     if (petsc_only && n.pressure_solver != Kind::petsc)
       preconditioner->fail(fmt::format("'{}' is PETSc's: it needs `solver: petsc`", name));
     if (builtin_only && n.pressure_solver == Kind::petsc)
       preconditioner->fail(fmt::format(
-          "'{}' is the built-in solver's; with `solver: petsc` take boomeramg, gamg or jacobi",
+          "'{}' is the built-in solver's; with `solver: petsc` take pfmg, boomeramg, gamg or "
+          "jacobi",
           name));
+    if (name == "pfmg" && dimension == 1)
+      preconditioner->fail("pfmg (hypre's structured multigrid) needs a 2D or 3D grid");
     if (n.pressure_solver == Kind::petsc || name == "jacobi") n.petsc_preconditioner = name;
     if (n.pressure_solver != Kind::petsc)
       n.pressure.preconditioner = pressure_preconditioner_from_name(name);

@@ -21,9 +21,9 @@ void check(PetscErrorCode code, const char* call) {
 }  // namespace
 
 void check_petsc_preconditioner(const std::string& name) {
-  if (name != "gamg" && name != "boomeramg" && name != "jacobi")
+  if (name != "gamg" && name != "boomeramg" && name != "pfmg" && name != "jacobi")
     throw std::invalid_argument("unknown PETSc pressure preconditioner '" + name +
-                                "' (known: gamg, boomeramg, jacobi)");
+                                "' (known: pfmg, boomeramg, gamg, jacobi)");
 }
 
 PetscLibrary::PetscLibrary(MPI_Comm world) {
@@ -109,7 +109,18 @@ PetscPressureSolver<Dim>::PetscPressureSolver(
       throw std::invalid_argument("PetscPressureSolver: the block's grid does not hold its cells");
   }
   Petsc& p = *petsc_;
-  if constexpr (Dim == 1) {
+  // hypre's PFMG works on its structured matrix, which PETSc makes of a 3D
+  // DMDA only: a plane is one cell thick.
+  const bool pfmg = options_.preconditioner == "pfmg";
+  if (pfmg && Dim == 1)
+    throw std::invalid_argument("PetscPressureSolver: pfmg needs a 2D or 3D grid");
+  if (pfmg && Dim == 2) {
+    parts[2] = {1};
+    check(DMDACreate3d(p.comm, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE,
+                       DMDA_STENCIL_STAR, cells[0], cells[1], 1, dims[0], dims[1], 1, 1, 1,
+                       parts[0].data(), parts[1].data(), parts[2].data(), &p.da),
+          "DMDACreate3d");
+  } else if constexpr (Dim == 1) {
     check(DMDACreate1d(p.comm, DM_BOUNDARY_NONE, cells[0], 1, 1, parts[0].data(), &p.da),
           "DMDACreate1d");
   } else if constexpr (Dim == 2) {
@@ -130,8 +141,9 @@ PetscPressureSolver<Dim>::PetscPressureSolver(
     if (first[d] != owned_[d][0] || first[d] + size[d] != owned_[d][1])
       throw std::logic_error("PetscPressureSolver: the DMDA's block differs from the solver's");
   }
+  if (pfmg) check(DMSetMatType(p.da, MATHYPRESTRUCT), "DMSetMatType");
   check(DMCreateMatrix(p.da, &p.matrix), "DMCreateMatrix");
-  check(MatSetOption(p.matrix, MAT_SPD, PETSC_TRUE), "MatSetOption");
+  if (!pfmg) check(MatSetOption(p.matrix, MAT_SPD, PETSC_TRUE), "MatSetOption");
   check(DMCreateGlobalVector(p.da, &p.solution), "DMCreateGlobalVector");
   check(VecDuplicate(p.solution, &p.rhs), "VecDuplicate");
   check(VecDuplicate(p.solution, &p.residual), "VecDuplicate");
@@ -144,6 +156,8 @@ PetscPressureSolver<Dim>::PetscPressureSolver(
   if (options_.preconditioner == "boomeramg") {
     check(PCSetType(pc, PCHYPRE), "PCSetType");
     check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
+  } else if (pfmg) {
+    check(PCSetType(pc, PCPFMG), "PCSetType");
   } else {
     check(PCSetType(pc, options_.preconditioner == "gamg" ? PCGAMG : PCJACOBI), "PCSetType");
   }

@@ -56,11 +56,12 @@ struct NumericsDescription {
   PressureSolverOptions pressure;
   // Who solves the pressure equation: the built-in solver (one process) or
   // PETSc (any number of ranks); none given: built-in on one process, PETSc
-  // on several. With PETSc: its preconditioner (boomeramg, gamg, jacobi)
-  // and further options (prefix ice_pressure_).
+  // on several. With PETSc: its preconditioner (pfmg, the default in 2D
+  // and 3D; boomeramg, the default in 1D; gamg, jacobi) and further options
+  // (prefix ice_pressure_).
   enum class PressureSolverKind { builtin, petsc };
   std::optional<PressureSolverKind> pressure_solver;
-  std::string petsc_preconditioner = "boomeramg";
+  std::string petsc_preconditioner = "pfmg";
   std::string petsc_options;
   EquilibrationOptions equilibration;
   double smagorinsky_constant = 0.0;  // 0: no turbulence model

@@ -20,12 +20,14 @@ struct PetscPressureOptions {
   // ||b - A dP|| / ||b|| to reach (PETSc's unpreconditioned CG residual).
   double tolerance = 1e-10;
   int max_iterations = 2000;
-  // boomeramg (hypre's algebraic multigrid), gamg (PETSc's smoothed-
-  // aggregation algebraic multigrid) or jacobi. Measured on a 1e6-cell dam
-  // break on 2 ranks (ice_mpi_bench): boomeramg 9 iterations a solve and
-  // 1.46 s a step, gamg 35 and 1.64 s; on one rank the built-in
-  // multigrid-preconditioned CG takes 13 iterations and 0.67 s. The
-  // algebraic multigrids' set-up, each solve, is most of their cost.
+  // pfmg (hypre's structured multigrid on PETSc's MATHYPRESTRUCT, 2D and
+  // 3D; a 2D grid is a 3D DMDA one cell thick), boomeramg (hypre's
+  // algebraic multigrid), gamg (PETSc's smoothed-aggregation algebraic
+  // multigrid) or jacobi. Measured on a 1e6-cell dam break (ice_mpi_bench,
+  // one thread a rank): pfmg 17 iterations a solve and 1.03 s a step on one
+  // rank, 0.58 s on two; boomeramg 9 iterations, 2.04 s and 1.27 s, most
+  // of it its set-up, each solve; the built-in multigrid-preconditioned CG
+  // on one rank 13 iterations and 0.56 s.
   std::string preconditioner = "boomeramg";
   // PETSc options for the solve, prefix ice_pressure_ (e.g.
   // "-ice_pressure_ksp_monitor -ice_pressure_pc_gamg_threshold 0.02").
