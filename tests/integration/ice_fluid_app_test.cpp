@@ -102,6 +102,19 @@ TEST(IceFluidApp, BadInputExitsTwoNamingFileKeyAndLine) {
   }
 }
 
+// Options PETSc refuses are the case's bad input, in PETSc's words.
+TEST(IceFluidApp, PetscOptionsPetscRefusesExitTwoNamingTheKey) {
+  const fs::path dir = fresh_directory("ice_fluid_app_bad_petsc_options");
+  const ProcessResult r = run_case(dir, std::string(column_case) +
+                                            "numerics: {pressure: {solver: petsc, petsc_options: "
+                                            "\"-ice_pressure_pc_pfmg_relax_type bogus\"}}\n");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("case.yaml: key 'numerics.pressure.petsc_options': PETSc "
+                                  "refused the options \"-ice_pressure_pc_pfmg_relax_type "
+                                  "bogus\": Unknown option bogus"));
+  EXPECT_THAT(r.output, HasSubstr("Available options: jacobi"));
+}
+
 // The column case with its first step and step floor, run in `dir`.
 ProcessResult run_with_steps(const fs::path& dir, const char* initial, const char* floor) {
   return run_case(dir, std::string(column_case) + "numerics: {initial_time_step: " + initial +

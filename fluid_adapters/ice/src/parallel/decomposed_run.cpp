@@ -25,10 +25,17 @@ const CaseDescription& runnable(const CaseDescription& c, MPI_Comm comm) {
   return c;
 }
 
+cosim::InputError refused_options(const CaseDescription& c, const PetscOptionsRefused& e) {
+  return cosim::InputError(cosim::SourceLocation{c.file.string(), 0, 0},
+                           "numerics.pressure.petsc_options", e.what());
+}
+
 template <int Dim>
 BlockSolver<Dim> block_of(MPI_Comm comm, const CaseDescription& c) {
   try {
     return make_block_solver<Dim>(comm, runnable(c, comm), petsc_pressure_options(c));
+  } catch (const PetscOptionsRefused& e) {
+    throw refused_options(c, e);
   } catch (const cosim::InputError& e) {
     if (std::string(e.what()).find(c.file.string()) == 0) throw;
     throw cosim::InputError(fmt::format("{}: key 'grid.cells': {}", c.file.string(), e.what()));
@@ -149,9 +156,13 @@ std::unique_ptr<PressureSystemSolver<Dim>> petsc_pressure_on_one_process(const C
   std::array<std::int64_t, 3> cells{1, 1, 1};
   for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) cells[d] = grid.cells()[d];
   const cosim::decomposition::CartesianDecomposition whole(Dim, cells, {1, 1, 1});
-  return std::make_unique<PetscPressureSolver<Dim>>(
-      MPI_COMM_SELF, whole, grid, IceSolver<Dim>::pressure_boundaries(case_sides<Dim>(c)), grid,
-      typename PetscPressureSolver<Dim>::Offset{}, petsc_pressure_options(c));
+  try {
+    return std::make_unique<PetscPressureSolver<Dim>>(
+        MPI_COMM_SELF, whole, grid, IceSolver<Dim>::pressure_boundaries(case_sides<Dim>(c)), grid,
+        typename PetscPressureSolver<Dim>::Offset{}, petsc_pressure_options(c));
+  } catch (const PetscOptionsRefused& e) {
+    throw refused_options(c, e);
+  }
 }
 
 template class DecomposedRun<1>;

@@ -18,6 +18,31 @@ void check(PetscErrorCode code, const char* call) {
   if (code != 0) throw std::runtime_error(fmt::format("PETSc: {} failed (error {})", call, code));
 }
 
+// Keeps the first message of an error PETSc raises instead of printing it.
+PetscErrorCode keep_first_message(MPI_Comm, int, const char*, const char*, PetscErrorCode code,
+                                  PetscErrorType, const char* message, void* context) {
+  auto* kept = static_cast<std::string*>(context);
+  if (kept->empty() && message != nullptr) {
+    *kept = message;
+    kept->erase(kept->find_last_not_of(" \n") + 1);
+  }
+  return code;
+}
+
+// Runs a PETSc call that reads the user's options; its failure is
+// PetscOptionsRefused with PETSc's own words.
+template <class Call>
+void apply_user_options(const std::string& options, Call call) {
+  std::string message;
+  PetscPushErrorHandler(keep_first_message, &message);
+  const PetscErrorCode code = call();
+  PetscPopErrorHandler();
+  if (code != 0)
+    throw PetscOptionsRefused(
+        fmt::format("PETSc refused the options \"{}\": {}", options,
+                    message.empty() ? fmt::format("error {}", code) : message));
+}
+
 }  // namespace
 
 void check_petsc_preconditioner(const std::string& name) {
@@ -167,10 +192,10 @@ PetscPressureSolver<Dim>::PetscPressureSolver(
         "KSPSetTolerances");
   check(KSPSetNormType(p.ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
   check(KSPSetInitialGuessNonzero(p.ksp, PETSC_TRUE), "KSPSetInitialGuessNonzero");
-  if (!options_.petsc_options.empty())
-    check(PetscOptionsInsertString(nullptr, options_.petsc_options.c_str()),
-          "PetscOptionsInsertString");
-  check(KSPSetFromOptions(p.ksp), "KSPSetFromOptions");
+  const std::string& user = options_.petsc_options;
+  if (!user.empty())
+    apply_user_options(user, [&] { return PetscOptionsInsertString(nullptr, user.c_str()); });
+  apply_user_options(user, [&] { return KSPSetFromOptions(p.ksp); });
 }
 
 template <int Dim>

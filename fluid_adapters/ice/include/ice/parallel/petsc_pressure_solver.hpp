@@ -4,6 +4,7 @@
 
 #include <array>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "cosim/decomposition/cartesian_decomposition.hpp"
@@ -36,6 +37,13 @@ struct PetscPressureOptions {
 
 // The preconditioners PetscPressureOptions takes; throws std::invalid_argument otherwise.
 void check_petsc_preconditioner(const std::string& name);
+
+// PETSc refused PetscPressureOptions::petsc_options (an unknown value, a
+// malformed string): what PETSc said. Callers name the case's key.
+class PetscOptionsRefused : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
 
 // PETSc for the process: initialised by the first instance (on MPI as it
 // stands, or starting it), finalised when the instance that initialised it
