@@ -172,8 +172,7 @@ class CaseRun {
                            SoilCoupling::mesh_name);
     if (c_.processes > 1) {
       // Decomposed once; the windows then run on the processors' directories.
-      const std::array<int, 3> split =
-          c_.split_given ? c_.split : choose_split(c_.processes, mesh_.centres);
+      const std::array<int, 3> split = c_.split_given ? c_.split : split_of_mesh();
       spdlog::info("OpenFOAM on {} processes, {} x {} x {} blocks", c_.processes, split[0],
                    split[1], split[2]);
       write_decompose_par_dict(case_dir_, c_.processes, split);
@@ -199,6 +198,20 @@ class CaseRun {
                                   {"end_time_s", c_.end_time}});
     spdlog::info("case '{}': {} on {} cells, dt {} s, {} s per start, end time {} s", c_.name,
                  c_.solver, mesh_.volumes.size(), c_.time_step, c_.window, c_.end_time);
+  }
+
+  // The blocks of the simple method for the run's processes (the case's
+  // parallel.processes, or the job's `ranks` of this participant).
+  std::array<int, 3> split_of_mesh() const {
+    try {
+      return choose_split(c_.processes, mesh_.centres);
+    } catch (const cosim::InputError& e) {
+      throw cosim::InputError(
+          cosim::SourceLocation{c_.file.string(), 0, 0}, "parallel.processes",
+          fmt::format("{} (the processes are the case's parallel.processes or, coupled, the "
+                      "job's `ranks` of this participant)",
+                      e.what()));
+    }
   }
 
   void run_tool(const std::string& name, std::vector<std::string> arguments) {
