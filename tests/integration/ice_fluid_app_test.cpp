@@ -115,6 +115,23 @@ TEST(IceFluidApp, PetscOptionsPetscRefusesExitTwoNamingTheKey) {
   EXPECT_THAT(r.output, HasSubstr("Available options: jacobi"));
 }
 
+// An option PETSc never reads (misspelled, or another preconditioner's) is
+// named in a warning after the first solve; the run goes on.
+TEST(IceFluidApp, PetscOptionsPetscNeverReadsAreNamedInAWarning) {
+  const fs::path dir = fresh_directory("ice_fluid_app_unused_petsc_options");
+  const ProcessResult r = run_case(
+      dir, replaced(std::string(column_case), "end_time: 0.05", "end_time: 0.001") +
+               "numerics: {pressure: {solver: petsc, petsc_options: "
+               "\"-ice_pressure_ksp_monitr -ice_pressure_pc_hypre_boomeramg_strong_threshold "
+               "0.5\"}}\n");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output,
+              HasSubstr("numerics.pressure.petsc_options: PETSc did not use "
+                        "-ice_pressure_ksp_monitr, -ice_pressure_pc_hypre_boomeramg_strong_"
+                        "threshold 0.5 (misspelled, or an option of another preconditioner than "
+                        "pfmg)"));
+}
+
 // The column case with its first step and step floor, run in `dir`.
 ProcessResult run_with_steps(const fs::path& dir, const char* initial, const char* floor) {
   return run_case(dir, std::string(column_case) + "numerics: {initial_time_step: " + initial +

@@ -1,11 +1,14 @@
 #include "ice/parallel/petsc_pressure_solver.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <petscdmda.h>
 #include <petscksp.h>
+#include <spdlog/spdlog.h>
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "cosim/error.hpp"
@@ -41,6 +44,23 @@ void apply_user_options(const std::string& options, Call call) {
     throw PetscOptionsRefused(
         fmt::format("PETSc refused the options \"{}\": {}", options,
                     message.empty() ? fmt::format("error {}", code) : message));
+}
+
+// The options of the solve (prefix ice_pressure_) that PETSc has not read:
+// misspelled, or for another preconditioner than the one chosen.
+std::vector<std::string> unused_solve_options() {
+  PetscInt count = 0;
+  char** names = nullptr;
+  char** values = nullptr;
+  std::vector<std::string> unused;
+  if (PetscOptionsLeftGet(nullptr, &count, &names, &values) != 0) return unused;
+  for (PetscInt i = 0; i < count; ++i) {
+    const std::string name = names[i];
+    if (name.rfind("ice_pressure_", 0) != 0) continue;
+    unused.push_back("-" + name + (values[i] != nullptr ? std::string(" ") + values[i] : ""));
+  }
+  PetscOptionsLeftRestore(nullptr, &count, &names, &values);
+  return unused;
 }
 
 }  // namespace
@@ -324,6 +344,14 @@ PressureSolution PetscPressureSolver<Dim>::solve(std::span<const double> kappa,
           "relative residual {:.3g}, tolerance {:.3g}, KSP reason {}",
           options_.preconditioner, result.iterations, options_.max_iterations,
           result.relative_residual, options_.tolerance, static_cast<int>(reason)));
+  }
+  if (!unused_options_checked_ && !options_.petsc_options.empty()) {
+    unused_options_checked_ = true;
+    if (const auto unused = unused_solve_options(); !unused.empty())
+      spdlog::warn(
+          "numerics.pressure.petsc_options: PETSc did not use {} (misspelled, or an option of "
+          "another preconditioner than {})",
+          fmt::join(unused, ", "), options_.preconditioner);
   }
   const PetscScalar* solution = nullptr;
   check(VecGetArrayRead(p.solution, &solution), "VecGetArrayRead");

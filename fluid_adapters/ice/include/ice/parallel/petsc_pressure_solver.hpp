@@ -103,6 +103,7 @@ class PetscPressureSolver final : public PressureSystemSolver<Dim> {
   Offset offset_;
   PetscPressureOptions options_;
   std::array<std::array<int, 2>, static_cast<std::size_t>(Dim)> owned_{};  // in the whole grid
+  bool unused_options_checked_ = false;                                    // after the first solve
 };
 
 extern template class PetscPressureSolver<1>;
