@@ -20,6 +20,7 @@
 #include "cosim/io/files.hpp"
 #include "cosim/io/logging.hpp"
 #include "cosim/io/run_summary.hpp"
+#include "cosim/runtime/mpi_launch_environment.hpp"
 #include "cosim/runtime/stop_request.hpp"
 #include "cosim/runtime/supervisor.hpp"
 #include "cplscheme/coupler.hpp"
@@ -265,7 +266,7 @@ int run_job(const RunOptions& o) {
   const job::Job job = job::load_job(o.job_file, bench::programs_starting_their_processes());
   RunOptions opts = o;
   if (opts.job_id.empty()) opts.job_id = new_job_id(job.name);
-  const bool under_mpirun = com::launched_by_mpirun();
+  const bool under_mpirun = runtime::launched_as_mpi_rank();
   if (job.transport == job::TransportKind::mpi && !under_mpirun) {
     if (o.print_mpi_command) {
       check_checkpoint_options(job, opts);

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <climits>
-#include <cstdlib>
 #include <thread>
 
 #include "com/allocator_tuning.hpp"
@@ -17,12 +16,6 @@
 #endif
 
 namespace cosim::com {
-
-bool launched_by_mpirun() {
-  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMI_RANK", "PMIX_RANK"})
-    if (std::getenv(variable) != nullptr) return true;
-  return false;
-}
 
 #ifdef COSIM_HAVE_MPI
 

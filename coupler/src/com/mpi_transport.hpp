@@ -15,9 +15,6 @@
 // MPI_COMM_WORLD so they never mix with a solver's traffic.
 namespace cosim::com {
 
-// True when this process was started by mpirun (Open MPI's environment).
-bool launched_by_mpirun();
-
 class MpiHub final : public Hub {
  public:
   // The peer the mpirun line starts at each world rank from 1 on, in order:

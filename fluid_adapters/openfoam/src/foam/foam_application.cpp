@@ -4,25 +4,18 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <cstdlib>
 #include <fstream>
 #include <thread>
 
 #include "cosim/error.hpp"
 #include "cosim/io/tail_lines.hpp"
+#include "cosim/runtime/mpi_launch_environment.hpp"
 #include "cosim/runtime/stop_request.hpp"
 #include "cosim/runtime/supervisor.hpp"
 
 namespace openfoam {
 
 namespace {
-
-// Whether this process was started by mpirun or srun as a rank of a job.
-bool launched_as_mpi_rank() {
-  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK"})
-    if (std::getenv(variable) != nullptr) return true;
-  return false;
-}
 
 using Clock = std::chrono::steady_clock;
 
@@ -113,7 +106,8 @@ ApplicationTiming run_application(const Installation& installation, const std::s
   child.args = std::move(arguments);
   // The adapter on a rank of a coupled MPI job: OpenFOAM is a job of its
   // own, not a part of the adapter's.
-  if (launched_as_mpi_rank()) child.environment_left_out = {"OMPI_", "PMIX_", "PMI_"};
+  if (cosim::runtime::launched_as_mpi_rank())
+    child.environment_left_out = cosim::runtime::mpi_launch_variable_prefixes();
   const std::size_t log_start = size_of_file(log_file);
   cosim::runtime::Supervisor supervisor;
   const Clock::time_point launched = Clock::now();
